@@ -1,0 +1,108 @@
+#define _POSIX_C_SOURCE 200809L
+#include "cli.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "soak/status.h"
+
+void cli_error(const char *cmd, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "soak %s: ", cmd);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+}
+
+int cli_parse_double(const char *cmd, const char *opt, const char *text, double lo, double hi, double *out)
+{
+    char *end = NULL;
+    errno = 0;
+    double v = text ? strtod(text, &end) : 0.0;
+    if (!text || end == text || *end != '\0' || errno == ERANGE || !soak_in_range(v, lo, hi)) {
+        cli_error(cmd, "%s: expected a number in [%g, %g], got '%s'", opt, lo, hi, text ? text : "");
+        return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+int cli_parse_int(const char *cmd, const char *opt, const char *text, long lo, long hi, long *out)
+{
+    char *end = NULL;
+    errno = 0;
+    long v = text ? strtol(text, &end, 10) : 0;
+    if (!text || end == text || *end != '\0' || errno == ERANGE || v < lo || v > hi) {
+        cli_error(cmd, "%s: expected a whole number in [%ld, %ld], got '%s'", opt, lo, hi, text ? text : "");
+        return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+int cli_is(const char *arg, const char *opt)
+{
+    size_t n = strlen(opt);
+    return strncmp(arg, opt, n) == 0 && (arg[n] == '\0' || arg[n] == '=');
+}
+
+const char *cli_value(const char *cmd, int argc, char **argv, int *i)
+{
+    const char *eq = strchr(argv[*i], '=');
+    if (eq && argv[*i][0] == '-') return eq + 1;
+    if (*i + 1 >= argc) {
+        cli_error(cmd, "option %s needs a value", argv[*i]);
+        return NULL;
+    }
+    ++*i;
+    return argv[*i];
+}
+
+double cli_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void cli_progress_start(cli_progress *p, const char *label, double total)
+{
+    const char *force = getenv("SOAK_PROGRESS");
+    p->label = label;
+    p->total = total > 0 ? total : 1;
+    p->start_time = cli_now();
+    p->last_print = 0;
+    p->enabled = isatty(STDERR_FILENO) || (force && strcmp(force, "1") == 0);
+}
+
+void cli_progress_update(cli_progress *p, double done)
+{
+    if (!p->enabled) return;
+    double now = cli_now();
+    if (now - p->last_print < 0.2 && done < p->total) return;
+    p->last_print = now;
+    double frac = done / p->total;
+    if (frac > 1) frac = 1;
+    double elapsed = now - p->start_time;
+    double eta = frac > 0 ? elapsed * (1 - frac) / frac : 0;
+    char bar[31];
+    int fill = (int)(frac * 30);
+    for (int i = 0; i < 30; ++i) bar[i] = i < fill ? '#' : ' ';
+    bar[30] = '\0';
+    fprintf(stderr, "\r%s [%s] %3.0f%% %.1fs ETA %.1fs ", p->label, bar, 100 * frac, elapsed, eta);
+    fflush(stderr);
+}
+
+void cli_progress_finish(cli_progress *p)
+{
+    if (!p->enabled) return;
+    cli_progress_update(p, p->total);
+    fputc('\n', stderr);
+}

@@ -1,0 +1,59 @@
+/* Shared pieces of the `soak` command-line tool. Each subcommand lives in
+ * its own cmd_<name>.c and is listed in main.c's table. Every subcommand:
+ *  - prints usage with an example on --help / -h and exits 0;
+ *  - names the offending argument in every error and exits 2 for bad usage,
+ *    1 for failures while working;
+ *  - reports progress on stderr for long work, results on stdout. */
+#ifndef SOAK_CLI_H
+#define SOAK_CLI_H
+
+#include <stddef.h>
+
+typedef struct soak_cli_command {
+    const char *name;
+    const char *summary;
+    int (*run)(int argc, char **argv); /* argv[0] is the subcommand name */
+} soak_cli_command;
+
+#define SOAK_EXIT_OK 0
+#define SOAK_EXIT_FAIL 1
+#define SOAK_EXIT_USAGE 2
+
+int soak_cmd_materials(int argc, char **argv);
+int soak_cmd_albedo(int argc, char **argv);
+int soak_cmd_eval(int argc, char **argv);
+int soak_cmd_demo(int argc, char **argv);
+int soak_cmd_render(int argc, char **argv);
+int soak_cmd_measure(int argc, char **argv);
+int soak_cmd_bake(int argc, char **argv);
+
+/* Prints "soak <cmd>: <message>" to stderr. */
+void cli_error(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* Parses a finite number in [lo, hi]. On failure prints an error naming the
+ * option and the accepted range, returns 0. */
+int cli_parse_double(const char *cmd, const char *opt, const char *text, double lo, double hi, double *out);
+int cli_parse_int(const char *cmd, const char *opt, const char *text, long lo, long hi, long *out);
+
+/* Returns the value following option argv[*i] (advancing *i), or NULL after
+ * printing "option X needs a value". Accepts "--opt=value" too. */
+const char *cli_value(const char *cmd, int argc, char **argv, int *i);
+
+/* 1 if argv[i] is opt or starts with "opt=". */
+int cli_is(const char *arg, const char *opt);
+
+/* Simple progress bar on stderr: "label [#####     ] 42% ETA 3s". Quiet when
+ * stderr is not a terminal unless force is set by SOAK_PROGRESS=1. */
+typedef struct cli_progress {
+    const char *label;
+    double total;
+    double start_time;
+    double last_print;
+    int enabled;
+} cli_progress;
+void cli_progress_start(cli_progress *p, const char *label, double total);
+void cli_progress_update(cli_progress *p, double done);
+void cli_progress_finish(cli_progress *p);
+double cli_now(void);
+
+#endif

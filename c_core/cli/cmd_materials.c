@@ -1,0 +1,10 @@
+/* soak materials: not built yet; the owning issue replaces this file. */
+#include "cli.h"
+
+int soak_cmd_materials(int argc, char **argv)
+{
+    (void)argc;
+    (void)argv;
+    cli_error("materials", "this command is not available in this build yet");
+    return SOAK_EXIT_FAIL;
+}

@@ -1,0 +1,36 @@
+/* Smooth liquid film over a Lambertian base, with all interreflections
+ * between the base and the underside of the film surface.
+ * Source: J. Lekner & M. C. Dorf, "Why some things are darker when wet",
+ * Applied Optics 27(7):1278-1280, 1988; absorption by Beer-Lambert with the
+ * water coefficients alpha = (0.35, 0.04, 0) 1/m of seed 001 (Lagarde).
+ *
+ * Quantities are per colour channel (call once per channel). "Albedo" here is
+ * the TOTAL reflectance: the specular reflection of the film surface plus the
+ * diffuse light that escapes after any number of base/film bounces.
+ * n == 1 means no interface: the result equals the dry base exactly. */
+#ifndef SOAK_FILM_H
+#define SOAK_FILM_H
+
+#include "soak/status.h"
+#include "soak/vec.h"
+
+typedef struct soak_film {
+    double n;         /* film index relative to the air above, [1, 3] */
+    double alpha;     /* absorption coefficient of the liquid, 1/m, [0, 1e6] */
+    double thickness; /* film thickness, m, [0, 1e3]; 0 = no absorption */
+} soak_film;
+
+soak_status soak_film_validate(const soak_film *film);
+
+/* Total reflectance for collimated light at cos_i (0,1]. */
+soak_status soak_film_albedo_dir(const soak_film *film, double base_albedo, double cos_i, double *albedo);
+/* Total reflectance for uniform diffuse (cosine-weighted) illumination. */
+soak_status soak_film_albedo_diffuse(const soak_film *film, double base_albedo, double *albedo);
+/* Angle-resolved BRDF (1/sr) of the glossy-free part: light refracted in,
+ * scattered by the base (with interreflections), refracted out. Reciprocal.
+ * wi, wo: unit vectors, local frame, z > 0. Returns 0 below the horizon. */
+soak_status soak_film_brdf(const soak_film *film, double base_albedo, soak_vec3 wi, soak_vec3 wo, double *f);
+/* Reflectance of the delta (mirror) lobe of the film surface at cos_i. */
+soak_status soak_film_specular(const soak_film *film, double cos_i, double *R);
+
+#endif

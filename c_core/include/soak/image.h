@@ -1,0 +1,58 @@
+/* Image I/O for every part of Soak, through OpenImageIO (thin C++ shim).
+ * Pixels are float, channel-interleaved, top row first, linear values.
+ * Writes are atomic: the image goes to a temporary file in the destination
+ * folder that is renamed over the target only when complete. */
+#ifndef SOAK_IMAGE_H
+#define SOAK_IMAGE_H
+
+#include <stddef.h>
+#include "soak/status.h"
+
+typedef struct soak_image {
+    int width, height, channels;
+    float *pixels; /* width*height*channels floats, owned */
+} soak_image;
+
+typedef enum soak_tone {
+    SOAK_TONE_LINEAR = 0, /* store values as they are (clamped for integer formats) */
+    SOAK_TONE_SRGB        /* clamp to [0,1], apply the sRGB transfer curve (IEC 61966-2-1) */
+} soak_tone;
+
+typedef enum soak_pixel_type {
+    SOAK_PIXEL_AUTO = 0, /* EXR: half, PNG/TIFF: uint16, JPEG: uint8 */
+    SOAK_PIXEL_HALF,
+    SOAK_PIXEL_FLOAT,
+    SOAK_PIXEL_UINT16,
+    SOAK_PIXEL_UINT8
+} soak_pixel_type;
+
+typedef struct soak_image_write_opts {
+    soak_tone tone;
+    soak_pixel_type pixel_type;
+} soak_image_write_opts;
+
+/* Allocates a zeroed image. */
+soak_status soak_image_alloc(soak_image *img, int width, int height, int channels);
+void soak_image_free(soak_image *img);
+
+/* Reads any format OIIO reads, converting to float. err gets a message
+ * naming the file on failure. */
+soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t errlen);
+
+/* Writes by extension (.exr .png .tif/.tiff .jpg .hdr ...). Linear PNGs carry
+ * a gAMA 1.0 chunk so POV-Ray and viewers do not sRGB-decode them; sRGB-toned
+ * PNGs carry the sRGB chunk. opts may be NULL (linear, auto type). */
+soak_status soak_image_write(const char *path, const soak_image *img, const soak_image_write_opts *opts,
+                             char *err, size_t errlen);
+
+/* Mip-mapped tiled texture (.tx) for OSL via OIIO's make_texture. */
+soak_status soak_image_write_tx(const char *path, const soak_image *img, char *err, size_t errlen);
+
+/* 1 if both paths name the same existing file (same device and inode), or are
+ * equal strings; used to refuse overwriting an input. */
+int soak_path_same(const char *a, const char *b);
+
+/* 0 if the folder that would contain path exists and is writable. */
+soak_status soak_path_check_writable(const char *path, char *err, size_t errlen);
+
+#endif
