@@ -1,10 +1,174 @@
-/* soak materials: not built yet; the owning issue replaces this file. */
+/* soak materials: list the presets as a table, or export them (and their
+ * wetness tables) as JSON for the POV-Ray and Blender front ends. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
 #include "cli.h"
+#include "soak/preset.h"
+#include "soak/wetness.h"
+
+static const char *CMD = "materials";
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: soak materials [--json] [--table N] [--liquid NAME] [--materials FILE]\n\n"
+            "Lists the material presets: kind, porosity, index, dry albedo and the\n"
+            "albedo when fully wet (wetness 1, steady state) with the chosen liquid.\n\n"
+            "options:\n"
+            "  --json            print every preset and liquid with all fields, sources\n"
+            "                    and derived sigma_s/sigma_a (1/mm) as JSON on stdout\n"
+            "  --table N         add N rows (N >= 2) at wetness i/(N-1) per preset: the\n"
+            "                    parameter table front ends interpolate (in the JSON with\n"
+            "                    --json, else printed as text); the curves have a kink\n"
+            "                    where the pores saturate, so use 17 rows or more\n"
+            "  --liquid NAME     liquid for the wet values (default water)\n"
+            "  --materials FILE  preset file (default: $SOAK_MATERIALS, else the shipped\n"
+            "                    data/materials.json)\n\n"
+            "examples:\n"
+            "  soak materials\n"
+            "  soak materials --json --table 17 > presets.json\n");
+}
+
+static void print_rgb(soak_rgb c) { printf("%6.3f %6.3f %6.3f", c.r, c.g, c.b); }
+
+static int print_summary(const soak_preset_db *db, const soak_liquid *liq)
+{
+    printf("presets from %s; wet = wetness 1, steady state, liquid %s\n\n", soak_presets_path(db), liq->name);
+    printf("%-10s %-20s %8s %6s  %-20s  %-20s  %s\n", "name", "kind", "porosity", "ior", "dry albedo R G B",
+           "wet albedo R G B", "mean cos dry->wet");
+    for (int i = 0; i < soak_presets_count(db); ++i) {
+        const soak_preset *p = soak_presets_at(db, i);
+        soak_wet_input in = soak_wet_input_steady(p, 1.0);
+        soak_wet_params wet;
+        soak_status st = soak_wetness_eval(p, liq, &in, &wet);
+        if (st != SOAK_OK) {
+            cli_error(CMD, "%s: wetness mapping failed: %s", p->name, soak_status_str(st));
+            return SOAK_EXIT_FAIL;
+        }
+        printf("%-10s %-20s ", p->name, soak_material_kind_name(p->kind));
+        if (soak_material_kind_porous(p->kind))
+            printf("%8.3f ", p->porosity);
+        else
+            printf("%8s ", "-");
+        if (p->kind == SOAK_KIND_CONDUCTOR)
+            printf("%6s  ", "n,k");
+        else
+            printf("%6.3f  ", p->ior);
+        print_rgb(p->albedo);
+        printf("  ");
+        print_rgb(wet.albedo);
+        if (p->kind == SOAK_KIND_CONDUCTOR)
+            printf("  -\n");
+        else
+            printf("  %.3f -> %.3f\n", soak_hg2_mean_cosine(&p->phase_dry), wet.mean_cosine);
+    }
+    printf("\nliquids:");
+    for (int i = 0; i < soak_presets_liquid_count(db); ++i) printf(" %s", soak_presets_liquid_at(db, i)->name);
+    printf("\n");
+    return SOAK_EXIT_OK;
+}
+
+static int print_tables(const soak_preset_db *db, const soak_liquid *liq, int n)
+{
+    soak_wet_params *rows = malloc((size_t)n * sizeof *rows);
+    if (!rows) {
+        cli_error(CMD, "out of memory for %d table rows", n);
+        return SOAK_EXIT_FAIL;
+    }
+    for (int i = 0; i < soak_presets_count(db); ++i) {
+        const soak_preset *p = soak_presets_at(db, i);
+        soak_status st = soak_wetness_table(p, liq, n, -1.0, rows);
+        if (st != SOAK_OK) {
+            cli_error(CMD, "%s: wetness table failed: %s", p->name, soak_status_str(st));
+            free(rows);
+            return SOAK_EXIT_FAIL;
+        }
+        printf("%s (%s), liquid %s\n", p->name, p->display_name, liq->name);
+        printf("  %7s %6s %8s  %-20s  %-20s %9s %8s\n", "wetness", "fill", "coverage", "albedo R G B",
+               "albedo_total R G B", "ggx_alpha", "mean_cos");
+        for (int r = 0; r < n; ++r) {
+            printf("  %7.4f %6.3f %8.3f  ", rows[r].wetness, rows[r].fill, rows[r].film_coverage);
+            print_rgb(rows[r].albedo);
+            printf("  ");
+            print_rgb(rows[r].albedo_total);
+            printf(" %9.4f %8.4f\n", rows[r].ggx_alpha, rows[r].mean_cosine);
+        }
+        printf("\n");
+    }
+    free(rows);
+    return SOAK_EXIT_OK;
+}
+
+static void list_liquids(const soak_preset_db *db)
+{
+    fprintf(stderr, "known liquids:");
+    for (int i = 0; i < soak_presets_liquid_count(db); ++i) fprintf(stderr, " %s", soak_presets_liquid_at(db, i)->name);
+    fprintf(stderr, "\n");
+}
 
 int soak_cmd_materials(int argc, char **argv)
 {
-    (void)argc;
-    (void)argv;
-    cli_error("materials", "this command is not available in this build yet");
-    return SOAK_EXIT_FAIL;
+    int json = 0;
+    long table = 0;
+    const char *liquid = "water", *file = NULL;
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            usage(stdout);
+            return SOAK_EXIT_OK;
+        } else if (strcmp(a, "--json") == 0) {
+            json = 1;
+        } else if (cli_is(a, "--table")) {
+            const char *v = cli_value(CMD, argc, argv, &i);
+            if (!v || !cli_parse_int(CMD, "--table", v, 2, SOAK_WET_TABLE_MAX, &table)) return SOAK_EXIT_USAGE;
+        } else if (cli_is(a, "--liquid")) {
+            if (!(liquid = cli_value(CMD, argc, argv, &i))) return SOAK_EXIT_USAGE;
+        } else if (cli_is(a, "--materials")) {
+            if (!(file = cli_value(CMD, argc, argv, &i))) return SOAK_EXIT_USAGE;
+        } else {
+            cli_error(CMD, "unknown argument '%s' (see 'soak materials --help')", a);
+            return SOAK_EXIT_USAGE;
+        }
+    }
+
+    char err[1024];
+    soak_preset_db *db = NULL;
+    soak_status st = soak_presets_load(file, &db, err, sizeof err);
+    if (st != SOAK_OK) {
+        cli_error(CMD, "%s", err[0] ? err : soak_status_str(st));
+        return SOAK_EXIT_FAIL;
+    }
+    const soak_liquid *liq = soak_presets_find_liquid(db, liquid);
+    if (!liq) {
+        cli_error(CMD, "--liquid: unknown liquid '%s'", liquid);
+        list_liquids(db);
+        soak_presets_free(db);
+        return SOAK_EXIT_USAGE;
+    }
+
+    int rc = SOAK_EXIT_OK;
+    if (json) {
+        char *text = NULL;
+        st = soak_wetness_export_json(db, liquid, (int)table, &text);
+        if (st != SOAK_OK) {
+            cli_error(CMD, "JSON export failed: %s", soak_status_str(st));
+            rc = SOAK_EXIT_FAIL;
+        } else {
+            fputs(text, stdout);
+            fputc('\n', stdout);
+            free(text);
+        }
+    } else if (table) {
+        rc = print_tables(db, liq, (int)table);
+    } else {
+        rc = print_summary(db, liq);
+    }
+    soak_presets_free(db);
+    if (rc == SOAK_EXIT_OK && fflush(stdout) != 0) {
+        cli_error(CMD, "writing to stdout failed");
+        rc = SOAK_EXIT_FAIL;
+    }
+    return rc;
 }

@@ -1,0 +1,123 @@
+#!/usr/bin/env bash
+# soak materials / soak albedo: help, output shape, the film albedo against
+# Lekner & Dorf's closed form evaluated here with awk (midpoint quadrature of
+# the Fresnel equations), and argument errors (exit 2, argument named).
+. "$(dirname "$0")/lib.bash"
+
+expect_exit 0 "materials --help" -- "$SOAK" materials --help
+grep -q "example" "$SOAK_TMP/last.out" && ok "materials help has an example" || bad "materials help has no example"
+expect_exit 0 "albedo --help" -- "$SOAK" albedo --help
+grep -q "example" "$SOAK_TMP/last.out" && ok "albedo help has an example" || bad "albedo help has no example"
+
+# ---- soak materials ----------------------------------------------------------
+expect_exit 0 "materials table" -- "$SOAK" materials
+for name in sand clay brick concrete asphalt limestone paper cotton oak marble copper aluminium; do
+  grep -qE "^$name " "$SOAK_TMP/last.out" && ok "table lists $name" || bad "table lacks $name"
+done
+
+expect_exit 0 "materials --json --table 5" -- "$SOAK" materials --json --table 5
+if command -v python3 > /dev/null; then
+  if python3 - "$SOAK_TMP/last.out" << 'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+m = d["materials"]
+assert len(m) >= 12, len(m)
+for p in m:
+    t = p["wetness_table"]
+    assert len(t) == 5, (p["name"], len(t))
+    assert t[0]["wetness"] == 0 and t[-1]["wetness"] == 1
+    assert t[0]["albedo"] == p["albedo"], p["name"]
+    assert all(0 <= v <= 1 for r in t for v in r["albedo"]), p["name"]
+assert any(l["name"] == "water" for l in d["liquids"])
+EOF
+  then ok "JSON parses: >= 12 presets, 5 rows each, row 0 = dry albedo"; else bad "JSON export malformed"; fi
+else
+  echo "SKIPPED JSON structure check: python3 not on PATH"
+fi
+expect_exit 0 "materials --table 3 (text)" -- "$SOAK" materials --table 3
+grep -q "wetness" "$SOAK_TMP/last.out" && ok "text table has a header" || bad "text table has no header"
+
+expect_exit 2 "materials --table 1" -- "$SOAK" materials --json --table 1
+expect_stderr "--table" "message names --table"
+expect_exit 2 "materials --liquid lava" -- "$SOAK" materials --liquid lava
+expect_stderr "--liquid" "message names --liquid"
+expect_stderr "water" "message lists the known liquids"
+expect_exit 2 "materials unknown option" -- "$SOAK" materials --bogus
+expect_stderr "--bogus" "message names the option"
+expect_exit 1 "materials --materials missing file" -- "$SOAK" materials --materials "$SOAK_TMP/none.json"
+expect_stderr "none.json" "message names the file"
+
+bad_file="$SOAK_TMP/bad_materials.json"
+sed 's/"alpha": 0.25/"alpha": -0.25/' "$SOAK_ROOT/c_core/data/materials.json" > "$bad_file"
+expect_exit 1 "SOAK_MATERIALS with a negative porosity" -- env SOAK_MATERIALS="$bad_file" "$SOAK" materials
+expect_stderr "materials\[0\]\.porosity\.alpha" "message names the JSON path"
+
+# ---- soak albedo, preset mode --------------------------------------------------
+expect_exit 0 "albedo sand wet" -- "$SOAK" albedo --material sand --wetness 1
+dry=$(grep '^dry albedo ' "$SOAK_TMP/last.out")
+wet=$(grep -E '^wet albedo +[0-9]' "$SOAK_TMP/last.out")
+[ "$dry" = "dry albedo        0.440000 0.386000 0.231000" ] && ok "dry sand albedo printed" || bad "dry line: $dry"
+if awk -v d="$dry" -v w="$wet" 'BEGIN { split(d, a, " +"); split(w, b, " +");
+     exit !(b[3] < a[3] && b[4] < a[4] && b[5] < a[5] && b[5] > 0) }'; then
+  ok "wet sand darker in every channel"; else bad "wet sand not darker: $wet"; fi
+expect_exit 0 "albedo sand dry" -- "$SOAK" albedo --material sand --wetness 0
+[ "$(grep -E '^wet albedo +[0-9]' "$SOAK_TMP/last.out" | cut -c19-)" = "$(grep '^dry albedo ' "$SOAK_TMP/last.out" | cut -c19-)" ] \
+  && ok "wetness 0 = dry" || bad "wetness 0 differs from dry"
+expect_exit 0 "albedo before the liquid arrives" -- "$SOAK" albedo --material paper --wetness 1 --time 0.1 --t0 0.5 --fill-time 0
+[ "$(grep -E '^wet albedo +[0-9]' "$SOAK_TMP/last.out" | cut -c19-)" = "$(grep '^dry albedo ' "$SOAK_TMP/last.out" | cut -c19-)" ] \
+  && ok "t < t0: still dry" || bad "t < t0 changed the albedo"
+
+expect_exit 2 "unknown material" -- "$SOAK" albedo --material unobtainium --wetness 1
+expect_stderr "unobtainium" "message names the material"
+expect_stderr "sand" "message lists the known materials"
+expect_exit 2 "NaN wetness" -- "$SOAK" albedo --material sand --wetness nan
+expect_stderr "--wetness" "message names --wetness"
+expect_exit 2 "wetness > 1" -- "$SOAK" albedo --material sand --wetness 1.5
+expect_stderr "--wetness" "message names --wetness"
+expect_exit 2 "missing --wetness" -- "$SOAK" albedo --material sand
+expect_stderr "--wetness" "message names --wetness"
+expect_exit 2 "missing --material" -- "$SOAK" albedo --wetness 1
+expect_stderr "--material" "message names --material"
+expect_exit 2 "negative fill time" -- "$SOAK" albedo --material sand --wetness 1 --fill-time -1
+expect_stderr "--fill-time" "message names --fill-time"
+expect_exit 2 "film thickness inf" -- "$SOAK" albedo --material sand --wetness 1 --film-thickness inf
+expect_stderr "--film-thickness" "message names --film-thickness"
+expect_exit 2 "missing value" -- "$SOAK" albedo --material sand --wetness
+expect_stderr "needs a value" "message says the value is missing"
+
+# ---- soak albedo, film mode ----------------------------------------------------
+v=$("$SOAK" albedo --model film --base-albedo 0.5 --ior 1.33 --incidence normal | tail -n 1)
+if awk -v v="$v" 'BEGIN { exit !(v ~ /^[0-9.eE+-]+$/ && v + 0 > 0 && v + 0 < 0.5) }'; then
+  ok "film albedo $v is a number in (0, 0.5)"; else bad "film albedo last line '$v'"; fi
+# Lekner & Dorf: R = F0 + (1 - F0) A (1 - ri) / (1 - A ri), ri = 1 - (1 - re) / n^2,
+# re = 2 int_0^1 F(mu) mu dmu (exact unpolarised Fresnel, midpoint rule).
+want=$(awk -v n=1.33 -v A=0.5 'BEGIN {
+  N = 200000; re = 0
+  for (i = 0; i < N; i++) {
+    mu = (i + 0.5) / N; ct = sqrt(1 - (1 - mu * mu) / (n * n))
+    rs = (mu - n * ct) / (mu + n * ct); rp = (n * mu - ct) / (n * mu + ct)
+    re += (rs * rs + rp * rp) * mu / N
+  }
+  ri = 1 - (1 - re) / (n * n); F0 = ((n - 1) / (n + 1)) ^ 2
+  printf "%.12f", F0 + (1 - F0) * A * (1 - ri) / (1 - A * ri) }')
+close "$v" "$want" 1e-8 "film albedo = Lekner-Dorf closed form (awk)"
+v=$("$SOAK" albedo --model film --base-albedo 0.5 --ior 1 --incidence 30 | tail -n 1)
+close "$v" 0.5 1e-15 "index 1 is no interface: albedo = base"
+expect_exit 0 "film diffuse incidence" -- "$SOAK" albedo --model film --base-albedo 0.5 --ior 1.33 --incidence diffuse --thickness 1e-3 --absorption 350
+
+expect_exit 2 "film: bad incidence" -- "$SOAK" albedo --model film --base-albedo 0.5 --ior 1.33 --incidence sideways
+expect_stderr "--incidence" "message names --incidence"
+expect_exit 2 "film: incidence 95 deg" -- "$SOAK" albedo --model film --base-albedo 0.5 --ior 1.33 --incidence 95
+expect_stderr "--incidence" "message names --incidence"
+expect_exit 2 "film: ior < 1" -- "$SOAK" albedo --model film --base-albedo 0.5 --ior 0.5 --incidence normal
+expect_stderr "--ior" "message names --ior"
+expect_exit 2 "film: missing --base-albedo" -- "$SOAK" albedo --model film --ior 1.33 --incidence normal
+expect_stderr "--base-albedo" "message names --base-albedo"
+expect_exit 2 "film: base albedo NaN" -- "$SOAK" albedo --model film --base-albedo nan --ior 1.33 --incidence normal
+expect_stderr "--base-albedo" "message names --base-albedo"
+expect_exit 2 "film: negative absorption" -- "$SOAK" albedo --model film --base-albedo 0.5 --ior 1.33 --incidence normal --absorption -1
+expect_stderr "--absorption" "message names --absorption"
+expect_exit 2 "unknown model" -- "$SOAK" albedo --model nosuch --base-albedo 0.5
+expect_stderr "--model" "message names --model"
+expect_exit 2 "film with a preset option" -- "$SOAK" albedo --model film --material sand --base-albedo 0.5 --ior 1.33 --incidence normal
+finish
