@@ -54,7 +54,7 @@ static int make_dir(const char *cmd, const char *path)
  * diffuse part uses the preset's wet albedo; a film adds a sharp highlight
  * (Fresnel at normal incidence ~2 % scaled up for visibility is NOT used:
  * the highlight's weight is the film's own coverage, its size fixed). */
-static void draw_swatch(soak_image *img, int x0, int y0, const soak_wet_params *w)
+static void draw_swatch(soak_image *img, int x0, int y0, const soak_wet_params *w, int metal)
 {
     const soak_vec3 light = soak_v3_norm(soak_v3(-0.5, 0.6, 0.62));
     for (int y = 0; y < SWATCH; ++y)
@@ -68,6 +68,12 @@ static void draw_swatch(soak_image *img, int x0, int y0, const soak_wet_params *
             double s = 1 / 0.92;
             soak_vec3 n = soak_v3(u * s, v * s, sqrt(fmax(0, 1 - r2 * s * s)));
             double diff = fmax(0, soak_v3_dot(n, light)) * 0.85 + 0.15 * (0.5 + 0.5 * n.y);
+            if (metal) {
+                /* A metal shows its environment: mirror the view (+z) about n
+                 * into a sky-over-ground gradient, tinted by its reflectance. */
+                double ry = 2 * n.z * n.y;
+                diff = ry > 0 ? 0.55 + 0.45 * ry : 0.12 + 0.1 * (1 + ry);
+            }
             soak_vec3 h = soak_v3_norm(soak_v3_add(light, soak_v3(0, 0, 1)));
             double spec_w = w->film_coverage + w->water_specular_weight;
             double spec = spec_w * pow(fmax(0, soak_v3_dot(n, h)), 400) * 3.0;
@@ -90,8 +96,9 @@ static int write_table_and_swatches(const char *cmd, const soak_preset_db *db, c
         cli_error(cmd, "%s: cannot write: %s", path, strerror(errno));
         return 0;
     }
-    fprintf(csv, "material,kind,dry_r,dry_g,dry_b,wet_r,wet_g,wet_b,wet_over_dry\n");
-    printf("%-12s %-22s %-24s %-24s %s\n", "material", "kind", "dry albedo (RGB)", "wet albedo (w=1)", "wet/dry");
+    fprintf(csv, "material,kind,dry_r,dry_g,dry_b,wet_r,wet_g,wet_b,wet_over_dry,film_specular\n");
+    printf("%-12s %-21s %-23s %-23s %-7s %s\n", "material", "kind", "dry albedo (RGB)", "wet albedo (w=1)", "wet/dry",
+           "film spec");
     soak_image sheet;
     if (soak_image_alloc(&sheet, SWATCH * N_WET, SWATCH * n, 3) != SOAK_OK) {
         fclose(csv);
@@ -113,17 +120,21 @@ static int write_table_and_swatches(const char *cmd, const soak_preset_db *db, c
             }
             if (k == 0) dry = w;
             if (k == N_WET - 1) wet = w;
-            draw_swatch(&sheet, k * SWATCH, i * SWATCH, &w);
+            draw_swatch(&sheet, k * SWATCH, i * SWATCH, &w, p->kind == SOAK_KIND_CONDUCTOR);
         }
         if (!ok) break;
-        double ld = 0.2126 * dry.albedo_total.r + 0.7152 * dry.albedo_total.g + 0.0722 * dry.albedo_total.b;
-        double lw = 0.2126 * wet.albedo_total.r + 0.7152 * wet.albedo_total.g + 0.0722 * wet.albedo_total.b;
-        printf("%-12s %-22s (%.3f, %.3f, %.3f)    (%.3f, %.3f, %.3f)    %.2f\n", p->name,
-               soak_material_kind_name(p->kind), dry.albedo_total.r, dry.albedo_total.g, dry.albedo_total.b,
-               wet.albedo_total.r, wet.albedo_total.g, wet.albedo_total.b, ld > 0 ? lw / ld : 1.0);
-        fprintf(csv, "%s,%s,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n", p->name, soak_material_kind_name(p->kind),
-                dry.albedo_total.r, dry.albedo_total.g, dry.albedo_total.b, wet.albedo_total.r, wet.albedo_total.g,
-                wet.albedo_total.b, ld > 0 ? lw / ld : 1.0);
+        /* Diffuse albedo (what darkens) and the film's specular share of the
+         * total hemispherical reflectance (what makes wet surfaces glossy). */
+        double ld = 0.2126 * dry.albedo.r + 0.7152 * dry.albedo.g + 0.0722 * dry.albedo.b;
+        double lw = 0.2126 * wet.albedo.r + 0.7152 * wet.albedo.g + 0.0722 * wet.albedo.b;
+        double spec = 0.2126 * (wet.albedo_total.r - wet.albedo.r) + 0.7152 * (wet.albedo_total.g - wet.albedo.g) +
+                      0.0722 * (wet.albedo_total.b - wet.albedo.b);
+        double ratio = ld > 0 ? lw / ld : 1.0;
+        printf("%-12s %-21s (%.3f, %.3f, %.3f)   (%.3f, %.3f, %.3f)   %7.2f   %9.3f\n", p->name,
+               soak_material_kind_name(p->kind), dry.albedo.r, dry.albedo.g, dry.albedo.b, wet.albedo.r, wet.albedo.g,
+               wet.albedo.b, ratio, spec);
+        fprintf(csv, "%s,%s,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n", p->name, soak_material_kind_name(p->kind),
+                dry.albedo.r, dry.albedo.g, dry.albedo.b, wet.albedo.r, wet.albedo.g, wet.albedo.b, ratio, spec);
     }
     if (fclose(csv) != 0 || !ok || rename(tmp, path) != 0) {
         remove(tmp);
@@ -131,7 +142,8 @@ static int write_table_and_swatches(const char *cmd, const soak_preset_db *db, c
         if (ok) cli_error(cmd, "%s: cannot finish writing", path);
         return 0;
     }
-    printf("(albedo = total hemispherical reflectance under diffuse light, liquid: water; luminance ratio)\n");
+    printf("(diffuse albedo under diffuse light; wet = fully wet with a water film; wet/dry = luminance ratio;\n"
+           " film spec = hemispherical specular reflectance the film adds)\n");
     snprintf(path, sizeof path, "%s/swatches.png", dir);
     char err[1024];
     soak_image_write_opts opts = {SOAK_TONE_SRGB, SOAK_PIXEL_UINT8};
