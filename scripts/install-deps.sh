@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git
   libopenimageio-dev openimageio-tools
-  libembree-dev libassimp-dev libcjson-dev libopenvdb-dev
+  libembree-dev libassimp-dev libcjson-dev libopenvdb-dev libboost-dev
   povray blender python3 python3-numpy
 )
 

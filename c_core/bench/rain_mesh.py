@@ -1,0 +1,50 @@
+#!/usr/bin/env python3
+"""Writes the benchmark mesh for bench_rain_vs_cycles.sh: a 2 m x 2 m plane
+subdivided into N x N quads (2 N^2 triangles; N = 224 gives 100,352), displaced
+by a sum of Gaussian bumps and dimples, Y up (OBJ convention), with UVs over
+[0,1]^2 and per-vertex normals. Usage: rain_mesh.py OUT.obj [N]"""
+import math
+import random
+import sys
+
+
+def main():
+    out = sys.argv[1]
+    n = int(sys.argv[2]) if len(sys.argv) > 2 else 224
+    rng = random.Random(1)
+    bumps = [(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(0.05, 0.25), rng.uniform(-0.25, 0.35))
+             for _ in range(40)]
+
+    def height(x, z):
+        return sum(a * math.exp(-((x - bx) ** 2 + (z - bz) ** 2) / (2 * s * s)) for bx, bz, s, a in bumps)
+
+    def normal(x, z, e=1e-4):
+        dx = (height(x + e, z) - height(x - e, z)) / (2 * e)
+        dz = (height(x, z + e) - height(x, z - e)) / (2 * e)
+        l = math.sqrt(dx * dx + 1 + dz * dz)
+        return -dx / l, 1 / l, -dz / l
+
+    with open(out, "w") as f:
+        f.write("# soak rain benchmark mesh: %d triangles\n" % (2 * n * n))
+        for j in range(n + 1):
+            for i in range(n + 1):
+                x, z = -1 + 2 * i / n, 1 - 2 * j / n
+                f.write("v %.6f %.6f %.6f\n" % (x, height(x, z), z))
+        for j in range(n + 1):
+            for i in range(n + 1):
+                f.write("vt %.6f %.6f\n" % (i / n, j / n))
+        for j in range(n + 1):
+            for i in range(n + 1):
+                x, z = -1 + 2 * i / n, 1 - 2 * j / n
+                f.write("vn %.6f %.6f %.6f\n" % normal(x, z))
+        for j in range(n):
+            for i in range(n):
+                a = j * (n + 1) + i + 1
+                b, c, d = a + 1, a + n + 1, a + n + 2
+                # counter-clockwise seen from +y (front faces up)
+                f.write("f %d/%d/%d %d/%d/%d %d/%d/%d\n" % (a, a, a, b, b, b, d, d, d))
+                f.write("f %d/%d/%d %d/%d/%d %d/%d/%d\n" % (a, a, a, d, d, d, c, c, c))
+
+
+if __name__ == "__main__":
+    main()

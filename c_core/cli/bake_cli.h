@@ -1,0 +1,72 @@
+/* Entry points of the `soak bake` kinds, each in its own CLI file.
+ * cmd_bake.c dispatches `soak bake <kind> ...` to these; argv[0] is the kind
+ * name ("volume", "rain", ...), the rest are that kind's options. Each returns a
+ * process exit code (SOAK_EXIT_OK / SOAK_EXIT_FAIL / SOAK_EXIT_USAGE, cli.h),
+ * prints its own --help with an example, and writes outputs atomically. */
+#ifndef SOAK_BAKE_CLI_H
+#define SOAK_BAKE_CLI_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "soak/bake.h"
+
+/* Implemented in bake_volume_cli.c: parameter volumes (soak bake volume). */
+int soak_bake_volume_main(int argc, char **argv);
+
+/* Implemented in bake_rain_cli.c: rain drop wetting maps (soak bake rain). */
+int soak_bake_rain_main(int argc, char **argv);
+
+/* The 2D kinds, each in bake_<kind>_cli.c. */
+int soak_bake_turbulence_main(int argc, char **argv);
+int soak_bake_waves_main(int argc, char **argv);
+int soak_bake_drying_main(int argc, char **argv);
+int soak_bake_combine_main(int argc, char **argv);
+
+/* ---- shared option handling of the 2D kinds (bake_cli_common.c) ----
+ * Options every kind accepts: -o/--output PATH, --width N, --height N
+ * (1..16384), --seed N, --threads N (1..64, default: every core), --float
+ * (32-bit EXR instead of half), --frames A-B with a printf pattern in the
+ * output (wet.%04d.exr), --time T and --frame-time DT: frame f is baked at
+ * time T + (f - A) DT. */
+#define BAKE_MAX_INPUTS 16 /* input images of one bake */
+
+typedef struct bake_opts {
+    const char *cmd; /* "bake <kind>", for messages */
+    const char *output;
+    long width, height;
+    int have_width, have_height;
+    uint64_t seed;
+    long threads; /* 0 = every core */
+    int float_exr;
+    int have_frames;
+    long first, last;
+    double time, frame_time;
+    int have_time;
+} bake_opts;
+
+/* Defaults: 1024 x 1024, seed 0, time and frame_time as given. */
+void bake_opts_init(bake_opts *o, const char *cmd, double time, double frame_time);
+
+/* 1 if argv[*i] was a shared option (consumed, *i advanced past its value),
+ * 0 if it is not one, -1 after printing an error about it (exit 2). */
+int bake_opts_parse(bake_opts *o, int argc, char **argv, int *i);
+
+/* Checks -o, the frames/pattern agreement and every output path against
+ * every input (inputs may be patterns expanded per frame) and the output
+ * folder. Returns 0 or the exit code after printing the error. */
+int bake_opts_check(const bake_opts *o, const char *const *inputs, int n_inputs);
+
+/* Produces frame `frame` (the frame number, or -1 for a single image) at
+ * `time` into out; err gets a message on failure. */
+typedef soak_status (*bake_frame_fn)(void *ctx, int frame, double time, const soak_bake_exec *exec, soak_image *out,
+                                     char *err, size_t errlen);
+
+/* Runs the frames with a progress bar, writing each atomically; returns
+ * the exit code. */
+int bake_run(const bake_opts *o, bake_frame_fn fn, void *ctx);
+
+/* Exit code and message for a library status (SOAK_ERR_ARG -> 2, else 1). */
+int bake_fail(const char *cmd, soak_status st, const char *err);
+
+#endif

@@ -1,0 +1,184 @@
+/* soak bake combine: per-texel operations on maps of the same size. */
+#include <stdio.h>
+#include <string.h>
+
+#include "bake_cli.h"
+#include "cli.h"
+
+#define CMD "bake combine"
+
+static void usage(FILE *out)
+{
+    fprintf(out,
+            "usage: soak bake combine OP INPUT... [options] -o OUT\n\n"
+            "Combines maps texel by texel; inputs must have the same width, height and channels.\n"
+            "  max | min | multiply | add   two or more inputs, folded left to right\n"
+            "  clamp                        one input, to [--lo, --hi] (default 0..1)\n"
+            "  blur                         one input, separable Gaussian of --sigma pixels\n"
+            "                               (edges clamp; --wrap for tileable maps)\n"
+            "  remap                        one input, [--in-lo, --in-hi] -> [--out-lo, --out-hi]\n"
+            "                               linearly (defaults 0..1 -> 0..1), --clamp to the output range\n\n"
+            "options:\n"
+            "  -o, --output PATH     .exr (half; --float for 32-bit), .png/.tif (16-bit linear), .tx\n"
+            "  --width N, --height N optional check: the inputs must have this size\n"
+            "  --threads N           worker threads (default: every core)\n"
+            "  --frames A-B          sequences: inputs and -o may hold a pattern such as wet.%%04d.exr\n"
+            "  --seed N, --time T, --frame-time DT  accepted for uniformity; unused\n\n"
+            "example:\n"
+            "  soak bake combine max waves.exr puddles.exr -o wet.exr\n"
+            "  soak bake combine blur wet.exr --sigma 2.5 -o wet_soft.exr\n");
+}
+
+typedef struct combine_job {
+    const bake_opts *o;
+    const char *op;
+    const char *inputs[BAKE_MAX_INPUTS];
+    int n_inputs;
+    double lo, hi, sigma, in_lo, in_hi, out_lo, out_hi;
+    int wrap, clamp;
+} combine_job;
+
+static const char *const binary_ops[] = {"max", "min", "multiply", "add"};
+
+static int binary_op(const char *op)
+{
+    for (int k = 0; k < 4; ++k)
+        if (strcmp(op, binary_ops[k]) == 0) return k;
+    return -1;
+}
+
+static soak_status read_input(const combine_job *j, int k, int frame, soak_image *img, char *err, size_t errlen)
+{
+    char path[4096];
+    const char *p = j->inputs[k];
+    if (frame >= 0 && soak_bake_pattern_kind(p) == 1) {
+        if (soak_bake_frame_path(p, frame, path, sizeof path) != SOAK_OK) return SOAK_ERR_ARG;
+        p = path;
+    }
+    soak_status st = soak_image_read(p, img, err, errlen);
+    if (st != SOAK_OK) return st == SOAK_ERR_ARG ? SOAK_ERR_IO : st;
+    if (soak_bake_check_size(img->width, img->height) != SOAK_OK) {
+        snprintf(err, errlen, "%s: %dx%d is larger than %d in a direction", p, img->width, img->height,
+                 SOAK_BAKE_MAX_SIZE);
+        soak_image_free(img);
+        return SOAK_ERR_IO;
+    }
+    if ((j->o->have_width && j->o->width != img->width) || (j->o->have_height && j->o->height != img->height)) {
+        snprintf(err, errlen, "%s: size %dx%d does not match --width/--height", p, img->width, img->height);
+        soak_image_free(img);
+        return SOAK_ERR_ARG;
+    }
+    return SOAK_OK;
+}
+
+static soak_status frame(void *vctx, int f, double time, const soak_bake_exec *exec, soak_image *out, char *err,
+                         size_t errlen)
+{
+    (void)time;
+    const combine_job *j = vctx;
+    soak_image acc;
+    soak_status st = read_input(j, 0, f, &acc, err, errlen);
+    if (st != SOAK_OK) return st;
+    int op = binary_op(j->op);
+    if (op >= 0) {
+        for (int k = 1; k < j->n_inputs && st == SOAK_OK; ++k) {
+            soak_image next, res;
+            if ((st = read_input(j, k, f, &next, err, errlen)) != SOAK_OK) break;
+            st = soak_map_combine((soak_combine_op)op, &acc, &next, &res);
+            if (st == SOAK_ERR_ARG)
+                snprintf(err, errlen, "%s (%dx%d, %d channels) does not match %s (%dx%d, %d channels)", j->inputs[k],
+                         next.width, next.height, next.channels, j->inputs[0], acc.width, acc.height, acc.channels);
+            soak_image_free(&next);
+            if (st == SOAK_OK) {
+                soak_image_free(&acc);
+                acc = res;
+            }
+        }
+        if (st == SOAK_OK) *out = acc;
+        else soak_image_free(&acc);
+        return st;
+    }
+    if (strcmp(j->op, "clamp") == 0) st = soak_map_clamp(&acc, j->lo, j->hi, out);
+    else if (strcmp(j->op, "blur") == 0) st = soak_map_blur(&acc, j->sigma, j->wrap, exec, out);
+    else st = soak_map_remap(&acc, j->in_lo, j->in_hi, j->out_lo, j->out_hi, j->clamp, out);
+    if (st == SOAK_ERR_ARG) snprintf(err, errlen, "%s: invalid parameters for %s", j->inputs[0], j->op);
+    soak_image_free(&acc);
+    return st;
+}
+
+typedef struct num_opt {
+    const char *name;
+    double *dst;
+} num_opt;
+
+int soak_bake_combine_main(int argc, char **argv)
+{
+    bake_opts o;
+    bake_opts_init(&o, CMD, 0, 1);
+    combine_job j;
+    memset(&j, 0, sizeof j);
+    j.o = &o;
+    j.lo = 0, j.hi = 1, j.sigma = 1, j.in_lo = 0, j.in_hi = 1, j.out_lo = 0, j.out_hi = 1;
+    const num_opt nums[] = {{"--lo", &j.lo},       {"--hi", &j.hi},         {"--sigma", &j.sigma},
+                            {"--in-lo", &j.in_lo}, {"--in-hi", &j.in_hi},   {"--out-lo", &j.out_lo},
+                            {"--out-hi", &j.out_hi}};
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i], *v;
+        int r = bake_opts_parse(&o, argc, argv, &i);
+        if (r < 0) return SOAK_EXIT_USAGE;
+        if (r > 0) continue;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            usage(stdout);
+            return SOAK_EXIT_OK;
+        } else if (cli_is(a, "--wrap")) {
+            j.wrap = 1;
+        } else if (cli_is(a, "--clamp")) {
+            j.clamp = 1;
+        } else if (a[0] == '-' && a[1] != '\0') {
+            int matched = 0;
+            for (size_t k = 0; k < sizeof nums / sizeof nums[0] && !matched; ++k) {
+                if (!cli_is(a, nums[k].name)) continue;
+                matched = 1;
+                double lo = strcmp(nums[k].name, "--sigma") == 0 ? 1e-3 : -1e30;
+                double hi = strcmp(nums[k].name, "--sigma") == 0 ? 1000 : 1e30;
+                if (!(v = cli_value(CMD, argc, argv, &i)) || !cli_parse_double(CMD, nums[k].name, v, lo, hi, nums[k].dst))
+                    return SOAK_EXIT_USAGE;
+            }
+            if (!matched) {
+                cli_error(CMD, "unknown option '%s' (see --help)", a);
+                return SOAK_EXIT_USAGE;
+            }
+        } else if (!j.op) {
+            j.op = a;
+        } else if (j.n_inputs < BAKE_MAX_INPUTS) {
+            j.inputs[j.n_inputs++] = a;
+        } else {
+            cli_error(CMD, "at most %d inputs", BAKE_MAX_INPUTS);
+            return SOAK_EXIT_USAGE;
+        }
+    }
+    if (!j.op) {
+        cli_error(CMD, "missing OP: max, min, multiply, add, clamp, blur or remap (see --help)");
+        return SOAK_EXIT_USAGE;
+    }
+    int binary = binary_op(j.op) >= 0;
+    if (!binary && strcmp(j.op, "clamp") != 0 && strcmp(j.op, "blur") != 0 && strcmp(j.op, "remap") != 0) {
+        cli_error(CMD, "unknown OP '%s': expected max, min, multiply, add, clamp, blur or remap", j.op);
+        return SOAK_EXIT_USAGE;
+    }
+    if (binary ? j.n_inputs < 2 : j.n_inputs != 1) {
+        cli_error(CMD, "%s takes %s, got %d", j.op, binary ? "two or more inputs" : "exactly one input", j.n_inputs);
+        return SOAK_EXIT_USAGE;
+    }
+    if (strcmp(j.op, "clamp") == 0 && !(j.lo <= j.hi)) {
+        cli_error(CMD, "--lo (%g) must be <= --hi (%g)", j.lo, j.hi);
+        return SOAK_EXIT_USAGE;
+    }
+    if (strcmp(j.op, "remap") == 0 && j.in_lo == j.in_hi) {
+        cli_error(CMD, "--in-lo and --in-hi must differ (both %g)", j.in_lo);
+        return SOAK_EXIT_USAGE;
+    }
+    int rc = bake_opts_check(&o, j.inputs, j.n_inputs);
+    if (rc) return rc;
+    return bake_run(&o, frame, &j);
+}

@@ -1,0 +1,609 @@
+/* Rain wetting of a mesh in UV space; the model is documented step by step
+ * in soak/bake_rain.h (steps 1-4 below refer to it). */
+#include "soak/bake_rain.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "soak/rng.h"
+
+void soak_rain_defaults(soak_rain_params *p)
+{
+    memset(p, 0, sizeof *p);
+    p->rays = 64;
+    p->sky = SOAK_RAIN_SKY_RAIN;
+    p->up = soak_v3(0, 0, 1);
+    p->rain_dir = soak_v3(0, 0, 1);
+    p->spread_deg = 10;
+    p->duration = 600;
+    p->steps = 32;
+    p->rainfall_mm_h = 10;
+    p->drop_diameter = 0.002;
+    p->splat_radius = 0.002;
+    p->evaporation_mm_h = 0.5;
+    p->retention = 0.0002;
+    p->saturation_depth = 0.0002;
+    p->flow_iterations = 16;
+    p->gutter = 4;
+}
+
+static int unit_ok(soak_vec3 v)
+{
+    double l = soak_v3_len(v);
+    return soak_is_finite(l) && l > 1e-12;
+}
+
+soak_status soak_rain_check(const soak_rain_params *p)
+{
+    if (!p) return SOAK_ERR_NULL;
+    if (!(p->rays >= 1 && p->rays <= 65536) || !(p->steps >= 1 && p->steps <= 100000) ||
+        !(p->flow_iterations >= 0 && p->flow_iterations <= 100000) || !(p->gutter >= 0 && p->gutter <= 64) ||
+        (p->sky != SOAK_RAIN_SKY_RAIN && p->sky != SOAK_RAIN_SKY_HEMISPHERE))
+        return SOAK_ERR_ARG;
+    if (!unit_ok(p->up) || !unit_ok(p->rain_dir)) return SOAK_ERR_ARG;
+    if (!(soak_v3_dot(soak_v3_norm(p->up), soak_v3_norm(p->rain_dir)) > 1e-6)) return SOAK_ERR_ARG;
+    if (!soak_in_range(p->spread_deg, 0, 89) || !soak_in_range(p->duration, 0, 1e7) ||
+        !soak_in_range(p->rainfall_mm_h, 0, 1000) || !(p->drop_diameter > 0 && p->drop_diameter <= 0.01) ||
+        !soak_in_range(p->splat_radius, 0, 1) || !soak_in_range(p->evaporation_mm_h, 0, 1000) ||
+        !soak_in_range(p->retention, 0, 0.1) || !(p->saturation_depth > 0 && p->saturation_depth <= 1))
+        return SOAK_ERR_ARG;
+    return SOAK_OK;
+}
+
+long soak_rain_poisson(double lambda, soak_rng *rng)
+{
+    if (!(lambda > 0.0)) return 0;
+    if (lambda > 30.0) {
+        /* Normal approximation (Box-Muller), rounded; error O(1/sqrt(lambda)). */
+        double u1 = 1.0 - soak_rng_uniform(rng), u2 = soak_rng_uniform(rng);
+        double z = sqrt(-2.0 * log(u1)) * cos(2.0 * SOAK_PI * u2);
+        double k = floor(lambda + sqrt(lambda) * z + 0.5);
+        return k > 0 ? (long)k : 0;
+    }
+    /* Inversion: walk the CDF P(k) = e^-lambda lambda^k / k!. */
+    double u = soak_rng_uniform(rng), pk = exp(-lambda), cdf = pk;
+    long k = 0;
+    while (u > cdf && k < 1000) {
+        ++k;
+        pk *= lambda / (double)k;
+        cdf += pk;
+    }
+    return k;
+}
+
+/* ---- step 1: surface sampling ---- */
+
+static const int DX[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+static const int DY[8] = {0, -1, -1, -1, 0, 1, 1, 1};
+
+typedef struct rain_surface {
+    int w, h;
+    int *tri;          /* per texel, -1 = empty */
+    double *pos;       /* 3 per texel */
+    float *nrm;        /* 3 per texel */
+    float *dpdx, *dpdy;/* 3 per texel: world step of one texel in +x, +y (image rows down) */
+    float *area;       /* world area of the texel */
+    double *level;     /* p.up */
+    unsigned char *adj;/* bit d: neighbour d is 3D-adjacent and covered */
+    float *drip;       /* > 0: level drop toward the open edge the water drips off */
+    double mean_texel; /* mean sqrt(area) of covered texels */
+} rain_surface;
+
+static void surface_free(rain_surface *s)
+{
+    free(s->tri);
+    free(s->pos);
+    free(s->nrm);
+    free(s->dpdx);
+    free(s->dpdy);
+    free(s->area);
+    free(s->level);
+    free(s->adj);
+    free(s->drip);
+}
+
+static soak_vec3 vget(const double *a, size_t i)
+{
+    return soak_v3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
+}
+
+static soak_status rasterise(const soak_mesh *m, rain_surface *s, soak_vec3 up)
+{
+    size_t n = (size_t)s->w * s->h;
+    for (size_t i = 0; i < n; ++i) s->tri[i] = -1;
+    for (size_t t = 0; t < m->n_triangles; ++t) {
+        unsigned ix[3] = {m->indices[3 * t], m->indices[3 * t + 1], m->indices[3 * t + 2]};
+        double X[3], Y[3];
+        soak_vec3 P[3];
+        for (int k = 0; k < 3; ++k) {
+            X[k] = m->uvs[2 * ix[k]] * s->w;
+            Y[k] = (1.0 - m->uvs[2 * ix[k] + 1]) * s->h;
+            P[k] = vget(m->positions, ix[k]);
+        }
+        double den = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
+        soak_vec3 cr = soak_v3_cross(soak_v3_sub(P[1], P[0]), soak_v3_sub(P[2], P[0]));
+        double area3 = 0.5 * soak_v3_len(cr);
+        if (!(fabs(den) > 1e-12) || !(area3 > 0.0) || !soak_is_finite(den)) continue; /* degenerate */
+        soak_vec3 ng = soak_v3_scale(cr, 0.5 / area3);
+        if (m->normals) {
+            soak_vec3 vn = soak_v3_add(soak_v3_add(vget(m->normals, ix[0]), vget(m->normals, ix[1])),
+                                       vget(m->normals, ix[2]));
+            if (soak_v3_dot(vn, ng) < 0) ng = soak_v3_scale(ng, -1.0);
+        }
+        double texel_area = area3 / (0.5 * fabs(den));
+        /* World step per texel: solve P = P0 + a (P1-P0) + b (P2-P0) for X, Y. */
+        double ia = 1.0 / den;
+        soak_vec3 e1 = soak_v3_sub(P[1], P[0]), e2 = soak_v3_sub(P[2], P[0]);
+        /* d(a,b)/dX and d(a,b)/dY of the barycentric map. */
+        double dadx = (Y[2] - Y[0]) * ia, dbdx = -(Y[1] - Y[0]) * ia;
+        double dady = -(X[2] - X[0]) * ia, dbdy = (X[1] - X[0]) * ia;
+        soak_vec3 sx = soak_v3_add(soak_v3_scale(e1, dadx), soak_v3_scale(e2, dbdx));
+        soak_vec3 sy = soak_v3_add(soak_v3_scale(e1, dady), soak_v3_scale(e2, dbdy));
+        double xmin = fmin(X[0], fmin(X[1], X[2])), xmax = fmax(X[0], fmax(X[1], X[2]));
+        double ymin = fmin(Y[0], fmin(Y[1], Y[2])), ymax = fmax(Y[0], fmax(Y[1], Y[2]));
+        int x0 = (int)fmax(0.0, floor(xmin - 0.5)), x1 = (int)fmin(s->w - 1.0, ceil(xmax - 0.5));
+        int y0 = (int)fmax(0.0, floor(ymin - 0.5)), y1 = (int)fmin(s->h - 1.0, ceil(ymax - 0.5));
+        const double eps = -1e-9;
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                size_t i = (size_t)y * s->w + x;
+                if (s->tri[i] >= 0) continue;
+                double px = x + 0.5 - X[0], py = y + 0.5 - Y[0];
+                double a = px * dadx + py * dady, b = px * dbdx + py * dbdy;
+                if (a < eps || b < eps || a + b > 1.0 - eps) continue;
+                soak_vec3 p = soak_v3_add(P[0], soak_v3_add(soak_v3_scale(e1, a), soak_v3_scale(e2, b)));
+                s->tri[i] = (int)(t < 0x7fffffff ? t : 0x7fffffff);
+                s->pos[3 * i] = p.x, s->pos[3 * i + 1] = p.y, s->pos[3 * i + 2] = p.z;
+                s->nrm[3 * i] = (float)ng.x, s->nrm[3 * i + 1] = (float)ng.y, s->nrm[3 * i + 2] = (float)ng.z;
+                s->dpdx[3 * i] = (float)sx.x, s->dpdx[3 * i + 1] = (float)sx.y, s->dpdx[3 * i + 2] = (float)sx.z;
+                s->dpdy[3 * i] = (float)sy.x, s->dpdy[3 * i + 1] = (float)sy.y, s->dpdy[3 * i + 2] = (float)sy.z;
+                s->area[i] = (float)texel_area;
+                s->level[i] = soak_v3_dot(p, up);
+            }
+    }
+    return SOAK_OK;
+}
+
+static soak_vec3 fget(const float *a, size_t i)
+{
+    return soak_v3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
+}
+
+/* Neighbour adjacency (covered, and where the UV step says it should be in
+ * 3D: not across a UV seam) and the drip edges. */
+static void connect(rain_surface *s, soak_vec3 up)
+{
+    double sum = 0.0;
+    long count = 0;
+    for (int y = 0; y < s->h; ++y)
+        for (int x = 0; x < s->w; ++x) {
+            size_t i = (size_t)y * s->w + x;
+            s->adj[i] = 0;
+            s->drip[i] = 0.0f;
+            if (s->tri[i] < 0) continue;
+            sum += sqrt(s->area[i]);
+            ++count;
+            soak_vec3 p = vget(s->pos, i), sx = fget(s->dpdx, i), sy = fget(s->dpdy, i), n = fget(s->nrm, i);
+            int best = -1;
+            double best_drop = 0.0;
+            for (int d = 0; d < 8; ++d) {
+                soak_vec3 step = soak_v3_add(soak_v3_scale(sx, DX[d]), soak_v3_scale(sy, DY[d]));
+                double drop = -soak_v3_dot(step, up); /* level decrease along this step */
+                int jx = x + DX[d], jy = y + DY[d];
+                int ok = jx >= 0 && jy >= 0 && jx < s->w && jy < s->h;
+                if (ok) {
+                    size_t j = (size_t)jy * s->w + jx;
+                    ok = s->tri[j] >= 0 && soak_v3_len(soak_v3_sub(vget(s->pos, j), p)) <= 2.0 * soak_v3_len(step) + 1e-12;
+                    if (ok) s->adj[i] |= (unsigned char)(1u << d);
+                }
+                if (drop > best_drop * (1 + 1e-9)) {
+                    best_drop = drop;
+                    best = d;
+                }
+            }
+            /* Steepest-descent step leaves the surface: an open edge. */
+            if (best >= 0 && !(s->adj[i] >> best & 1u)) s->drip[i] = (float)best_drop;
+            if (soak_v3_dot(n, up) <= 0.0) s->drip[i] = -1.0f; /* faces down: everything mobile drips */
+        }
+    s->mean_texel = count ? sum / (double)count : 0.0;
+}
+
+/* ---- step 2: exposure ---- */
+
+typedef struct exposure_job {
+    const rain_surface *s;
+    const soak_geometry *g;
+    const soak_rain_params *p;
+    soak_vec3 up, rain_dir, rt, rb;
+    double cos_spread, f_open;
+    float *out;
+    int failed;
+} exposure_job;
+
+static void exposure_row(void *ctx, int y, int thread)
+{
+    (void)thread;
+    exposure_job *j = ctx;
+    const rain_surface *s = j->s;
+    int N = j->p->rays;
+    for (int x = 0; x < s->w; ++x) {
+        size_t i = (size_t)y * s->w + x;
+        if (s->tri[i] < 0) {
+            j->out[i] = 0.0f;
+            continue;
+        }
+        soak_vec3 p = vget(s->pos, i), n = fget(s->nrm, i), t, b;
+        soak_v3_basis(n, &t, &b);
+        soak_rng rng;
+        soak_rng_seed(&rng, j->p->seed, (uint64_t)i);
+        double acc = 0.0;
+        for (int k = 0; k < N; ++k) {
+            double xi1 = (k + soak_rng_uniform(&rng)) / N, xi2 = soak_rng_uniform(&rng);
+            double phi = 2.0 * SOAK_PI * xi2, weight;
+            soak_vec3 u;
+            if (j->p->sky == SOAK_RAIN_SKY_HEMISPHERE) {
+                double ct = sqrt(1.0 - xi1), st = sqrt(xi1);
+                u = soak_v3_add(soak_v3_scale(n, ct), soak_v3_add(soak_v3_scale(t, st * cos(phi)),
+                                                                   soak_v3_scale(b, st * sin(phi))));
+                weight = 1.0;
+            } else {
+                double ct = 1.0 - xi1 * (1.0 - j->cos_spread), st = sqrt(fmax(0.0, 1.0 - ct * ct));
+                u = soak_v3_add(soak_v3_scale(j->rain_dir, ct),
+                                soak_v3_add(soak_v3_scale(j->rt, st * cos(phi)), soak_v3_scale(j->rb, st * sin(phi))));
+                weight = soak_v3_dot(n, u) / j->f_open;
+                if (!(weight > 0.0)) continue;
+            }
+            soak_ray r = {soak_geometry_offset(p, n, u), u, 0.0, INFINITY};
+            int occ = 1;
+            if (soak_geometry_occluded(j->g, &r, &occ) != SOAK_OK) j->failed = 1;
+            if (!occ) acc += weight;
+        }
+        j->out[i] = (float)(acc / N);
+    }
+}
+
+/* ---- step 3: rain, splat, evaporation, flow ---- */
+
+typedef struct water_job {
+    const rain_surface *s;
+    const soak_rain_params *p;
+    const float *exposure;
+    double *depth;     /* water depth per texel, m */
+    float *deposit;    /* drop volume per texel this step */
+    float *out8;       /* 8 outflows per texel + 1 drip */
+    double *retain;    /* film kept per texel */
+    double lambda_per_area, drop_volume;
+    uint64_t step_seed;
+} water_job;
+
+static void drops_row(void *ctx, int y, int thread)
+{
+    (void)thread;
+    water_job *j = ctx;
+    const rain_surface *s = j->s;
+    for (int x = 0; x < s->w; ++x) {
+        size_t i = (size_t)y * s->w + x;
+        j->deposit[i] = 0.0f;
+        if (s->tri[i] < 0) continue;
+        double lambda = j->lambda_per_area * j->exposure[i] * s->area[i];
+        if (!(lambda > 0.0)) continue;
+        soak_rng rng;
+        soak_rng_seed(&rng, j->step_seed, (uint64_t)i);
+        j->deposit[i] = (float)(soak_rain_poisson(lambda, &rng) * j->drop_volume);
+    }
+}
+
+static void add_deposit_row(void *ctx, int y, int thread)
+{
+    (void)thread;
+    water_job *j = ctx;
+    const rain_surface *s = j->s;
+    for (int x = 0; x < s->w; ++x) {
+        size_t i = (size_t)y * s->w + x;
+        if (s->tri[i] >= 0 && s->area[i] > 0.0f) j->depth[i] += j->deposit[i] / s->area[i];
+    }
+}
+
+/* Outflows of texel i from the current depths (Jacobi: reads only depth). */
+static void outflow_row(void *ctx, int y, int thread)
+{
+    (void)thread;
+    water_job *j = ctx;
+    const rain_surface *s = j->s;
+    for (int x = 0; x < s->w; ++x) {
+        size_t i = (size_t)y * s->w + x;
+        float *o = j->out8 + 9 * i;
+        for (int d = 0; d < 9; ++d) o[d] = 0.0f;
+        if (s->tri[i] < 0) continue;
+        double h = j->depth[i], mobile = h - j->retain[i];
+        if (!(mobile > 0.0)) continue;
+        if (s->drip[i] < 0.0f) { /* faces down */
+            o[8] = (float)mobile;
+            continue;
+        }
+        double lvl = s->level[i] + h, diff[9], sum = 0.0, mx = 0.0;
+        for (int d = 0; d < 8; ++d) {
+            diff[d] = 0.0;
+            if (!(s->adj[i] >> d & 1u)) continue;
+            size_t k = (size_t)(y + DY[d]) * s->w + (size_t)(x + DX[d]);
+            double dl = lvl - (s->level[k] + j->depth[k]);
+            if (dl > 0.0) diff[d] = dl;
+        }
+        diff[8] = s->drip[i] > 0.0f ? h + s->drip[i] : 0.0; /* virtual dry neighbour beyond the edge */
+        for (int d = 0; d < 9; ++d) {
+            sum += diff[d];
+            mx = fmax(mx, diff[d]);
+        }
+        if (!(sum > 0.0)) continue;
+        double moved = fmin(mobile, 0.5 * mx);
+        for (int d = 0; d < 9; ++d) o[d] = (float)(moved * diff[d] / sum);
+    }
+}
+
+/* depth' = depth - outflows + inflows (volumes via texel areas). */
+static void gather_row(void *ctx, int y, int thread)
+{
+    (void)thread;
+    water_job *j = ctx;
+    const rain_surface *s = j->s;
+    for (int x = 0; x < s->w; ++x) {
+        size_t i = (size_t)y * s->w + x;
+        if (s->tri[i] < 0) continue;
+        const float *o = j->out8 + 9 * i;
+        double out = 0.0;
+        for (int d = 0; d < 9; ++d) out += o[d];
+        double vol_in = 0.0;
+        for (int d = 0; d < 8; ++d) {
+            int kx = x + DX[d], ky = y + DY[d];
+            if (kx < 0 || ky < 0 || kx >= s->w || ky >= s->h) continue;
+            size_t k = (size_t)ky * s->w + kx;
+            int back = (d + 4) & 7; /* direction from k to i */
+            if (s->tri[k] >= 0 && (s->adj[k] >> back & 1u)) vol_in += j->out8[9 * k + back] * (double)s->area[k];
+        }
+        double h = j->depth[i] - out + vol_in / s->area[i];
+        j->depth[i] = h > 0.0 ? h : 0.0;
+    }
+}
+
+static soak_status run_water(const rain_surface *s, const soak_rain_params *p, const float *exposure,
+                             const soak_bake_exec *exec, double *depth)
+{
+    size_t n = (size_t)s->w * s->h;
+    water_job j;
+    memset(&j, 0, sizeof j);
+    j.s = s;
+    j.p = p;
+    j.exposure = exposure;
+    j.depth = depth;
+    j.deposit = malloc(n * sizeof *j.deposit);
+    j.out8 = malloc(9 * n * sizeof *j.out8);
+    j.retain = malloc(n * sizeof *j.retain);
+    if (!j.deposit || !j.out8 || !j.retain) {
+        free(j.deposit);
+        free(j.out8);
+        free(j.retain);
+        return SOAK_ERR_NOMEM;
+    }
+    soak_vec3 up = soak_v3_norm(p->up);
+    for (size_t i = 0; i < n; ++i)
+        j.retain[i] = s->tri[i] >= 0 ? p->retention * fmax(0.0, soak_v3_dot(fget(s->nrm, i), up)) : 0.0;
+    double dt = p->duration / p->steps;
+    double rain_m_s = p->rainfall_mm_h / 3.6e6, evap = p->evaporation_mm_h / 3.6e6 * dt;
+    j.drop_volume = SOAK_PI / 6.0 * p->drop_diameter * p->drop_diameter * p->drop_diameter;
+    j.lambda_per_area = rain_m_s / j.drop_volume * dt; /* drops per m^2 of open horizontal surface per step */
+    double sigma_texels = s->mean_texel > 0.0 ? p->splat_radius / s->mean_texel : 0.0;
+    soak_status st = SOAK_OK;
+    for (int step = 0; step < p->steps && st == SOAK_OK; ++step) {
+        double lo = 0.7 + 0.3 * step / p->steps;
+        j.step_seed = soak_seed_derive(p->seed, (uint64_t)step + 1);
+        st = soak_parallel_rows(s->h, exec, drops_row, &j, lo, lo);
+        if (st == SOAK_OK && sigma_texels >= 0.3) {
+            soak_image in = {s->w, s->h, 1, j.deposit}, blurred = {0, 0, 0, NULL};
+            st = soak_map_blur(&in, fmin(sigma_texels, 1000.0), 0, exec, &blurred);
+            if (st == SOAK_OK) memcpy(j.deposit, blurred.pixels, n * sizeof *j.deposit);
+            soak_image_free(&blurred);
+        }
+        if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, add_deposit_row, &j, lo, lo);
+        for (int it = 0; it < p->flow_iterations && st == SOAK_OK; ++it) {
+            st = soak_parallel_rows(s->h, exec, outflow_row, &j, lo, lo);
+            if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, gather_row, &j, lo, lo);
+        }
+        for (size_t i = 0; i < n; ++i) depth[i] = depth[i] > evap ? depth[i] - evap : 0.0;
+    }
+    free(j.deposit);
+    free(j.out8);
+    free(j.retain);
+    return st;
+}
+
+/* ---- outputs ---- */
+
+/* Empty texels take the mean of their filled neighbours, `gutter` rings. */
+static soak_status dilate(float *img, unsigned char *filled, int w, int h, int gutter)
+{
+    size_t n = (size_t)w * h;
+    unsigned char *next = malloc(n);
+    float *val = malloc(n * sizeof *val);
+    if (!next || !val) {
+        free(next);
+        free(val);
+        return SOAK_ERR_NOMEM;
+    }
+    for (int g = 0; g < gutter; ++g) {
+        memcpy(next, filled, n);
+        memcpy(val, img, n * sizeof *val);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                size_t i = (size_t)y * w + x;
+                if (filled[i]) continue;
+                double sum = 0.0;
+                int c = 0;
+                for (int d = 0; d < 8; ++d) {
+                    int kx = x + DX[d], ky = y + DY[d];
+                    if (kx < 0 || ky < 0 || kx >= w || ky >= h || !filled[(size_t)ky * w + kx]) continue;
+                    sum += img[(size_t)ky * w + kx];
+                    ++c;
+                }
+                if (c) {
+                    val[i] = (float)(sum / c);
+                    next[i] = 1;
+                }
+            }
+        memcpy(filled, next, n);
+        memcpy(img, val, n * sizeof *val);
+    }
+    free(next);
+    free(val);
+    return SOAK_OK;
+}
+
+void soak_rain_result_free(soak_rain_result *r)
+{
+    if (!r) return;
+    soak_image_free(&r->wetness);
+    soak_image_free(&r->exposure);
+    soak_image_free(&r->water);
+    soak_image_free(&r->coverage);
+}
+
+static soak_status build_geometry(const soak_mesh *mesh, soak_geometry **g, char *err, size_t errlen)
+{
+    soak_status st = soak_geometry_create(g, err, errlen);
+    if (st != SOAK_OK) return st;
+    unsigned id;
+    st = soak_geometry_add_mesh(*g, mesh, NULL, &id);
+    if (st == SOAK_OK) st = soak_geometry_commit(*g);
+    if (st != SOAK_OK) {
+        if (err && errlen) snprintf(err, errlen, "cannot build the ray-tracing scene of the mesh (%s)", soak_status_str(st));
+        soak_geometry_destroy(*g);
+        *g = NULL;
+    }
+    return st;
+}
+
+static soak_status surface_alloc(rain_surface *s, int w, int h)
+{
+    memset(s, 0, sizeof *s);
+    s->w = w;
+    s->h = h;
+    size_t n = (size_t)w * h;
+    s->tri = malloc(n * sizeof *s->tri);
+    s->pos = malloc(3 * n * sizeof *s->pos);
+    s->nrm = malloc(3 * n * sizeof *s->nrm);
+    s->dpdx = malloc(3 * n * sizeof *s->dpdx);
+    s->dpdy = malloc(3 * n * sizeof *s->dpdy);
+    s->area = malloc(n * sizeof *s->area);
+    s->level = malloc(n * sizeof *s->level);
+    s->adj = malloc(n);
+    s->drip = malloc(n * sizeof *s->drip);
+    if (!s->tri || !s->pos || !s->nrm || !s->dpdx || !s->dpdy || !s->area || !s->level || !s->adj || !s->drip) {
+        surface_free(s);
+        return SOAK_ERR_NOMEM;
+    }
+    return SOAK_OK;
+}
+
+static soak_status check_mesh(const soak_mesh *m, char *err, size_t errlen)
+{
+    if (!m->positions || !m->indices || m->n_triangles == 0 || m->n_vertices == 0) {
+        if (err && errlen) snprintf(err, errlen, "mesh has no triangles");
+        return SOAK_ERR_ARG;
+    }
+    if (!m->uvs) {
+        if (err && errlen) snprintf(err, errlen, "mesh has no UVs: the rain bake needs texture coordinates");
+        return SOAK_ERR_ARG;
+    }
+    for (size_t i = 0; i < 3 * m->n_triangles; ++i)
+        if (m->indices[i] >= m->n_vertices) {
+            if (err && errlen) snprintf(err, errlen, "mesh index %zu out of range", i);
+            return SOAK_ERR_ARG;
+        }
+    for (size_t i = 0; i < m->n_vertices; ++i) {
+        for (int k = 0; k < 3; ++k)
+            if (!soak_is_finite(m->positions[3 * i + k])) {
+                if (err && errlen) snprintf(err, errlen, "mesh vertex %zu is not finite", i);
+                return SOAK_ERR_ARG;
+            }
+        if (!soak_in_range(m->uvs[2 * i], -1e6, 1e6) || !soak_in_range(m->uvs[2 * i + 1], -1e6, 1e6)) {
+            if (err && errlen) snprintf(err, errlen, "mesh UV %zu is not finite", i);
+            return SOAK_ERR_ARG;
+        }
+    }
+    return SOAK_OK;
+}
+
+soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const soak_rain_params *p,
+                           const soak_bake_exec *exec, soak_rain_result *out, char *err, size_t errlen)
+{
+    if (!mesh || !p || !out) return SOAK_ERR_NULL;
+    soak_status st = soak_rain_check(p);
+    if (st != SOAK_OK) {
+        if (err && errlen) snprintf(err, errlen, "rain parameters out of range");
+        return st;
+    }
+    if ((st = soak_bake_check_size(width, height)) != SOAK_OK) return st;
+    if (exec && soak_bake_threads(exec) == 0) return SOAK_ERR_ARG;
+    if ((st = check_mesh(mesh, err, errlen)) != SOAK_OK) return st;
+
+    soak_vec3 up = soak_v3_norm(p->up);
+    rain_surface s;
+    if ((st = surface_alloc(&s, width, height)) != SOAK_OK) return st;
+    rasterise(mesh, &s, up);
+    connect(&s, up);
+
+    soak_geometry *g = NULL;
+    st = build_geometry(mesh, &g, err, errlen);
+    size_t n = (size_t)width * height;
+    soak_rain_result r;
+    memset(&r, 0, sizeof r);
+    if (st == SOAK_OK) st = soak_image_alloc(&r.exposure, width, height, 1);
+    if (st == SOAK_OK) st = soak_image_alloc(&r.wetness, width, height, 1);
+    if (st == SOAK_OK) st = soak_image_alloc(&r.water, width, height, 1);
+    if (st == SOAK_OK) st = soak_image_alloc(&r.coverage, width, height, 1);
+    double *depth = st == SOAK_OK ? calloc(n, sizeof *depth) : NULL;
+    if (st == SOAK_OK && !depth) st = SOAK_ERR_NOMEM;
+    if (st == SOAK_OK) {
+        exposure_job ej;
+        memset(&ej, 0, sizeof ej);
+        ej.s = &s;
+        ej.g = g;
+        ej.p = p;
+        ej.up = up;
+        ej.rain_dir = soak_v3_norm(p->rain_dir);
+        soak_v3_basis(ej.rain_dir, &ej.rt, &ej.rb);
+        ej.cos_spread = cos(p->spread_deg * SOAK_PI / 180.0);
+        ej.f_open = soak_v3_dot(ej.rain_dir, up) * 0.5 * (1.0 + ej.cos_spread);
+        ej.out = r.exposure.pixels;
+        st = soak_parallel_rows(height, exec, exposure_row, &ej, 0.0, p->duration > 0 ? 0.7 : 1.0);
+        if (st == SOAK_OK && ej.failed) st = SOAK_ERR_NUMERIC;
+    }
+    if (st == SOAK_OK && p->duration > 0 && p->rainfall_mm_h > 0)
+        st = run_water(&s, p, r.exposure.pixels, exec, depth);
+    if (st == SOAK_OK) {
+        unsigned char *filled = malloc(n);
+        if (!filled) st = SOAK_ERR_NOMEM;
+        for (size_t i = 0; i < n && st == SOAK_OK; ++i) {
+            filled[i] = s.tri[i] >= 0;
+            r.coverage.pixels[i] = filled[i] ? 1.0f : 0.0f;
+            r.water.pixels[i] = (float)depth[i];
+            r.wetness.pixels[i] = (float)(1.0 - exp(-depth[i] / p->saturation_depth));
+        }
+        float *maps[3] = {r.exposure.pixels, r.water.pixels, r.wetness.pixels};
+        for (int k = 0; k < 3 && st == SOAK_OK; ++k) {
+            for (size_t i = 0; i < n; ++i) filled[i] = s.tri[i] >= 0;
+            st = dilate(maps[k], filled, width, height, p->gutter);
+        }
+        free(filled);
+    }
+    free(depth);
+    soak_geometry_destroy(g);
+    surface_free(&s);
+    if (st != SOAK_OK) {
+        soak_rain_result_free(&r);
+        return st;
+    }
+    *out = r;
+    return SOAK_OK;
+}
