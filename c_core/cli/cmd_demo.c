@@ -169,6 +169,31 @@ static int run_step(const char *cmd, int (*fn)(int, char **), int argc, char **a
     return rc == SOAK_EXIT_OK;
 }
 
+/* Seed 000's procedural wetness (thresholded turbulence), the same pattern
+ * drying border-first (seed 002) half-way, and a beach with four waves. */
+static int bake_maps(const char *cmd, const char *dir)
+{
+    char turb_exr[4096], turb_png[4096], dry_png[4096], waves_png[4096];
+    snprintf(turb_exr, sizeof turb_exr, "%s/wetmap_turbulence.exr", dir);
+    snprintf(turb_png, sizeof turb_png, "%s/wetmap_turbulence.png", dir);
+    snprintf(dry_png, sizeof dry_png, "%s/wetmap_drying_t0.3.png", dir);
+    snprintf(waves_png, sizeof waves_png, "%s/wetmap_waves.png", dir);
+    printf("\n== baked wet maps (linear; PNGs are 16-bit with gAMA 1.0)\n");
+    char *turb[] = {"bake", "turbulence", "--turbulence", "--octaves", "6", "--frequency", "6", "--threshold", "0.3",
+                    "--softness", "0.08", "--tileable", "--width", "512", "--height", "512", "--seed", "7", "-o",
+                    turb_exr};
+    char *turb2[] = {"bake", "turbulence", "--turbulence", "--octaves", "6", "--frequency", "6", "--threshold", "0.3",
+                     "--softness", "0.08", "--tileable", "--width", "512", "--height", "512", "--seed", "7", "-o",
+                     turb_png};
+    char *dry[] = {"bake", "drying", turb_exr, "--t-fill", "0.2", "--noise", "0.3", "--time", "0.3", "-o", dry_png};
+    char *waves[] = {"bake", "waves", "--waves", "4", "--width", "1024", "--height", "512", "--seed", "3", "-o",
+                     waves_png};
+    return run_step(cmd, soak_cmd_bake, (int)(sizeof turb / sizeof *turb), turb) &&
+           run_step(cmd, soak_cmd_bake, (int)(sizeof turb2 / sizeof *turb2), turb2) &&
+           run_step(cmd, soak_cmd_bake, (int)(sizeof dry / sizeof *dry), dry) &&
+           run_step(cmd, soak_cmd_bake, (int)(sizeof waves / sizeof *waves), waves);
+}
+
 int soak_cmd_demo(int argc, char **argv)
 {
     const char *cmd = "demo", *dir = "out/demo", *materials = NULL;
@@ -200,8 +225,8 @@ int soak_cmd_demo(int argc, char **argv)
     int ok = write_table_and_swatches(cmd, db, dir);
     soak_presets_free(db);
     if (!ok) return SOAK_EXIT_FAIL;
+    if (!bake_maps(cmd, dir)) return SOAK_EXIT_FAIL;
     (void)quick;
-    (void)run_step;
     printf("\ndemo finished: open %s/\n", dir);
     return SOAK_EXIT_OK;
 }
