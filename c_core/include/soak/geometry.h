@@ -1,0 +1,112 @@
+/* Ray-tracing geometry shared by the reference tracer, the virtual
+ * gonio-reflectometer and the bakers: triangle meshes, spheres, quads and
+ * boxes in an Embree 3 scene owned by one soak_geometry (no global state).
+ *
+ * Usage: soak_geometry_create, add shapes, soak_geometry_commit, then query
+ * from any number of threads (queries only read the committed scene; each
+ * call uses its own Embree intersect context). Adding after commit needs
+ * another commit before querying again, and is not thread-safe.
+ *
+ * Conventions: object ids are dense, in the order the shapes were added,
+ * starting at 0. The geometric normal ng points to the front side: for
+ * triangles the side from which the vertices appear counter-clockwise
+ * (ng = normalize((p1-p0) x (p2-p0))); for spheres and boxes outward; for a
+ * quad normalize(edge_u x edge_v). The shading normal ns is the interpolated
+ * vertex normal when the mesh has normals (flipped onto ng's side), otherwise
+ * ng. Hit positions and distances are recomputed in double precision from
+ * the shape data (Embree traverses in float). */
+#ifndef SOAK_GEOMETRY_H
+#define SOAK_GEOMETRY_H
+
+#include <stddef.h>
+
+#include "soak/status.h"
+#include "soak/vec.h"
+
+typedef struct soak_geometry soak_geometry;
+
+/* A triangle mesh in memory. normals and uvs may be NULL. */
+typedef struct soak_mesh {
+    size_t n_vertices;
+    size_t n_triangles;
+    double *positions;  /* 3 * n_vertices */
+    double *normals;    /* 3 * n_vertices, unit, or NULL */
+    double *uvs;        /* 2 * n_vertices, or NULL */
+    unsigned *indices;  /* 3 * n_triangles, each < n_vertices */
+} soak_mesh;
+
+typedef enum soak_shape_kind {
+    SOAK_SHAPE_MESH = 0,
+    SOAK_SHAPE_SPHERE,
+    SOAK_SHAPE_QUAD,
+    SOAK_SHAPE_BOX
+} soak_shape_kind;
+
+typedef struct soak_ray {
+    soak_vec3 org;
+    soak_vec3 dir;  /* need not be unit; t is in units of |dir| */
+    double tnear;   /* >= 0 */
+    double tfar;    /* > tnear; may be INFINITY */
+} soak_ray;
+
+typedef struct soak_hit {
+    double t;
+    soak_vec3 p;        /* org + t dir, refined on the shape */
+    soak_vec3 ng;       /* unit geometric normal (front side, see above) */
+    soak_vec3 ns;       /* unit shading normal, same side as ng */
+    double u, v;        /* texture coordinates (0 when the mesh has none) */
+    unsigned prim_id;   /* triangle index within the object (0 for spheres) */
+    unsigned object_id; /* as returned by soak_geometry_add_* */
+} soak_hit;
+
+/* Mesh loading through Assimp (OBJ, PLY, glTF/GLB and every format Assimp
+ * reads): triangulated, smooth normals generated where missing, identical
+ * vertices joined, all meshes of the file merged with their node transforms
+ * applied. With require_uvs, a file without texture coordinates fails with
+ * SOAK_ERR_PARSE and "<file>: mesh has no UVs". Missing/unreadable files
+ * give SOAK_ERR_IO with the file and the reason. */
+soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen);
+void soak_mesh_free(soak_mesh *mesh);
+
+soak_status soak_geometry_create(soak_geometry **out, char *err, size_t errlen);
+void soak_geometry_destroy(soak_geometry *g);
+
+/* xform: row-major 3x4 affine matrix (rotation/scale | translation) applied to
+ * positions; normals use its inverse transpose. NULL = identity. The mesh is
+ * copied. */
+soak_status soak_geometry_add_mesh(soak_geometry *g, const soak_mesh *mesh, const double *xform, unsigned *object_id);
+/* radius in (0, 1e9]. UV: u = azimuth / 2pi around +z, v = polar angle / pi. */
+soak_status soak_geometry_add_sphere(soak_geometry *g, soak_vec3 center, double radius, unsigned *object_id);
+/* Parallelogram origin + s edge_u + t edge_v, s,t in [0,1]; uv = (s, t). */
+soak_status soak_geometry_add_quad(soak_geometry *g, soak_vec3 origin, soak_vec3 edge_u, soak_vec3 edge_v,
+                                   unsigned *object_id);
+/* Axis-aligned box lo < hi per axis (12 triangles, outward faces, each face
+ * with uv over [0,1]^2). */
+soak_status soak_geometry_add_box(soak_geometry *g, soak_vec3 lo, soak_vec3 hi, unsigned *object_id);
+soak_status soak_geometry_commit(soak_geometry *g);
+
+unsigned soak_geometry_object_count(const soak_geometry *g);
+soak_shape_kind soak_geometry_object_kind(const soak_geometry *g, unsigned object_id);
+/* Triangle count of an object (0 for spheres). */
+size_t soak_geometry_triangle_count(const soak_geometry *g, unsigned object_id);
+/* Axis-aligned bounds of one object (spheres: centre +- radius). */
+soak_status soak_geometry_object_bounds(const soak_geometry *g, unsigned object_id, soak_vec3 *lo, soak_vec3 *hi);
+/* Axis-aligned bounds of the whole committed scene. */
+soak_status soak_geometry_bounds(const soak_geometry *g, soak_vec3 *lo, soak_vec3 *hi);
+
+/* Closest hit in (tnear, tfar). *found = 1 and *hit filled on a hit,
+ * *found = 0 (hit untouched) on a miss. */
+soak_status soak_geometry_intersect(const soak_geometry *g, const soak_ray *ray, soak_hit *hit, int *found);
+/* *occluded = 1 when anything lies in (tnear, tfar). */
+soak_status soak_geometry_occluded(const soak_geometry *g, const soak_ray *ray, int *occluded);
+/* Batches: n rays, found[i]/occluded[i] per ray. */
+soak_status soak_geometry_intersect_n(const soak_geometry *g, const soak_ray *rays, size_t n, soak_hit *hits,
+                                      int *found);
+soak_status soak_geometry_occluded_n(const soak_geometry *g, const soak_ray *rays, size_t n, int *occluded);
+
+/* Origin for a ray leaving the surface at p toward direction dir: p moved off
+ * the surface along ng to dir's side by an amount scaled to |p|, so the new
+ * ray does not re-hit the surface it starts on (Embree works in float). */
+soak_vec3 soak_geometry_offset(soak_vec3 p, soak_vec3 ng, soak_vec3 dir);
+
+#endif

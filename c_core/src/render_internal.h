@@ -1,0 +1,177 @@
+/* Private pieces of the path tracer shared by render_*.c. */
+#ifndef SOAK_RENDER_INTERNAL_H
+#define SOAK_RENDER_INTERNAL_H
+
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "soak/geometry.h"
+#include "soak/render.h"
+#include "soak/rng.h"
+#include "soak/scene.h"
+
+/* Medium random walks stop after this many tracking events (counted as capped). */
+#define RT_MEDIUM_MAX_EVENTS 100000
+/* Bounces inside the film of one surface interaction. */
+#define RT_FILM_MAX_BOUNCES 256
+
+typedef struct rt_env {
+    /* Equirectangular map sampling: marginal CDF over rows, conditional over
+     * columns, weights luminance * sin(theta) (Pharr, Jakob, Humphreys, PBRT 3rd
+     * ed., sec. 14.2.4). */
+    double *row_cdf;  /* height + 1 */
+    double *col_cdf;  /* height * (width + 1) */
+    double total;
+} rt_env;
+
+struct rt_photon_map;
+typedef struct rt_ctx {
+    const soak_scene *scene;
+    rt_env env;
+    int max_depth;
+    const struct rt_photon_map *caustics; /* NULL: no caustic photons */
+} rt_ctx;
+
+typedef struct rt_counters {
+    long long rays, capped, leaked;
+} rt_counters;
+
+typedef struct rt_thread {
+    const rt_ctx *ctx;
+    soak_rng rng;
+    rt_counters n;
+} rt_thread;
+
+static inline double rt_rand(rt_thread *t) { return soak_rng_uniform(&t->rng); }
+
+static inline soak_rgb rgb_mul(soak_rgb a, soak_rgb b) { return soak_rgb3(a.r * b.r, a.g * b.g, a.b * b.b); }
+static inline soak_rgb rgb_scale(soak_rgb a, double s) { return soak_rgb3(a.r * s, a.g * s, a.b * s); }
+static inline soak_rgb rgb_add(soak_rgb a, soak_rgb b) { return soak_rgb3(a.r + b.r, a.g + b.g, a.b + b.b); }
+static inline double rgb_max(soak_rgb a) { return fmax(a.r, fmax(a.g, a.b)); }
+static inline soak_rgb rgb_exp(soak_rgb a, double s)
+{
+    return soak_rgb3(exp(-a.r * s), exp(-a.g * s), exp(-a.b * s));
+}
+
+/* Local shading frame (t, b, n). */
+typedef struct rt_frame {
+    soak_vec3 t, b, n;
+} rt_frame;
+static inline rt_frame rt_frame_make(soak_vec3 n)
+{
+    rt_frame f;
+    f.n = n;
+    soak_v3_basis(n, &f.t, &f.b);
+    return f;
+}
+static inline soak_vec3 rt_to_local(const rt_frame *f, soak_vec3 v)
+{
+    return soak_v3(soak_v3_dot(v, f->t), soak_v3_dot(v, f->b), soak_v3_dot(v, f->n));
+}
+static inline soak_vec3 rt_to_world(const rt_frame *f, soak_vec3 v)
+{
+    return soak_v3_add(soak_v3_add(soak_v3_scale(f->t, v.x), soak_v3_scale(f->b, v.y)), soak_v3_scale(f->n, v.z));
+}
+
+/* Power heuristic with exponent 2 (Veach 1997, eq. 9.13). */
+static inline double rt_power(double a, double b)
+{
+    return a * a / (a * a + b * b);
+}
+
+/* ---- lights (render_lights.c) ---- */
+soak_status rt_env_build(rt_env *env, const soak_environment *e);
+void rt_env_free(rt_env *env);
+soak_rgb rt_env_eval(const rt_ctx *c, soak_vec3 dir);
+double rt_env_pdf(const rt_ctx *c, soak_vec3 dir);
+
+typedef struct rt_light_sample {
+    soak_vec3 wi;  /* unit, toward the light */
+    double dist;   /* distance to the light point (INFINITY for directional/env) */
+    soak_rgb L;    /* radiance (area/env) or delta value (irradiance E, I/r^2) */
+    double pdf;    /* solid angle pdf; 0 for delta lights */
+} rt_light_sample;
+
+/* Light index in [0, n_lights) or n_lights for the environment. Returns 0 if
+ * the light cannot illuminate p (inside a sphere light, zero value). */
+int rt_light_sample_at(rt_thread *t, int light, soak_vec3 p, rt_light_sample *s);
+int rt_light_count(const rt_ctx *c); /* lights + environment if any */
+int rt_light_is_delta(const rt_ctx *c, int light);
+/* Solid-angle pdf of sampling direction wi toward sphere light l from p. */
+double rt_sphere_light_pdf(const soak_light *l, soak_vec3 p);
+/* 1 when the segment from p (offset already applied) along wi up to dist is free. */
+int rt_visible(rt_thread *t, soak_vec3 p, soak_vec3 wi, double dist);
+
+/* ---- surfaces (render_surface.c) ---- */
+typedef struct rt_path {
+    soak_rgb beta;    /* throughput */
+    soak_rgb L;       /* radiance gathered */
+    soak_vec3 org, dir;
+    double prev_pdf;  /* solid-angle pdf of the last BSDF-sampled direction */
+    int prev_delta;   /* 1: the last direction had no competing light sample (count emission fully) */
+    soak_vec3 prev_pos;
+    int alive;
+    int inside;       /* inside a dielectric: absorb applies per unit length */
+    soak_rgb absorb;
+} rt_path;
+
+/* Handles the surface interaction at hit: gathers next-event estimates into
+ * path->L, updates beta and sets the next ray (or alive = 0). */
+void rt_surface(rt_thread *t, const soak_hit *hit, rt_path *path);
+
+/* ---- media (render_medium.c) ---- */
+/* Wet material with a scattering base: enters at hit (from air, direction
+ * path->dir), walks, exits or dies. */
+void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, const soak_material *m, rt_path *path);
+
+/* Medium parameters at a point (grid or homogeneous). */
+typedef struct rt_med_point {
+    soak_rgb ss, sa;
+    soak_hg2 phase;
+} rt_med_point;
+void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, rt_med_point *out);
+
+/* The air | film | material layer stack of a wet surface. */
+typedef struct rt_stack {
+    double n2, n3, k;  /* film (1 = none), material, Fresnel exponent */
+    soak_rgb alpha;    /* film absorption, 1/length */
+    double h;          /* film thickness */
+} rt_stack;
+/* Crosses the stack with Snell invariant p = n sin(theta), starting in the
+ * material going up (start_low) or in air going down. Returns 1 when it ends
+ * in the material, 0 in air. Multiplies *beta by the film absorption only. */
+int rt_cross_stack(rt_thread *t, const rt_stack *s, double p, int start_low, soak_rgb *beta);
+/* Direction with tangential unit tdir and invariant p in a medium of index n. */
+soak_vec3 rt_snell_dir(soak_vec3 tdir, soak_vec3 n_out, double p, double n, int up);
+
+/* ---- caustic photons (render_photons.c) ---- */
+typedef struct rt_photon {
+    float pos[3];
+    float dir[3];   /* propagation direction before the scattering event */
+    float power[3]; /* flux scattered at the event */
+    unsigned object_id;
+} rt_photon;
+
+typedef struct rt_photon_map {
+    rt_photon *photons; /* sorted by hash cell */
+    size_t n;
+    uint32_t *cell_start; /* n_cells + 1 */
+    size_t n_cells;       /* power of two */
+    double radius;
+    long long emitted;
+} rt_photon_map;
+
+/* Traces n photons from the sun and point lights through dielectric objects
+ * and stores them at their first scattering event inside a wet medium. */
+soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed, rt_photon_map *map);
+void rt_photons_free(rt_photon_map *map);
+/* sigma_s L_s estimate: sum over photons of object obj within the radius of
+ * p(cos) * power / (4/3 pi r^3), cos between the photon's propagation and the
+ * reverse of the camera path direction d_in. */
+soak_rgb rt_photons_gather(const rt_photon_map *map, soak_vec3 x, soak_vec3 d_in, const soak_hg2 *phase, unsigned obj);
+
+/* Fresnel of the interfaces a path meets (unpolarised, exact): eta = n_t/n_i. */
+double rt_fresnel(double cos_i, double eta, double *cos_t);
+
+#endif

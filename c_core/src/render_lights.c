@@ -1,0 +1,203 @@
+/* Light sampling for the path tracer: sun (delta direction), point, spherical
+ * area light (uniform cone sampling) and environment (constant: uniform
+ * sphere; map: luminance-weighted pixel sampling). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "render_internal.h"
+
+static double luminance(double r, double g, double b) { return 0.2126 * r + 0.7152 * g + 0.0722 * b; }
+
+soak_status rt_env_build(rt_env *env, const soak_environment *e)
+{
+    memset(env, 0, sizeof *env);
+    if (e->type != SOAK_ENV_MAP) return SOAK_OK;
+    const soak_image *im = &e->map;
+    int W = im->width, H = im->height, C = im->channels;
+    env->row_cdf = calloc((size_t)H + 1, sizeof(double));
+    env->col_cdf = calloc((size_t)H * (W + 1), sizeof(double));
+    if (!env->row_cdf || !env->col_cdf) {
+        rt_env_free(env);
+        return SOAK_ERR_NOMEM;
+    }
+    for (int i = 0; i < H; ++i) {
+        /* Weight = luminance * solid angle of the pixel (its cos(theta) band). */
+        double band = cos(SOAK_PI * i / H) - cos(SOAK_PI * (i + 1) / H);
+        double *cc = env->col_cdf + (size_t)i * (W + 1);
+        for (int j = 0; j < W; ++j) {
+            const float *p = im->pixels + ((size_t)i * W + j) * C;
+            double y = C >= 3 ? luminance(p[0], p[1], p[2]) : p[0];
+            cc[j + 1] = cc[j] + y * band;
+        }
+        env->row_cdf[i + 1] = env->row_cdf[i] + cc[W];
+    }
+    env->total = env->row_cdf[H];
+    return SOAK_OK;
+}
+
+void rt_env_free(rt_env *env)
+{
+    free(env->row_cdf);
+    free(env->col_cdf);
+    memset(env, 0, sizeof *env);
+}
+
+/* Direction -> map coordinates (u right, v down from the zenith) in [0,1). */
+static void env_uv(const soak_environment *e, soak_vec3 d, double *u, double *v)
+{
+    double phi = atan2(d.y, d.x) - e->rotation_deg * SOAK_PI / 180.0;
+    double x = phi / (2 * SOAK_PI);
+    x -= floor(x);
+    *u = x;
+    *v = acos(fmax(-1.0, fmin(1.0, d.z))) / SOAK_PI;
+}
+
+soak_rgb rt_env_eval(const rt_ctx *c, soak_vec3 d)
+{
+    const soak_environment *e = &c->scene->env;
+    if (e->type == SOAK_ENV_CONSTANT) return e->radiance;
+    if (e->type != SOAK_ENV_MAP) return soak_rgb3(0, 0, 0);
+    double u, v;
+    env_uv(e, d, &u, &v);
+    const soak_image *im = &e->map;
+    int j = (int)(u * im->width), i = (int)(v * im->height);
+    j = j >= im->width ? im->width - 1 : j;
+    i = i >= im->height ? im->height - 1 : i;
+    const float *p = im->pixels + ((size_t)i * im->width + j) * im->channels;
+    if (im->channels >= 3) return soak_rgb3(p[0] * e->scale, p[1] * e->scale, p[2] * e->scale);
+    return soak_rgb3(p[0] * e->scale, p[0] * e->scale, p[0] * e->scale);
+}
+
+double rt_env_pdf(const rt_ctx *c, soak_vec3 d)
+{
+    const soak_environment *e = &c->scene->env;
+    if (e->type == SOAK_ENV_CONSTANT) return SOAK_INV_4PI;
+    if (e->type != SOAK_ENV_MAP || !(c->env.total > 0)) return 0;
+    double u, v;
+    env_uv(e, d, &u, &v);
+    int W = e->map.width, H = e->map.height;
+    int j = (int)(u * W), i = (int)(v * H);
+    j = j >= W ? W - 1 : j;
+    i = i >= H ? H - 1 : i;
+    const double *cc = c->env.col_cdf + (size_t)i * (W + 1);
+    double w = cc[j + 1] - cc[j];
+    double band = cos(SOAK_PI * i / H) - cos(SOAK_PI * (i + 1) / H);
+    if (!(band > 0)) return 0;
+    /* Pixel chosen with probability w/total, then uniform over its solid angle. */
+    return w / c->env.total / (band * 2 * SOAK_PI / W);
+}
+
+static int upper_bound(const double *cdf, int n, double x)
+{
+    int lo = 0, hi = n; /* find i with cdf[i] <= x < cdf[i+1] */
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (cdf[mid] <= x) lo = mid;
+        else hi = mid;
+    }
+    return lo;
+}
+
+static int env_sample(rt_thread *t, rt_light_sample *s)
+{
+    const rt_ctx *c = t->ctx;
+    const soak_environment *e = &c->scene->env;
+    if (e->type == SOAK_ENV_CONSTANT) {
+        double z = 1 - 2 * rt_rand(t), phi = 2 * SOAK_PI * rt_rand(t), r = sqrt(fmax(0.0, 1 - z * z));
+        s->wi = soak_v3(r * cos(phi), r * sin(phi), z);
+        s->pdf = SOAK_INV_4PI;
+        s->L = e->radiance;
+        s->dist = INFINITY;
+        return rgb_max(s->L) > 0;
+    }
+    if (e->type != SOAK_ENV_MAP || !(c->env.total > 0)) return 0;
+    int W = e->map.width, H = e->map.height;
+    int i = upper_bound(c->env.row_cdf, H, rt_rand(t) * c->env.total);
+    const double *cc = c->env.col_cdf + (size_t)i * (W + 1);
+    if (!(cc[W] > 0)) return 0;
+    int j = upper_bound(cc, W, rt_rand(t) * cc[W]);
+    double u = (j + rt_rand(t)) / W;
+    /* Uniform in cos(theta) over the pixel's band = uniform in solid angle. */
+    double z0 = cos(SOAK_PI * i / H), z1 = cos(SOAK_PI * (i + 1) / H);
+    double z = z0 + (z1 - z0) * rt_rand(t);
+    double phi = 2 * SOAK_PI * u + e->rotation_deg * SOAK_PI / 180.0, r = sqrt(fmax(0.0, 1 - z * z));
+    s->wi = soak_v3(r * cos(phi), r * sin(phi), z);
+    s->L = rt_env_eval(c, s->wi);
+    s->dist = INFINITY;
+    s->pdf = rt_env_pdf(c, s->wi);
+    return s->pdf > 0 && rgb_max(s->L) > 0;
+}
+
+int rt_light_count(const rt_ctx *c) { return c->scene->n_lights + (c->scene->env.type != SOAK_ENV_NONE); }
+
+int rt_light_is_delta(const rt_ctx *c, int light)
+{
+    if (light >= c->scene->n_lights) return 0;
+    soak_light_type ty = c->scene->lights[light].type;
+    return ty == SOAK_LIGHT_DIRECTIONAL || ty == SOAK_LIGHT_POINT;
+}
+
+double rt_sphere_light_pdf(const soak_light *l, soak_vec3 p)
+{
+    double d2 = soak_v3_dot(soak_v3_sub(l->position, p), soak_v3_sub(l->position, p));
+    double r2 = l->radius * l->radius;
+    if (!(d2 > r2)) return 0;
+    double s2 = r2 / d2, cosmax = sqrt(1 - s2);
+    /* 1 - cos_max = s2 / (1 + cos_max), stable for small lights. */
+    return 1.0 / (2 * SOAK_PI * s2 / (1 + cosmax));
+}
+
+int rt_light_sample_at(rt_thread *t, int light, soak_vec3 p, rt_light_sample *s)
+{
+    const soak_scene *sc = t->ctx->scene;
+    if (light >= sc->n_lights) return env_sample(t, s);
+    const soak_light *l = &sc->lights[light];
+    switch (l->type) {
+    case SOAK_LIGHT_DIRECTIONAL:
+        s->wi = l->direction;
+        s->dist = INFINITY;
+        s->L = l->value;
+        s->pdf = 0;
+        return rgb_max(s->L) > 0;
+    case SOAK_LIGHT_POINT: {
+        soak_vec3 d = soak_v3_sub(l->position, p);
+        double r2 = soak_v3_dot(d, d);
+        if (!(r2 > 0)) return 0;
+        s->dist = sqrt(r2);
+        s->wi = soak_v3_scale(d, 1.0 / s->dist);
+        s->L = rgb_scale(l->value, 1.0 / r2);
+        s->pdf = 0;
+        return rgb_max(s->L) > 0;
+    }
+    case SOAK_LIGHT_SPHERE: {
+        soak_vec3 d = soak_v3_sub(l->position, p);
+        double dist = soak_v3_len(d), r = l->radius;
+        if (!(dist > r)) return 0;
+        soak_vec3 axis = soak_v3_scale(d, 1.0 / dist);
+        double s2 = r * r / (dist * dist), cosmax = sqrt(1 - s2);
+        double one_minus = s2 / (1 + cosmax);
+        double cos_t = 1 - rt_rand(t) * one_minus, sin_t = sqrt(fmax(0.0, 1 - cos_t * cos_t));
+        double phi = 2 * SOAK_PI * rt_rand(t);
+        rt_frame f = rt_frame_make(axis);
+        s->wi = soak_v3_norm(rt_to_world(&f, soak_v3(sin_t * cos(phi), sin_t * sin(phi), cos_t)));
+        /* Nearer root of the ray-sphere intersection. */
+        double b = dist * cos_t, disc = r * r - dist * dist * sin_t * sin_t;
+        s->dist = b - sqrt(fmax(0.0, disc));
+        s->L = l->value;
+        s->pdf = 1.0 / (2 * SOAK_PI * one_minus);
+        return rgb_max(s->L) > 0;
+    }
+    }
+    return 0;
+}
+
+int rt_visible(rt_thread *t, soak_vec3 p, soak_vec3 wi, double dist)
+{
+    /* Stop short of the light's own surface (sphere lights are geometry). */
+    soak_ray r = {p, wi, 0.0, dist < INFINITY ? dist * (1 - 1e-5) : INFINITY};
+    if (!(r.tfar > 0)) return 1;
+    int occ = 1;
+    t->n.rays++;
+    if (soak_geometry_occluded(t->ctx->scene->geometry, &r, &occ) != SOAK_OK) return 0;
+    return !occ;
+}

@@ -1,0 +1,388 @@
+/* Wet material over a scattering medium: seed 000 (Jensen, Legakis, Dorsey
+ * 1999) sec. 3.1-3.2 traced explicitly.
+ *
+ * Interfaces: air (1) | liquid film (n2) | material (n3), flat and parallel
+ * (the film is thin). A path crosses them as a small Markov chain: at each
+ * interface it is reflected with the exact Fresnel probability -- F12 at
+ * air/film, F23^k at film/material as seed 000 Eq. 2 (k is the seed's
+ * exponent; k = 1 smooth) -- or transmitted, and may bounce inside the film
+ * any number of times (total internal reflection included). Seed 000 Eq. 1-4
+ * keep the first crossing only; following the reflected parts conserves
+ * energy (white furnace test). Throughput factors for radiance: 1/n^2 into
+ * a denser medium, n^2 back out (corrected Eq. 1/2, see soak/jensen.h), so a
+ * path entering and leaving carries (n1/n3)^2 (1-F12)(1-F23^k) ... (n3/n1)^2
+ * exactly as Eq. 4 and its reverse. Where the object is dry (probability
+ * 1 - coverage * wetness at the crossing) there is no film (n2 = 1): the
+ * air/material interface reflects F13^k. We read k as a property of the
+ * material's own surface (its roughness, which the liquid does not change),
+ * so it applies to the dry interface too; with k > 1 the dry surface has a
+ * weak specular lobe and the wet one gains the liquid's smooth reflection
+ * (seed 000 sec. 4.2: "more specular due to the smoother air-water
+ * interface"). The reflected share is traced as a mirror reflection.
+ *
+ * Inside: spectral tracking (Kutz, Habel, Li, Novak, "Spectral and
+ * decomposition tracking for rendering heterogeneous volumes", SIGGRAPH
+ * 2017, sec. 5.2) against the majorant mu = max sigma_t: at a tentative
+ * collision the event is a real scatter with probability Ps proportional to
+ * max_c(beta_c sigma_s,c) or a null collision with Pn proportional to
+ * max_c(beta_c sigma_n,c), sigma_n = mu - sigma_t, and each channel's
+ * throughput is multiplied by sigma_s,c / (mu Ps) resp. sigma_n,c / (mu Pn).
+ * Absorption is carried in these weights, never by killing paths; Russian
+ * roulette on max_c beta_c (survival min(1, max beta)) keeps the estimate
+ * unbiased at albedo 1, where it never fires (long walks are capped at
+ * RT_MEDIUM_MAX_EVENTS and counted).
+ *
+ * Next-event estimation inside the medium (seed 000 sec. 3.1: "for the shadow
+ * rays ... we use Equation 4"): for each delta light (sun, point) the light
+ * direction wl in air is refracted through the flat film at the surface
+ * normal into the material (n2 cancels for parallel layers), the exit point
+ * is found by tracing that direction, and the estimate is
+ *   beta / n3^2 * p(d_in . d3) * T_medium(x -> y) * T_film(cos1) * (cos1 / cos3) * E
+ * (1/n3^2: the entry radiance factor, kept out of beta, see rt_cross_stack) where T_film = (1-F12)(1-F23^k) (soak_jensen_shadow, averaged over film /
+ * no film with the local coverage) and cos1/cos3 is the change of beam
+ * cross-section on refraction (a delta light of irradiance E in air becomes
+ * a delta beam of irradiance E T cos1/cos3 in the material). Exact for a
+ * planar face; on curved faces the normal of the exit point is used (one
+ * refinement), the flat-film approximation of the seed. Area and
+ * environment lights are gathered by paths that leave the surface (counted
+ * in full: no light sample competes for them from inside). Light that
+ * bounces inside the film before entering is reached only by those escaping
+ * paths, so for delta lights it is missing; it is second order in the
+ * Fresnel reflectances: for water on n3 = 1.5, 7e-5 of the transmitted light
+ * at normal incidence, 3e-4 at 60 degrees, 2.4e-3 at 80 degrees. */
+#include "render_internal.h"
+#include "soak/fresnel.h"
+#include "soak/hg.h"
+#include "soak/jensen.h"
+
+static double lerp(double a, double b, double t) { return a + (b - a) * t; }
+
+void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, rt_med_point *out)
+{
+    out->ss = m->sigma_s;
+    out->sa = m->sigma_a;
+    out->phase = m->phase;
+    const soak_volume *v = m->volume;
+    if (!v) return;
+    double q[3] = {x.x - m->volume_origin.x, x.y - m->volume_origin.y, x.z - m->volume_origin.z};
+    int dims[3] = {v->nx, v->ny, v->nz};
+    int i0[3], i1[3];
+    double fr[3];
+    for (int a = 0; a < 3; ++a) {
+        if (!(q[a] >= 0 && q[a] <= v->size[a])) return; /* outside the box: homogeneous values */
+        double g = q[a] / v->size[a] * dims[a] - 0.5;   /* cell-centred */
+        g = fmax(0.0, fmin((double)dims[a] - 1, g));
+        i0[a] = (int)floor(g);
+        i1[a] = i0[a] + 1 < dims[a] ? i0[a] + 1 : i0[a];
+        fr[a] = g - i0[a];
+    }
+    double val[SOAK_VOL_W + 1];
+    for (int ch = 0; ch <= SOAK_VOL_W; ++ch) {
+        const float *p = soak_volume_plane(v, ch);
+        double c00 = lerp(p[soak_volume_index(v, i0[0], i0[1], i0[2])], p[soak_volume_index(v, i1[0], i0[1], i0[2])], fr[0]);
+        double c10 = lerp(p[soak_volume_index(v, i0[0], i1[1], i0[2])], p[soak_volume_index(v, i1[0], i1[1], i0[2])], fr[0]);
+        double c01 = lerp(p[soak_volume_index(v, i0[0], i0[1], i1[2])], p[soak_volume_index(v, i1[0], i0[1], i1[2])], fr[0]);
+        double c11 = lerp(p[soak_volume_index(v, i0[0], i1[1], i1[2])], p[soak_volume_index(v, i1[0], i1[1], i1[2])], fr[0]);
+        val[ch] = lerp(lerp(c00, c10, fr[1]), lerp(c01, c11, fr[1]), fr[2]);
+    }
+    out->ss = soak_rgb3(val[SOAK_VOL_SIGMA_S_R], val[SOAK_VOL_SIGMA_S_G], val[SOAK_VOL_SIGMA_S_B]);
+    out->sa = soak_rgb3(val[SOAK_VOL_SIGMA_A_R], val[SOAK_VOL_SIGMA_A_G], val[SOAK_VOL_SIGMA_A_B]);
+    out->phase.g1 = val[SOAK_VOL_G1];
+    out->phase.g2 = val[SOAK_VOL_G2];
+    out->phase.w = val[SOAK_VOL_W];
+}
+
+/* Transmittance along a segment: exact when homogeneous, ratio tracking
+ * (Novak et al., CGF 37(2) 2018, sec. 5.1) against the majorant otherwise. */
+static soak_rgb transmittance(rt_thread *t, const soak_scene_medium *m, soak_vec3 x, soak_vec3 d, double dist)
+{
+    soak_rgb st = rgb_add(m->sigma_s, m->sigma_a);
+    if (!m->volume) return rgb_exp(st, dist);
+    soak_rgb T = soak_rgb3(1, 1, 1);
+    double mu = m->majorant, s = 0;
+    if (!(mu > 0)) return T;
+    for (;;) {
+        s += -log(1 - rt_rand(t)) / mu;
+        if (s >= dist) return T;
+        rt_med_point mp;
+        rt_medium_at(m, soak_v3_add(x, soak_v3_scale(d, s)), &mp);
+        T.r *= 1 - (mp.ss.r + mp.sa.r) / mu;
+        T.g *= 1 - (mp.ss.g + mp.sa.g) / mu;
+        T.b *= 1 - (mp.ss.b + mp.sa.b) / mu;
+        if (!(rgb_max(T) > 1e-12)) return soak_rgb3(0, 0, 0);
+    }
+}
+
+/* Crosses the layer stack. p = n sin(theta), the Snell invariant. start_low:
+ * the path starts in the material going up (else in air going down).
+ * Returns 1 if it ends in the material (going down), 0 in air (going up).
+ * Multiplies *beta by the film absorption. The radiance factors of the
+ * crossings multiply to 1/n3^2 (air -> material), n3^2 (material -> air) or
+ * 1 (back to the starting side) whatever happens in the film, so they are
+ * not applied here: the walk carries beta without the 1/n3^2 and the
+ * estimates gathered inside multiply by it instead (see medium_nee). That
+ * keeps the roulette from killing paths for a factor that is undone when
+ * they leave. */
+int rt_cross_stack(rt_thread *t, const rt_stack *s, double p, int start_low, soak_rgb *beta)
+{
+    int film = s->n2 != 1.0;
+    double cos_film = film ? sqrt(fmax(0.0, 1 - (p / s->n2) * (p / s->n2))) : 0;
+    int absorbing = film && s->h > 0 && rgb_max(s->alpha) > 0;
+    /* state: 0 at the top interface going down (from air) or up (from film);
+     * we track layer (0 air, 1 film, 2 material) and direction up/down. */
+    int layer = start_low ? 2 : 0, up = start_low;
+    for (int i = 0; i < RT_FILM_MAX_BOUNCES; ++i) {
+        if (layer == 0) { /* in air going down onto the film top (or the material if no film) */
+            if (film) {
+                double cos1 = sqrt(fmax(0.0, 1 - p * p));
+                if (rt_rand(t) < rt_fresnel(cos1, s->n2, NULL)) return 0;
+                if (absorbing) *beta = rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
+                layer = 1;
+                up = 0;
+            } else {
+                double cos1 = sqrt(fmax(0.0, 1 - p * p));
+                if (rt_rand(t) < pow(rt_fresnel(cos1, s->n3, NULL), s->k)) return 0;
+                return 1;
+            }
+        } else if (layer == 2) { /* in the material going up */
+            double cos3 = sqrt(fmax(0.0, 1 - (p / s->n3) * (p / s->n3)));
+            double nt = film ? s->n2 : 1.0;
+            double F = p >= nt ? 1.0 : rt_fresnel(cos3, nt / s->n3, NULL);
+            F = pow(F, s->k);
+            if (rt_rand(t) < F) return 1;
+            if (!film) return 0;
+            if (absorbing) *beta = rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
+            layer = 1;
+            up = 1;
+        } else if (up) { /* in the film going up to the air */
+            double F = p >= 1.0 ? 1.0 : rt_fresnel(cos_film, 1.0 / s->n2, NULL);
+            if (rt_rand(t) >= F) return 0;
+            if (absorbing) *beta = rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
+            up = 0;
+        } else { /* in the film going down to the material */
+            double F = pow(rt_fresnel(cos_film, s->n3 / s->n2, NULL), s->k);
+            if (rt_rand(t) >= F) return 1;
+            if (absorbing) *beta = rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
+            up = 1;
+        }
+    }
+    t->n.capped++;
+    *beta = soak_rgb3(0, 0, 0);
+    return 1;
+}
+
+/* Direction after crossing: tangential unit tdir, Snell invariant p, in
+ * medium of index n, along +n_out (up) or -n_out (down). */
+soak_vec3 rt_snell_dir(soak_vec3 tdir, soak_vec3 n_out, double p, double n, int up)
+{
+    double s = p / n, c = sqrt(fmax(0.0, 1 - s * s));
+    return soak_v3_norm(soak_v3_add(soak_v3_scale(tdir, s), soak_v3_scale(n_out, up ? c : -c)));
+}
+
+static double film_shadow(const soak_material *m, double cover, double cos1)
+{
+    /* Eq. 4 flux transmittance, averaged over wet (film) and dry points. */
+    double n3 = m->medium.ior, T_wet = 0, T_dry = 0;
+    soak_jensen_layer dry = {1.0, 1.0, n3, m->film_k};
+    soak_jensen_shadow(&dry, cos1, &T_dry);
+    if (cover > 0) {
+        soak_jensen_layer wet = {1.0, m->film_ior, n3, m->film_k};
+        soak_jensen_shadow(&wet, cos1, &T_wet);
+    }
+    return cover * T_wet + (1 - cover) * T_dry;
+}
+
+static void medium_nee(rt_thread *t, const soak_material *m, const soak_object *obj, const soak_scene_medium *med,
+                       soak_vec3 x, soak_vec3 d_in, const soak_hg2 *phase, soak_vec3 n_ref, rt_path *path)
+{
+    const soak_scene *s = t->ctx->scene;
+    double n3 = m->medium.ior;
+    for (int li = 0; li < s->n_lights; ++li) {
+        const soak_light *l = &s->lights[li];
+        if (l->type != SOAK_LIGHT_DIRECTIONAL && l->type != SOAK_LIGHT_POINT) continue;
+        soak_vec3 n = n_ref, wl = l->type == SOAK_LIGHT_DIRECTIONAL ? l->direction : soak_v3_norm(soak_v3_sub(l->position, x));
+        soak_hit h;
+        int found = 0;
+        soak_vec3 d3 = wl;
+        double cos1 = 0, cos3 = 0;
+        for (int it = 0; it < 2; ++it) {
+            cos1 = soak_v3_dot(wl, n);
+            if (!(cos1 > 0)) {
+                found = 0;
+                break;
+            }
+            soak_vec3 tang = soak_v3_scale(soak_v3_sub(wl, soak_v3_scale(n, cos1)), 1.0 / n3);
+            d3 = soak_v3_norm(soak_v3_add(tang, soak_v3_scale(n, sqrt(fmax(0.0, 1 - soak_v3_dot(tang, tang))))));
+            soak_ray r = {x, d3, 0.0, INFINITY};
+            t->n.rays++;
+            if (soak_geometry_intersect(s->geometry, &r, &h, &found) != SOAK_OK || !found) {
+                found = 0;
+                break;
+            }
+            soak_vec3 ny = soak_v3_dot(d3, h.ng) >= 0 ? h.ng : soak_v3_scale(h.ng, -1.0);
+            if (l->type == SOAK_LIGHT_POINT) wl = soak_v3_norm(soak_v3_sub(l->position, h.p));
+            int same = soak_v3_dot(ny, n) > 1 - 1e-12;
+            n = ny;
+            if (same && l->type == SOAK_LIGHT_DIRECTIONAL) break; /* planar face: exact */
+        }
+        if (found) {
+            cos1 = soak_v3_dot(wl, n);
+            cos3 = soak_v3_dot(d3, n);
+        }
+        if (!found || !(cos1 > 0) || !(cos3 > 0)) continue;
+        double dist_light = INFINITY;
+        soak_rgb E = l->value;
+        if (l->type == SOAK_LIGHT_POINT) {
+            soak_vec3 dl = soak_v3_sub(l->position, h.p);
+            double r2 = soak_v3_dot(dl, dl);
+            if (!(r2 > 0)) continue;
+            dist_light = sqrt(r2);
+            E = rgb_scale(E, 1.0 / r2);
+        }
+        double cover = soak_scene_wetness(obj, h.p, h.u, h.v) * m->film_coverage;
+        double Tf = film_shadow(m, cover, cos1);
+        if (!(Tf > 0)) continue;
+        double ph = phase->w * soak_hg_eval_raw(phase->g1, soak_v3_dot(d_in, d3)) +
+                    (1 - phase->w) * soak_hg_eval_raw(phase->g2, soak_v3_dot(d_in, d3));
+        soak_rgb Tm = transmittance(t, med, x, d3, h.t);
+        if (!(rgb_max(Tm) > 0)) continue;
+        if (!rt_visible(t, soak_geometry_offset(h.p, n, wl), wl, dist_light)) continue;
+        soak_rgb c = rgb_mul(rgb_mul(path->beta, Tm), E);
+        /* 1/n3^2: the radiance factor of entering, left out of beta (cross_stack). */
+        c = rgb_scale(c, ph * Tf * cos1 / (cos3 * n3 * n3));
+        if (cover > 0 && m->film_thickness > 0) {
+            /* Beer-Lambert in the film, weighted by the wet share of Tf. */
+            double cos2 = sqrt(fmax(0.0, 1 - (1 - cos1 * cos1) / (m->film_ior * m->film_ior)));
+            soak_jensen_layer wet = {1.0, m->film_ior, n3, m->film_k};
+            double Tw = 0;
+            soak_jensen_shadow(&wet, cos1, &Tw);
+            double share = cover * Tw / Tf;
+            soak_rgb a = rgb_exp(m->film_absorption, m->film_thickness / cos2);
+            c = soak_rgb3(c.r * (1 - share + share * a.r), c.g * (1 - share + share * a.g), c.b * (1 - share + share * a.b));
+        }
+        path->L = rgb_add(path->L, c);
+    }
+}
+
+void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, const soak_material *m, rt_path *path)
+{
+    const soak_scene *sc = t->ctx->scene;
+    soak_vec3 wo = soak_v3_scale(path->dir, -1.0);
+    soak_vec3 n_out = hit->ng;
+    if (!(soak_v3_dot(wo, n_out) > 0)) {
+        path->alive = 0; /* reached the inside of a medium object from air: open or overlapping geometry */
+        t->n.leaked++;
+        return;
+    }
+    double wet = soak_scene_wetness(obj, hit->p, hit->u, hit->v);
+    const soak_scene_medium *med = (!m->has_dry || rt_rand(t) < wet) ? &m->medium : &m->dry_medium;
+    double n3 = m->medium.ior;
+    rt_stack st = {rt_rand(t) < wet * m->film_coverage ? m->film_ior : 1.0, n3, m->film_k, m->film_absorption,
+                m->film_thickness};
+    double cos1 = soak_v3_dot(wo, n_out);
+    soak_vec3 tang = soak_v3_sub(path->dir, soak_v3_scale(n_out, -cos1));
+    double p = soak_v3_len(tang);
+    soak_vec3 tdir = p > 1e-12 ? soak_v3_scale(tang, 1.0 / p) : soak_v3(0, 0, 0);
+    if (!rt_cross_stack(t, &st, p, 0, &path->beta)) {
+        path->dir = rt_snell_dir(tdir, n_out, p, 1.0, 1);
+        path->org = soak_geometry_offset(hit->p, n_out, path->dir);
+        path->prev_delta = 1;
+        return;
+    }
+    soak_vec3 d = rt_snell_dir(tdir, n_out, p, n3, 0);
+    soak_vec3 x = hit->p, n_ref = n_out;
+    int on_surface = 1;
+    long events = 0;
+    double mu = med->majorant;
+    while (events < RT_MEDIUM_MAX_EVENTS) {
+        soak_ray r = {on_surface ? soak_geometry_offset(x, n_ref, d) : x, d, 0.0, INFINITY};
+        soak_hit h;
+        int found = 0;
+        t->n.rays++;
+        if (soak_geometry_intersect(sc->geometry, &r, &h, &found) != SOAK_OK || !found) {
+            t->n.leaked++;
+            path->alive = 0;
+            return;
+        }
+        double tb = h.t;
+        int scattered = 0;
+        x = r.org;
+        while (mu > 0 && events < RT_MEDIUM_MAX_EVENTS) {
+            double s = -log(1 - rt_rand(t)) / mu;
+            if (s >= tb) break;
+            tb -= s;
+            x = soak_v3_add(x, soak_v3_scale(d, s));
+            ++events;
+            rt_med_point mp;
+            rt_medium_at(med, x, &mp);
+            soak_rgb sn = soak_rgb3(mu - mp.ss.r - mp.sa.r, mu - mp.ss.g - mp.sa.g, mu - mp.ss.b - mp.sa.b);
+            soak_rgb bs = rgb_mul(path->beta, mp.ss), bn = rgb_mul(path->beta, sn);
+            double ps = rgb_max(bs), pn = fmax(0.0, rgb_max(bn));
+            if (!(ps + pn > 0)) {
+                path->alive = 0;
+                return;
+            }
+            double Ps = ps / (ps + pn);
+            if (rt_rand(t) < Ps) {
+                path->beta = rgb_scale(bs, 1.0 / (mu * Ps));
+                medium_nee(t, m, obj, med, x, d, &mp.phase, n_ref, path);
+                if (t->ctx->caustics) {
+                    /* Caustic in-scattering from the photon map: sigma_s L_s / sigma_s,
+                     * times 1/n3^2 like every estimate gathered inside. */
+                    soak_rgb g = rt_photons_gather(t->ctx->caustics, x, d, &mp.phase, hit->object_id);
+                    soak_rgb ls = soak_rgb3(mp.ss.r > 0 ? g.r / mp.ss.r : 0, mp.ss.g > 0 ? g.g / mp.ss.g : 0,
+                                            mp.ss.b > 0 ? g.b / mp.ss.b : 0);
+                    path->L = rgb_add(path->L, rgb_scale(rgb_mul(path->beta, ls), 1.0 / (n3 * n3)));
+                }
+                soak_vec3 nd;
+                double pdf;
+                if (soak_hg2_sample(&mp.phase, d, rt_rand(t), rt_rand(t), rt_rand(t), &nd, &pdf) != SOAK_OK) {
+                    path->alive = 0;
+                    return;
+                }
+                d = nd;
+                double q = fmin(1.0, rgb_max(path->beta));
+                if (q < 1.0) {
+                    if (rt_rand(t) >= q) {
+                        path->alive = 0;
+                        return;
+                    }
+                    path->beta = rgb_scale(path->beta, 1.0 / q);
+                }
+                scattered = 1;
+                break;
+            }
+            double Pn = 1 - Ps;
+            path->beta = soak_rgb3(bn.r / (mu * Pn), bn.g / (mu * Pn), bn.b / (mu * Pn));
+        }
+        if (scattered) {
+            on_surface = 0;
+            continue;
+        }
+        if (events >= RT_MEDIUM_MAX_EVENTS) break;
+        /* Boundary: cross the stack upward. */
+        ++events;
+        soak_vec3 ny = soak_v3_dot(d, h.ng) >= 0 ? h.ng : soak_v3_scale(h.ng, -1.0);
+        double cos3 = soak_v3_dot(d, ny);
+        soak_vec3 tg = soak_v3_sub(d, soak_v3_scale(ny, cos3));
+        double tl = soak_v3_len(tg);
+        soak_vec3 td = tl > 1e-12 ? soak_v3_scale(tg, 1.0 / tl) : soak_v3(0, 0, 0);
+        double pp = n3 * tl;
+        double cover = soak_scene_wetness(obj, h.p, h.u, h.v) * m->film_coverage;
+        rt_stack up = st;
+        up.n2 = rt_rand(t) < cover ? m->film_ior : 1.0;
+        x = h.p;
+        n_ref = ny;
+        on_surface = 1;
+        if (rt_cross_stack(t, &up, pp, 1, &path->beta)) {
+            d = rt_snell_dir(td, ny, pp, n3, 0);
+            continue;
+        }
+        path->dir = rt_snell_dir(td, ny, pp, 1.0, 1);
+        path->org = soak_geometry_offset(h.p, ny, path->dir);
+        path->prev_delta = 1;
+        return;
+    }
+    t->n.capped++;
+    path->alive = 0;
+}

@@ -1,0 +1,321 @@
+/* Volume photon map for caustics into wet media (Jensen & Christensen,
+ * "Efficient simulation of light transport in scenes with participating
+ * media using photon maps", SIGGRAPH 1998; used by seed 000 sec. 4.3 for the
+ * caustic of the cognac glass).
+ *
+ * Only the light a path tracer cannot reach is stored: photons leave the sun
+ * and point lights toward the bounding sphere of the dielectric objects,
+ * are refracted/reflected by them (at least one specular event), enter a wet
+ * medium through its film (soak/jensen.h layer stack) and are stored at
+ * their FIRST real scattering event, carrying the scattered flux. Direct
+ * light is left to next-event estimation and multiple scattering of the
+ * caustic light to the camera path's own walk, which gathers the map at
+ * every scattering vertex, so nothing is counted twice:
+ *     sigma_s L_s(x, w) ~ sum_p p(w_p, w) Phi_p / (4/3 pi r^3)
+ * (J&C 1998 eq. 8, our notation). The estimate is biased by the blur of
+ * radius r and consistent as r -> 0 with more photons. Sphere lights and the
+ * environment emit no photons (their caustics into media are missing). */
+#include <stdlib.h>
+
+#include "render_internal.h"
+#include "soak/hg.h"
+
+typedef struct photon_list {
+    rt_photon *p;
+    size_t n, cap;
+} photon_list;
+
+static int push(photon_list *l, soak_vec3 x, soak_vec3 d, soak_rgb power, unsigned obj)
+{
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? 2 * l->cap : 1024;
+        rt_photon *p = realloc(l->p, cap * sizeof *p);
+        if (!p) return 0;
+        l->p = p;
+        l->cap = cap;
+    }
+    rt_photon *ph = &l->p[l->n++];
+    ph->pos[0] = (float)x.x, ph->pos[1] = (float)x.y, ph->pos[2] = (float)x.z;
+    ph->dir[0] = (float)d.x, ph->dir[1] = (float)d.y, ph->dir[2] = (float)d.z;
+    ph->power[0] = (float)power.r, ph->power[1] = (float)power.g, ph->power[2] = (float)power.b;
+    ph->object_id = obj;
+    return 1;
+}
+
+/* Walk inside the medium of object obj until the first real scattering
+ * event (stored) or until the photon leaves. */
+static int walk_to_first_scatter(rt_thread *t, const soak_material *m, const soak_scene_medium *med, const rt_stack *st,
+                                 const soak_object *obj, soak_vec3 x, soak_vec3 d, soak_vec3 n_ref, soak_rgb power,
+                                 photon_list *out)
+{
+    const soak_scene *sc = t->ctx->scene;
+    double mu = med->majorant, n3 = m->medium.ior;
+    int on_surface = 1;
+    for (long events = 0; events < RT_MEDIUM_MAX_EVENTS;) {
+        soak_ray r = {on_surface ? soak_geometry_offset(x, n_ref, d) : x, d, 0.0, INFINITY};
+        soak_hit h;
+        int found = 0;
+        if (soak_geometry_intersect(sc->geometry, &r, &h, &found) != SOAK_OK || !found) return 1;
+        double tb = h.t;
+        x = r.org;
+        while (mu > 0) {
+            double s = -log(1 - rt_rand(t)) / mu;
+            if (s >= tb) break;
+            tb -= s;
+            x = soak_v3_add(x, soak_v3_scale(d, s));
+            ++events;
+            rt_med_point mp;
+            rt_medium_at(med, x, &mp);
+            soak_rgb sn = soak_rgb3(mu - mp.ss.r - mp.sa.r, mu - mp.ss.g - mp.sa.g, mu - mp.ss.b - mp.sa.b);
+            soak_rgb bs = rgb_mul(power, mp.ss), bn = rgb_mul(power, sn);
+            double ps = rgb_max(bs), pn = fmax(0.0, rgb_max(bn));
+            if (!(ps + pn > 0)) return 1;
+            double Ps = ps / (ps + pn);
+            if (rt_rand(t) < Ps) return push(out, x, d, rgb_scale(bs, 1.0 / (mu * Ps)), obj->object_id);
+            power = rgb_scale(bn, 1.0 / (mu * (1 - Ps)));
+        }
+        ++events;
+        soak_vec3 ny = soak_v3_dot(d, h.ng) >= 0 ? h.ng : soak_v3_scale(h.ng, -1.0);
+        double cos3 = soak_v3_dot(d, ny);
+        soak_vec3 tg = soak_v3_sub(d, soak_v3_scale(ny, cos3));
+        double tl = soak_v3_len(tg), pp = n3 * tl;
+        soak_vec3 td = tl > 1e-12 ? soak_v3_scale(tg, 1.0 / tl) : soak_v3(0, 0, 0);
+        rt_stack up = *st;
+        up.n2 = rt_rand(t) < soak_scene_wetness(obj, h.p, h.u, h.v) * m->film_coverage ? m->film_ior : 1.0;
+        if (!rt_cross_stack(t, &up, pp, 1, &power)) return 1; /* left the medium */
+        d = rt_snell_dir(td, ny, pp, n3, 0);
+        x = h.p;
+        n_ref = ny;
+        on_surface = 1;
+    }
+    return 1;
+}
+
+static int trace_photon(rt_thread *t, soak_vec3 org, soak_vec3 dir, soak_rgb power, photon_list *out)
+{
+    const soak_scene *sc = t->ctx->scene;
+    int specular = 0, inside = 0;
+    soak_rgb absorb = soak_rgb3(0, 0, 0);
+    for (int bounce = 0; bounce < 64; ++bounce) {
+        soak_ray r = {org, dir, 0.0, INFINITY};
+        soak_hit h;
+        int found = 0;
+        if (soak_geometry_intersect(sc->geometry, &r, &h, &found) != SOAK_OK || !found) return 1;
+        if (inside) power = rgb_mul(power, rgb_exp(absorb, h.t));
+        const soak_object *obj = &sc->objects[h.object_id];
+        const soak_material *m = &sc->materials[obj->material];
+        if (m->type == SOAK_MAT_DIELECTRIC) {
+            soak_vec3 wo = soak_v3_scale(dir, -1.0);
+            int entering = soak_v3_dot(wo, h.ng) > 0;
+            soak_vec3 n = entering ? h.ng : soak_v3_scale(h.ng, -1.0);
+            double eta = entering ? m->ior : 1.0 / m->ior, cos_i = soak_v3_dot(wo, n), cos_t;
+            double F = rt_fresnel(cos_i, eta, &cos_t);
+            if (rt_rand(t) < F) {
+                dir = soak_v3_sub(soak_v3_scale(n, 2 * cos_i), wo);
+            } else {
+                dir = soak_v3_norm(soak_v3_add(soak_v3_scale(wo, -1.0 / eta), soak_v3_scale(n, cos_i / eta - cos_t)));
+                inside = entering;
+                absorb = m->absorption;
+            }
+            org = soak_geometry_offset(h.p, h.ng, dir);
+            specular = 1;
+            continue;
+        }
+        if (!specular || m->type != SOAK_MAT_WET || m->base != SOAK_BASE_MEDIUM) return 1;
+        soak_vec3 n_out = h.ng;
+        double cos1 = -soak_v3_dot(dir, n_out);
+        if (!(cos1 > 0)) return 1;
+        double wet = soak_scene_wetness(obj, h.p, h.u, h.v);
+        const soak_scene_medium *med = (!m->has_dry || rt_rand(t) < wet) ? &m->medium : &m->dry_medium;
+        rt_stack st = {rt_rand(t) < wet * m->film_coverage ? m->film_ior : 1.0, m->medium.ior, m->film_k,
+                       m->film_absorption, m->film_thickness};
+        soak_vec3 tang = soak_v3_add(dir, soak_v3_scale(n_out, cos1));
+        double p = soak_v3_len(tang);
+        soak_vec3 tdir = p > 1e-12 ? soak_v3_scale(tang, 1.0 / p) : soak_v3(0, 0, 0);
+        if (!rt_cross_stack(t, &st, p, 0, &power)) {
+            dir = rt_snell_dir(tdir, n_out, p, 1.0, 1); /* reflected by the film: still a caustic path */
+            org = soak_geometry_offset(h.p, n_out, dir);
+            continue;
+        }
+        return walk_to_first_scatter(t, m, med, &st, obj, h.p, rt_snell_dir(tdir, n_out, p, m->medium.ior, 0), n_out,
+                                     power, out);
+    }
+    return 1;
+}
+
+static double luminance(soak_rgb c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+static uint32_t cell_hash(int64_t x, int64_t y, int64_t z, size_t mask)
+{
+    uint64_t h = (uint64_t)x * 73856093ull ^ (uint64_t)y * 19349663ull ^ (uint64_t)z * 83492791ull;
+    h ^= h >> 29;
+    return (uint32_t)(h & mask);
+}
+
+static void cell_of(const rt_photon_map *m, soak_vec3 x, int64_t c[3])
+{
+    c[0] = (int64_t)floor(x.x / m->radius);
+    c[1] = (int64_t)floor(x.y / m->radius);
+    c[2] = (int64_t)floor(x.z / m->radius);
+}
+
+soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed, rt_photon_map *map)
+{
+    memset(map, 0, sizeof *map);
+    map->radius = radius;
+    const soak_scene *sc = c->scene;
+    if (n <= 0 || !(radius > 0)) return SOAK_OK;
+    soak_vec3 lo = soak_v3(INFINITY, INFINITY, INFINITY), hi = soak_v3(-INFINITY, -INFINITY, -INFINITY);
+    int any = 0;
+    for (int i = 0; i < sc->n_objects; ++i) {
+        if (sc->materials[sc->objects[i].material].type != SOAK_MAT_DIELECTRIC) continue;
+        soak_vec3 a, b;
+        if (soak_geometry_object_bounds(sc->geometry, sc->objects[i].object_id, &a, &b) != SOAK_OK) continue;
+        lo = soak_v3(fmin(lo.x, a.x), fmin(lo.y, a.y), fmin(lo.z, a.z));
+        hi = soak_v3(fmax(hi.x, b.x), fmax(hi.y, b.y), fmax(hi.z, b.z));
+        any = 1;
+    }
+    if (!any) return SOAK_OK;
+    soak_vec3 center = soak_v3_scale(soak_v3_add(lo, hi), 0.5);
+    double R = 0.5 * soak_v3_len(soak_v3_sub(hi, lo)) * 1.001 + 1e-9;
+    soak_vec3 slo, shi;
+    double far = 4 * R;
+    if (soak_geometry_bounds(sc->geometry, &slo, &shi) == SOAK_OK) far += soak_v3_len(soak_v3_sub(shi, slo));
+    /* Flux each light sends toward the dielectrics' bounding sphere. */
+    double *flux = calloc((size_t)sc->n_lights + 1, sizeof(double)), total = 0;
+    if (!flux) return SOAK_ERR_NOMEM;
+    for (int i = 0; i < sc->n_lights; ++i) {
+        const soak_light *l = &sc->lights[i];
+        if (l->type == SOAK_LIGHT_DIRECTIONAL) {
+            flux[i] = luminance(l->value) * SOAK_PI * R * R;
+        } else if (l->type == SOAK_LIGHT_POINT) {
+            double d = soak_v3_len(soak_v3_sub(center, l->position));
+            double omega = d > R ? 2 * SOAK_PI * (R * R / (d * d)) / (1 + sqrt(1 - R * R / (d * d))) : 4 * SOAK_PI;
+            flux[i] = luminance(l->value) * omega;
+        }
+        total += flux[i];
+    }
+    if (!(total > 0)) {
+        free(flux);
+        return SOAK_OK;
+    }
+    rt_thread t;
+    memset(&t, 0, sizeof t);
+    t.ctx = c;
+    photon_list list = {0};
+    int ok = 1;
+    for (long long i = 0; i < n && ok; ++i) {
+        soak_rng_seed(&t.rng, seed ^ 0x5bd1e9955bd1e995ull, (uint64_t)i);
+        double u = rt_rand(&t) * total, acc = 0;
+        int li = 0;
+        while (li < sc->n_lights - 1 && acc + flux[li] <= u) acc += flux[li++];
+        const soak_light *l = &sc->lights[li];
+        double prob = flux[li] / total;
+        if (!(prob > 0)) continue;
+        soak_vec3 org, dir;
+        soak_rgb power;
+        if (l->type == SOAK_LIGHT_DIRECTIONAL) {
+            rt_frame f = rt_frame_make(l->direction);
+            double rr = R * sqrt(rt_rand(&t)), phi = 2 * SOAK_PI * rt_rand(&t);
+            org = soak_v3_add(center, rt_to_world(&f, soak_v3(rr * cos(phi), rr * sin(phi), far)));
+            dir = soak_v3_scale(l->direction, -1.0);
+            power = rgb_scale(l->value, SOAK_PI * R * R / (n * prob));
+        } else {
+            soak_vec3 to = soak_v3_sub(center, l->position);
+            double d = soak_v3_len(to);
+            double s2 = d > R ? R * R / (d * d) : 1.0;
+            double one_minus = d > R ? s2 / (1 + sqrt(1 - s2)) : 2.0; /* 1 - cos(theta_max) */
+            double ct = 1 - rt_rand(&t) * one_minus, st = sqrt(fmax(0.0, 1 - ct * ct)), phi = 2 * SOAK_PI * rt_rand(&t);
+            rt_frame f = rt_frame_make(d > 0 ? soak_v3_scale(to, 1.0 / d) : soak_v3(0, 0, 1));
+            dir = soak_v3_norm(rt_to_world(&f, soak_v3(st * cos(phi), st * sin(phi), ct)));
+            org = l->position;
+            power = rgb_scale(l->value, 2 * SOAK_PI * one_minus / (n * prob));
+        }
+        ok = trace_photon(&t, org, dir, power, &list);
+    }
+    free(flux);
+    if (!ok) {
+        free(list.p);
+        return SOAK_ERR_NOMEM;
+    }
+    map->emitted = n;
+    if (list.n == 0) {
+        free(list.p);
+        return SOAK_OK;
+    }
+    /* Hash grid with cells of the gather radius, photons sorted by cell. */
+    size_t cells = 1;
+    while (cells < 2 * list.n) cells *= 2;
+    map->n_cells = cells;
+    map->cell_start = calloc(cells + 1, sizeof(uint32_t));
+    map->photons = malloc(list.n * sizeof(rt_photon));
+    uint32_t *slot = malloc(list.n * sizeof(uint32_t));
+    if (!map->cell_start || !map->photons || !slot || list.n >= 0xFFFFFFFFu) {
+        free(slot);
+        free(list.p);
+        rt_photons_free(map);
+        return SOAK_ERR_NOMEM;
+    }
+    for (size_t i = 0; i < list.n; ++i) {
+        int64_t cc[3];
+        cell_of(map, soak_v3(list.p[i].pos[0], list.p[i].pos[1], list.p[i].pos[2]), cc);
+        slot[i] = cell_hash(cc[0], cc[1], cc[2], cells - 1);
+        map->cell_start[slot[i] + 1]++;
+    }
+    for (size_t k = 0; k < cells; ++k) map->cell_start[k + 1] += map->cell_start[k];
+    uint32_t *fill = calloc(cells, sizeof(uint32_t));
+    if (!fill) {
+        free(slot);
+        free(list.p);
+        rt_photons_free(map);
+        return SOAK_ERR_NOMEM;
+    }
+    for (size_t i = 0; i < list.n; ++i) map->photons[map->cell_start[slot[i]] + fill[slot[i]]++] = list.p[i];
+    map->n = list.n;
+    free(fill);
+    free(slot);
+    free(list.p);
+    return SOAK_OK;
+}
+
+void rt_photons_free(rt_photon_map *map)
+{
+    free(map->photons);
+    free(map->cell_start);
+    memset(map, 0, sizeof *map);
+}
+
+soak_rgb rt_photons_gather(const rt_photon_map *map, soak_vec3 x, soak_vec3 d_in, const soak_hg2 *phase, unsigned obj)
+{
+    soak_rgb sum = soak_rgb3(0, 0, 0);
+    if (!map || map->n == 0) return sum;
+    int64_t c[3];
+    cell_of(map, x, c);
+    uint32_t seen[27];
+    int n_seen = 0;
+    double r2 = map->radius * map->radius;
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                uint32_t h = cell_hash(c[0] + dx, c[1] + dy, c[2] + dz, map->n_cells - 1);
+                int dup = 0;
+                for (int k = 0; k < n_seen && !dup; ++k) dup = seen[k] == h;
+                if (dup) continue; /* two neighbour cells hashed to one bucket */
+                seen[n_seen++] = h;
+                for (uint32_t i = map->cell_start[h]; i < map->cell_start[h + 1]; ++i) {
+                    const rt_photon *p = &map->photons[i];
+                    if (p->object_id != obj) continue;
+                    double ex = p->pos[0] - x.x, ey = p->pos[1] - x.y, ez = p->pos[2] - x.z;
+                    if (ex * ex + ey * ey + ez * ez > r2) continue;
+                    /* Light propagating along w_p scattered into -d_in (toward the camera). */
+                    double cosang = -(p->dir[0] * d_in.x + p->dir[1] * d_in.y + p->dir[2] * d_in.z);
+                    double ph = phase->w * soak_hg_eval_raw(phase->g1, cosang) +
+                                (1 - phase->w) * soak_hg_eval_raw(phase->g2, cosang);
+                    sum.r += ph * p->power[0];
+                    sum.g += ph * p->power[1];
+                    sum.b += ph * p->power[2];
+                }
+            }
+    double vol = 4.0 / 3.0 * SOAK_PI * r2 * map->radius;
+    return rgb_scale(sum, 1.0 / vol);
+}

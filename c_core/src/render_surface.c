@@ -1,0 +1,270 @@
+/* Surface interactions of the path tracer.
+ *
+ * Opaque materials (lambert, conductor, and the wet film over a lambert or
+ * GGX base) share one routine: a smooth liquid film of index n2 over an
+ * opaque base, traced explicitly (Lekner & Dorf 1988 as used in seed 000
+ * sec. 2.1 / 3.1): reflect at the film top with Fresnel probability
+ * F12(cos1) (delta lobe); otherwise refract into the film, scatter off the
+ * base, and at the underside leave with probability 1 - F21 or be reflected
+ * back down (total internal reflection beyond the critical angle). A bare
+ * material is the same routine with n2 = 1 (no interface, F = 0).
+ *
+ * Radiance across the smooth interface: a camera path entering a medium of
+ * index n from air gets the factor 1/n^2 and n^2 when it leaves (radiance /
+ * n^2 is invariant; the corrected factor of seed 000 Eq. 1/2, see
+ * soak/jensen.h). The two cancel for a path that leaves, so beta carries
+ * neither while in the film (the roulette then does not kill paths for a
+ * factor that is undone later), and the estimates gathered in the film carry
+ * the 1/n^2 explicitly. Next-event estimation at the base: the base receives
+ * E = (1 - F12(cos1)) L cos1 dw1 from a light seen at cos1 in air, so the
+ * radiance it sends back is f_base E, which reaches the camera as
+ *   beta * (1/n2^2) * f_base(w2_light, w_up) * (1 - F12) * e^{-a h / cos2} * cos1 * L / pdf_light. The competing BSDF strategy (leave the film and hit
+ * the light) has, in air solid angle,
+ *   pdf = pdf_base(w2) * (1 - F21(cos2)) * (1/n2)^2 * cos1 / cos2,
+ * the Jacobian of Snell's map dw2/dw1 = (n1/n2)^2 cos1/cos2; the two are
+ * combined with the power heuristic. */
+#include "render_internal.h"
+#include "soak/fresnel.h"
+#include "soak/ggx.h"
+
+double rt_fresnel(double cos_i, double eta, double *cos_t)
+{
+    double ct = 0;
+    if (eta == 1.0) {
+        if (cos_t) *cos_t = cos_i;
+        return 0.0;
+    }
+    double F = soak_fresnel_dielectric_raw(fmin(1.0, fmax(0.0, cos_i)), eta, &ct);
+    if (cos_t) *cos_t = ct;
+    return F;
+}
+
+typedef struct base_model {
+    soak_base_type type;
+    soak_rgb albedo;
+    soak_rgb eta, k; /* relative to the film */
+    double alpha;
+} base_model;
+
+/* f (1/sr) of the base for local directions wi, wo (z > 0). */
+static soak_rgb base_eval(const base_model *b, soak_vec3 wi, soak_vec3 wo)
+{
+    if (!(wi.z > 0 && wo.z > 0)) return soak_rgb3(0, 0, 0);
+    if (b->type == SOAK_BASE_LAMBERT) return rgb_scale(b->albedo, SOAK_INV_PI);
+    return soak_rgb3(soak_ggx_brdf_conductor_raw(b->alpha, b->eta.r, b->k.r, wi, wo),
+                     soak_ggx_brdf_conductor_raw(b->alpha, b->eta.g, b->k.g, wi, wo),
+                     soak_ggx_brdf_conductor_raw(b->alpha, b->eta.b, b->k.b, wi, wo));
+}
+
+static double base_pdf(const base_model *b, soak_vec3 wi, soak_vec3 wo)
+{
+    if (!(wi.z > 0 && wo.z > 0)) return 0;
+    if (b->type == SOAK_BASE_LAMBERT) return wi.z * SOAK_INV_PI;
+    soak_vec3 h = soak_ggx_half_raw(wi, wo);
+    double pdf_h = 0;
+    if (soak_ggx_pdf_vndf(b->alpha, wo, h, &pdf_h) != SOAK_OK) return 0;
+    double oh = soak_v3_dot(wo, h);
+    return oh > 0 ? pdf_h / (4 * oh) : 0;
+}
+
+/* Samples wi for wo; returns 0 on failure. *weight = f cos / pdf. */
+static int base_sample(rt_thread *t, const base_model *b, soak_vec3 wo, soak_vec3 *wi, soak_rgb *weight, double *pdf)
+{
+    if (b->type == SOAK_BASE_LAMBERT) {
+        double u1 = rt_rand(t), u2 = rt_rand(t);
+        double r = sqrt(u1), phi = 2 * SOAK_PI * u2;
+        *wi = soak_v3(r * cos(phi), r * sin(phi), sqrt(fmax(0.0, 1 - u1)));
+        *pdf = wi->z * SOAK_INV_PI;
+        *weight = b->albedo;
+        return *pdf > 0;
+    }
+    soak_vec3 h;
+    double pdf_h;
+    if (soak_ggx_sample_vndf(b->alpha, wo, rt_rand(t), rt_rand(t), &h, &pdf_h) != SOAK_OK) return 0;
+    double oh = soak_v3_dot(wo, h);
+    *wi = soak_v3_sub(soak_v3_scale(h, 2 * oh), wo);
+    if (!(wi->z > 0) || !(oh > 0) || !(pdf_h > 0)) return 0;
+    *wi = soak_v3_norm(*wi);
+    *pdf = pdf_h / (4 * oh);
+    *weight = rgb_scale(base_eval(b, *wi, wo), wi->z / *pdf);
+    return 1;
+}
+
+static void opaque(rt_thread *t, const soak_hit *hit, const base_model *base, double n2, soak_rgb film_alpha,
+                   double film_h, rt_path *path)
+{
+    const rt_ctx *c = t->ctx;
+    soak_vec3 wo = soak_v3_scale(path->dir, -1.0);
+    soak_vec3 ng = soak_v3_dot(wo, hit->ng) >= 0 ? hit->ng : soak_v3_scale(hit->ng, -1.0);
+    soak_vec3 ns = soak_v3_dot(hit->ns, ng) >= 0 ? hit->ns : soak_v3_scale(hit->ns, -1.0);
+    if (soak_v3_dot(wo, ns) <= 1e-9) ns = ng; /* shading normal facing away from the viewer */
+    rt_frame f = rt_frame_make(ns);
+    soak_vec3 wl = rt_to_local(&f, wo);
+    double cos1 = wl.z;
+    if (!(cos1 > 0)) {
+        path->alive = 0;
+        return;
+    }
+    int film = n2 != 1.0;
+    int absorbing = film && film_h > 0 && rgb_max(film_alpha) > 0;
+    soak_vec3 d; /* propagation direction in the film (local), going down */
+    if (film) {
+        double cos2;
+        double F = rt_fresnel(cos1, n2, &cos2);
+        if (rt_rand(t) < F) {
+            soak_vec3 r = soak_v3(-wl.x, -wl.y, wl.z);
+            path->dir = rt_to_world(&f, r);
+            if (soak_v3_dot(path->dir, ng) <= 0) path->dir = soak_v3_sub(path->dir, soak_v3_scale(ng, 2 * soak_v3_dot(path->dir, ng)));
+            path->org = soak_geometry_offset(hit->p, ng, path->dir);
+            path->prev_delta = 1;
+            return;
+        }
+        d = soak_v3(-wl.x / n2, -wl.y / n2, -cos2);
+        if (absorbing) path->beta = rgb_mul(path->beta, rgb_exp(film_alpha, film_h / cos2));
+    } else {
+        d = soak_v3(-wl.x, -wl.y, -wl.z);
+    }
+    soak_vec3 p_out = soak_geometry_offset(hit->p, ng, ng);
+    int nl = rt_light_count(c);
+    for (int bounce = 0; bounce < RT_FILM_MAX_BOUNCES; ++bounce) {
+        soak_vec3 w_up = soak_v3(-d.x, -d.y, -d.z);
+        /* Next-event estimation at the base, through the film. */
+        for (int li = 0; li < nl; ++li) {
+            rt_light_sample ls;
+            if (!rt_light_sample_at(t, li, p_out, &ls)) continue;
+            if (soak_v3_dot(ls.wi, ng) <= 0) continue;
+            soak_vec3 l1 = rt_to_local(&f, ls.wi);
+            if (!(l1.z > 0)) continue;
+            double cos2l = l1.z, T = 1.0;
+            soak_vec3 l2 = l1;
+            if (film) {
+                T = 1.0 - rt_fresnel(l1.z, n2, &cos2l);
+                l2 = soak_v3(l1.x / n2, l1.y / n2, cos2l);
+            }
+            soak_rgb fb = base_eval(base, l2, w_up);
+            if (!(rgb_max(fb) > 0) || !(T > 0)) continue;
+            double mis = 1.0;
+            if (ls.pdf > 0) {
+                double pb = base_pdf(base, l2, w_up) * T * (film ? l1.z / (n2 * n2 * cos2l) : 1.0);
+                mis = rt_power(ls.pdf, pb);
+            }
+            if (!rt_visible(t, p_out, ls.wi, ls.dist)) continue;
+            soak_rgb contrib = rgb_scale(rgb_mul(path->beta, rgb_mul(fb, ls.L)),
+                                         T * l1.z * mis / ((ls.pdf > 0 ? ls.pdf : 1.0) * n2 * n2));
+            if (absorbing) contrib = rgb_mul(contrib, rgb_exp(film_alpha, film_h / cos2l));
+            path->L = rgb_add(path->L, contrib);
+        }
+        soak_vec3 wi;
+        soak_rgb weight;
+        double pdf;
+        if (!base_sample(t, base, w_up, &wi, &weight, &pdf)) {
+            path->alive = 0;
+            return;
+        }
+        path->beta = rgb_mul(path->beta, weight);
+        soak_vec3 out = wi;
+        double pdf_air = pdf;
+        if (film) {
+            if (absorbing) path->beta = rgb_mul(path->beta, rgb_exp(film_alpha, film_h / wi.z));
+            double cos_air;
+            double F = rt_fresnel(wi.z, 1.0 / n2, &cos_air);
+            if (rt_rand(t) < F) {
+                d = soak_v3(wi.x, wi.y, -wi.z);
+                if (absorbing) path->beta = rgb_mul(path->beta, rgb_exp(film_alpha, film_h / wi.z));
+                /* Roulette inside the film keeps absorbing bases from looping. */
+                double q = fmin(1.0, rgb_max(path->beta));
+                if (q < 1.0) {
+                    if (rt_rand(t) >= q) {
+                        path->alive = 0;
+                        return;
+                    }
+                    path->beta = rgb_scale(path->beta, 1.0 / q);
+                }
+                continue;
+            }
+            out = soak_v3(wi.x * n2, wi.y * n2, cos_air);
+            pdf_air = pdf * (1.0 - F) * cos_air / (n2 * n2 * wi.z);
+        }
+        path->dir = soak_v3_norm(rt_to_world(&f, out));
+        if (soak_v3_dot(path->dir, ng) <= 0) {
+            path->alive = 0; /* below the geometric surface: shading-normal artefact */
+            return;
+        }
+        path->org = soak_geometry_offset(hit->p, ng, path->dir);
+        path->prev_pdf = pdf_air;
+        path->prev_delta = 0;
+        path->prev_pos = hit->p;
+        return;
+    }
+    t->n.capped++;
+    path->alive = 0;
+}
+
+/* Smooth dielectric (glass, liquid): Fresnel choice between mirror
+ * reflection and refraction; Beer-Lambert absorption inside is applied by
+ * the path loop over each segment travelled while inside. */
+static void dielectric(rt_thread *t, const soak_hit *hit, const soak_material *m, rt_path *path)
+{
+    soak_vec3 wo = soak_v3_scale(path->dir, -1.0);
+    int entering = soak_v3_dot(wo, hit->ng) > 0;
+    soak_vec3 n = entering ? hit->ng : soak_v3_scale(hit->ng, -1.0);
+    double eta = entering ? m->ior : 1.0 / m->ior;
+    double cos_i = soak_v3_dot(wo, n), cos_t;
+    double F = rt_fresnel(cos_i, eta, &cos_t);
+    if (rt_rand(t) < F) {
+        path->dir = soak_v3_sub(soak_v3_scale(n, 2 * cos_i), wo);
+    } else {
+        path->dir = soak_v3_norm(soak_v3_add(soak_v3_scale(wo, -1.0 / eta), soak_v3_scale(n, cos_i / eta - cos_t)));
+        path->beta = rgb_scale(path->beta, 1.0 / (eta * eta));
+        path->inside = entering;
+        path->absorb = m->absorption;
+    }
+    path->org = soak_geometry_offset(hit->p, hit->ng, path->dir);
+    path->prev_delta = 1;
+}
+
+void rt_surface(rt_thread *t, const soak_hit *hit, rt_path *path)
+{
+    const soak_scene *s = t->ctx->scene;
+    const soak_object *obj = &s->objects[hit->object_id];
+    const soak_material *m = &s->materials[obj->material];
+    base_model b;
+    memset(&b, 0, sizeof b);
+    soak_rgb no_alpha = soak_rgb3(0, 0, 0);
+    switch (m->type) {
+    case SOAK_MAT_LAMBERT:
+        b.type = SOAK_BASE_LAMBERT;
+        b.albedo = m->albedo;
+        opaque(t, hit, &b, 1.0, no_alpha, 0, path);
+        return;
+    case SOAK_MAT_CONDUCTOR:
+        b.type = SOAK_BASE_GGX;
+        b.eta = m->eta;
+        b.k = m->k;
+        b.alpha = m->alpha;
+        opaque(t, hit, &b, 1.0, no_alpha, 0, path);
+        return;
+    case SOAK_MAT_DIELECTRIC:
+        dielectric(t, hit, m, path);
+        return;
+    case SOAK_MAT_WET: {
+        if (m->base == SOAK_BASE_MEDIUM) {
+            rt_wet_medium(t, hit, obj, m, path);
+            return;
+        }
+        double w = soak_scene_wetness(obj, hit->p, hit->u, hit->v) * m->film_coverage;
+        double n2 = rt_rand(t) < w ? m->film_ior : 1.0;
+        b.type = m->base;
+        b.albedo = m->albedo;
+        b.alpha = m->alpha;
+        /* The base sits in the liquid: its index is relative to the film. */
+        b.eta = rgb_scale(m->eta, 1.0 / n2);
+        b.k = rgb_scale(m->k, 1.0 / n2);
+        opaque(t, hit, &b, n2, m->film_absorption, m->film_thickness, path);
+        return;
+    }
+    case SOAK_MAT_EMITTER:
+        path->alive = 0;
+        return;
+    }
+}

@@ -1,0 +1,635 @@
+/* JSON scene reader (format: scenes/README.md): render settings, camera,
+ * environment, lights and objects. Materials and wetness: scene_material.c. */
+#define _POSIX_C_SOURCE 200809L
+#include "soak/scene.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene_json.h"
+
+soak_status sj_fail(scene_ctx *c, soak_status status, const char *path, const char *fmt, ...)
+{
+    if (c->err && c->errlen) {
+        int n = snprintf(c->err, c->errlen, "%s: %s: ", c->name, path);
+        if (n >= 0 && (size_t)n < c->errlen) {
+            va_list ap;
+            va_start(ap, fmt);
+            vsnprintf(c->err + n, c->errlen - (size_t)n, fmt, ap);
+            va_end(ap);
+        }
+    }
+    return status;
+}
+
+void sj_path(char *buf, size_t n, const char *parent, const char *key)
+{
+    snprintf(buf, n, "%s%s%s", parent, parent[0] ? "." : "", key);
+}
+
+void sj_index(char *buf, size_t n, const char *parent, int i) { snprintf(buf, n, "%s[%d]", parent, i); }
+
+soak_status sj_keys(scene_ctx *c, const cJSON *obj, const char *path, const char *const *allowed)
+{
+    if (!cJSON_IsObject(obj)) return sj_fail(c, SOAK_ERR_PARSE, path, "must be a JSON object");
+    for (const cJSON *it = obj->child; it; it = it->next) {
+        int ok = 0;
+        for (const char *const *a = allowed; *a && !ok; ++a) ok = strcmp(*a, it->string) == 0;
+        if (!ok) {
+            char p[512];
+            sj_path(p, sizeof p, path, it->string);
+            char list[512] = "";
+            for (const char *const *a = allowed; *a; ++a) {
+                strncat(list, *a, sizeof list - strlen(list) - 1);
+                if (a[1]) strncat(list, ", ", sizeof list - strlen(list) - 1);
+            }
+            return sj_fail(c, SOAK_ERR_PARSE, p, "unknown key (accepted: %s)", list);
+        }
+    }
+    return SOAK_OK;
+}
+
+static soak_status num_value(scene_ctx *c, const cJSON *v, const char *path, double lo, double hi, int strict_lo,
+                             double *out)
+{
+    if (!cJSON_IsNumber(v)) return sj_fail(c, SOAK_ERR_PARSE, path, "must be a number");
+    double x = v->valuedouble;
+    if (!soak_is_finite(x)) return sj_fail(c, SOAK_ERR_ARG, path, "must be a finite number");
+    if (!soak_in_range(x, lo, hi) || (strict_lo && !(x > lo))) {
+        if (strict_lo)
+            return sj_fail(c, SOAK_ERR_ARG, path, "must be > %g and <= %g, got %g", lo, hi, x);
+        return sj_fail(c, SOAK_ERR_ARG, path, "must be in [%g, %g], got %g", lo, hi, x);
+    }
+    *out = x;
+    return SOAK_OK;
+}
+
+static soak_status num_impl(scene_ctx *c, const cJSON *obj, const char *key, const char *path, double lo, double hi,
+                            int required, double def, int strict, double *out)
+{
+    char p[512];
+    sj_path(p, sizeof p, path, key);
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (!v) {
+        if (required) return sj_fail(c, SOAK_ERR_PARSE, p, "missing (required)");
+        *out = def;
+        return SOAK_OK;
+    }
+    return num_value(c, v, p, lo, hi, strict, out);
+}
+
+soak_status sj_num(scene_ctx *c, const cJSON *obj, const char *key, const char *path, double lo, double hi,
+                   int required, double def, double *out)
+{
+    return num_impl(c, obj, key, path, lo, hi, required, def, 0, out);
+}
+
+soak_status sj_num_gt(scene_ctx *c, const cJSON *obj, const char *key, const char *path, double lo, double hi,
+                      int required, double def, double *out)
+{
+    return num_impl(c, obj, key, path, lo, hi, required, def, 1, out);
+}
+
+static soak_status triple(scene_ctx *c, const cJSON *v, const char *p, double lo, double hi, double out[3])
+{
+    if (!cJSON_IsArray(v) || cJSON_GetArraySize(v) != 3)
+        return sj_fail(c, SOAK_ERR_PARSE, p, "must be an array of 3 numbers");
+    for (int i = 0; i < 3; ++i) {
+        char pi[520];
+        sj_index(pi, sizeof pi, p, i);
+        soak_status st = num_value(c, cJSON_GetArrayItem(v, i), pi, lo, hi, 0, &out[i]);
+        if (st != SOAK_OK) return st;
+    }
+    return SOAK_OK;
+}
+
+soak_status sj_vec3(scene_ctx *c, const cJSON *obj, const char *key, const char *path, int required, soak_vec3 def,
+                    soak_vec3 *out)
+{
+    char p[512];
+    sj_path(p, sizeof p, path, key);
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (!v) {
+        if (required) return sj_fail(c, SOAK_ERR_PARSE, p, "missing (required)");
+        *out = def;
+        return SOAK_OK;
+    }
+    double t[3];
+    soak_status st = triple(c, v, p, -1e12, 1e12, t);
+    if (st == SOAK_OK) *out = soak_v3(t[0], t[1], t[2]);
+    return st;
+}
+
+soak_status sj_rgb(scene_ctx *c, const cJSON *obj, const char *key, const char *path, double lo, double hi,
+                   int required, soak_rgb def, soak_rgb *out)
+{
+    char p[512];
+    sj_path(p, sizeof p, path, key);
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    if (!v) {
+        if (required) return sj_fail(c, SOAK_ERR_PARSE, p, "missing (required)");
+        *out = def;
+        return SOAK_OK;
+    }
+    if (cJSON_IsNumber(v)) {
+        double x = 0;
+        soak_status st = num_value(c, v, p, lo, hi, 0, &x);
+        if (st == SOAK_OK) *out = soak_rgb3(x, x, x);
+        return st;
+    }
+    double t[3];
+    soak_status st = triple(c, v, p, lo, hi, t);
+    if (st == SOAK_OK) *out = soak_rgb3(t[0], t[1], t[2]);
+    return st;
+}
+
+soak_status sj_str(scene_ctx *c, const cJSON *obj, const char *key, const char *path, int required, const char **out)
+{
+    char p[512];
+    sj_path(p, sizeof p, path, key);
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    *out = NULL;
+    if (!v) return required ? sj_fail(c, SOAK_ERR_PARSE, p, "missing (required)") : SOAK_OK;
+    if (!cJSON_IsString(v) || !v->valuestring[0]) return sj_fail(c, SOAK_ERR_PARSE, p, "must be a non-empty string");
+    *out = v->valuestring;
+    return SOAK_OK;
+}
+
+soak_status sj_file(scene_ctx *c, const char *file, const char *path, char *out, size_t n)
+{
+    int w = file[0] == '/' || !c->base_dir[0] ? snprintf(out, n, "%s", file) : snprintf(out, n, "%s/%s", c->base_dir, file);
+    if (w < 0 || (size_t)w >= n) return sj_fail(c, SOAK_ERR_ARG, path, "file name too long");
+    soak_scene *s = c->scene;
+    char **in = realloc(s->inputs, (size_t)(s->n_inputs + 1) * sizeof *in);
+    if (!in) return SOAK_ERR_NOMEM;
+    s->inputs = in;
+    in[s->n_inputs] = strdup(out);
+    if (!in[s->n_inputs]) return SOAK_ERR_NOMEM;
+    s->n_inputs++;
+    return SOAK_OK;
+}
+
+static soak_status parse_render(scene_ctx *c, const cJSON *j)
+{
+    static const char *const keys[] = {"width", "height", "spp", "max_depth", "caustic_photons", "caustic_radius", NULL};
+    soak_scene *s = c->scene;
+    double w = 256, h = 192, spp = 16, md = 256, np = 0, rad = 0;
+    if (j) {
+        soak_status st = sj_keys(c, j, "render", keys);
+        if (st == SOAK_OK) st = sj_num(c, j, "caustic_photons", "render", 0, 1e9, 0, 0, &np);
+        if (st == SOAK_OK) st = sj_num(c, j, "caustic_radius", "render", 0, 1e12, 0, 0, &rad);
+        if (st == SOAK_OK && np > 0 && !(rad > 0))
+            return sj_fail(c, SOAK_ERR_ARG, "render.caustic_radius", "must be > 0 when render.caustic_photons is set");
+        if (st == SOAK_OK) st = sj_num(c, j, "width", "render", 1, 16384, 0, 256, &w);
+        if (st == SOAK_OK) st = sj_num(c, j, "height", "render", 1, 16384, 0, 192, &h);
+        if (st == SOAK_OK) st = sj_num(c, j, "spp", "render", 1, 1e7, 0, 16, &spp);
+        if (st == SOAK_OK) st = sj_num(c, j, "max_depth", "render", 1, 1e5, 0, 256, &md);
+        if (st != SOAK_OK) return st;
+    }
+    s->width = (int)w;
+    s->height = (int)h;
+    s->spp = (int)spp;
+    s->max_depth = (int)md;
+    s->caustic_photons = (long long)np;
+    s->caustic_radius = rad;
+    return SOAK_OK;
+}
+
+static soak_status parse_camera(scene_ctx *c, const cJSON *j)
+{
+    static const char *const keys[] = {"position", "look_at", "up", "fov", "aperture", "focus_distance", "exposure", NULL};
+    if (!j) return sj_fail(c, SOAK_ERR_PARSE, "camera", "missing (required)");
+    soak_camera *cam = &c->scene->camera;
+    soak_status st = sj_keys(c, j, "camera", keys);
+    if (st == SOAK_OK) st = sj_vec3(c, j, "position", "camera", 1, soak_v3(0, 0, 0), &cam->position);
+    if (st == SOAK_OK) st = sj_vec3(c, j, "look_at", "camera", 1, soak_v3(0, 0, 0), &cam->look_at);
+    if (st == SOAK_OK) st = sj_vec3(c, j, "up", "camera", 0, soak_v3(0, 0, 1), &cam->up);
+    if (st == SOAK_OK) st = sj_num_gt(c, j, "fov", "camera", 0, 179, 0, 40, &cam->fov_deg);
+    if (st == SOAK_OK) st = sj_num(c, j, "aperture", "camera", 0, 1e6, 0, 0, &cam->aperture);
+    double dist = soak_v3_len(soak_v3_sub(cam->look_at, cam->position));
+    if (st == SOAK_OK && !(dist > 0)) return sj_fail(c, SOAK_ERR_ARG, "camera.look_at", "must differ from camera.position");
+    if (st == SOAK_OK) st = sj_num_gt(c, j, "focus_distance", "camera", 0, 1e12, 0, dist, &cam->focus_distance);
+    if (st == SOAK_OK) st = sj_num(c, j, "exposure", "camera", -50, 50, 0, 0, &cam->exposure);
+    if (st != SOAK_OK) return st;
+    soak_vec3 fwd = soak_v3_norm(soak_v3_sub(cam->look_at, cam->position));
+    if (!(soak_v3_len(soak_v3_cross(fwd, soak_v3_norm(cam->up))) > 1e-6))
+        return sj_fail(c, SOAK_ERR_ARG, "camera.up", "must not be parallel to the viewing direction");
+    return SOAK_OK;
+}
+
+static soak_status parse_environment(scene_ctx *c, const cJSON *j)
+{
+    soak_environment *e = &c->scene->env;
+    e->type = SOAK_ENV_NONE;
+    if (!j) return SOAK_OK;
+    const char *type;
+    soak_status st = sj_str(c, j, "type", "environment", 1, &type);
+    if (st != SOAK_OK) return st;
+    if (strcmp(type, "constant") == 0) {
+        static const char *const keys[] = {"type", "radiance", NULL};
+        st = sj_keys(c, j, "environment", keys);
+        if (st == SOAK_OK) st = sj_rgb(c, j, "radiance", "environment", 0, 1e9, 1, soak_rgb3(0, 0, 0), &e->radiance);
+        if (st == SOAK_OK) e->type = SOAK_ENV_CONSTANT;
+        return st;
+    }
+    if (strcmp(type, "map") == 0) {
+        static const char *const keys[] = {"type", "file", "scale", "rotation", NULL};
+        const char *file;
+        st = sj_keys(c, j, "environment", keys);
+        if (st == SOAK_OK) st = sj_str(c, j, "file", "environment", 1, &file);
+        if (st == SOAK_OK) st = sj_num(c, j, "scale", "environment", 0, 1e9, 0, 1, &e->scale);
+        if (st == SOAK_OK) st = sj_num(c, j, "rotation", "environment", -360, 360, 0, 0, &e->rotation_deg);
+        if (st != SOAK_OK) return st;
+        char full[2048], msg[1024];
+        st = sj_file(c, file, "environment.file", full, sizeof full);
+        if (st != SOAK_OK) return st;
+        st = soak_image_read(full, &e->map, msg, sizeof msg);
+        if (st != SOAK_OK) return sj_fail(c, st, "environment.file", "%s", msg);
+        e->type = SOAK_ENV_MAP;
+        for (size_t i = 0; i < (size_t)e->map.width * e->map.height * e->map.channels; ++i)
+            if (!(e->map.pixels[i] >= 0 && e->map.pixels[i] < 3e38f))
+                return sj_fail(c, SOAK_ERR_ARG, "environment.file", "%s: negative or non-finite pixel", full);
+        return SOAK_OK;
+    }
+    return sj_fail(c, SOAK_ERR_PARSE, "environment.type", "unknown type '%s' (accepted: constant, map)", type);
+}
+
+static soak_status add_material_emitter(soak_scene *s, soak_rgb radiance, int *index)
+{
+    soak_material *m = realloc(s->materials, (size_t)(s->n_materials + 1) * sizeof *m);
+    if (!m) return SOAK_ERR_NOMEM;
+    s->materials = m;
+    memset(&m[s->n_materials], 0, sizeof *m);
+    m[s->n_materials].type = SOAK_MAT_EMITTER;
+    m[s->n_materials].radiance = radiance;
+    snprintf(m[s->n_materials].name, sizeof m->name, "(light)");
+    *index = s->n_materials++;
+    return SOAK_OK;
+}
+
+static soak_status push_object(soak_scene *s, soak_shape_kind shape, unsigned id, int material)
+{
+    if ((int)id != s->n_objects) return SOAK_ERR_ARG;
+    soak_object *o = realloc(s->objects, (size_t)(s->n_objects + 1) * sizeof *o);
+    if (!o) return SOAK_ERR_NOMEM;
+    s->objects = o;
+    memset(&o[s->n_objects], 0, sizeof *o);
+    o[s->n_objects].shape = shape;
+    o[s->n_objects].object_id = id;
+    o[s->n_objects].material = material;
+    o[s->n_objects].wetness.type = SOAK_WETNESS_CONSTANT;
+    o[s->n_objects].wetness.value = 1.0;
+    s->n_objects++;
+    return SOAK_OK;
+}
+
+static soak_status parse_lights(scene_ctx *c, const cJSON *j)
+{
+    soak_scene *s = c->scene;
+    if (!j) return SOAK_OK;
+    if (!cJSON_IsArray(j)) return sj_fail(c, SOAK_ERR_PARSE, "lights", "must be an array");
+    int n = cJSON_GetArraySize(j);
+    s->lights = calloc((size_t)(n > 0 ? n : 1), sizeof *s->lights);
+    if (!s->lights) return SOAK_ERR_NOMEM;
+    for (int i = 0; i < n; ++i) {
+        char p[64];
+        sj_index(p, sizeof p, "lights", i);
+        const cJSON *l = cJSON_GetArrayItem(j, i);
+        const char *type;
+        soak_light *L = &s->lights[i];
+        soak_status st = sj_str(c, l, "type", p, 1, &type);
+        if (st != SOAK_OK) return st;
+        if (strcmp(type, "sun") == 0 || strcmp(type, "directional") == 0) {
+            static const char *const keys[] = {"type", "direction", "irradiance", NULL};
+            L->type = SOAK_LIGHT_DIRECTIONAL;
+            st = sj_keys(c, l, p, keys);
+            if (st == SOAK_OK) st = sj_vec3(c, l, "direction", p, 1, soak_v3(0, 0, 1), &L->direction);
+            if (st == SOAK_OK) st = sj_rgb(c, l, "irradiance", p, 0, 1e9, 1, soak_rgb3(0, 0, 0), &L->value);
+            if (st != SOAK_OK) return st;
+            if (!(soak_v3_len(L->direction) > 0)) {
+                char q[96];
+                sj_path(q, sizeof q, p, "direction");
+                return sj_fail(c, SOAK_ERR_ARG, q, "must not be the zero vector");
+            }
+            L->direction = soak_v3_norm(L->direction);
+        } else if (strcmp(type, "point") == 0) {
+            static const char *const keys[] = {"type", "position", "intensity", NULL};
+            L->type = SOAK_LIGHT_POINT;
+            st = sj_keys(c, l, p, keys);
+            if (st == SOAK_OK) st = sj_vec3(c, l, "position", p, 1, soak_v3(0, 0, 0), &L->position);
+            if (st == SOAK_OK) st = sj_rgb(c, l, "intensity", p, 0, 1e12, 1, soak_rgb3(0, 0, 0), &L->value);
+            if (st != SOAK_OK) return st;
+        } else if (strcmp(type, "sphere") == 0) {
+            static const char *const keys[] = {"type", "center", "radius", "radiance", NULL};
+            L->type = SOAK_LIGHT_SPHERE;
+            st = sj_keys(c, l, p, keys);
+            if (st == SOAK_OK) st = sj_vec3(c, l, "center", p, 1, soak_v3(0, 0, 0), &L->position);
+            if (st == SOAK_OK) st = sj_num_gt(c, l, "radius", p, 0, 1e9, 1, 0, &L->radius);
+            if (st == SOAK_OK) st = sj_rgb(c, l, "radiance", p, 0, 1e12, 1, soak_rgb3(0, 0, 0), &L->value);
+            if (st != SOAK_OK) return st;
+            int mat;
+            st = add_material_emitter(s, L->value, &mat);
+            if (st == SOAK_OK) st = soak_geometry_add_sphere(s->geometry, L->position, L->radius, &L->object_id);
+            if (st == SOAK_OK) st = push_object(s, SOAK_SHAPE_SPHERE, L->object_id, mat);
+            if (st != SOAK_OK) return sj_fail(c, st, p, "cannot add the light's sphere (%s)", soak_status_str(st));
+        } else {
+            char q[96];
+            sj_path(q, sizeof q, p, "type");
+            return sj_fail(c, SOAK_ERR_PARSE, q, "unknown light type '%s' (accepted: sun, directional, point, sphere)",
+                           type);
+        }
+        s->n_lights = i + 1;
+    }
+    return SOAK_OK;
+}
+
+static soak_status parse_materials(scene_ctx *c, const cJSON *j)
+{
+    soak_scene *s = c->scene;
+    if (!j) return sj_fail(c, SOAK_ERR_PARSE, "materials", "missing (required)");
+    if (!cJSON_IsObject(j)) return sj_fail(c, SOAK_ERR_PARSE, "materials", "must be an object of named materials");
+    for (const cJSON *it = j->child; it; it = it->next) {
+        char p[256];
+        sj_path(p, sizeof p, "materials", it->string);
+        if (strlen(it->string) >= sizeof s->materials->name || !it->string[0])
+            return sj_fail(c, SOAK_ERR_ARG, p, "name must have 1 to 63 characters");
+        soak_material *m = realloc(s->materials, (size_t)(s->n_materials + 1) * sizeof *m);
+        if (!m) return SOAK_ERR_NOMEM;
+        s->materials = m;
+        m = &s->materials[s->n_materials];
+        memset(m, 0, sizeof *m);
+        s->n_materials++;
+        snprintf(m->name, sizeof m->name, "%s", it->string);
+        soak_status st = scene_parse_material(c, it, p, m);
+        if (st != SOAK_OK) return st;
+    }
+    return SOAK_OK;
+}
+
+static int find_material(const soak_scene *s, const char *name)
+{
+    for (int i = 0; i < s->n_materials; ++i)
+        if (s->materials[i].type != SOAK_MAT_EMITTER && strcmp(s->materials[i].name, name) == 0) return i;
+    return -1;
+}
+
+static soak_status parse_object(scene_ctx *c, const cJSON *o, const char *p)
+{
+    soak_scene *s = c->scene;
+    const char *type, *mname;
+    soak_status st = sj_str(c, o, "type", p, 1, &type);
+    if (st == SOAK_OK) st = sj_str(c, o, "material", p, 1, &mname);
+    if (st != SOAK_OK) return st;
+    char q[320];
+    int mat = find_material(s, mname);
+    if (mat < 0) {
+        sj_path(q, sizeof q, p, "material");
+        return sj_fail(c, SOAK_ERR_NOT_FOUND, q, "no material named '%s' in \"materials\"", mname);
+    }
+    unsigned id = 0;
+    soak_shape_kind kind;
+    if (strcmp(type, "sphere") == 0) {
+        static const char *const keys[] = {"type", "material", "wetness", "center", "radius", NULL};
+        soak_vec3 center;
+        double r;
+        st = sj_keys(c, o, p, keys);
+        if (st == SOAK_OK) st = sj_vec3(c, o, "center", p, 1, soak_v3(0, 0, 0), &center);
+        if (st == SOAK_OK) st = sj_num_gt(c, o, "radius", p, 0, 1e9, 1, 1, &r);
+        if (st != SOAK_OK) return st;
+        kind = SOAK_SHAPE_SPHERE;
+        st = soak_geometry_add_sphere(s->geometry, center, r, &id);
+    } else if (strcmp(type, "quad") == 0) {
+        static const char *const keys[] = {"type", "material", "wetness", "origin", "edge_u", "edge_v", NULL};
+        soak_vec3 org, eu, ev;
+        st = sj_keys(c, o, p, keys);
+        if (st == SOAK_OK) st = sj_vec3(c, o, "origin", p, 1, soak_v3(0, 0, 0), &org);
+        if (st == SOAK_OK) st = sj_vec3(c, o, "edge_u", p, 1, soak_v3(0, 0, 0), &eu);
+        if (st == SOAK_OK) st = sj_vec3(c, o, "edge_v", p, 1, soak_v3(0, 0, 0), &ev);
+        if (st != SOAK_OK) return st;
+        if (!(soak_v3_len(soak_v3_cross(eu, ev)) > 0)) {
+            sj_path(q, sizeof q, p, "edge_v");
+            return sj_fail(c, SOAK_ERR_ARG, q, "edges must be non-zero and not parallel");
+        }
+        kind = SOAK_SHAPE_QUAD;
+        st = soak_geometry_add_quad(s->geometry, org, eu, ev, &id);
+    } else if (strcmp(type, "plane") == 0) {
+        static const char *const keys[] = {"type", "material", "wetness", "center", "normal", "size", NULL};
+        soak_vec3 center, n, size;
+        st = sj_keys(c, o, p, keys);
+        if (st == SOAK_OK) st = sj_vec3(c, o, "center", p, 0, soak_v3(0, 0, 0), &center);
+        if (st == SOAK_OK) st = sj_vec3(c, o, "normal", p, 0, soak_v3(0, 0, 1), &n);
+        if (st == SOAK_OK) {
+            const cJSON *sz = cJSON_GetObjectItemCaseSensitive(o, "size");
+            sj_path(q, sizeof q, p, "size");
+            if (!sz) return sj_fail(c, SOAK_ERR_PARSE, q, "missing (required)");
+            if (!cJSON_IsArray(sz) || cJSON_GetArraySize(sz) != 2 || !cJSON_IsNumber(cJSON_GetArrayItem(sz, 0)) ||
+                !cJSON_IsNumber(cJSON_GetArrayItem(sz, 1)))
+                return sj_fail(c, SOAK_ERR_PARSE, q, "must be [width, depth]");
+            size = soak_v3(cJSON_GetArrayItem(sz, 0)->valuedouble, cJSON_GetArrayItem(sz, 1)->valuedouble, 0);
+            if (!(size.x > 0 && size.y > 0 && size.x < 1e12 && size.y < 1e12))
+                return sj_fail(c, SOAK_ERR_ARG, q, "sizes must be > 0 and finite, got [%g, %g]", size.x, size.y);
+        }
+        if (st != SOAK_OK) return st;
+        if (!(soak_v3_len(n) > 0)) {
+            sj_path(q, sizeof q, p, "normal");
+            return sj_fail(c, SOAK_ERR_ARG, q, "must not be the zero vector");
+        }
+        soak_vec3 t, b;
+        n = soak_v3_norm(n);
+        soak_v3_basis(n, &t, &b);
+        soak_vec3 eu = soak_v3_scale(t, size.x), ev = soak_v3_scale(b, size.y);
+        soak_vec3 org = soak_v3_sub(center, soak_v3_scale(soak_v3_add(eu, ev), 0.5));
+        kind = SOAK_SHAPE_QUAD;
+        st = soak_geometry_add_quad(s->geometry, org, eu, ev, &id);
+    } else if (strcmp(type, "box") == 0) {
+        static const char *const keys[] = {"type", "material", "wetness", "min", "max", NULL};
+        soak_vec3 lo, hi;
+        st = sj_keys(c, o, p, keys);
+        if (st == SOAK_OK) st = sj_vec3(c, o, "min", p, 1, soak_v3(0, 0, 0), &lo);
+        if (st == SOAK_OK) st = sj_vec3(c, o, "max", p, 1, soak_v3(0, 0, 0), &hi);
+        if (st != SOAK_OK) return st;
+        if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) {
+            sj_path(q, sizeof q, p, "max");
+            return sj_fail(c, SOAK_ERR_ARG, q, "must exceed min on every axis (negative or zero size)");
+        }
+        kind = SOAK_SHAPE_BOX;
+        st = soak_geometry_add_box(s->geometry, lo, hi, &id);
+    } else if (strcmp(type, "mesh") == 0) {
+        static const char *const keys[] = {"type", "material", "wetness", "file", "translate", "scale", NULL};
+        const char *file;
+        soak_vec3 tr, sc = soak_v3(1, 1, 1);
+        st = sj_keys(c, o, p, keys);
+        if (st == SOAK_OK) st = sj_str(c, o, "file", p, 1, &file);
+        if (st == SOAK_OK) st = sj_vec3(c, o, "translate", p, 0, soak_v3(0, 0, 0), &tr);
+        if (st == SOAK_OK && cJSON_IsNumber(cJSON_GetObjectItemCaseSensitive(o, "scale"))) {
+            double k;
+            st = sj_num_gt(c, o, "scale", p, 0, 1e12, 1, 1, &k);
+            sc = soak_v3(k, k, k);
+        } else if (st == SOAK_OK) {
+            st = sj_vec3(c, o, "scale", p, 0, soak_v3(1, 1, 1), &sc);
+        }
+        if (st != SOAK_OK) return st;
+        sj_path(q, sizeof q, p, "scale");
+        if (!(sc.x > 0 && sc.y > 0 && sc.z > 0)) return sj_fail(c, SOAK_ERR_ARG, q, "must be > 0 on every axis");
+        sj_path(q, sizeof q, p, "file");
+        char full[2048], msg[2200];
+        st = sj_file(c, file, q, full, sizeof full);
+        if (st != SOAK_OK) return st;
+        const cJSON *wet = cJSON_GetObjectItemCaseSensitive(o, "wetness");
+        const cJSON *wtype = cJSON_IsObject(wet) ? cJSON_GetObjectItemCaseSensitive(wet, "type") : NULL;
+        int need_uv = cJSON_IsString(wtype) && strcmp(wtype->valuestring, "map") == 0;
+        soak_mesh mesh;
+        st = soak_mesh_load(full, need_uv, &mesh, msg, sizeof msg);
+        if (st != SOAK_OK) return sj_fail(c, st, q, "%s", msg);
+        double xf[12] = {sc.x, 0, 0, tr.x, 0, sc.y, 0, tr.y, 0, 0, sc.z, tr.z};
+        kind = SOAK_SHAPE_MESH;
+        st = soak_geometry_add_mesh(s->geometry, &mesh, xf, &id);
+        soak_mesh_free(&mesh);
+    } else {
+        sj_path(q, sizeof q, p, "type");
+        return sj_fail(c, SOAK_ERR_PARSE, q, "unknown object type '%s' (accepted: sphere, quad, plane, box, mesh)", type);
+    }
+    if (st != SOAK_OK) return sj_fail(c, st, p, "cannot add the shape (%s)", soak_status_str(st));
+    st = push_object(s, kind, id, mat);
+    if (st != SOAK_OK) return st;
+    const cJSON *w = cJSON_GetObjectItemCaseSensitive(o, "wetness");
+    if (w) {
+        sj_path(q, sizeof q, p, "wetness");
+        if (s->materials[mat].type != SOAK_MAT_WET)
+            return sj_fail(c, SOAK_ERR_ARG, q, "only objects with a \"wet\" material take a wetness");
+        st = scene_parse_wetness(c, w, q, &s->objects[s->n_objects - 1].wetness);
+    }
+    return st;
+}
+
+static soak_status parse_objects(scene_ctx *c, const cJSON *j)
+{
+    if (!j) return sj_fail(c, SOAK_ERR_PARSE, "objects", "missing (required)");
+    if (!cJSON_IsArray(j)) return sj_fail(c, SOAK_ERR_PARSE, "objects", "must be an array");
+    int n = cJSON_GetArraySize(j);
+    for (int i = 0; i < n; ++i) {
+        char p[64];
+        sj_index(p, sizeof p, "objects", i);
+        soak_status st = parse_object(c, cJSON_GetArrayItem(j, i), p);
+        if (st != SOAK_OK) return st;
+    }
+    return SOAK_OK;
+}
+
+static void syntax_position(const char *text, const char *at, int *line, int *col)
+{
+    *line = 1;
+    *col = 1;
+    for (const char *p = text; p < at && *p; ++p) {
+        if (*p == '\n') {
+            ++*line;
+            *col = 1;
+        } else {
+            ++*col;
+        }
+    }
+}
+
+soak_status soak_scene_parse(const char *text, const char *name, const char *base_dir, soak_scene *scene, char *err,
+                             size_t errlen)
+{
+    if (!text || !scene) return SOAK_ERR_NULL;
+    memset(scene, 0, sizeof *scene);
+    scene_ctx c = {name ? name : "(scene)", base_dir ? base_dir : "", err, errlen, scene};
+    snprintf(scene->path, sizeof scene->path, "%s", c.name);
+    const char *end = NULL;
+    cJSON *root = cJSON_ParseWithOpts(text, &end, 1);
+    if (!root) {
+        int line, col;
+        syntax_position(text, end ? end : text, &line, &col);
+        if (err && errlen)
+            snprintf(err, errlen, "%s: line %d, column %d: JSON syntax error (NaN/Infinity are not JSON numbers)", c.name,
+                     line, col);
+        return SOAK_ERR_PARSE;
+    }
+    static const char *const keys[] = {"render", "camera", "environment", "lights", "materials", "objects", NULL};
+    soak_status st = sj_keys(&c, root, "(top level)", keys);
+    if (st == SOAK_OK) {
+        char msg[512];
+        st = soak_geometry_create(&scene->geometry, msg, sizeof msg);
+        if (st != SOAK_OK) sj_fail(&c, st, "(geometry)", "%s", msg);
+    }
+    if (st == SOAK_OK) st = parse_render(&c, cJSON_GetObjectItemCaseSensitive(root, "render"));
+    if (st == SOAK_OK) st = parse_camera(&c, cJSON_GetObjectItemCaseSensitive(root, "camera"));
+    if (st == SOAK_OK) st = parse_environment(&c, cJSON_GetObjectItemCaseSensitive(root, "environment"));
+    if (st == SOAK_OK) st = parse_materials(&c, cJSON_GetObjectItemCaseSensitive(root, "materials"));
+    if (st == SOAK_OK) st = parse_lights(&c, cJSON_GetObjectItemCaseSensitive(root, "lights"));
+    if (st == SOAK_OK) st = parse_objects(&c, cJSON_GetObjectItemCaseSensitive(root, "objects"));
+    cJSON_Delete(root);
+    if (st == SOAK_OK && scene->n_objects == 0) st = sj_fail(&c, SOAK_ERR_ARG, "objects", "the scene has no objects");
+    if (st == SOAK_OK && scene->n_lights == 0 && scene->env.type == SOAK_ENV_NONE)
+        st = sj_fail(&c, SOAK_ERR_ARG, "lights", "the scene has neither lights nor an environment");
+    if (st == SOAK_OK) {
+        st = soak_geometry_commit(scene->geometry);
+        if (st != SOAK_OK) sj_fail(&c, st, "objects", "geometry could not be built");
+    }
+    if (st != SOAK_OK) soak_scene_free(scene);
+    return st;
+}
+
+soak_status soak_scene_load(const char *path, soak_scene *scene, char *err, size_t errlen)
+{
+    if (!path || !scene) return SOAK_ERR_NULL;
+    memset(scene, 0, sizeof *scene);
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        if (err && errlen) snprintf(err, errlen, "%s: cannot open scene file (%s)", path, strerror(errno));
+        return SOAK_ERR_IO;
+    }
+    size_t cap = 1 << 16, n = 0;
+    char *text = malloc(cap);
+    while (text) {
+        n += fread(text + n, 1, cap - n - 1, f);
+        if (n < cap - 1) break;
+        char *t = realloc(text, cap * 2);
+        if (!t) {
+            free(text);
+            text = NULL;
+            break;
+        }
+        text = t;
+        cap *= 2;
+    }
+    int bad = ferror(f);
+    fclose(f);
+    if (!text) return SOAK_ERR_NOMEM;
+    if (bad) {
+        free(text);
+        if (err && errlen) snprintf(err, errlen, "%s: read error", path);
+        return SOAK_ERR_IO;
+    }
+    text[n] = '\0';
+    char dir[1024];
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (slash) *slash = '\0';
+    else snprintf(dir, sizeof dir, ".");
+    soak_status st = soak_scene_parse(text, path, dir, scene, err, errlen);
+    free(text);
+    return st;
+}
+
+void soak_scene_free(soak_scene *s)
+{
+    if (!s) return;
+    for (int i = 0; i < s->n_materials; ++i) scene_material_free(&s->materials[i]);
+    for (int i = 0; i < s->n_objects; ++i)
+        if (s->objects[i].wetness.type == SOAK_WETNESS_MAP) soak_image_free(&s->objects[i].wetness.map);
+    for (int i = 0; i < s->n_inputs; ++i) free(s->inputs[i]);
+    free(s->inputs);
+    free(s->materials);
+    free(s->objects);
+    free(s->lights);
+    if (s->env.type == SOAK_ENV_MAP) soak_image_free(&s->env.map);
+    soak_geometry_destroy(s->geometry);
+    memset(s, 0, sizeof *s);
+}

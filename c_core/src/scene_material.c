@@ -1,0 +1,343 @@
+/* Scene materials and per-object wetness (format: scenes/README.md). */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "scene_json.h"
+#include "soak/fresnel.h"
+#include "soak/ggx.h"
+#include "soak/preset.h"
+#include "soak/wetness.h"
+
+static double rgb_max(soak_rgb c) { return fmax(c.r, fmax(c.g, c.b)); }
+
+static void medium_majorant(soak_scene_medium *m)
+{
+    double mj = rgb_max(soak_rgb3(m->sigma_s.r + m->sigma_a.r, m->sigma_s.g + m->sigma_a.g, m->sigma_s.b + m->sigma_a.b));
+    if (m->volume) {
+        size_t n = soak_volume_count(m->volume);
+        for (int ch = 0; ch < 3; ++ch) {
+            const float *s = soak_volume_plane(m->volume, SOAK_VOL_SIGMA_S_R + ch);
+            const float *a = soak_volume_plane(m->volume, SOAK_VOL_SIGMA_A_R + ch);
+            for (size_t i = 0; i < n; ++i) mj = fmax(mj, (double)s[i] + (double)a[i]);
+        }
+    }
+    m->majorant = mj;
+}
+
+static soak_status check_volume(scene_ctx *c, const soak_volume *v, const char *path)
+{
+    size_t n = soak_volume_count(v);
+    for (int ch = 0; ch <= SOAK_VOL_W; ++ch) {
+        const float *p = soak_volume_plane(v, ch);
+        double lo = ch <= SOAK_VOL_SIGMA_A_B ? 0 : (ch == SOAK_VOL_W ? 0 : -SOAK_HG_G_MAX);
+        double hi = ch <= SOAK_VOL_SIGMA_A_B ? SOAK_VOL_SIGMA_MAX : (ch == SOAK_VOL_W ? 1 : SOAK_HG_G_MAX);
+        for (size_t i = 0; i < n; ++i)
+            if (!soak_in_range(p[i], lo, hi))
+                return sj_fail(c, SOAK_ERR_ARG, path, "channel %s has value %g outside [%g, %g]",
+                               soak_volume_channel_name(ch), (double)p[i], lo, hi);
+    }
+    return SOAK_OK;
+}
+
+static soak_status parse_medium(scene_ctx *c, const cJSON *j, const char *path, soak_scene_medium *m, int allow_type)
+{
+    static const char *const keys[] = {"type", "sigma_s", "sigma_a", "g1", "g2", "w", "ior", "volume", NULL};
+    static const char *const keys_dry[] = {"sigma_s", "sigma_a", "g1", "g2", "w", NULL};
+    soak_status st = sj_keys(c, j, path, allow_type ? keys : keys_dry);
+    if (st == SOAK_OK) st = sj_rgb(c, j, "sigma_s", path, 0, 1e9, 1, soak_rgb3(0, 0, 0), &m->sigma_s);
+    if (st == SOAK_OK) st = sj_rgb(c, j, "sigma_a", path, 0, 1e9, 0, soak_rgb3(0, 0, 0), &m->sigma_a);
+    if (st == SOAK_OK) st = sj_num(c, j, "g1", path, -SOAK_HG_G_MAX, SOAK_HG_G_MAX, 0, 0, &m->phase.g1);
+    if (st == SOAK_OK) st = sj_num(c, j, "g2", path, -SOAK_HG_G_MAX, SOAK_HG_G_MAX, 0, m->phase.g1, &m->phase.g2);
+    if (st == SOAK_OK) st = sj_num(c, j, "w", path, 0, 1, 0, 1, &m->phase.w);
+    if (st != SOAK_OK || !allow_type) return st;
+    st = sj_num(c, j, "ior", path, 1, 3, 0, 1.5, &m->ior);
+    const cJSON *vol = cJSON_GetObjectItemCaseSensitive(j, "volume");
+    if (st == SOAK_OK && vol) {
+        static const char *const vkeys[] = {"file", "origin", NULL};
+        char vp[400], fp[420], full[2048], msg[2048];
+        const char *file;
+        sj_path(vp, sizeof vp, path, "volume");
+        sj_path(fp, sizeof fp, vp, "file");
+        st = sj_keys(c, vol, vp, vkeys);
+        if (st == SOAK_OK) st = sj_str(c, vol, "file", vp, 1, &file);
+        if (st == SOAK_OK) st = sj_vec3(c, vol, "origin", vp, 0, soak_v3(0, 0, 0), &m->volume_origin);
+        if (st == SOAK_OK) st = sj_file(c, file, fp, full, sizeof full);
+        if (st != SOAK_OK) return st;
+        m->volume = calloc(1, sizeof *m->volume);
+        if (!m->volume) return SOAK_ERR_NOMEM;
+        st = soak_volume_read_grid(full, m->volume, msg, sizeof msg);
+        if (st != SOAK_OK) {
+            free(m->volume);
+            m->volume = NULL;
+            return sj_fail(c, st, fp, "%s", msg);
+        }
+        st = check_volume(c, m->volume, fp);
+        if (st != SOAK_OK) return st;
+    }
+    if (st == SOAK_OK) medium_majorant(m);
+    return st;
+}
+
+static soak_status parse_ggx(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
+{
+    soak_status st = sj_rgb(c, j, "eta", path, SOAK_ETA_MIN, SOAK_ETA_MAX, 1, soak_rgb3(1, 1, 1), &m->eta);
+    if (st == SOAK_OK) st = sj_rgb(c, j, "k", path, 0, SOAK_GGX_K_MAX, 1, soak_rgb3(0, 0, 0), &m->k);
+    if (st == SOAK_OK) st = sj_num(c, j, "roughness", path, SOAK_GGX_ALPHA_MIN, SOAK_GGX_ALPHA_MAX, 0, 0.1, &m->alpha);
+    return st;
+}
+
+static soak_status parse_wet(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
+{
+    static const char *const keys[] = {"type", "film", "base", "dry", NULL};
+    static const char *const fkeys[] = {"ior", "k", "thickness", "absorption", "coverage", NULL};
+    char fp[320], bp[320], dp[320], tp[340];
+    sj_path(fp, sizeof fp, path, "film");
+    sj_path(bp, sizeof bp, path, "base");
+    sj_path(dp, sizeof dp, path, "dry");
+    soak_status st = sj_keys(c, j, path, keys);
+    if (st != SOAK_OK) return st;
+    m->type = SOAK_MAT_WET;
+    const cJSON *film = cJSON_GetObjectItemCaseSensitive(j, "film");
+    m->film_ior = 1.33;
+    m->film_k = 1;
+    m->film_coverage = 1;
+    if (film) {
+        st = sj_keys(c, film, fp, fkeys);
+        if (st == SOAK_OK) st = sj_num(c, film, "ior", fp, 1, 3, 0, 1.33, &m->film_ior);
+        if (st == SOAK_OK) st = sj_num(c, film, "k", fp, 0.01, 100, 0, 1, &m->film_k);
+        if (st == SOAK_OK) st = sj_num(c, film, "thickness", fp, 0, 1e3, 0, 0, &m->film_thickness);
+        if (st == SOAK_OK) st = sj_rgb(c, film, "absorption", fp, 0, 1e9, 0, soak_rgb3(0, 0, 0), &m->film_absorption);
+        if (st == SOAK_OK) st = sj_num(c, film, "coverage", fp, 0, 1, 0, 1, &m->film_coverage);
+        if (st != SOAK_OK) return st;
+    }
+    const cJSON *base = cJSON_GetObjectItemCaseSensitive(j, "base");
+    if (!base) return sj_fail(c, SOAK_ERR_PARSE, bp, "missing (required)");
+    const char *bt;
+    st = sj_str(c, base, "type", bp, 1, &bt);
+    if (st != SOAK_OK) return st;
+    sj_path(tp, sizeof tp, bp, "type");
+    if (strcmp(bt, "lambert") == 0) {
+        static const char *const k[] = {"type", "albedo", NULL};
+        m->base = SOAK_BASE_LAMBERT;
+        st = sj_keys(c, base, bp, k);
+        if (st == SOAK_OK) st = sj_rgb(c, base, "albedo", bp, 0, 1, 1, soak_rgb3(0, 0, 0), &m->albedo);
+    } else if (strcmp(bt, "ggx") == 0) {
+        static const char *const k[] = {"type", "eta", "k", "roughness", NULL};
+        m->base = SOAK_BASE_GGX;
+        st = sj_keys(c, base, bp, k);
+        if (st == SOAK_OK) st = parse_ggx(c, base, bp, m);
+    } else if (strcmp(bt, "medium") == 0) {
+        m->base = SOAK_BASE_MEDIUM;
+        st = parse_medium(c, base, bp, &m->medium, 1);
+    } else {
+        return sj_fail(c, SOAK_ERR_PARSE, tp, "unknown base type '%s' (accepted: lambert, ggx, medium)", bt);
+    }
+    if (st != SOAK_OK) return st;
+    const cJSON *dry = cJSON_GetObjectItemCaseSensitive(j, "dry");
+    if (dry) {
+        if (m->base != SOAK_BASE_MEDIUM)
+            return sj_fail(c, SOAK_ERR_ARG, dp, "dry medium parameters need base.type \"medium\"");
+        m->dry_medium = m->medium;
+        m->dry_medium.volume = NULL;
+        st = parse_medium(c, dry, dp, &m->dry_medium, 0);
+        if (st != SOAK_OK) return st;
+        medium_majorant(&m->dry_medium);
+        m->has_dry = 1;
+    }
+    return SOAK_OK;
+}
+
+/* Preset + wetness through soak/wetness.h (steady state). Preset
+ * coefficients are per mm; "unit_mm" is the scene length unit in mm. */
+static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
+{
+    static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", NULL};
+    const char *name, *liquid_name;
+    double wet, unit_mm;
+    soak_status st = sj_keys(c, j, path, keys);
+    if (st == SOAK_OK) st = sj_str(c, j, "name", path, 1, &name);
+    if (st == SOAK_OK) st = sj_num(c, j, "wetness", path, 0, 1, 0, 0, &wet);
+    if (st == SOAK_OK) st = sj_str(c, j, "liquid", path, 0, &liquid_name);
+    if (st == SOAK_OK) st = sj_num_gt(c, j, "unit_mm", path, 0, 1e9, 0, 1000, &unit_mm);
+    if (st != SOAK_OK) return st;
+    char np[320], msg[1024];
+    sj_path(np, sizeof np, path, "name");
+    soak_preset_db *db = NULL;
+    st = soak_presets_load(NULL, &db, msg, sizeof msg);
+    if (st != SOAK_OK) return sj_fail(c, st, np, "cannot load the presets: %s", msg);
+    const soak_preset *p = soak_presets_find(db, name);
+    const soak_liquid *liq = soak_presets_find_liquid(db, liquid_name ? liquid_name : "water");
+    if (!p) {
+        soak_presets_free(db);
+        return sj_fail(c, SOAK_ERR_NOT_FOUND, np, "no preset named '%s' (see `soak materials`)", name);
+    }
+    if (!liq) {
+        soak_presets_free(db);
+        sj_path(np, sizeof np, path, "liquid");
+        return sj_fail(c, SOAK_ERR_NOT_FOUND, np, "no liquid named '%s'", liquid_name ? liquid_name : "water");
+    }
+    soak_wet_input in = soak_wet_input_steady(p, wet);
+    soak_wet_params w;
+    st = soak_wetness_eval(p, liq, &in, &w);
+    soak_material_kind kind = p->kind;
+    double ior = p->ior;
+    soak_rgb n = p->ior_n, k = p->ior_k;
+    soak_presets_free(db);
+    if (st != SOAK_OK) return sj_fail(c, st, path, "wetness evaluation failed (%s)", soak_status_str(st));
+    m->type = SOAK_MAT_WET;
+    m->film_ior = w.film_ior;
+    m->film_k = 1;
+    m->film_coverage = w.film ? w.film_coverage : 0;
+    m->film_thickness = w.film_thickness_m * 1000.0 / unit_mm;
+    m->film_absorption = soak_rgb3(w.film_absorption_per_m.r * unit_mm / 1000.0, w.film_absorption_per_m.g * unit_mm / 1000.0,
+                                   w.film_absorption_per_m.b * unit_mm / 1000.0);
+    if (kind == SOAK_KIND_CONDUCTOR) {
+        m->base = SOAK_BASE_GGX;
+        m->eta = n;
+        m->k = k;
+        m->alpha = w.ggx_alpha;
+    } else {
+        m->base = SOAK_BASE_MEDIUM;
+        m->medium.sigma_s = soak_rgb3(w.sigma_s.r * unit_mm, w.sigma_s.g * unit_mm, w.sigma_s.b * unit_mm);
+        m->medium.sigma_a = soak_rgb3(w.sigma_a.r * unit_mm, w.sigma_a.g * unit_mm, w.sigma_a.b * unit_mm);
+        m->medium.phase = w.phase;
+        m->medium.ior = ior;
+        medium_majorant(&m->medium);
+    }
+    return SOAK_OK;
+}
+
+soak_status scene_parse_material(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
+{
+    const char *type;
+    soak_status st = sj_str(c, j, "type", path, 1, &type);
+    if (st != SOAK_OK) return st;
+    if (strcmp(type, "lambert") == 0) {
+        static const char *const keys[] = {"type", "albedo", NULL};
+        m->type = SOAK_MAT_LAMBERT;
+        st = sj_keys(c, j, path, keys);
+        if (st == SOAK_OK) st = sj_rgb(c, j, "albedo", path, 0, 1, 1, soak_rgb3(0, 0, 0), &m->albedo);
+        return st;
+    }
+    if (strcmp(type, "dielectric") == 0) {
+        static const char *const keys[] = {"type", "ior", "absorption", NULL};
+        m->type = SOAK_MAT_DIELECTRIC;
+        st = sj_keys(c, j, path, keys);
+        if (st == SOAK_OK) st = sj_num(c, j, "ior", path, 1, 3, 0, 1.5, &m->ior);
+        if (st == SOAK_OK) st = sj_rgb(c, j, "absorption", path, 0, 1e9, 0, soak_rgb3(0, 0, 0), &m->absorption);
+        return st;
+    }
+    if (strcmp(type, "conductor") == 0) {
+        static const char *const keys[] = {"type", "eta", "k", "roughness", NULL};
+        m->type = SOAK_MAT_CONDUCTOR;
+        st = sj_keys(c, j, path, keys);
+        if (st == SOAK_OK) st = parse_ggx(c, j, path, m);
+        return st;
+    }
+    if (strcmp(type, "wet") == 0) return parse_wet(c, j, path, m);
+    if (strcmp(type, "preset") == 0) return parse_preset(c, j, path, m);
+    char tp[320];
+    sj_path(tp, sizeof tp, path, "type");
+    return sj_fail(c, SOAK_ERR_PARSE, tp, "unknown material type '%s' (accepted: lambert, dielectric, conductor, wet, preset)",
+                   type);
+}
+
+soak_status scene_parse_wetness(scene_ctx *c, const cJSON *j, const char *path, soak_wetness *w)
+{
+    if (cJSON_IsNumber(j)) {
+        w->type = SOAK_WETNESS_CONSTANT;
+        double x;
+        if (!soak_in_range(j->valuedouble, 0, 1))
+            return sj_fail(c, SOAK_ERR_ARG, path, "must be in [0, 1], got %g", j->valuedouble);
+        x = j->valuedouble;
+        w->value = x;
+        return SOAK_OK;
+    }
+    const char *type;
+    soak_status st = sj_str(c, j, "type", path, 1, &type);
+    if (st != SOAK_OK) return st;
+    if (strcmp(type, "map") == 0) {
+        static const char *const keys[] = {"type", "file", NULL};
+        const char *file;
+        char fp[400], full[2048], msg[2048];
+        sj_path(fp, sizeof fp, path, "file");
+        st = sj_keys(c, j, path, keys);
+        if (st == SOAK_OK) st = sj_str(c, j, "file", path, 1, &file);
+        if (st == SOAK_OK) st = sj_file(c, file, fp, full, sizeof full);
+        if (st != SOAK_OK) return st;
+        st = soak_image_read(full, &w->map, msg, sizeof msg);
+        if (st != SOAK_OK) return sj_fail(c, st, fp, "%s", msg);
+        w->type = SOAK_WETNESS_MAP;
+        size_t n = (size_t)w->map.width * w->map.height * w->map.channels;
+        for (size_t i = 0; i < n; ++i)
+            if (!(w->map.pixels[i] >= -1e30f && w->map.pixels[i] <= 1e30f))
+                return sj_fail(c, SOAK_ERR_ARG, fp, "%s: non-finite pixel", full);
+        return SOAK_OK;
+    }
+    if (strcmp(type, "plane") == 0) {
+        static const char *const keys[] = {"type", "normal", "offset", "blend", NULL};
+        w->type = SOAK_WETNESS_PLANE;
+        st = sj_keys(c, j, path, keys);
+        if (st == SOAK_OK) st = sj_vec3(c, j, "normal", path, 1, soak_v3(0, 0, 1), &w->normal);
+        if (st == SOAK_OK) st = sj_num(c, j, "offset", path, -1e12, 1e12, 0, 0, &w->offset);
+        if (st == SOAK_OK) st = sj_num(c, j, "blend", path, 0, 1e12, 0, 0, &w->blend);
+        if (st != SOAK_OK) return st;
+        if (!(soak_v3_len(w->normal) > 0)) {
+            char np[400];
+            sj_path(np, sizeof np, path, "normal");
+            return sj_fail(c, SOAK_ERR_ARG, np, "must not be the zero vector");
+        }
+        w->normal = soak_v3_norm(w->normal);
+        return SOAK_OK;
+    }
+    if (strcmp(type, "constant") == 0) {
+        static const char *const keys[] = {"type", "value", NULL};
+        w->type = SOAK_WETNESS_CONSTANT;
+        st = sj_keys(c, j, path, keys);
+        if (st == SOAK_OK) st = sj_num(c, j, "value", path, 0, 1, 1, 1, &w->value);
+        return st;
+    }
+    char tp[400];
+    sj_path(tp, sizeof tp, path, "type");
+    return sj_fail(c, SOAK_ERR_PARSE, tp, "unknown wetness type '%s' (accepted: constant, map, plane, or a number)", type);
+}
+
+void scene_material_free(soak_material *m)
+{
+    if (m->medium.volume) {
+        soak_volume_free(m->medium.volume);
+        free(m->medium.volume);
+        m->medium.volume = NULL;
+    }
+}
+
+double soak_scene_wetness(const soak_object *obj, soak_vec3 p, double u, double v)
+{
+    const soak_wetness *w = &obj->wetness;
+    double x = 1.0;
+    switch (w->type) {
+    case SOAK_WETNESS_CONSTANT: x = w->value; break;
+    case SOAK_WETNESS_MAP: {
+        const soak_image *im = &w->map;
+        double fu = u - floor(u), fv = v - floor(v);
+        int px = (int)(fu * im->width), py = (int)((1.0 - fv) * im->height);
+        px = px < 0 ? 0 : (px >= im->width ? im->width - 1 : px);
+        py = py < 0 ? 0 : (py >= im->height ? im->height - 1 : py);
+        const float *pix = im->pixels + ((size_t)py * im->width + px) * im->channels;
+        int nc = im->channels >= 3 ? 3 : 1;
+        double s = 0;
+        for (int i = 0; i < nc; ++i) s += pix[i];
+        x = s / nc;
+        break;
+    }
+    case SOAK_WETNESS_PLANE: {
+        double d = soak_v3_dot(w->normal, p) - w->offset;
+        x = w->blend > 0 ? 0.5 - d / w->blend : (d < 0 ? 1.0 : 0.0);
+        break;
+    }
+    }
+    return x < 0 ? 0 : (x > 1 ? 1 : x);
+}

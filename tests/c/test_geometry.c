@@ -1,0 +1,293 @@
+/* Geometry: analytic sphere/quad/box distances, normals and UVs; meshes read
+ * from OBJ files written here; missing UVs and missing files reported;
+ * threaded queries agree with single-threaded ones. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "check.h"
+#include "soak/geometry.h"
+
+static soak_ray mkray(soak_vec3 o, soak_vec3 d)
+{
+    soak_ray r = {o, d, 0.0, INFINITY};
+    return r;
+}
+
+static void test_sphere(void)
+{
+    soak_geometry *g = NULL;
+    char err[256] = "";
+    check_status("create", soak_geometry_create(&g, err, sizeof err), SOAK_OK);
+    if (!g) return;
+    unsigned id = 99;
+    check_status("add sphere", soak_geometry_add_sphere(g, soak_v3(0, 0, 0), 1.0, &id), SOAK_OK);
+    check_true("sphere id 0", id == 0);
+    check_status("commit", soak_geometry_commit(g), SOAK_OK);
+
+    /* Ray from (0.3, 0.4, -5) along +z hits at z = -sqrt(1 - 0.25): t = 5 - sqrt(0.75). */
+    soak_ray r = mkray(soak_v3(0.3, 0.4, -5), soak_v3(0, 0, 1));
+    soak_hit h;
+    int found = 0;
+    check_status("intersect", soak_geometry_intersect(g, &r, &h, &found), SOAK_OK);
+    check_true("sphere hit", found);
+    if (found) {
+        check_close("sphere t analytic", h.t, 5.0 - sqrt(0.75), 1e-12);
+        check_close("normal = position", h.ng.x, 0.3, 1e-12);
+        check_close("normal z", h.ng.z, -sqrt(0.75), 1e-12);
+        check_close("uv u = atan2(y,x)/2pi", h.u, atan2(0.4, 0.3) / (2 * SOAK_PI), 1e-12);
+        check_close("uv v = theta/pi", h.v, acos(-sqrt(0.75)) / SOAK_PI, 1e-12);
+    }
+    /* Oblique, non-unit direction from far away: t in units of |dir|. */
+    soak_vec3 d = soak_v3(-2, -1, -2); /* |d| = 3 */
+    soak_ray r2 = mkray(soak_v3(20, 10, 20), d);
+    check_status("intersect far", soak_geometry_intersect(g, &r2, &h, &found), SOAK_OK);
+    check_true("far hit", found);
+    if (found) check_close("far t = (30 - 1)/3", h.t, 29.0 / 3.0, 1e-12);
+    /* From inside: the exit distance is the radius. */
+    soak_ray r3 = mkray(soak_v3(0, 0, 0), soak_v3(0, 1, 0));
+    check_status("intersect inside", soak_geometry_intersect(g, &r3, &h, &found), SOAK_OK);
+    check_true("inside hit", found && fabs(h.t - 1.0) < 1e-12 && h.ng.y > 0.999999);
+    /* Miss, occlusion and tfar limits. */
+    soak_ray miss = mkray(soak_v3(1.01, 0, -5), soak_v3(0, 0, 1));
+    check_status("intersect miss", soak_geometry_intersect(g, &miss, &h, &found), SOAK_OK);
+    check_true("miss", !found);
+    int occ = -1;
+    soak_ray shadow = mkray(soak_v3(0, 0, -5), soak_v3(0, 0, 1));
+    shadow.tfar = 3.9;
+    check_status("occluded", soak_geometry_occluded(g, &shadow, &occ), SOAK_OK);
+    check_true("not occluded before t=4", occ == 0);
+    shadow.tfar = 4.1;
+    soak_geometry_occluded(g, &shadow, &occ);
+    check_true("occluded past t=4", occ == 1);
+    /* Bad rays. */
+    soak_ray bad = mkray(soak_v3(NAN, 0, 0), soak_v3(0, 0, 1));
+    check_status("NaN origin", soak_geometry_intersect(g, &bad, &h, &found), SOAK_ERR_ARG);
+    bad = mkray(soak_v3(0, 0, 0), soak_v3(0, 0, 0));
+    check_status("zero direction", soak_geometry_intersect(g, &bad, &h, &found), SOAK_ERR_ARG);
+    check_status("negative radius", soak_geometry_add_sphere(g, soak_v3(0, 0, 0), -1, NULL), SOAK_ERR_ARG);
+    check_status("NaN radius", soak_geometry_add_sphere(g, soak_v3(0, 0, 0), NAN, NULL), SOAK_ERR_ARG);
+    soak_geometry_destroy(g);
+}
+
+static void test_quad_box(void)
+{
+    soak_geometry *g = NULL;
+    char err[256];
+    soak_geometry_create(&g, err, sizeof err);
+    if (!g) return;
+    unsigned q, b;
+    /* Ground quad z = 0 over [-2,2]^2, normal +z. */
+    check_status("add quad", soak_geometry_add_quad(g, soak_v3(-2, -2, 0), soak_v3(4, 0, 0), soak_v3(0, 4, 0), &q), SOAK_OK);
+    check_status("add box", soak_geometry_add_box(g, soak_v3(0.5, 0.5, 0.25), soak_v3(1.5, 1.0, 0.75), &b), SOAK_OK);
+    check_status("bad box", soak_geometry_add_box(g, soak_v3(1, 0, 0), soak_v3(0, 1, 1), NULL), SOAK_ERR_ARG);
+    check_status("degenerate quad", soak_geometry_add_quad(g, soak_v3(0, 0, 0), soak_v3(1, 0, 0), soak_v3(2, 0, 0), NULL),
+                 SOAK_ERR_ARG);
+    check_status("commit", soak_geometry_commit(g), SOAK_OK);
+    check_true("2 objects", soak_geometry_object_count(g) == 2);
+    check_true("box has 12 triangles", soak_geometry_triangle_count(g, b) == 12);
+
+    soak_hit h;
+    int found;
+    soak_ray r = mkray(soak_v3(-1, 1, 3), soak_v3(0.5, -0.25, -1));
+    soak_geometry_intersect(g, &r, &h, &found);
+    check_true("quad hit", found && h.object_id == q);
+    if (found) {
+        check_close("quad t = 3", h.t, 3.0, 1e-12);
+        check_close("quad uv u = (x+2)/4", h.u, (-1 + 1.5 + 2) / 4.0, 1e-9);
+        check_close("quad uv v = (y+2)/4", h.v, (1 - 0.75 + 2) / 4.0, 1e-9);
+        check_close("quad normal +z", h.ng.z, 1.0, 1e-15);
+    }
+    /* Box top face at z = 0.75 from above; side face x = 1.5 from +x. */
+    soak_ray top = mkray(soak_v3(1.0, 0.75, 2.0), soak_v3(0, 0, -1));
+    soak_geometry_intersect(g, &top, &h, &found);
+    check_true("box top hit", found && h.object_id == b);
+    if (found) {
+        check_close("box top t", h.t, 1.25, 1e-12);
+        check_close("box top normal +z", h.ng.z, 1.0, 1e-12);
+    }
+    soak_ray side = mkray(soak_v3(5.0, 0.75, 0.5), soak_v3(-1, 0, 0));
+    soak_geometry_intersect(g, &side, &h, &found);
+    check_true("box side hit", found && h.object_id == b);
+    if (found) {
+        check_close("box side t", h.t, 3.5, 1e-12);
+        check_close("box side normal +x", h.ng.x, 1.0, 1e-12);
+    }
+    soak_ray bottom = mkray(soak_v3(1.0, 0.75, 0.1), soak_v3(0, 0, 1));
+    soak_geometry_intersect(g, &bottom, &h, &found);
+    check_true("box bottom normal -z (outward)", found && h.ng.z < -0.999999);
+    soak_vec3 lo, hi;
+    check_status("bounds", soak_geometry_bounds(g, &lo, &hi), SOAK_OK);
+    check_close("bounds lo x", lo.x, -2, 1e-6);
+    check_close("bounds hi z", hi.z, 0.75, 1e-6);
+    soak_geometry_destroy(g);
+}
+
+static int write_file(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) return 0;
+    fputs(text, f);
+    return fclose(f) == 0;
+}
+
+static void test_mesh_files(void)
+{
+    char dir[] = "/tmp/soak_geom_XXXXXX";
+    if (!mkdtemp(dir)) {
+        check_true("mkdtemp", 0);
+        return;
+    }
+    char with_uv[300], no_uv[300];
+    snprintf(with_uv, sizeof with_uv, "%s/quad_uv.obj", dir);
+    snprintf(no_uv, sizeof no_uv, "%s/cube_nouv.obj", dir);
+    /* A unit square in z = 0 as one quad face (triangulated to 2) plus one
+     * triangle: 3 triangles, UVs on every vertex. */
+    write_file(with_uv,
+               "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\n"
+               "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.5\n"
+               "f 1/1 2/2 3/3 4/4\nf 2/2 5/5 3/3\n");
+    /* A cube without texture coordinates: 6 quads = 12 triangles. */
+    write_file(no_uv,
+               "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+               "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+    soak_mesh m;
+    char err[512] = "";
+    check_status("load OBJ with UVs", soak_mesh_load(with_uv, 1, &m, err, sizeof err), SOAK_OK);
+    if (m.n_triangles) {
+        check_true("3 triangles", m.n_triangles == 3);
+        check_true("UVs present", m.uvs != NULL);
+        check_true("normals generated", m.normals != NULL);
+        soak_geometry *g = NULL;
+        soak_geometry_create(&g, err, sizeof err);
+        /* Translate by (0,0,-1) and scale z by 2 through xform. */
+        double xf[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 2, -1};
+        unsigned id;
+        check_status("add mesh", soak_geometry_add_mesh(g, &m, xf, &id), SOAK_OK);
+        soak_geometry_commit(g);
+        soak_hit h;
+        int found;
+        soak_ray r = mkray(soak_v3(0.25, 0.75, 4), soak_v3(0, 0, -1));
+        soak_geometry_intersect(g, &r, &h, &found);
+        check_true("mesh hit", found);
+        if (found) {
+            check_close("mesh t (plane at z=-1)", h.t, 5.0, 1e-12);
+            /* OBJ vt maps linearly on the square: uv = (x, y). */
+            check_close("mesh uv u", h.u, 0.25, 1e-6);
+            check_close("mesh uv v", h.v, 0.75, 1e-6);
+            check_close("mesh shading normal +z", h.ns.z, 1.0, 1e-9);
+        }
+        soak_geometry_destroy(g);
+        soak_mesh_free(&m);
+    }
+    err[0] = '\0';
+    check_status("no UVs required", soak_mesh_load(no_uv, 1, &m, err, sizeof err), SOAK_ERR_PARSE);
+    printf("  message: %s\n", err);
+    check_true("message names file and 'mesh has no UVs'", strstr(err, no_uv) && strstr(err, "mesh has no UVs"));
+    check_status("no UVs, not required", soak_mesh_load(no_uv, 0, &m, err, sizeof err), SOAK_OK);
+    if (m.n_triangles) {
+        check_true("cube 12 triangles", m.n_triangles == 12);
+        check_true("cube no UVs", m.uvs == NULL);
+        soak_mesh_free(&m);
+    }
+    /* ASCII PLY: two triangles with per-vertex texture coordinates. */
+    char ply[300];
+    snprintf(ply, sizeof ply, "%s/tris.ply", dir);
+    write_file(ply,
+               "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+               "property float s\nproperty float t\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+               "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n3 0 1 2\n3 0 2 3\n");
+    check_status("load PLY", soak_mesh_load(ply, 1, &m, err, sizeof err), SOAK_OK);
+    if (m.n_triangles) {
+        check_true("PLY: 2 triangles, 4 vertices, UVs", m.n_triangles == 2 && m.n_vertices == 4 && m.uvs != NULL);
+        soak_mesh_free(&m);
+    } else {
+        printf("  message: %s\n", err);
+    }
+    unlink(ply);
+    char missing[300];
+    snprintf(missing, sizeof missing, "%s/nope.obj", dir);
+    err[0] = '\0';
+    check_status("missing file", soak_mesh_load(missing, 0, &m, err, sizeof err), SOAK_ERR_IO);
+    printf("  message: %s\n", err);
+    check_true("missing message names file", strstr(err, missing) != NULL);
+    char garbage[300];
+    snprintf(garbage, sizeof garbage, "%s/garbage.ply", dir);
+    write_file(garbage, "ply\nthis is not a ply file\n");
+    err[0] = '\0';
+    check_true("garbage file fails", soak_mesh_load(garbage, 0, &m, err, sizeof err) != SOAK_OK);
+    printf("  message: %s\n", err);
+    check_true("garbage message names file", strstr(err, garbage) != NULL);
+    unlink(with_uv);
+    unlink(no_uv);
+    unlink(garbage);
+    rmdir(dir);
+}
+
+typedef struct job {
+    const soak_geometry *g;
+    int n, hits;
+    double sum_t;
+} job;
+
+static void *worker(void *arg)
+{
+    job *j = arg;
+    for (int i = 0; i < j->n; ++i) {
+        double a = 2 * SOAK_PI * i / j->n;
+        soak_ray r = mkray(soak_v3(3 * cos(a), 3 * sin(a), 0.5 * sin(3 * a)), soak_v3(-cos(a), -sin(a), 0));
+        soak_hit h;
+        int found;
+        if (soak_geometry_intersect(j->g, &r, &h, &found) == SOAK_OK && found) {
+            j->hits++;
+            j->sum_t += h.t;
+        }
+    }
+    return NULL;
+}
+
+static void test_threads(void)
+{
+    soak_geometry *g = NULL;
+    char err[256];
+    soak_geometry_create(&g, err, sizeof err);
+    soak_geometry_add_sphere(g, soak_v3(0, 0, 0), 1.0, NULL);
+    soak_geometry_commit(g);
+    job jobs[2] = {{g, 20000, 0, 0}, {g, 20000, 0, 0}};
+    pthread_t th[2];
+    for (int i = 0; i < 2; ++i) pthread_create(&th[i], NULL, worker, &jobs[i]);
+    for (int i = 0; i < 2; ++i) pthread_join(th[i], NULL);
+    /* Reference: t = 3 - sqrt(1 - z^2) for z = 0.5 sin(3a), by direct sum. */
+    double ref = 0;
+    for (int i = 0; i < 20000; ++i) {
+        double z = 0.5 * sin(3 * 2 * SOAK_PI * i / 20000);
+        ref += 3 - sqrt(1 - z * z);
+    }
+    for (int i = 0; i < 2; ++i) {
+        check_true("thread: every ray hits", jobs[i].hits == 20000);
+        check_rel("thread: sum of t vs analytic", jobs[i].sum_t, ref, 1e-12);
+    }
+    soak_ray rays[3] = {mkray(soak_v3(0, 0, -3), soak_v3(0, 0, 1)), mkray(soak_v3(5, 5, 5), soak_v3(1, 0, 0)),
+                        mkray(soak_v3(0, -3, 0), soak_v3(0, 1, 0))};
+    soak_hit hits[3];
+    int found[3], occ[3];
+    check_status("batch intersect", soak_geometry_intersect_n(g, rays, 3, hits, found), SOAK_OK);
+    check_true("batch found pattern", found[0] && !found[1] && found[2]);
+    check_close("batch t0", hits[0].t, 2.0, 1e-12);
+    check_status("batch occluded", soak_geometry_occluded_n(g, rays, 3, occ), SOAK_OK);
+    check_true("batch occluded pattern", occ[0] && !occ[1] && occ[2]);
+    soak_geometry_destroy(g);
+}
+
+int main(void)
+{
+    test_sphere();
+    test_quad_box();
+    test_mesh_files();
+    test_threads();
+    return check_finish();
+}

@@ -1,0 +1,78 @@
+// ctest-label: slow
+/* Volume photon map against next-event estimation on the same light.
+ *
+ * A scattering slab lit by an overhead sun, seen from above at the centre.
+ * Scene B: nothing else -- the sun reaches the medium by next-event
+ * estimation. Scene A: an index-matched "glass" sphere (ior 1: no refraction,
+ * no reflection) floats between the sun and the slab: it blocks shadow rays,
+ * so inside its shadow the sun can arrive only as caustic photons (they pass
+ * the dielectric, a specular event). Light transport is identical, so A must
+ * equal B up to the photon map's blur bias (radius 0.04 against a mean free
+ * path of 0.8; photons near the surface are under-counted by the half-empty
+ * gather sphere, about 1-2 %); we accept 4 standard errors + 4 %. Scene C,
+ * A without photons, must be much darker (only multiple scattering from
+ * outside the shadow), which shows the photons carry the light. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+#include "soak/render.h"
+#include "soak/scene.h"
+
+#define REPS 6
+
+static int render_mean(const char *text, int spp, double *mean, double *se)
+{
+    soak_scene scene;
+    char err[1024] = "";
+    if (!check_status("caustic scene", soak_scene_parse(text, "caustics", ".", &scene, err, sizeof err), SOAK_OK)) {
+        printf("  %s\n", err);
+        return 0;
+    }
+    double s = 0, s2 = 0;
+    for (int r = 0; r < REPS; ++r) {
+        soak_render_options opt;
+        soak_render_options_default(&opt);
+        opt.threads = 2;
+        opt.spp = spp;
+        opt.seed = 300 + (uint64_t)r;
+        soak_image img;
+        if (soak_render(&scene, &opt, &img, NULL, err, sizeof err) != SOAK_OK) break;
+        double v = (img.pixels[0] + img.pixels[1] + img.pixels[2]) / 3.0;
+        s += v;
+        s2 += v * v;
+        soak_image_free(&img);
+    }
+    soak_scene_free(&scene);
+    *mean = s / REPS;
+    *se = sqrt(fmax(0.0, (s2 / REPS - *mean * *mean) / (REPS - 1)));
+    return 1;
+}
+
+#define SLAB_SCENE(render_extra, lens)                                                                             \
+    "{\"render\": {\"width\": 1, \"height\": 1, \"max_depth\": 100" render_extra "},"                               \
+    " \"camera\": {\"position\": [0, 0, 20], \"look_at\": [0, 0, 0], \"up\": [0, 1, 0], \"fov\": 0.5},"             \
+    " \"lights\": [{\"type\": \"sun\", \"direction\": [0, 0, 1], \"irradiance\": 1}],"                              \
+    " \"materials\": {\"m\": {\"type\": \"wet\", \"film\": {\"coverage\": 0}, \"base\": {\"type\": \"medium\","     \
+    "                 \"sigma_s\": 1, \"sigma_a\": 0.25, \"g1\": 0.3, \"ior\": 1.4}},"                              \
+    "                 \"lens\": {\"type\": \"dielectric\", \"ior\": 1.0}},"                                          \
+    " \"objects\": [{\"type\": \"box\", \"min\": [-20, -20, -5], \"max\": [20, 20, 0], \"material\": \"m\"}" lens "]}"
+
+#define LENS ", {\"type\": \"sphere\", \"center\": [0, 0, 4], \"radius\": 2, \"material\": \"lens\"}"
+
+int main(void)
+{
+    setvbuf(stdout, NULL, _IONBF, 0);
+    double a, sa, b, sb, c, sc;
+    int ok = render_mean(SLAB_SCENE(", \"caustic_photons\": 400000, \"caustic_radius\": 0.04", LENS), 4000, &a, &sa);
+    ok = ok && render_mean(SLAB_SCENE("", ""), 4000, &b, &sb);
+    ok = ok && render_mean(SLAB_SCENE("", LENS), 4000, &c, &sc);
+    if (!ok) return check_finish();
+    printf("  sun through an index-matched sphere, photon map: %.5f +- %.5f\n", a, sa);
+    printf("  same light by next-event estimation (no sphere): %.5f +- %.5f\n", b, sb);
+    printf("  sphere without photons (shadow):                 %.5f +- %.5f\n", c, sc);
+    check_close("photon map = next-event estimation (4 sigma + 4 %)", a, b, 4 * sqrt(sa * sa + sb * sb) + 0.04 * b);
+    check_true("without photons the shadow is much darker (< 40 %)", c < 0.4 * b);
+    return check_finish();
+}
