@@ -8,7 +8,7 @@ out="$SOAK_TMP/demo"
 rm -rf "$out"
 expect_exit 0 "demo --help" -- "$SOAK" demo --help
 expect_exit 0 "demo runs" -- "$SOAK" demo --out "$out" --quick
-for f in albedo_table.csv swatches.png wetmap_turbulence.exr wetmap_turbulence.png wetmap_drying_t0.3.png wetmap_waves.png; do
+for f in albedo_table.csv swatches.png wetmap_turbulence.exr wetmap_turbulence.png wetmap_drying_t0.3.png wetmap_waves.png render_wet_dry.exr render_wet_dry.png; do
   [ -s "$out/$f" ] && ok "wrote $f" || bad "missing $f"
 done
 if command -v iinfo >/dev/null; then
