@@ -53,6 +53,26 @@ int cli_is(const char *arg, const char *opt)
     return strncmp(arg, opt, n) == 0 && (arg[n] == '\0' || arg[n] == '=');
 }
 
+int cli_dispatch_help(int argc, char **argv, void (*usage)(FILE *out))
+{
+    if (argc < 2) {
+        usage(stderr);
+        return SOAK_EXIT_USAGE;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
+        usage(stdout);
+        return SOAK_EXIT_OK;
+    }
+    return -1;
+}
+
+const soak_cli_command *cli_find(const soak_cli_command *table, int n, const char *name)
+{
+    for (int i = 0; i < n; ++i)
+        if (strcmp(name, table[i].name) == 0) return &table[i];
+    return NULL;
+}
+
 const char *cli_value(const char *cmd, int argc, char **argv, int *i)
 {
     const char *eq = strchr(argv[*i], '=');

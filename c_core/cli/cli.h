@@ -8,6 +8,7 @@
 #define SOAK_CLI_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 typedef struct soak_cli_command {
     const char *name;
@@ -41,6 +42,13 @@ const char *cli_value(const char *cmd, int argc, char **argv, int *i);
 
 /* 1 if argv[i] is opt or starts with "opt=". */
 int cli_is(const char *arg, const char *opt);
+
+/* Start of a dispatcher (soak, soak bake): with no argument prints usage on
+ * stderr and returns SOAK_EXIT_USAGE; for --help, -h or help prints it on
+ * stdout and returns SOAK_EXIT_OK; otherwise returns -1 (dispatch argv[1]). */
+int cli_dispatch_help(int argc, char **argv, void (*usage)(FILE *out));
+/* The entry of table named name, or NULL. */
+const soak_cli_command *cli_find(const soak_cli_command *table, int n, const char *name);
 
 /* Simple progress bar on stderr: "label [#####     ] 42% ETA 3s". Quiet when
  * stderr is not a terminal unless force is set by SOAK_PROGRESS=1. */

@@ -2,18 +2,11 @@
  * in bake_<kind>_cli.c; the maps themselves are computed by libsoak
  * (soak/bake.h, soak/bake_volume.h). */
 #include <stdio.h>
-#include <string.h>
 
 #include "bake_cli.h"
 #include "cli.h"
 
-typedef struct bake_kind {
-    const char *name;
-    const char *summary;
-    int (*run)(int argc, char **argv);
-} bake_kind;
-
-static const bake_kind kinds[] = {
+static const soak_cli_command kinds[] = {
     {"turbulence", "fBm / turbulence noise wetness, thresholded or not, tileable, animated", soak_bake_turbulence_main},
     {"waves", "beach wetness left by the last waves along a shoreline", soak_bake_waves_main},
     {"drying", "a wet mask drying from its borders (pore schedule) or by evaporation + diffusion",
@@ -40,16 +33,10 @@ static void usage(FILE *out)
 
 int soak_cmd_bake(int argc, char **argv)
 {
-    if (argc < 2) {
-        usage(stderr);
-        return SOAK_EXIT_USAGE;
-    }
-    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
-        usage(stdout);
-        return SOAK_EXIT_OK;
-    }
-    for (int i = 0; i < n_kinds; ++i)
-        if (strcmp(argv[1], kinds[i].name) == 0) return kinds[i].run(argc - 1, argv + 1);
+    int rc = cli_dispatch_help(argc, argv, usage);
+    if (rc >= 0) return rc;
+    const soak_cli_command *kind = cli_find(kinds, n_kinds, argv[1]);
+    if (kind) return kind->run(argc - 1, argv + 1);
     cli_error("bake", "unknown kind '%s' (expected turbulence, waves, drying, combine, volume or rain)", argv[1]);
     return SOAK_EXIT_USAGE;
 }

@@ -28,20 +28,14 @@ static void usage(FILE *out)
 
 int main(int argc, char **argv)
 {
-    if (argc < 2) {
-        usage(stderr);
-        return SOAK_EXIT_USAGE;
-    }
-    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
-        usage(stdout);
-        return SOAK_EXIT_OK;
-    }
+    int rc = cli_dispatch_help(argc, argv, usage);
+    if (rc >= 0) return rc;
     if (strcmp(argv[1], "--version") == 0) {
         printf("soak 0.1.0\n");
         return SOAK_EXIT_OK;
     }
-    for (int i = 0; i < n_commands; ++i)
-        if (strcmp(argv[1], commands[i].name) == 0) return commands[i].run(argc - 1, argv + 1);
+    const soak_cli_command *cmd = cli_find(commands, n_commands, argv[1]);
+    if (cmd) return cmd->run(argc - 1, argv + 1);
     fprintf(stderr, "soak: unknown command '%s' (see 'soak --help')\n", argv[1]);
     return SOAK_EXIT_USAGE;
 }

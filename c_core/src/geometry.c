@@ -91,6 +91,21 @@ static geo_object *push_object(soak_geometry *g)
 
 static int vec_ok(soak_vec3 v) { return soak_is_finite(v.x) && soak_is_finite(v.y) && soak_is_finite(v.z); }
 
+/* Commits geom and attaches it as object g->count (Embree errors surface
+ * through device_error into g->error). */
+static soak_status commit_and_attach(soak_geometry *g, RTCGeometry geom, unsigned *object_id)
+{
+    rtcCommitGeometry(geom);
+    g->error[0] = '\0';
+    rtcAttachGeometryByID(g->scene, geom, g->count);
+    rtcReleaseGeometry(geom);
+    if (g->error[0]) return SOAK_ERR_ARG;
+    if (object_id) *object_id = g->count;
+    g->count++;
+    g->committed = 0;
+    return SOAK_OK;
+}
+
 /* Hands a filled triangle object (last pushed) to Embree. */
 static soak_status attach_triangles(soak_geometry *g, geo_object *o, unsigned *object_id)
 {
@@ -104,15 +119,7 @@ static soak_status attach_triangles(soak_geometry *g, geo_object *o, unsigned *o
     }
     for (size_t i = 0; i < 3 * o->nv; ++i) vb[i] = (float)o->pos[i];
     memcpy(ib, o->idx, 3 * o->nt * sizeof(unsigned));
-    rtcCommitGeometry(geom);
-    g->error[0] = '\0';
-    rtcAttachGeometryByID(g->scene, geom, g->count);
-    rtcReleaseGeometry(geom);
-    if (g->error[0]) return SOAK_ERR_ARG;
-    if (object_id) *object_id = g->count;
-    g->count++;
-    g->committed = 0;
-    return SOAK_OK;
+    return commit_and_attach(g, geom, object_id);
 }
 
 static void free_object(geo_object *o)
@@ -353,15 +360,7 @@ soak_status soak_geometry_add_sphere(soak_geometry *g, soak_vec3 center, double 
     rtcSetGeometryBoundsFunction(geom, sphere_bounds, NULL);
     rtcSetGeometryIntersectFunction(geom, sphere_intersect);
     rtcSetGeometryOccludedFunction(geom, sphere_occluded);
-    rtcCommitGeometry(geom);
-    g->error[0] = '\0';
-    rtcAttachGeometryByID(g->scene, geom, g->count);
-    rtcReleaseGeometry(geom);
-    if (g->error[0]) return SOAK_ERR_ARG;
-    if (object_id) *object_id = g->count;
-    g->count++;
-    g->committed = 0;
-    return SOAK_OK;
+    return commit_and_attach(g, geom, object_id);
 }
 
 soak_status soak_geometry_commit(soak_geometry *g)

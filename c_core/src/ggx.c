@@ -4,6 +4,7 @@
 
 #include <stddef.h>
 
+#include "model_dirs.h"
 #include "soak/fresnel.h"
 
 static int alpha_ok(double alpha)
@@ -11,27 +12,11 @@ static int alpha_ok(double alpha)
     return soak_in_range(alpha, SOAK_GGX_ALPHA_MIN, SOAK_GGX_ALPHA_MAX);
 }
 
-/* Unit within tolerance and finite; on success *out is the renormalised vector. */
-static int unit_ok(soak_vec3 v, soak_vec3 *out)
-{
-    if (!soak_in_range(v.x, -2.0, 2.0) || !soak_in_range(v.y, -2.0, 2.0) || !soak_in_range(v.z, -2.0, 2.0))
-        return 0;
-    double l2 = soak_v3_dot(v, v);
-    if (!(fabs(l2 - 1.0) <= 2.0 * SOAK_GGX_UNIT_TOL)) return 0;
-    *out = soak_v3_scale(v, 1.0 / sqrt(l2));
-    return 1;
-}
-
-static int upper_unit_ok(soak_vec3 v, soak_vec3 *out)
-{
-    return unit_ok(v, out) && out->z > 0.0;
-}
-
 soak_status soak_ggx_D(double alpha, soak_vec3 h, double *D)
 {
     if (!D) return SOAK_ERR_NULL;
     soak_vec3 hn;
-    if (!alpha_ok(alpha) || !unit_ok(h, &hn)) return SOAK_ERR_ARG;
+    if (!alpha_ok(alpha) || !model_unit_ok(h, &hn)) return SOAK_ERR_ARG;
     *D = soak_ggx_D_raw(alpha, hn);
     return SOAK_OK;
 }
@@ -40,7 +25,7 @@ soak_status soak_ggx_G1(double alpha, soak_vec3 w, double *G)
 {
     if (!G) return SOAK_ERR_NULL;
     soak_vec3 wn;
-    if (!alpha_ok(alpha) || !upper_unit_ok(w, &wn)) return SOAK_ERR_ARG;
+    if (!alpha_ok(alpha) || !model_upper_unit_ok(w, &wn)) return SOAK_ERR_ARG;
     *G = soak_ggx_G1_raw(alpha, wn);
     return SOAK_OK;
 }
@@ -49,7 +34,7 @@ soak_status soak_ggx_G2(double alpha, soak_vec3 wi, soak_vec3 wo, double *G)
 {
     if (!G) return SOAK_ERR_NULL;
     soak_vec3 a, b;
-    if (!alpha_ok(alpha) || !upper_unit_ok(wi, &a) || !upper_unit_ok(wo, &b)) return SOAK_ERR_ARG;
+    if (!alpha_ok(alpha) || !model_upper_unit_ok(wi, &a) || !model_upper_unit_ok(wo, &b)) return SOAK_ERR_ARG;
     *G = soak_ggx_G2_raw(alpha, a, b);
     return SOAK_OK;
 }
@@ -83,8 +68,8 @@ soak_status soak_ggx_brdf_dielectric(double alpha, double eta, soak_vec3 wi, soa
 {
     if (!f) return SOAK_ERR_NULL;
     soak_vec3 a, b;
-    if (!alpha_ok(alpha) || !soak_in_range(eta, SOAK_ETA_MIN, SOAK_ETA_MAX) || !upper_unit_ok(wi, &a) ||
-        !upper_unit_ok(wo, &b))
+    if (!alpha_ok(alpha) || !soak_in_range(eta, SOAK_ETA_MIN, SOAK_ETA_MAX) || !model_upper_unit_ok(wi, &a) ||
+        !model_upper_unit_ok(wo, &b))
         return SOAK_ERR_ARG;
     return finish(soak_ggx_brdf_dielectric_raw(alpha, eta, a, b), f);
 }
@@ -95,7 +80,7 @@ soak_status soak_ggx_brdf_conductor(double alpha, double eta, double k, soak_vec
     if (!f) return SOAK_ERR_NULL;
     soak_vec3 a, b;
     if (!alpha_ok(alpha) || !soak_in_range(eta, SOAK_ETA_MIN, SOAK_ETA_MAX) ||
-        !soak_in_range(k, 0.0, SOAK_GGX_K_MAX) || !upper_unit_ok(wi, &a) || !upper_unit_ok(wo, &b))
+        !soak_in_range(k, 0.0, SOAK_GGX_K_MAX) || !model_upper_unit_ok(wi, &a) || !model_upper_unit_ok(wo, &b))
         return SOAK_ERR_ARG;
     return finish(soak_ggx_brdf_conductor_raw(alpha, eta, k, a, b), f);
 }
@@ -111,7 +96,7 @@ soak_status soak_ggx_pdf_vndf(double alpha, soak_vec3 wo, soak_vec3 h, double *p
 {
     if (!pdf_h) return SOAK_ERR_NULL;
     soak_vec3 a, b;
-    if (!alpha_ok(alpha) || !upper_unit_ok(wo, &a) || !unit_ok(h, &b)) return SOAK_ERR_ARG;
+    if (!alpha_ok(alpha) || !model_upper_unit_ok(wo, &a) || !model_unit_ok(h, &b)) return SOAK_ERR_ARG;
     return finish(pdf_vndf_raw(alpha, a, b), pdf_h);
 }
 
@@ -123,7 +108,7 @@ soak_status soak_ggx_sample_vndf(double alpha, soak_vec3 wo, double u1, double u
 {
     if (!h || !pdf_h) return SOAK_ERR_NULL;
     soak_vec3 v;
-    if (!alpha_ok(alpha) || !upper_unit_ok(wo, &v) || !soak_in_range(u1, 0.0, 1.0) ||
+    if (!alpha_ok(alpha) || !model_upper_unit_ok(wo, &v) || !soak_in_range(u1, 0.0, 1.0) ||
         !soak_in_range(u2, 0.0, 1.0))
         return SOAK_ERR_ARG;
 

@@ -22,6 +22,7 @@ soak_status soak_medium_rgb_validate(const soak_medium_rgb *m)
         if (!soak_in_range(soak_rgb_at(m->sigma_t, c), 0.0, SOAK_SIGMA_MAX) ||
             !soak_in_range(soak_rgb_at(m->albedo, c), 0.0, 1.0))
             return SOAK_ERR_ARG;
+    if (m->coeffs && !soak_in_range(m->majorant, 0.0, SOAK_SIGMA_MAX)) return SOAK_ERR_ARG;
     return soak_hg2_validate(&m->phase);
 }
 
@@ -30,8 +31,30 @@ void soak_walk_options_default(soak_walk_options *opt)
     opt->roulette = 1;
     opt->roulette_threshold = 0.25;
     opt->max_events = 1000000;
+    opt->weight = soak_rgb3(1, 1, 1);
     opt->on_scatter = NULL;
     opt->scatter_ctx = NULL;
+    opt->on_vertex = NULL;
+    opt->vertex_ctx = NULL;
+}
+
+static int unit_vector(soak_vec3 v)
+{
+    double l2 = soak_v3_dot(v, v);
+    return soak_in_range(l2, 1.0 - 1e-6, 1.0 + 1e-6);
+}
+
+static int finite_point(soak_vec3 p) { return soak_is_finite(p.x) && soak_is_finite(p.y) && soak_is_finite(p.z); }
+
+static int weights_ok(soak_rgb w)
+{
+    return soak_in_range(w.r, 0.0, 1e300) && soak_in_range(w.g, 0.0, 1e300) && soak_in_range(w.b, 0.0, 1e300);
+}
+
+static double rgb_max(soak_rgb c)
+{
+    double m = c.r > c.g ? c.r : c.g;
+    return m > c.b ? m : c.b;
 }
 
 static soak_status resolve_options(const soak_walk_options *opt, soak_walk_options *out)
@@ -41,14 +64,9 @@ static soak_status resolve_options(const soak_walk_options *opt, soak_walk_optio
         return SOAK_OK;
     }
     if (!soak_in_range(opt->roulette_threshold, 1e-12, 1.0) || opt->max_events < 1) return SOAK_ERR_ARG;
+    if (!weights_ok(opt->weight)) return SOAK_ERR_ARG;
     *out = *opt;
     return SOAK_OK;
-}
-
-static int unit_vector(soak_vec3 v)
-{
-    double l2 = soak_v3_dot(v, v);
-    return soak_in_range(l2, 1.0 - 1e-6, 1.0 + 1e-6);
 }
 
 /* Free-flight distance for extinction sigma (>= 0); INFINITY when sigma = 0.
@@ -57,6 +75,197 @@ static double free_flight(double sigma, soak_rng *rng)
 {
     double u = soak_rng_uniform(rng);
     return sigma > 0.0 ? -log(1.0 - u) / sigma : INFINITY;
+}
+
+/* ---- Scalar media, as RGB media with three equal channels ---------------- */
+
+/* Coefficients of a scalar heterogeneous medium: density * majorant. */
+static soak_status scalar_coeffs(const void *ctx, soak_vec3 pos, soak_medium_point *out)
+{
+    const soak_medium *m = ctx;
+    double d = m->density(m->density_ctx, pos);
+    if (!soak_in_range(d, 0.0, 1.0)) return SOAK_ERR_NUMERIC; /* delta tracking would be biased */
+    double st = d * m->sigma_t, ss = st * m->albedo;
+    out->sigma_s = soak_rgb3(ss, ss, ss);
+    out->sigma_a = soak_rgb3(st - ss, st - ss, st - ss);
+    out->phase = m->phase;
+    return SOAK_OK;
+}
+
+static soak_medium_rgb scalar_as_rgb(const soak_medium *m)
+{
+    soak_medium_rgb r = {soak_rgb3(m->sigma_t, m->sigma_t, m->sigma_t), soak_rgb3(m->albedo, m->albedo, m->albedo),
+                         m->phase, NULL, NULL, 0.0};
+    if (m->density) {
+        r.coeffs = scalar_coeffs;
+        r.coeffs_ctx = m;
+        r.majorant = m->sigma_t;
+    }
+    return r;
+}
+
+soak_status soak_medium_walk(const soak_medium *m, const soak_walk_options *opt_in, soak_vec3 pos,
+                             soak_vec3 dir, const soak_boundary *boundary, soak_rng *rng,
+                             soak_walk_result *out)
+{
+    if (!m || !out) return SOAK_ERR_NULL;
+    soak_status st = soak_medium_validate(m);
+    if (st != SOAK_OK) return st;
+    soak_walk_options opt;
+    if ((st = resolve_options(opt_in, &opt)) != SOAK_OK) return st;
+    opt.weight = soak_rgb3(1, 1, 1);
+    soak_medium_rgb rgb = scalar_as_rgb(m);
+    soak_walk_result_rgb r;
+    if ((st = soak_medium_walk_rgb(&rgb, &opt, pos, dir, boundary, rng, &r)) != SOAK_OK) return st;
+    *out = (soak_walk_result){r.end, r.pos, r.dir, r.weight.r, r.scatters, r.events};
+    return SOAK_OK;
+}
+
+soak_status soak_medium_transmittance(const soak_medium *m, soak_vec3 pos, soak_vec3 dir, double dist,
+                                      soak_rng *rng, double *T)
+{
+    if (!m || !T) return SOAK_ERR_NULL;
+    soak_status st = soak_medium_validate(m);
+    if (st != SOAK_OK) return st;
+    soak_medium_rgb rgb = scalar_as_rgb(m);
+    soak_rgb tr;
+    if ((st = soak_medium_rgb_transmittance(&rgb, pos, dir, dist, rng, &tr)) != SOAK_OK) return st;
+    *T = tr.r;
+    return SOAK_OK;
+}
+
+/* ---- The walk ------------------------------------------------------------- */
+
+/* Coefficients at pos, checked against the majorant; the null-collision
+ * coefficient mu - sigma_t is clamped at 0 within the tolerance. */
+static soak_status point_at(const soak_medium_rgb *m, soak_vec3 pos, soak_medium_point *p, soak_rgb *sigma_n)
+{
+    soak_status st = m->coeffs(m->coeffs_ctx, pos, p);
+    if (st != SOAK_OK) return st;
+    double mu = m->majorant, tol = 1e-9 * mu;
+    for (int c = 0; c < 3; ++c) {
+        double ss = soak_rgb_at(p->sigma_s, c), sa = soak_rgb_at(p->sigma_a, c);
+        if (!soak_in_range(ss, 0.0, SOAK_SIGMA_MAX) || !soak_in_range(sa, 0.0, SOAK_SIGMA_MAX) ||
+            !(ss + sa <= mu + tol))
+            return SOAK_ERR_NUMERIC;
+        soak_rgb_set(sigma_n, c, fmax(0.0, mu - ss - sa));
+    }
+    return SOAK_OK;
+}
+
+static soak_medium_point homogeneous_point(const soak_medium_rgb *m)
+{
+    soak_medium_point p;
+    for (int c = 0; c < 3; ++c) {
+        double st = soak_rgb_at(m->sigma_t, c), ss = st * soak_rgb_at(m->albedo, c);
+        soak_rgb_set(&p.sigma_s, c, ss);
+        soak_rgb_set(&p.sigma_a, c, st - ss);
+    }
+    p.phase = m->phase;
+    return p;
+}
+
+typedef enum flight_end { FLIGHT_SURFACE, FLIGHT_COLLISION, FLIGHT_CAPPED } flight_end;
+
+/* Homogeneous free flight toward a surface at dmax (channel MIS, see
+ * soak/medium.h). On a collision r->pos moves there and the weights take
+ * the collision factor sigma_s; at the surface they take the transmittance. */
+static soak_status fly_homogeneous(const soak_medium_rgb *m, double dmax, soak_walk_result_rgb *r, soak_rng *rng,
+                                   flight_end *end)
+{
+    double sig[3] = {m->sigma_t.r, m->sigma_t.g, m->sigma_t.b};
+    double alb[3] = {m->albedo.r, m->albedo.g, m->albedo.b};
+    double beta[3] = {r->weight.r, r->weight.g, r->weight.b};
+    double t;
+    if (sig[0] == sig[1] && sig[1] == sig[2]) {
+        t = free_flight(sig[0], rng); /* every channel has the same density: weights 1 */
+        if (t >= dmax) {
+            *end = FLIGHT_SURFACE;
+            return SOAK_OK;
+        }
+        for (int k = 0; k < 3; ++k) beta[k] *= alb[k];
+    } else {
+        double sum = beta[0] + beta[1] + beta[2];
+        double p[3] = {beta[0] / sum, beta[1] / sum, beta[2] / sum};
+        double u = soak_rng_uniform(rng);
+        int c = u < p[0] ? 0 : (u < p[0] + p[1] ? 1 : 2);
+        if (p[c] == 0.0) c = p[2] > 0.0 ? 2 : (p[1] > 0.0 ? 1 : 0); /* round-off at the top of [0,1) */
+        t = free_flight(sig[c], rng);
+        if (t >= dmax) {
+            if (dmax == INFINITY) {
+                *end = FLIGHT_SURFACE;
+                return SOAK_OK;
+            }
+            /* Probability of reaching the surface under the channel mixture. */
+            double pr = 0.0, tr[3];
+            for (int k = 0; k < 3; ++k) {
+                tr[k] = exp(-sig[k] * dmax);
+                pr += p[k] * tr[k];
+            }
+            if (!(pr > 0.0)) return SOAK_ERR_NUMERIC;
+            for (int k = 0; k < 3; ++k) soak_rgb_set(&r->weight, k, beta[k] * tr[k] / pr);
+            *end = FLIGHT_SURFACE;
+            return SOAK_OK;
+        }
+        double pdf = 0.0, f[3];
+        for (int k = 0; k < 3; ++k) {
+            f[k] = sig[k] * exp(-sig[k] * t);
+            pdf += p[k] * f[k];
+        }
+        if (!(pdf > 0.0)) return SOAK_ERR_NUMERIC;
+        for (int k = 0; k < 3; ++k) beta[k] *= alb[k] * f[k] / pdf;
+    }
+    r->weight = soak_rgb3(beta[0], beta[1], beta[2]);
+    r->pos = soak_v3_add(r->pos, soak_v3_scale(r->dir, t));
+    *end = FLIGHT_COLLISION;
+    return SOAK_OK;
+}
+
+/* Spectral tracking toward a surface at dmax (see soak/medium.h); *local
+ * receives the coefficients at a real collision. */
+static soak_status fly_heterogeneous(const soak_medium_rgb *m, double dmax, long max_events,
+                                     soak_walk_result_rgb *r, soak_rng *rng, soak_medium_point *local,
+                                     flight_end *end)
+{
+    double mu = m->majorant, t = 0.0;
+    for (;;) {
+        t += free_flight(mu, rng);
+        if (t >= dmax) {
+            *end = FLIGHT_SURFACE;
+            return SOAK_OK;
+        }
+        soak_vec3 x = soak_v3_add(r->pos, soak_v3_scale(r->dir, t));
+        soak_rgb sn;
+        soak_status st = point_at(m, x, local, &sn);
+        if (st != SOAK_OK) return st;
+        double mt = 0.0, mn = 0.0, bs[3], bn[3];
+        for (int c = 0; c < 3; ++c) {
+            double b = soak_rgb_at(r->weight, c), ss = soak_rgb_at(local->sigma_s, c);
+            bs[c] = b * ss;
+            bn[c] = b * soak_rgb_at(sn, c);
+            mt = fmax(mt, b * (ss + soak_rgb_at(local->sigma_a, c)));
+            mn = fmax(mn, bn[c]);
+        }
+        if (!(mt + mn > 0.0)) { /* every channel's throughput is gone */
+            r->weight = soak_rgb3(0, 0, 0);
+            r->pos = x;
+            *end = FLIGHT_COLLISION;
+            return SOAK_OK;
+        }
+        double P = mt / (mt + mn);
+        if (soak_rng_uniform(rng) < P) {
+            r->weight = soak_rgb3(bs[0] / (mu * P), bs[1] / (mu * P), bs[2] / (mu * P));
+            r->pos = x;
+            *end = FLIGHT_COLLISION;
+            return SOAK_OK;
+        }
+        r->weight = soak_rgb3(bn[0] / (mu * (1 - P)), bn[1] / (mu * (1 - P)), bn[2] / (mu * (1 - P)));
+        if (++r->events >= max_events) {
+            r->pos = x;
+            *end = FLIGHT_CAPPED; /* capped among null collisions */
+            return SOAK_OK;
+        }
+    }
 }
 
 static soak_status scatter(const soak_hg2 *phase, soak_vec3 *dir, soak_rng *rng, const soak_walk_options *opt)
@@ -75,139 +284,25 @@ static soak_status scatter(const soak_hg2 *phase, soak_vec3 *dir, soak_rng *rng,
     return SOAK_OK;
 }
 
-/* Unbiased Russian roulette: a weight w below the threshold t survives with
- * probability w/t and is then raised to t (expected value unchanged).
- * Returns 0 when the path is terminated. */
-static int roulette(double *weight, const soak_walk_options *opt, soak_rng *rng)
+/* Unbiased Russian roulette on the largest channel: below the threshold t a
+ * path survives with probability q = w_max/t and its weights are divided by
+ * q (expected value unchanged). Returns 0 when the path is terminated. */
+static int roulette(soak_rgb *weight, const soak_walk_options *opt, soak_rng *rng)
 {
-    if (!opt->roulette || *weight >= opt->roulette_threshold) return 1;
-    double q = *weight / opt->roulette_threshold;
+    double wmax = rgb_max(*weight);
+    if (!opt->roulette || wmax >= opt->roulette_threshold) return 1;
+    double q = wmax / opt->roulette_threshold;
     if (soak_rng_uniform(rng) >= q) return 0;
-    *weight = opt->roulette_threshold;
+    *weight = soak_rgb3(weight->r / q, weight->g / q, weight->b / q);
     return 1;
 }
 
-/* Delta tracking: returns the distance to the next real collision, or a
- * value >= dmax when the path reaches the boundary first. */
-static soak_status delta_track(const soak_medium *m, soak_vec3 pos, soak_vec3 dir, double dmax, soak_rng *rng,
-                               long *events, long max_events, double *t_out)
+static soak_status finish(soak_walk_result_rgb *r, soak_walk_end end, soak_walk_result_rgb *out)
 {
-    double t = 0.0;
-    for (;;) {
-        t += free_flight(m->sigma_t, rng);
-        if (t >= dmax) break;
-        double d = m->density(m->density_ctx, soak_v3_add(pos, soak_v3_scale(dir, t)));
-        if (!soak_in_range(d, 0.0, 1.0)) return SOAK_ERR_NUMERIC;
-        if (soak_rng_uniform(rng) < d) break;
-        if (++*events >= max_events) {
-            *t_out = -1.0; /* capped among null collisions */
-            return SOAK_OK;
-        }
-    }
-    *t_out = t;
+    r->end = end;
+    if (end == SOAK_WALK_ABSORBED) r->weight = soak_rgb3(0, 0, 0);
+    *out = *r;
     return SOAK_OK;
-}
-
-soak_status soak_medium_walk(const soak_medium *m, const soak_walk_options *opt_in, soak_vec3 pos,
-                             soak_vec3 dir, const soak_boundary *boundary, soak_rng *rng,
-                             soak_walk_result *out)
-{
-    if (!m || !boundary || !boundary->distance || !boundary->interact || !rng || !out) return SOAK_ERR_NULL;
-    soak_status st = soak_medium_validate(m);
-    if (st != SOAK_OK) return st;
-    soak_walk_options opt;
-    if ((st = resolve_options(opt_in, &opt)) != SOAK_OK) return st;
-    if (!soak_is_finite(pos.x) || !soak_is_finite(pos.y) || !soak_is_finite(pos.z) || !unit_vector(dir))
-        return SOAK_ERR_ARG;
-
-    soak_walk_result r = {SOAK_WALK_CAPPED, pos, dir, 1.0, 0, 0};
-    for (;;) {
-        if (r.events >= opt.max_events) break; /* capped: reported, never dropped silently */
-        double dmax = boundary->distance(boundary->ctx, r.pos, r.dir);
-        if (!(dmax >= 0.0)) return SOAK_ERR_NUMERIC;
-        double t;
-        if (m->density) {
-            if ((st = delta_track(m, r.pos, r.dir, dmax, rng, &r.events, opt.max_events, &t)) != SOAK_OK)
-                return st;
-            if (t < 0.0) break;
-        } else {
-            t = free_flight(m->sigma_t, rng);
-        }
-        ++r.events;
-        if (t >= dmax) {
-            if (dmax == INFINITY) break; /* flies off parallel to the surface: capped */
-            r.pos = soak_v3_add(r.pos, soak_v3_scale(r.dir, dmax));
-            soak_boundary_event ev = boundary->interact(boundary->ctx, r.pos, &r.dir, &r.weight, rng);
-            if (!soak_in_range(r.weight, 0.0, 1e300) || !unit_vector(r.dir)) return SOAK_ERR_NUMERIC;
-            if (ev == SOAK_BOUNDARY_EXIT) {
-                r.end = SOAK_WALK_EXITED;
-                *out = r;
-                return SOAK_OK;
-            }
-            if (ev == SOAK_BOUNDARY_ABSORB || r.weight == 0.0) {
-                r.end = SOAK_WALK_ABSORBED;
-                r.weight = 0.0;
-                *out = r;
-                return SOAK_OK;
-            }
-        } else {
-            r.pos = soak_v3_add(r.pos, soak_v3_scale(r.dir, t));
-            r.weight *= m->albedo;
-            if (r.weight == 0.0) {
-                r.end = SOAK_WALK_ABSORBED;
-                *out = r;
-                return SOAK_OK;
-            }
-            if ((st = scatter(&m->phase, &r.dir, rng, &opt)) != SOAK_OK) return st;
-            ++r.scatters;
-        }
-        if (!roulette(&r.weight, &opt, rng)) {
-            r.end = SOAK_WALK_ABSORBED;
-            r.weight = 0.0;
-            *out = r;
-            return SOAK_OK;
-        }
-    }
-    r.end = SOAK_WALK_CAPPED;
-    *out = r;
-    return SOAK_OK;
-}
-
-soak_status soak_medium_transmittance(const soak_medium *m, soak_vec3 pos, soak_vec3 dir, double dist,
-                                      soak_rng *rng, double *T)
-{
-    if (!m || !rng || !T) return SOAK_ERR_NULL;
-    soak_status st = soak_medium_validate(m);
-    if (st != SOAK_OK) return st;
-    if (!soak_in_range(dist, 0.0, INFINITY) || !unit_vector(dir)) return SOAK_ERR_ARG;
-    if (!m->density) {
-        *T = m->sigma_t > 0.0 ? exp(-m->sigma_t * dist) : 1.0;
-        return SOAK_OK;
-    }
-    if (m->sigma_t == 0.0) {
-        *T = 1.0;
-        return SOAK_OK;
-    }
-    if (dist == INFINITY) return SOAK_ERR_ARG; /* ratio tracking would not terminate */
-    double tr = 1.0, t = 0.0;
-    for (;;) {
-        t += free_flight(m->sigma_t, rng);
-        if (t >= dist) break;
-        double d = m->density(m->density_ctx, soak_v3_add(pos, soak_v3_scale(dir, t)));
-        if (!soak_in_range(d, 0.0, 1.0)) return SOAK_ERR_NUMERIC;
-        tr *= 1.0 - d;
-        if (tr == 0.0) break;
-    }
-    *T = tr;
-    return SOAK_OK;
-}
-
-/* ---- RGB -------------------------------------------------------------- */
-
-static double rgb_max(soak_rgb c)
-{
-    double m = c.r > c.g ? c.r : c.g;
-    return m > c.b ? m : c.b;
 }
 
 soak_status soak_medium_walk_rgb(const soak_medium_rgb *m, const soak_walk_options *opt_in, soak_vec3 pos,
@@ -219,82 +314,74 @@ soak_status soak_medium_walk_rgb(const soak_medium_rgb *m, const soak_walk_optio
     if (st != SOAK_OK) return st;
     soak_walk_options opt;
     if ((st = resolve_options(opt_in, &opt)) != SOAK_OK) return st;
-    if (!soak_is_finite(pos.x) || !soak_is_finite(pos.y) || !soak_is_finite(pos.z) || !unit_vector(dir))
-        return SOAK_ERR_ARG;
+    if (!finite_point(pos) || !unit_vector(dir)) return SOAK_ERR_ARG;
 
-    soak_walk_result_rgb r = {SOAK_WALK_CAPPED, pos, dir, soak_rgb3(1, 1, 1), 0, 0};
-    double sig[3] = {m->sigma_t.r, m->sigma_t.g, m->sigma_t.b};
-    double alb[3] = {m->albedo.r, m->albedo.g, m->albedo.b};
-    while (r.events < opt.max_events) {
-        double beta[3] = {r.weight.r, r.weight.g, r.weight.b};
-        double sum = beta[0] + beta[1] + beta[2];
-        if (!(sum > 0.0)) {
-            r.end = SOAK_WALK_ABSORBED;
-            r.weight = soak_rgb3(0, 0, 0);
-            *out = r;
-            return SOAK_OK;
-        }
-        double p[3] = {beta[0] / sum, beta[1] / sum, beta[2] / sum};
-        double u = soak_rng_uniform(rng);
-        int c = u < p[0] ? 0 : (u < p[0] + p[1] ? 1 : 2);
-        if (p[c] == 0.0) c = p[2] > 0.0 ? 2 : (p[1] > 0.0 ? 1 : 0); /* round-off at the top of [0,1) */
+    soak_walk_result_rgb r = {SOAK_WALK_CAPPED, pos, dir, opt.weight, 0, 0};
+    soak_medium_point local = homogeneous_point(m);
+    while (r.events < opt.max_events) { /* capped: reported, never dropped silently */
+        if (!(rgb_max(r.weight) > 0.0)) return finish(&r, SOAK_WALK_ABSORBED, out);
         double dmax = boundary->distance(boundary->ctx, r.pos, r.dir);
         if (!(dmax >= 0.0)) return SOAK_ERR_NUMERIC;
-        double t = free_flight(sig[c], rng);
+        flight_end fe;
+        st = m->coeffs ? fly_heterogeneous(m, dmax, opt.max_events, &r, rng, &local, &fe)
+                       : fly_homogeneous(m, dmax, &r, rng, &fe);
+        if (st != SOAK_OK) return st;
+        if (fe == FLIGHT_CAPPED) break;
         ++r.events;
-        if (t >= dmax) {
-            if (dmax == INFINITY) break;
-            /* Probability of reaching the surface under the channel mixture. */
-            double pr = 0.0, tr[3];
-            for (int k = 0; k < 3; ++k) {
-                tr[k] = exp(-sig[k] * dmax);
-                pr += p[k] * tr[k];
-            }
-            if (!(pr > 0.0)) return SOAK_ERR_NUMERIC;
-            for (int k = 0; k < 3; ++k) soak_rgb_set(&r.weight, k, beta[k] * tr[k] / pr);
+        if (fe == FLIGHT_SURFACE) {
+            if (dmax == INFINITY) break; /* flies off parallel to the surface: capped */
             r.pos = soak_v3_add(r.pos, soak_v3_scale(r.dir, dmax));
-            double w = 1.0;
-            soak_boundary_event ev = boundary->interact(boundary->ctx, r.pos, &r.dir, &w, rng);
-            if (!soak_in_range(w, 0.0, 1e300) || !unit_vector(r.dir)) return SOAK_ERR_NUMERIC;
-            r.weight = soak_rgb3(r.weight.r * w, r.weight.g * w, r.weight.b * w);
-            if (ev == SOAK_BOUNDARY_EXIT) {
-                r.end = SOAK_WALK_EXITED;
-                *out = r;
-                return SOAK_OK;
-            }
-            if (ev == SOAK_BOUNDARY_ABSORB) {
-                r.end = SOAK_WALK_ABSORBED;
-                r.weight = soak_rgb3(0, 0, 0);
-                *out = r;
-                return SOAK_OK;
-            }
+            soak_boundary_event ev = boundary->interact(boundary->ctx, &r.pos, &r.dir, &r.weight, rng);
+            if (!weights_ok(r.weight) || !unit_vector(r.dir) || !finite_point(r.pos)) return SOAK_ERR_NUMERIC;
+            if (ev == SOAK_BOUNDARY_EXIT) return finish(&r, SOAK_WALK_EXITED, out);
+            if (ev == SOAK_BOUNDARY_ABSORB || !(rgb_max(r.weight) > 0.0)) return finish(&r, SOAK_WALK_ABSORBED, out);
         } else {
-            double pdf = 0.0, f[3];
-            for (int k = 0; k < 3; ++k) {
-                f[k] = sig[k] * exp(-sig[k] * t);
-                pdf += p[k] * f[k];
-            }
-            if (!(pdf > 0.0)) return SOAK_ERR_NUMERIC;
-            for (int k = 0; k < 3; ++k) soak_rgb_set(&r.weight, k, beta[k] * alb[k] * f[k] / pdf);
-            r.pos = soak_v3_add(r.pos, soak_v3_scale(r.dir, t));
-            if ((st = scatter(&m->phase, &r.dir, rng, &opt)) != SOAK_OK) return st;
+            if (!(rgb_max(r.weight) > 0.0)) return finish(&r, SOAK_WALK_ABSORBED, out);
+            if (!weights_ok(r.weight)) return SOAK_ERR_NUMERIC;
+            if (opt.on_vertex && !opt.on_vertex(opt.vertex_ctx, r.pos, r.dir, r.weight, &local, rng))
+                return finish(&r, SOAK_WALK_STOPPED, out);
+            if ((st = scatter(&local.phase, &r.dir, rng, &opt)) != SOAK_OK) return st;
             ++r.scatters;
         }
-        double wmax = rgb_max(r.weight);
-        if (!soak_in_range(wmax, 0.0, 1e300)) return SOAK_ERR_NUMERIC;
-        if (opt.roulette && wmax < opt.roulette_threshold) {
-            double q = wmax / opt.roulette_threshold;
-            if (soak_rng_uniform(rng) >= q) {
-                r.end = SOAK_WALK_ABSORBED;
-                r.weight = soak_rgb3(0, 0, 0);
-                *out = r;
-                return SOAK_OK;
-            }
-            r.weight = soak_rgb3(r.weight.r / q, r.weight.g / q, r.weight.b / q);
-        }
+        if (!roulette(&r.weight, &opt, rng)) return finish(&r, SOAK_WALK_ABSORBED, out);
     }
-    r.end = SOAK_WALK_CAPPED;
-    *out = r;
+    return finish(&r, SOAK_WALK_CAPPED, out);
+}
+
+soak_status soak_medium_rgb_transmittance(const soak_medium_rgb *m, soak_vec3 pos, soak_vec3 dir, double dist,
+                                          soak_rng *rng, soak_rgb *T)
+{
+    if (!m || !rng || !T) return SOAK_ERR_NULL;
+    soak_status st = soak_medium_rgb_validate(m);
+    if (st != SOAK_OK) return st;
+    if (!soak_in_range(dist, 0.0, INFINITY) || !unit_vector(dir)) return SOAK_ERR_ARG;
+    if (!m->coeffs) {
+        soak_rgb tr;
+        for (int c = 0; c < 3; ++c) {
+            double s = soak_rgb_at(m->sigma_t, c);
+            soak_rgb_set(&tr, c, s > 0.0 ? exp(-s * dist) : 1.0);
+        }
+        *T = tr;
+        return SOAK_OK;
+    }
+    if (m->majorant == 0.0) {
+        *T = soak_rgb3(1, 1, 1);
+        return SOAK_OK;
+    }
+    if (dist == INFINITY) return SOAK_ERR_ARG; /* ratio tracking would not terminate */
+    /* Ratio tracking: Novak et al. 2018, sec. 5.1. */
+    soak_rgb tr = soak_rgb3(1, 1, 1);
+    double t = 0.0, mu = m->majorant;
+    for (;;) {
+        t += free_flight(mu, rng);
+        if (t >= dist) break;
+        soak_medium_point p;
+        soak_rgb sn;
+        if ((st = point_at(m, soak_v3_add(pos, soak_v3_scale(dir, t)), &p, &sn)) != SOAK_OK) return st;
+        tr = soak_rgb3(tr.r * sn.r / mu, tr.g * sn.g / mu, tr.b * sn.b / mu);
+        if (rgb_max(tr) == 0.0) break;
+    }
+    *T = tr;
     return SOAK_OK;
 }
 
@@ -347,13 +434,14 @@ static soak_vec3 cosine_up(soak_rng *rng)
     return soak_v3(r * cos(phi), r * sin(phi), z);
 }
 
-static soak_boundary_event slab_interact(const void *ctx, soak_vec3 pos, soak_vec3 *dir, double *weight,
+static soak_boundary_event slab_interact(const void *ctx, soak_vec3 *pos, soak_vec3 *dir, soak_rgb *weight,
                                          soak_rng *rng)
 {
     const soak_slab_boundary *s = ctx;
     (void)pos;
     if (dir->z < 0.0 && s->diffuse_base) {
-        *weight *= s->base_albedo;
+        double a = s->base_albedo;
+        *weight = soak_rgb3(weight->r * a, weight->g * a, weight->b * a);
         *dir = cosine_up(rng);
         return SOAK_BOUNDARY_REFLECT;
     }

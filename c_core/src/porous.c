@@ -5,23 +5,7 @@
 #include <math.h>
 #include <stddef.h>
 
-#define UNIT_TOL 1e-6
-
-/* Unit within tolerance and finite; *out is the renormalised vector. */
-static int unit_ok(soak_vec3 v, soak_vec3 *out)
-{
-    if (!soak_in_range(v.x, -2.0, 2.0) || !soak_in_range(v.y, -2.0, 2.0) || !soak_in_range(v.z, -2.0, 2.0))
-        return 0;
-    double l2 = soak_v3_dot(v, v);
-    if (!(fabs(l2 - 1.0) <= 2.0 * UNIT_TOL)) return 0;
-    *out = soak_v3_scale(v, 1.0 / sqrt(l2));
-    return 1;
-}
-
-static double polar_angle(soak_vec3 w)
-{
-    return atan2(sqrt(w.x * w.x + w.y * w.y), w.z);
-}
+#include "model_dirs.h"
 
 /* ---- building blocks ---- */
 
@@ -165,7 +149,7 @@ static soak_porous_coeffs coeffs_raw(const soak_porous_params *p, double fill, s
     soak_porous_coeffs c;
     double r = p->ks + p->kd;
     c.Gp = gp_raw(p->m, wi.z, wo.z);
-    c.nb = soak_porous_nb_raw(p->sp, polar_angle(wi), polar_angle(wo));
+    c.nb = soak_porous_nb_raw(p->sp, model_theta(wi), model_theta(wo));
     c.Ap = soak_porous_Ap_raw(1.0 - r, c.nb);
     double aG = p->porosity * c.Gp;
     c.kd_wet = p->kd * (1.0 - aG) + aG * r * soak_porous_keep_raw(r, c.nb) * (1.0 - fill);
@@ -179,7 +163,7 @@ static soak_status check_pair(const soak_porous_params *p, double fill, soak_vec
 {
     soak_status s = soak_porous_validate(p);
     if (s != SOAK_OK) return s;
-    if (!soak_in_range(fill, 0.0, 1.0) || !unit_ok(wi, a) || !unit_ok(wo, b)) return SOAK_ERR_ARG;
+    if (!soak_in_range(fill, 0.0, 1.0) || !model_unit_ok(wi, a) || !model_unit_ok(wo, b)) return SOAK_ERR_ARG;
     return SOAK_OK;
 }
 

@@ -6,13 +6,13 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "model_dirs.h"
 #include "soak/ggx.h"
 
 #define N_TAB SOAK_POROUS_GGX_TABLE
 #define MU_MIN 1e-6 /* first table node; below it the node-0 value is used */
 #define SETUP_GL 20 /* Gauss nodes per axis (and u2 panel) over the VNDF sample square */
 #define ALB_GL 4     /* Gauss nodes per table segment for the white-sky albedo */
-#define UNIT_TOL 1e-6
 
 soak_status soak_porous_ggx_validate(const soak_porous_ggx_params *p)
 {
@@ -210,21 +210,6 @@ static double rho_eff(const soak_porous_ggx *c, double fill, double aG, double t
     return c->p.albedo * (1.0 - aG) + aG * c->r_wall * soak_porous_keep_raw(c->r_wall, nb) * (1.0 - fill);
 }
 
-static int unit_ok(soak_vec3 v, soak_vec3 *out)
-{
-    if (!soak_in_range(v.x, -2.0, 2.0) || !soak_in_range(v.y, -2.0, 2.0) || !soak_in_range(v.z, -2.0, 2.0))
-        return 0;
-    double l2 = soak_v3_dot(v, v);
-    if (!(fabs(l2 - 1.0) <= 2.0 * UNIT_TOL)) return 0;
-    *out = soak_v3_scale(v, 1.0 / sqrt(l2));
-    return 1;
-}
-
-static double theta_of(soak_vec3 v)
-{
-    return atan2(sqrt(v.x * v.x + v.y * v.y), v.z);
-}
-
 static double eval_raw(const soak_porous_ggx *c, double fill, soak_vec3 a, soak_vec3 b)
 {
     if (!(a.z > 0.0 && b.z > 0.0)) return 0.0;
@@ -234,7 +219,7 @@ static double eval_raw(const soak_porous_ggx *c, double fill, soak_vec3 a, soak_
     double W = weight_avg(c, fill);
     double diff = 0.0;
     if (W > 0.0)
-        diff = rho_eff(c, fill, aG, theta_of(a), theta_of(b)) * weight(c, fill, a.z) * weight(c, fill, b.z) /
+        diff = rho_eff(c, fill, aG, model_theta(a), model_theta(b)) * weight(c, fill, a.z) * weight(c, fill, b.z) /
                (SOAK_PI * W);
     return spec + diff;
 }
@@ -245,7 +230,7 @@ soak_status soak_porous_ggx_eval(const soak_porous_ggx *c, double fill, soak_vec
     soak_vec3 a, b;
     soak_status s = soak_porous_ggx_validate(&c->p);
     if (s != SOAK_OK) return s;
-    if (!soak_in_range(fill, 0.0, 1.0) || !unit_ok(wi, &a) || !unit_ok(wo, &b)) return SOAK_ERR_ARG;
+    if (!soak_in_range(fill, 0.0, 1.0) || !model_unit_ok(wi, &a) || !model_unit_ok(wo, &b)) return SOAK_ERR_ARG;
     double v = eval_raw(c, fill, a, b);
     if (!soak_is_finite(v)) return SOAK_ERR_NUMERIC;
     *f = v;
@@ -298,7 +283,7 @@ soak_status soak_porous_ggx_pdf(const soak_porous_ggx *c, double fill, soak_vec3
     soak_vec3 a, b;
     soak_status s = soak_porous_ggx_validate(&c->p);
     if (s != SOAK_OK) return s;
-    if (!soak_in_range(fill, 0.0, 1.0) || !unit_ok(wi, &a) || !unit_ok(wo, &b)) return SOAK_ERR_ARG;
+    if (!soak_in_range(fill, 0.0, 1.0) || !model_unit_ok(wi, &a) || !model_unit_ok(wo, &b)) return SOAK_ERR_ARG;
     double v = pdf_raw(c, fill, a, b);
     if (!soak_is_finite(v)) return SOAK_ERR_NUMERIC;
     *pdf = v;
@@ -312,7 +297,7 @@ soak_status soak_porous_ggx_sample(const soak_porous_ggx *c, double fill, soak_v
     soak_vec3 a;
     soak_status s = soak_porous_ggx_validate(&c->p);
     if (s != SOAK_OK) return s;
-    if (!soak_in_range(fill, 0.0, 1.0) || !unit_ok(wi, &a) || !soak_in_range(u_lobe, 0.0, 1.0) ||
+    if (!soak_in_range(fill, 0.0, 1.0) || !model_unit_ok(wi, &a) || !soak_in_range(u_lobe, 0.0, 1.0) ||
         !soak_in_range(u1, 0.0, 1.0) || !soak_in_range(u2, 0.0, 1.0))
         return SOAK_ERR_ARG;
     soak_vec3 b = soak_v3(0.0, 0.0, 1.0);

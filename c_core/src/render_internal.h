@@ -7,6 +7,8 @@
 #include <string.h>
 
 #include "soak/geometry.h"
+#include "soak/hg.h"
+#include "soak/medium.h"
 #include "soak/render.h"
 #include "soak/rng.h"
 #include "soak/scene.h"
@@ -74,6 +76,12 @@ static inline soak_vec3 rt_to_world(const rt_frame *f, soak_vec3 v)
     return soak_v3_add(soak_v3_add(soak_v3_scale(f->t, v.x), soak_v3_scale(f->b, v.y)), soak_v3_scale(f->n, v.z));
 }
 
+/* Two-term HG value (soak/hg.h) for an already validated phase function. */
+static inline double rt_hg2(const soak_hg2 *p, double cos_theta)
+{
+    return p->w * soak_hg_eval_raw(p->g1, cos_theta) + (1 - p->w) * soak_hg_eval_raw(p->g2, cos_theta);
+}
+
 /* Power heuristic with exponent 2 (Veach 1997, eq. 9.13). */
 static inline double rt_power(double a, double b)
 {
@@ -120,24 +128,41 @@ typedef struct rt_path {
  * path->L, updates beta and sets the next ray (or alive = 0). */
 void rt_surface(rt_thread *t, const soak_hit *hit, rt_path *path);
 
-/* ---- media (render_medium.c) ---- */
-/* Wet material with a scattering base: enters at hit (from air, direction
- * path->dir), walks, exits or dies. */
-void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, const soak_material *m, rt_path *path);
-
-/* Medium parameters at a point (grid or homogeneous). */
-typedef struct rt_med_point {
-    soak_rgb ss, sa;
-    soak_hg2 phase;
-} rt_med_point;
-void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, rt_med_point *out);
-
 /* The air | film | material layer stack of a wet surface. */
 typedef struct rt_stack {
     double n2, n3, k;  /* film (1 = none), material, Fresnel exponent */
     soak_rgb alpha;    /* film absorption, 1/length */
     double h;          /* film thickness */
 } rt_stack;
+
+/* ---- media (render_medium.c) ---- */
+/* Wet material with a scattering base: enters at hit (from air, direction
+ * path->dir), walks, exits or dies. */
+void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, const soak_material *m, rt_path *path);
+
+/* The scene medium as the random walk of soak/medium.h sees it: homogeneous
+ * per-channel, or the grid (rt_medium_at) under its majorant. */
+soak_medium_rgb rt_medium_rgb(const soak_scene_medium *m);
+/* Walk options of the renderer: roulette on max beta (threshold 1), cap RT_MEDIUM_MAX_EVENTS. */
+soak_walk_options rt_walk_options(soak_rgb beta);
+/* Walk boundary: the scene's surfaces, the wet film stack of a medium object
+ * crossed upward on arrival (reflection back in, or exit). */
+typedef struct rt_med_surface {
+    soak_hit hit;     /* last surface found by the distance callback */
+    int lost;         /* the ray missed every surface: open geometry */
+    soak_vec3 n_ref;  /* outward normal of the last surface crossed */
+} rt_med_surface;
+typedef struct rt_med_boundary {
+    rt_thread *t;
+    rt_med_surface *surf;
+    const soak_object *obj;
+    const soak_material *m;
+    const rt_stack *stack;
+} rt_med_boundary;
+soak_boundary rt_med_boundary_make(const rt_med_boundary *b);
+/* Medium parameters at a point (grid or homogeneous). */
+void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, soak_medium_point *out);
+
 /* Crosses the stack with Snell invariant p = n sin(theta), starting in the
  * material going up (start_low) or in air going down. Returns 1 when it ends
  * in the material, 0 in air. Multiplies *beta by the film absorption only. */

@@ -20,17 +20,16 @@
  * (seed 000 sec. 4.2: "more specular due to the smoother air-water
  * interface"). The reflected share is traced as a mirror reflection.
  *
- * Inside: spectral tracking (Kutz, Habel, Li, Novak, "Spectral and
- * decomposition tracking for rendering heterogeneous volumes", SIGGRAPH
- * 2017, sec. 5.2) against the majorant mu = max sigma_t: at a tentative
- * collision the event is a real scatter with probability Ps proportional to
- * max_c(beta_c sigma_s,c) or a null collision with Pn proportional to
- * max_c(beta_c sigma_n,c), sigma_n = mu - sigma_t, and each channel's
- * throughput is multiplied by sigma_s,c / (mu Ps) resp. sigma_n,c / (mu Pn).
- * Absorption is carried in these weights, never by killing paths; Russian
+ * Inside: the random walk of soak/medium.h (soak_medium_walk_rgb), the same
+ * one `soak measure` validates: per-channel free flights with one-sample MIS
+ * over the channels for a homogeneous medium, spectral tracking (Kutz, Habel,
+ * Li, Novak, SIGGRAPH 2017, sec. 5.2) against the majorant for a grid.
+ * Absorption is carried in the weights, never by killing paths; Russian
  * roulette on max_c beta_c (survival min(1, max beta)) keeps the estimate
  * unbiased at albedo 1, where it never fires (long walks are capped at
- * RT_MEDIUM_MAX_EVENTS and counted).
+ * RT_MEDIUM_MAX_EVENTS and counted). The boundary of the walk is the scene:
+ * distances by ray casting, and a path arriving at the surface crosses the
+ * layer stack upward (rt_cross_stack), reflected back in or leaving.
  *
  * Next-event estimation inside the medium (seed 000 sec. 3.1: "for the shadow
  * rays ... we use Equation 4"): for each delta light (sun, point) the light
@@ -54,13 +53,14 @@
 #include "soak/fresnel.h"
 #include "soak/hg.h"
 #include "soak/jensen.h"
+#include "soak/medium.h"
 
 static double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
-void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, rt_med_point *out)
+void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, soak_medium_point *out)
 {
-    out->ss = m->sigma_s;
-    out->sa = m->sigma_a;
+    out->sigma_s = m->sigma_s;
+    out->sigma_a = m->sigma_a;
     out->phase = m->phase;
     const soak_volume *v = m->volume;
     if (!v) return;
@@ -85,32 +85,43 @@ void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, rt_med_point *out)
         double c11 = lerp(p[soak_volume_index(v, i0[0], i1[1], i1[2])], p[soak_volume_index(v, i1[0], i1[1], i1[2])], fr[0]);
         val[ch] = lerp(lerp(c00, c10, fr[1]), lerp(c01, c11, fr[1]), fr[2]);
     }
-    out->ss = soak_rgb3(val[SOAK_VOL_SIGMA_S_R], val[SOAK_VOL_SIGMA_S_G], val[SOAK_VOL_SIGMA_S_B]);
-    out->sa = soak_rgb3(val[SOAK_VOL_SIGMA_A_R], val[SOAK_VOL_SIGMA_A_G], val[SOAK_VOL_SIGMA_A_B]);
+    out->sigma_s = soak_rgb3(val[SOAK_VOL_SIGMA_S_R], val[SOAK_VOL_SIGMA_S_G], val[SOAK_VOL_SIGMA_S_B]);
+    out->sigma_a = soak_rgb3(val[SOAK_VOL_SIGMA_A_R], val[SOAK_VOL_SIGMA_A_G], val[SOAK_VOL_SIGMA_A_B]);
     out->phase.g1 = val[SOAK_VOL_G1];
     out->phase.g2 = val[SOAK_VOL_G2];
     out->phase.w = val[SOAK_VOL_W];
 }
 
-/* Transmittance along a segment: exact when homogeneous, ratio tracking
- * (Novak et al., CGF 37(2) 2018, sec. 5.1) against the majorant otherwise. */
-static soak_rgb transmittance(rt_thread *t, const soak_scene_medium *m, soak_vec3 x, soak_vec3 d, double dist)
+static soak_status grid_coeffs(const void *ctx, soak_vec3 pos, soak_medium_point *out)
 {
-    soak_rgb st = rgb_add(m->sigma_s, m->sigma_a);
-    if (!m->volume) return rgb_exp(st, dist);
-    soak_rgb T = soak_rgb3(1, 1, 1);
-    double mu = m->majorant, s = 0;
-    if (!(mu > 0)) return T;
-    for (;;) {
-        s += -log(1 - rt_rand(t)) / mu;
-        if (s >= dist) return T;
-        rt_med_point mp;
-        rt_medium_at(m, soak_v3_add(x, soak_v3_scale(d, s)), &mp);
-        T.r *= 1 - (mp.ss.r + mp.sa.r) / mu;
-        T.g *= 1 - (mp.ss.g + mp.sa.g) / mu;
-        T.b *= 1 - (mp.ss.b + mp.sa.b) / mu;
-        if (!(rgb_max(T) > 1e-12)) return soak_rgb3(0, 0, 0);
+    rt_medium_at(ctx, pos, out);
+    return SOAK_OK;
+}
+
+soak_medium_rgb rt_medium_rgb(const soak_scene_medium *m)
+{
+    soak_rgb st = rgb_add(m->sigma_s, m->sigma_a), albedo;
+    for (int c = 0; c < 3; ++c) {
+        double t = soak_rgb_at(st, c);
+        soak_rgb_set(&albedo, c, t > 0 ? fmin(1.0, soak_rgb_at(m->sigma_s, c) / t) : 1.0);
     }
+    soak_medium_rgb r = {st, albedo, m->phase, NULL, NULL, 0.0};
+    if (m->volume) {
+        r.coeffs = grid_coeffs;
+        r.coeffs_ctx = m;
+        r.majorant = m->majorant;
+    }
+    return r;
+}
+
+soak_walk_options rt_walk_options(soak_rgb beta)
+{
+    soak_walk_options o;
+    soak_walk_options_default(&o);
+    o.roulette_threshold = 1.0;
+    o.max_events = RT_MEDIUM_MAX_EVENTS;
+    o.weight = beta;
+    return o;
 }
 
 /* Crosses the layer stack. p = n sin(theta), the Snell invariant. start_low:
@@ -192,15 +203,31 @@ static double film_shadow(const soak_material *m, double cover, double cos1)
     return cover * T_wet + (1 - cover) * T_dry;
 }
 
-static void medium_nee(rt_thread *t, const soak_material *m, const soak_object *obj, const soak_scene_medium *med,
-                       soak_vec3 x, soak_vec3 d_in, const soak_hg2 *phase, soak_vec3 n_ref, rt_path *path)
+typedef struct nee_ctx {
+    rt_thread *t;
+    const soak_material *m;
+    const soak_object *obj;
+    const soak_medium_rgb *med;
+    const rt_med_surface *surf;
+    unsigned object_id;
+    rt_path *path;
+} nee_ctx;
+
+/* Vertex hook of the walk: delta lights by next-event estimation (see the
+ * top of this file) and the caustic photon map, both times 1/n3^2. */
+static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, const soak_medium_point *local,
+                         soak_rng *rng)
 {
+    (void)rng; /* the thread's generator: rt_rand draws from the same stream */
+    const nee_ctx *c = ctx;
+    rt_thread *t = c->t;
     const soak_scene *s = t->ctx->scene;
+    const soak_material *m = c->m;
     double n3 = m->medium.ior;
     for (int li = 0; li < s->n_lights; ++li) {
         const soak_light *l = &s->lights[li];
         if (l->type != SOAK_LIGHT_DIRECTIONAL && l->type != SOAK_LIGHT_POINT) continue;
-        soak_vec3 n = n_ref, wl = l->type == SOAK_LIGHT_DIRECTIONAL ? l->direction : soak_v3_norm(soak_v3_sub(l->position, x));
+        soak_vec3 n = c->surf->n_ref, wl = l->type == SOAK_LIGHT_DIRECTIONAL ? l->direction : soak_v3_norm(soak_v3_sub(l->position, x));
         soak_hit h;
         int found = 0;
         soak_vec3 d3 = wl;
@@ -239,17 +266,16 @@ static void medium_nee(rt_thread *t, const soak_material *m, const soak_object *
             dist_light = sqrt(r2);
             E = rgb_scale(E, 1.0 / r2);
         }
-        double cover = soak_scene_wetness(obj, h.p, h.u, h.v) * m->film_coverage;
+        double cover = soak_scene_wetness(c->obj, h.p, h.u, h.v) * m->film_coverage;
         double Tf = film_shadow(m, cover, cos1);
         if (!(Tf > 0)) continue;
-        double ph = phase->w * soak_hg_eval_raw(phase->g1, soak_v3_dot(d_in, d3)) +
-                    (1 - phase->w) * soak_hg_eval_raw(phase->g2, soak_v3_dot(d_in, d3));
-        soak_rgb Tm = transmittance(t, med, x, d3, h.t);
-        if (!(rgb_max(Tm) > 0)) continue;
+        double ph = rt_hg2(&local->phase, soak_v3_dot(d_in, d3));
+        soak_rgb Tm;
+        if (soak_medium_rgb_transmittance(c->med, x, d3, h.t, &t->rng, &Tm) != SOAK_OK || !(rgb_max(Tm) > 0)) continue;
         if (!rt_visible(t, soak_geometry_offset(h.p, n, wl), wl, dist_light)) continue;
-        soak_rgb c = rgb_mul(rgb_mul(path->beta, Tm), E);
+        soak_rgb L = rgb_mul(rgb_mul(beta, Tm), E);
         /* 1/n3^2: the radiance factor of entering, left out of beta (cross_stack). */
-        c = rgb_scale(c, ph * Tf * cos1 / (cos3 * n3 * n3));
+        L = rgb_scale(L, ph * Tf * cos1 / (cos3 * n3 * n3));
         if (cover > 0 && m->film_thickness > 0) {
             /* Beer-Lambert in the film, weighted by the wet share of Tf. */
             double cos2 = sqrt(fmax(0.0, 1 - (1 - cos1 * cos1) / (m->film_ior * m->film_ior)));
@@ -258,15 +284,64 @@ static void medium_nee(rt_thread *t, const soak_material *m, const soak_object *
             soak_jensen_shadow(&wet, cos1, &Tw);
             double share = cover * Tw / Tf;
             soak_rgb a = rgb_exp(m->film_absorption, m->film_thickness / cos2);
-            c = soak_rgb3(c.r * (1 - share + share * a.r), c.g * (1 - share + share * a.g), c.b * (1 - share + share * a.b));
+            L = soak_rgb3(L.r * (1 - share + share * a.r), L.g * (1 - share + share * a.g), L.b * (1 - share + share * a.b));
         }
-        path->L = rgb_add(path->L, c);
+        c->path->L = rgb_add(c->path->L, L);
     }
+    if (t->ctx->caustics) {
+        /* Caustic in-scattering from the photon map: sigma_s L_s / sigma_s. */
+        soak_rgb g = rt_photons_gather(t->ctx->caustics, x, d_in, &local->phase, c->object_id);
+        soak_rgb ss = local->sigma_s;
+        soak_rgb ls = soak_rgb3(ss.r > 0 ? g.r / ss.r : 0, ss.g > 0 ? g.g / ss.g : 0, ss.b > 0 ? g.b / ss.b : 0);
+        c->path->L = rgb_add(c->path->L, rgb_scale(rgb_mul(beta, ls), 1.0 / (n3 * n3)));
+    }
+    return 1;
+}
+
+static double med_distance(const void *ctx, soak_vec3 pos, soak_vec3 dir)
+{
+    const rt_med_boundary *b = ctx;
+    soak_ray r = {pos, dir, 0.0, INFINITY};
+    int found = 0;
+    b->t->n.rays++;
+    b->surf->lost = soak_geometry_intersect(b->t->ctx->scene->geometry, &r, &b->surf->hit, &found) != SOAK_OK || !found;
+    return b->surf->lost ? 0.0 : b->surf->hit.t; /* lost: interact ends the walk at once */
+}
+
+static soak_boundary_event med_interact(const void *ctx, soak_vec3 *pos, soak_vec3 *dir, soak_rgb *weight,
+                                        soak_rng *rng)
+{
+    (void)rng; /* rt_rand draws from the same stream */
+    const rt_med_boundary *b = ctx;
+    if (b->surf->lost) return SOAK_BOUNDARY_ABSORB;
+    const soak_hit *h = &b->surf->hit;
+    double n3 = b->m->medium.ior;
+    soak_vec3 ny = soak_v3_dot(*dir, h->ng) >= 0 ? h->ng : soak_v3_scale(h->ng, -1.0);
+    double cos3 = soak_v3_dot(*dir, ny);
+    soak_vec3 tg = soak_v3_sub(*dir, soak_v3_scale(ny, cos3));
+    double tl = soak_v3_len(tg), pp = n3 * tl;
+    soak_vec3 td = tl > 1e-12 ? soak_v3_scale(tg, 1.0 / tl) : soak_v3(0, 0, 0);
+    rt_stack up = *b->stack;
+    up.n2 = rt_rand(b->t) < soak_scene_wetness(b->obj, h->p, h->u, h->v) * b->m->film_coverage ? b->m->film_ior : 1.0;
+    b->surf->n_ref = ny;
+    if (rt_cross_stack(b->t, &up, pp, 1, weight)) {
+        *dir = rt_snell_dir(td, ny, pp, n3, 0);
+        *pos = soak_geometry_offset(h->p, ny, *dir);
+        return SOAK_BOUNDARY_REFLECT;
+    }
+    *dir = rt_snell_dir(td, ny, pp, 1.0, 1);
+    *pos = h->p;
+    return SOAK_BOUNDARY_EXIT;
+}
+
+soak_boundary rt_med_boundary_make(const rt_med_boundary *b)
+{
+    soak_boundary out = {med_distance, med_interact, b};
+    return out;
 }
 
 void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, const soak_material *m, rt_path *path)
 {
-    const soak_scene *sc = t->ctx->scene;
     soak_vec3 wo = soak_v3_scale(path->dir, -1.0);
     soak_vec3 n_out = hit->ng;
     if (!(soak_v3_dot(wo, n_out) > 0)) {
@@ -290,99 +365,28 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
         return;
     }
     soak_vec3 d = rt_snell_dir(tdir, n_out, p, n3, 0);
-    soak_vec3 x = hit->p, n_ref = n_out;
-    int on_surface = 1;
-    long events = 0;
-    double mu = med->majorant;
-    while (events < RT_MEDIUM_MAX_EVENTS) {
-        soak_ray r = {on_surface ? soak_geometry_offset(x, n_ref, d) : x, d, 0.0, INFINITY};
-        soak_hit h;
-        int found = 0;
-        t->n.rays++;
-        if (soak_geometry_intersect(sc->geometry, &r, &h, &found) != SOAK_OK || !found) {
-            t->n.leaked++;
-            path->alive = 0;
-            return;
-        }
-        double tb = h.t;
-        int scattered = 0;
-        x = r.org;
-        while (mu > 0 && events < RT_MEDIUM_MAX_EVENTS) {
-            double s = -log(1 - rt_rand(t)) / mu;
-            if (s >= tb) break;
-            tb -= s;
-            x = soak_v3_add(x, soak_v3_scale(d, s));
-            ++events;
-            rt_med_point mp;
-            rt_medium_at(med, x, &mp);
-            soak_rgb sn = soak_rgb3(mu - mp.ss.r - mp.sa.r, mu - mp.ss.g - mp.sa.g, mu - mp.ss.b - mp.sa.b);
-            soak_rgb bs = rgb_mul(path->beta, mp.ss), bn = rgb_mul(path->beta, sn);
-            double ps = rgb_max(bs), pn = fmax(0.0, rgb_max(bn));
-            if (!(ps + pn > 0)) {
-                path->alive = 0;
-                return;
-            }
-            double Ps = ps / (ps + pn);
-            if (rt_rand(t) < Ps) {
-                path->beta = rgb_scale(bs, 1.0 / (mu * Ps));
-                medium_nee(t, m, obj, med, x, d, &mp.phase, n_ref, path);
-                if (t->ctx->caustics) {
-                    /* Caustic in-scattering from the photon map: sigma_s L_s / sigma_s,
-                     * times 1/n3^2 like every estimate gathered inside. */
-                    soak_rgb g = rt_photons_gather(t->ctx->caustics, x, d, &mp.phase, hit->object_id);
-                    soak_rgb ls = soak_rgb3(mp.ss.r > 0 ? g.r / mp.ss.r : 0, mp.ss.g > 0 ? g.g / mp.ss.g : 0,
-                                            mp.ss.b > 0 ? g.b / mp.ss.b : 0);
-                    path->L = rgb_add(path->L, rgb_scale(rgb_mul(path->beta, ls), 1.0 / (n3 * n3)));
-                }
-                soak_vec3 nd;
-                double pdf;
-                if (soak_hg2_sample(&mp.phase, d, rt_rand(t), rt_rand(t), rt_rand(t), &nd, &pdf) != SOAK_OK) {
-                    path->alive = 0;
-                    return;
-                }
-                d = nd;
-                double q = fmin(1.0, rgb_max(path->beta));
-                if (q < 1.0) {
-                    if (rt_rand(t) >= q) {
-                        path->alive = 0;
-                        return;
-                    }
-                    path->beta = rgb_scale(path->beta, 1.0 / q);
-                }
-                scattered = 1;
-                break;
-            }
-            double Pn = 1 - Ps;
-            path->beta = soak_rgb3(bn.r / (mu * Pn), bn.g / (mu * Pn), bn.b / (mu * Pn));
-        }
-        if (scattered) {
-            on_surface = 0;
-            continue;
-        }
-        if (events >= RT_MEDIUM_MAX_EVENTS) break;
-        /* Boundary: cross the stack upward. */
-        ++events;
-        soak_vec3 ny = soak_v3_dot(d, h.ng) >= 0 ? h.ng : soak_v3_scale(h.ng, -1.0);
-        double cos3 = soak_v3_dot(d, ny);
-        soak_vec3 tg = soak_v3_sub(d, soak_v3_scale(ny, cos3));
-        double tl = soak_v3_len(tg);
-        soak_vec3 td = tl > 1e-12 ? soak_v3_scale(tg, 1.0 / tl) : soak_v3(0, 0, 0);
-        double pp = n3 * tl;
-        double cover = soak_scene_wetness(obj, h.p, h.u, h.v) * m->film_coverage;
-        rt_stack up = st;
-        up.n2 = rt_rand(t) < cover ? m->film_ior : 1.0;
-        x = h.p;
-        n_ref = ny;
-        on_surface = 1;
-        if (rt_cross_stack(t, &up, pp, 1, &path->beta)) {
-            d = rt_snell_dir(td, ny, pp, n3, 0);
-            continue;
-        }
-        path->dir = rt_snell_dir(td, ny, pp, 1.0, 1);
-        path->org = soak_geometry_offset(h.p, ny, path->dir);
-        path->prev_delta = 1;
+    soak_medium_rgb mr = rt_medium_rgb(med);
+    rt_med_surface surf = {*hit, 0, n_out};
+    rt_med_boundary bd = {t, &surf, obj, m, &st};
+    soak_boundary boundary = rt_med_boundary_make(&bd);
+    nee_ctx nc = {t, m, obj, &mr, &surf, hit->object_id, path};
+    soak_walk_options opt = rt_walk_options(path->beta);
+    opt.on_vertex = medium_vertex;
+    opt.vertex_ctx = &nc;
+    soak_walk_result_rgb w;
+    soak_status status =
+        soak_medium_walk_rgb(&mr, &opt, soak_geometry_offset(hit->p, n_out, d), d, &boundary, &t->rng, &w);
+    path->alive = 0;
+    /* A numeric failure inside the walk loses the path like open geometry does. */
+    if (status != SOAK_OK || surf.lost) {
+        t->n.leaked++;
         return;
     }
-    t->n.capped++;
-    path->alive = 0;
+    if (w.end == SOAK_WALK_CAPPED) t->n.capped++;
+    if (w.end != SOAK_WALK_EXITED) return;
+    path->alive = 1;
+    path->beta = w.weight;
+    path->dir = w.dir;
+    path->org = soak_geometry_offset(surf.hit.p, surf.n_ref, w.dir);
+    path->prev_delta = 1;
 }

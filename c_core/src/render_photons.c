@@ -42,53 +42,43 @@ static int push(photon_list *l, soak_vec3 x, soak_vec3 d, soak_rgb power, unsign
     return 1;
 }
 
-/* Walk inside the medium of object obj until the first real scattering
- * event (stored) or until the photon leaves. */
+typedef struct photon_store {
+    photon_list *list;
+    unsigned object_id;
+    int ok;
+} photon_store;
+
+/* Vertex hook: store the photon at its first real scattering event and end the walk. */
+static int store_first_scatter(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb power, const soak_medium_point *local,
+                               soak_rng *rng)
+{
+    (void)local;
+    (void)rng;
+    photon_store *ps = ctx;
+    ps->ok = push(ps->list, x, d_in, power, ps->object_id);
+    return 0;
+}
+
+/* Walk inside the medium of object obj (soak/medium.h, the camera paths'
+ * walk without roulette: photon powers are not normalised) until the first
+ * real scattering event (stored) or until the photon leaves. Returns 0 when
+ * out of memory. */
 static int walk_to_first_scatter(rt_thread *t, const soak_material *m, const soak_scene_medium *med, const rt_stack *st,
                                  const soak_object *obj, soak_vec3 x, soak_vec3 d, soak_vec3 n_ref, soak_rgb power,
                                  photon_list *out)
 {
-    const soak_scene *sc = t->ctx->scene;
-    double mu = med->majorant, n3 = m->medium.ior;
-    int on_surface = 1;
-    for (long events = 0; events < RT_MEDIUM_MAX_EVENTS;) {
-        soak_ray r = {on_surface ? soak_geometry_offset(x, n_ref, d) : x, d, 0.0, INFINITY};
-        soak_hit h;
-        int found = 0;
-        if (soak_geometry_intersect(sc->geometry, &r, &h, &found) != SOAK_OK || !found) return 1;
-        double tb = h.t;
-        x = r.org;
-        while (mu > 0) {
-            double s = -log(1 - rt_rand(t)) / mu;
-            if (s >= tb) break;
-            tb -= s;
-            x = soak_v3_add(x, soak_v3_scale(d, s));
-            ++events;
-            rt_med_point mp;
-            rt_medium_at(med, x, &mp);
-            soak_rgb sn = soak_rgb3(mu - mp.ss.r - mp.sa.r, mu - mp.ss.g - mp.sa.g, mu - mp.ss.b - mp.sa.b);
-            soak_rgb bs = rgb_mul(power, mp.ss), bn = rgb_mul(power, sn);
-            double ps = rgb_max(bs), pn = fmax(0.0, rgb_max(bn));
-            if (!(ps + pn > 0)) return 1;
-            double Ps = ps / (ps + pn);
-            if (rt_rand(t) < Ps) return push(out, x, d, rgb_scale(bs, 1.0 / (mu * Ps)), obj->object_id);
-            power = rgb_scale(bn, 1.0 / (mu * (1 - Ps)));
-        }
-        ++events;
-        soak_vec3 ny = soak_v3_dot(d, h.ng) >= 0 ? h.ng : soak_v3_scale(h.ng, -1.0);
-        double cos3 = soak_v3_dot(d, ny);
-        soak_vec3 tg = soak_v3_sub(d, soak_v3_scale(ny, cos3));
-        double tl = soak_v3_len(tg), pp = n3 * tl;
-        soak_vec3 td = tl > 1e-12 ? soak_v3_scale(tg, 1.0 / tl) : soak_v3(0, 0, 0);
-        rt_stack up = *st;
-        up.n2 = rt_rand(t) < soak_scene_wetness(obj, h.p, h.u, h.v) * m->film_coverage ? m->film_ior : 1.0;
-        if (!rt_cross_stack(t, &up, pp, 1, &power)) return 1; /* left the medium */
-        d = rt_snell_dir(td, ny, pp, n3, 0);
-        x = h.p;
-        n_ref = ny;
-        on_surface = 1;
-    }
-    return 1;
+    soak_medium_rgb mr = rt_medium_rgb(med);
+    rt_med_surface surf = {{0}, 0, n_ref};
+    rt_med_boundary bd = {t, &surf, obj, m, st};
+    soak_boundary boundary = rt_med_boundary_make(&bd);
+    photon_store ps = {out, obj->object_id, 1};
+    soak_walk_options opt = rt_walk_options(power);
+    opt.roulette = 0;
+    opt.on_vertex = store_first_scatter;
+    opt.vertex_ctx = &ps;
+    soak_walk_result_rgb w;
+    soak_medium_walk_rgb(&mr, &opt, soak_geometry_offset(x, n_ref, d), d, &boundary, &t->rng, &w);
+    return ps.ok;
 }
 
 static int trace_photon(rt_thread *t, soak_vec3 org, soak_vec3 dir, soak_rgb power, photon_list *out)
@@ -309,8 +299,7 @@ soak_rgb rt_photons_gather(const rt_photon_map *map, soak_vec3 x, soak_vec3 d_in
                     if (ex * ex + ey * ey + ez * ez > r2) continue;
                     /* Light propagating along w_p scattered into -d_in (toward the camera). */
                     double cosang = -(p->dir[0] * d_in.x + p->dir[1] * d_in.y + p->dir[2] * d_in.z);
-                    double ph = phase->w * soak_hg_eval_raw(phase->g1, cosang) +
-                                (1 - phase->w) * soak_hg_eval_raw(phase->g2, cosang);
+                    double ph = rt_hg2(phase, cosang);
                     sum.r += ph * p->power[0];
                     sum.g += ph * p->power[1];
                     sum.b += ph * p->power[2];

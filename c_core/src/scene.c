@@ -68,16 +68,26 @@ static soak_status num_value(scene_ctx *c, const cJSON *v, const char *path, dou
     return SOAK_OK;
 }
 
+/* obj[key] with its dotted path written to p; NULL when absent, with *st
+ * the error if the key is required, else SOAK_OK (the caller's default). */
+static const cJSON *member(scene_ctx *c, const cJSON *obj, const char *key, const char *path, int required,
+                           char p[512], soak_status *st)
+{
+    sj_path(p, 512, path, key);
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    *st = !v && required ? sj_fail(c, SOAK_ERR_PARSE, p, "missing (required)") : SOAK_OK;
+    return v;
+}
+
 static soak_status num_impl(scene_ctx *c, const cJSON *obj, const char *key, const char *path, double lo, double hi,
                             int required, double def, int strict, double *out)
 {
     char p[512];
-    sj_path(p, sizeof p, path, key);
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    soak_status st;
+    const cJSON *v = member(c, obj, key, path, required, p, &st);
     if (!v) {
-        if (required) return sj_fail(c, SOAK_ERR_PARSE, p, "missing (required)");
-        *out = def;
-        return SOAK_OK;
+        if (st == SOAK_OK) *out = def;
+        return st;
     }
     return num_value(c, v, p, lo, hi, strict, out);
 }
@@ -111,15 +121,14 @@ soak_status sj_vec3(scene_ctx *c, const cJSON *obj, const char *key, const char 
                     soak_vec3 *out)
 {
     char p[512];
-    sj_path(p, sizeof p, path, key);
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    soak_status st;
+    const cJSON *v = member(c, obj, key, path, required, p, &st);
     if (!v) {
-        if (required) return sj_fail(c, SOAK_ERR_PARSE, p, "missing (required)");
-        *out = def;
-        return SOAK_OK;
+        if (st == SOAK_OK) *out = def;
+        return st;
     }
     double t[3];
-    soak_status st = triple(c, v, p, -1e12, 1e12, t);
+    st = triple(c, v, p, -1e12, 1e12, t);
     if (st == SOAK_OK) *out = soak_v3(t[0], t[1], t[2]);
     return st;
 }
@@ -128,21 +137,20 @@ soak_status sj_rgb(scene_ctx *c, const cJSON *obj, const char *key, const char *
                    int required, soak_rgb def, soak_rgb *out)
 {
     char p[512];
-    sj_path(p, sizeof p, path, key);
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    soak_status st;
+    const cJSON *v = member(c, obj, key, path, required, p, &st);
     if (!v) {
-        if (required) return sj_fail(c, SOAK_ERR_PARSE, p, "missing (required)");
-        *out = def;
-        return SOAK_OK;
+        if (st == SOAK_OK) *out = def;
+        return st;
     }
     if (cJSON_IsNumber(v)) {
         double x = 0;
-        soak_status st = num_value(c, v, p, lo, hi, 0, &x);
+        st = num_value(c, v, p, lo, hi, 0, &x);
         if (st == SOAK_OK) *out = soak_rgb3(x, x, x);
         return st;
     }
     double t[3];
-    soak_status st = triple(c, v, p, lo, hi, t);
+    st = triple(c, v, p, lo, hi, t);
     if (st == SOAK_OK) *out = soak_rgb3(t[0], t[1], t[2]);
     return st;
 }
@@ -150,10 +158,10 @@ soak_status sj_rgb(scene_ctx *c, const cJSON *obj, const char *key, const char *
 soak_status sj_str(scene_ctx *c, const cJSON *obj, const char *key, const char *path, int required, const char **out)
 {
     char p[512];
-    sj_path(p, sizeof p, path, key);
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(obj, key);
+    soak_status st;
+    const cJSON *v = member(c, obj, key, path, required, p, &st);
     *out = NULL;
-    if (!v) return required ? sj_fail(c, SOAK_ERR_PARSE, p, "missing (required)") : SOAK_OK;
+    if (!v) return st;
     if (!cJSON_IsString(v) || !v->valuestring[0]) return sj_fail(c, SOAK_ERR_PARSE, p, "must be a non-empty string");
     *out = v->valuestring;
     return SOAK_OK;

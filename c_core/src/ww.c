@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "model_dirs.h"
 #include "soak/fresnel.h"
 #include "soak/ggx.h"
 
@@ -50,17 +51,6 @@ soak_status soak_ww_validate(const soak_ww *m)
         return SOAK_ERR_ARG;
     }
     return SOAK_OK;
-}
-
-/* Unit within SOAK_GGX_UNIT_TOL, finite, z > 0; renormalised into *out. */
-static int upper_unit(soak_vec3 v, soak_vec3 *out)
-{
-    if (!soak_in_range(v.x, -2.0, 2.0) || !soak_in_range(v.y, -2.0, 2.0) || !soak_in_range(v.z, -2.0, 2.0))
-        return 0;
-    double l2 = soak_v3_dot(v, v);
-    if (!(fabs(l2 - 1.0) <= 2.0 * SOAK_GGX_UNIT_TOL)) return 0;
-    *out = soak_v3_scale(v, 1.0 / sqrt(l2));
-    return out->z > 0.0;
 }
 
 /* Base BRDF inside the water (indices divided by n_water). */
@@ -114,7 +104,7 @@ soak_status soak_ww_eval(const soak_ww *m, soak_vec3 wi, soak_vec3 wo, double *f
     soak_status s = soak_ww_validate(m);
     if (s != SOAK_OK) return s;
     soak_vec3 a, b;
-    if (!upper_unit(wi, &a) || !upper_unit(wo, &b)) return SOAK_ERR_ARG;
+    if (!model_upper_unit_ok(wi, &a) || !model_upper_unit_ok(wo, &b)) return SOAK_ERR_ARG;
     double v = eval_raw(m, a, b);
     if (!soak_is_finite(v) || v < 0.0) return SOAK_ERR_NUMERIC;
     *f = v;
@@ -137,7 +127,7 @@ soak_status soak_ww_base_eval(const soak_ww *m, soak_vec3 wi_water, soak_vec3 wo
     soak_status s = soak_ww_validate(m);
     if (s != SOAK_OK) return s;
     soak_vec3 a, b;
-    if (!upper_unit(wi_water, &a) || !upper_unit(wo_water, &b)) return SOAK_ERR_ARG;
+    if (!model_upper_unit_ok(wi_water, &a) || !model_upper_unit_ok(wo_water, &b)) return SOAK_ERR_ARG;
     double v = base_raw(m, a, b);
     if (!soak_is_finite(v) || v < 0.0) return SOAK_ERR_NUMERIC;
     *f = v;
@@ -178,7 +168,7 @@ soak_status soak_ww_sample(const soak_ww *m, soak_vec3 wo, double u0, double u1,
     soak_status s = soak_ww_validate(m);
     if (s != SOAK_OK) return s;
     soak_vec3 v;
-    if (!upper_unit(wo, &v) || !soak_in_range(u0, 0.0, 1.0) || !soak_in_range(u1, 0.0, 1.0) ||
+    if (!model_upper_unit_ok(wo, &v) || !soak_in_range(u0, 0.0, 1.0) || !soak_in_range(u1, 0.0, 1.0) ||
         !soak_in_range(u2, 0.0, 1.0))
         return SOAK_ERR_ARG;
 

@@ -159,7 +159,7 @@ typedef struct rgb_tally {
 static inline void case_slab_rgb(long long paths)
 {
     const double tau[3] = {0.5, 2.0, 1.0}, omega[3] = {0.9, 0.5, 1.0};
-    soak_medium_rgb m = {soak_rgb3(tau[0], tau[1], tau[2]), soak_rgb3(omega[0], omega[1], omega[2]), {0, 0, 1}};
+    soak_medium_rgb m = {soak_rgb3(tau[0], tau[1], tau[2]), soak_rgb3(omega[0], omega[1], omega[2]), {0, 0, 1}, NULL, NULL, 0};
     soak_slab_boundary sb = {1.0, 1.0, 0, 0.0};
     soak_boundary b;
     check_status("slab boundary", soak_slab_boundary_make(&sb, &b), SOAK_OK);

@@ -75,7 +75,7 @@ static void test_arguments(void)
     check_status("diffuse base under a half-space", soak_slab_boundary_validate(&bad), SOAK_ERR_ARG);
     m.density = bad_density;
     check_status("density > 1 detected", soak_medium_walk(&m, NULL, p, down, &b, &rng, &w), SOAK_ERR_NUMERIC);
-    soak_medium_rgb mr = {soak_rgb3(1, NAN, 1), soak_rgb3(1, 1, 1), {0, 0, 1}};
+    soak_medium_rgb mr = {soak_rgb3(1, NAN, 1), soak_rgb3(1, 1, 1), {0, 0, 1}, NULL, NULL, 0};
     check_status("rgb NaN sigma", soak_medium_rgb_validate(&mr), SOAK_ERR_ARG);
 
     soak_measure_setup s;

@@ -24,7 +24,12 @@
  * The surface is abstract: a soak_boundary gives the distance to it and
  * decides what happens there (Fresnel reflection/refraction with total
  * internal reflection, an index-matched exit, a diffuse base...). The planar
- * slab boundary below serves `soak measure`; the renderer supplies its own. */
+ * slab boundary below serves `soak measure`; the renderer supplies its own
+ * (ray-cast mesh, wet film stack) and its next-event estimation through the
+ * soak_vertex_fn hook.
+ *
+ * One walk serves every medium: soak_medium_walk (scalar, optionally
+ * heterogeneous) runs soak_medium_walk_rgb with three equal channels. */
 #ifndef SOAK_MEDIUM_H
 #define SOAK_MEDIUM_H
 
@@ -57,27 +62,50 @@ typedef enum soak_boundary_event {
 
 typedef struct soak_boundary {
     /* Distance from pos (inside) along unit dir to the surface, >= 0;
-     * INFINITY if the ray never meets it. */
+     * INFINITY if the ray never meets it. The context is const for the walk;
+     * a boundary that must remember the surface it found (a ray-cast hit)
+     * keeps it behind a pointer in its context. */
     double (*distance)(const void *ctx, soak_vec3 pos, soak_vec3 dir);
-    /* Called at the surface point pos with the arriving direction *dir. It
-     * sets *dir to the outgoing direction, may multiply *weight (a partially
-     * absorbing surface) and may use rng. */
-    soak_boundary_event (*interact)(const void *ctx, soak_vec3 pos, soak_vec3 *dir, double *weight,
+    /* Called at the surface point *pos with the arriving direction *dir. It
+     * sets *dir to the outgoing direction, may multiply the per-channel
+     * *weight (a partially absorbing surface, a coloured film), may move
+     * *pos off the surface (a ray-tracing offset) and may use rng. */
+    soak_boundary_event (*interact)(const void *ctx, soak_vec3 *pos, soak_vec3 *dir, soak_rgb *weight,
                                     soak_rng *rng);
     const void *ctx;
 } soak_boundary;
 
+/* Coefficients of a medium at one point (1/length), for heterogeneous RGB
+ * media and for the vertex hook. */
+typedef struct soak_medium_point {
+    soak_rgb sigma_s, sigma_a;
+    soak_hg2 phase;
+} soak_medium_point;
+
 /* Called with the propagation direction before and after every real
  * scattering event (for tests and diagnostics); may be NULL. */
 typedef void (*soak_scatter_fn)(void *ctx, soak_vec3 dir_in, soak_vec3 dir_out);
+
+/* Called at every real scattering event at pos, before the new direction is
+ * sampled: dir_in is the propagation direction, weight the per-channel
+ * throughput after the collision (what an in-scattering estimate there is
+ * multiplied by), local the medium at pos. It may add a next-event estimate
+ * to its own tally and may use rng. Returning 0 ends the walk there
+ * (SOAK_WALK_STOPPED), e.g. a photon stored at its first scattering. */
+typedef int (*soak_vertex_fn)(void *ctx, soak_vec3 pos, soak_vec3 dir_in, soak_rgb weight,
+                              const soak_medium_point *local, soak_rng *rng);
 
 typedef struct soak_walk_options {
     int roulette;              /* 1: Russian roulette on the throughput (default) */
     double roulette_threshold; /* weights below this play roulette, (0,1]; default 0.25 */
     long max_events;           /* cap on tracking steps (real and null collisions plus
                                   surface interactions) per path, >= 1; default 1e6 */
+    soak_rgb weight;           /* throughput on entry, each [0, 1e300]; default 1 (RGB
+                                  walk only: channel choice and roulette act on it) */
     soak_scatter_fn on_scatter;
     void *scatter_ctx;
+    soak_vertex_fn on_vertex;
+    void *vertex_ctx;
 } soak_walk_options;
 
 void soak_walk_options_default(soak_walk_options *opt);
@@ -85,9 +113,10 @@ void soak_walk_options_default(soak_walk_options *opt);
 typedef enum soak_walk_end {
     SOAK_WALK_EXITED,   /* left the medium: pos, dir, weight describe the exit */
     SOAK_WALK_ABSORBED, /* absorbed (surface, zero weight, or lost the roulette) */
-    SOAK_WALK_CAPPED    /* hit max_events, or flew off to infinity parallel to a
+    SOAK_WALK_CAPPED,   /* hit max_events, or flew off to infinity parallel to a
                            surface with no extinction; weight holds the throughput
                            that was not scored, for reporting the possible bias */
+    SOAK_WALK_STOPPED   /* the vertex hook ended the walk at pos (weight as it saw it) */
 } soak_walk_end;
 
 typedef struct soak_walk_result {
@@ -112,19 +141,36 @@ soak_status soak_medium_transmittance(const soak_medium *m, soak_vec3 pos, soak_
                                       soak_rng *rng, double *T);
 
 /* ---- RGB ---------------------------------------------------------------
- * Homogeneous medium with per-channel extinction and albedo and one phase
- * function shared by the channels. One path carries all three channels:
- * distances are sampled from one channel picked with probability
+ * One path carries all three channels.
+ *
+ * Homogeneous (coeffs == NULL): per-channel extinction and albedo, one phase
+ * function. Distances are sampled from one channel picked with probability
  * proportional to its current throughput, and each channel's throughput is
  * multiplied by its own free-flight density over the mixture pdf (one-sample
- * MIS, unbiased for every channel). A channel with sigma_t = 0 is handled
- * (it never collides). Surface weights apply to all channels alike; a
- * colour-dependent surface is handled by walking per channel. Heterogeneous
- * RGB media: walk one channel per path with soak_medium_walk. */
+ * MIS, unbiased for every channel); with equal extinctions no channel is
+ * picked. A channel with sigma_t = 0 is handled (it never collides).
+ *
+ * Heterogeneous (coeffs != NULL): coeffs gives sigma_s, sigma_a and the
+ * phase function at a point; sigma_t, albedo and phase above are then not
+ * used. Spectral tracking (Kutz, Habel, Li, Novak, "Spectral and
+ * decomposition tracking for rendering heterogeneous volumes", SIGGRAPH
+ * 2017, sec. 5.2) against the majorant mu >= sigma_s + sigma_a of every
+ * channel everywhere: a tentative collision is real with probability
+ * P = m_t / (m_t + m_n), m_t = max_c beta_c sigma_t,c, m_n = max_c beta_c
+ * (mu - sigma_t,c), and then beta_c *= sigma_s,c / (mu P) (absorption carried
+ * in the weight), else null with beta_c *= (mu - sigma_t,c) / (mu (1-P)).
+ * With equal channels this is Woodcock delta tracking exactly (P =
+ * sigma_t/mu, weight *= albedo). A point whose extinction exceeds the
+ * majorant by more than 1e-9 relative fails with SOAK_ERR_NUMERIC. */
+typedef soak_status (*soak_coeffs_fn)(const void *ctx, soak_vec3 pos, soak_medium_point *out);
+
 typedef struct soak_medium_rgb {
     soak_rgb sigma_t; /* each [0, 1e12] */
     soak_rgb albedo;  /* each [0, 1] */
     soak_hg2 phase;
+    soak_coeffs_fn coeffs; /* NULL: homogeneous */
+    const void *coeffs_ctx;
+    double majorant; /* heterogeneous only, [0, 1e12] */
 } soak_medium_rgb;
 
 soak_status soak_medium_rgb_validate(const soak_medium_rgb *m);
@@ -137,10 +183,17 @@ typedef struct soak_walk_result_rgb {
     long events;
 } soak_walk_result_rgb;
 
-/* Roulette plays on the largest channel throughput. */
+/* Roulette plays on the largest channel throughput. The surface may weight
+ * the channels differently. */
 soak_status soak_medium_walk_rgb(const soak_medium_rgb *m, const soak_walk_options *opt, soak_vec3 pos,
                                  soak_vec3 dir, const soak_boundary *boundary, soak_rng *rng,
                                  soak_walk_result_rgb *out);
+
+/* Per-channel transmittance over distance dist from pos along dir, as
+ * soak_medium_transmittance (ratio tracking against the majorant when
+ * heterogeneous). */
+soak_status soak_medium_rgb_transmittance(const soak_medium_rgb *m, soak_vec3 pos, soak_vec3 dir, double dist,
+                                          soak_rng *rng, soak_rgb *T);
 
 /* ---- Planar slab boundary ----------------------------------------------
  * The medium fills -thickness <= z <= 0 (thickness = INFINITY: a half-space
