@@ -1,37 +1,18 @@
-/* Independent references for the Monte Carlo measurement tests: Gauss-
- * Legendre quadrature, Chandrasekhar's H-function and an adding-doubling
- * slab solver. Written here, inside the tests, so that nothing in libsoak
- * checks itself. Static functions: included by several test files. */
+/* Independent references for the Monte Carlo measurement tests: graded
+ * Gauss-Legendre quadrature (nodes from testutil), Chandrasekhar's
+ * H-function and an adding-doubling slab solver. Written here, inside the
+ * tests, so that nothing in libsoak checks itself. Static functions:
+ * included by several test files. */
 #ifndef SOAK_TEST_MEASURE_REFS_H
 #define SOAK_TEST_MEASURE_REFS_H
 
 #include <math.h>
 #include <string.h>
 
+#include "testutil.h"
+
 #define REF_MAXN 256
 #define REF_PI 3.14159265358979323846
-
-/* n-point Gauss-Legendre nodes and weights on [a, b] (Newton on P_n). */
-static inline void ref_gauss_legendre(int n, double a, double b, double *x, double *w)
-{
-    for (int i = 0; i < n; ++i) {
-        double z = cos(REF_PI * (i + 0.75) / (n + 0.5)), dp = 1.0;
-        for (int it = 0; it < 100; ++it) {
-            double p0 = 1.0, p1 = z;
-            for (int k = 2; k <= n; ++k) {
-                double p2 = ((2.0 * k - 1.0) * z * p1 - (k - 1.0) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = n * (z * p1 - p0) / (z * z - 1.0);
-            double dz = p1 / dp;
-            z -= dz;
-            if (fabs(dz) < 1e-16) break;
-        }
-        x[i] = 0.5 * (a + b) - 0.5 * (b - a) * z;
-        w[i] = (b - a) / ((1.0 - z * z) * dp * dp);
-    }
-}
 
 /* Nodes on (0,1] in geometric panels [0,1e-6], [1e-6,1e-5], ... [0.1,1],
  * resolving the mu log mu behaviour of H near 0. Returns the node count. */
@@ -41,7 +22,7 @@ static inline int ref_graded_nodes(int per_panel, double *x, double *w)
     double lo = 0.0;
     for (int p = 6; p >= 0; --p) {
         double hi = pow(10.0, -p);
-        ref_gauss_legendre(per_panel, lo, hi, x + n, w + n);
+        tu_gauss_legendre(per_panel, lo, hi, x + n, w + n);
         n += per_panel;
         lo = hi;
     }
@@ -184,7 +165,7 @@ static inline void ref_slab_doubling_n(double tau, double omega, double mu0, int
                                 double *T_out)
 {
     double x[REF_AD_N], w[REF_AD_N];
-    ref_gauss_legendre(REF_AD_N, 0.0, 1.0, x, w);
+    tu_gauss_legendre(REF_AD_N, 0.0, 1.0, x, w);
     double dt = tau / pow(2.0, doublings);
     static ref_mat R, T, RR, tmp, tmp2;
     double r0[REF_AD_N], t0[REF_AD_N], a0 = 1.0 - dt / mu0;

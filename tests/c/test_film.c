@@ -3,31 +3,14 @@
  * Simpson quadrature over the film-side cosine, and the interreflection
  * series summed bounce by bounce. */
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 
 #include "check.h"
+#include "testutil.h"
 #include "soak/film.h"
 
 /* ---- independent reference ------------------------------------------- */
 
-/* Unpolarised Fresnel reflectance for incidence at theta_i from a medium of
- * index n_i into n_t: (sin^2(i-t)/sin^2(i+t) + tan^2(i-t)/tan^2(i+t)) / 2. */
-static double ref_fresnel(double cos_i, double n_i, double n_t)
-{
-    if (n_i == n_t) return 0.0;
-    double ti = acos(fmin(1.0, cos_i));
-    double st = n_i / n_t * sin(ti);
-    if (st >= 1.0) return 1.0;
-    if (ti < 1e-7) {
-        double r = (n_t - n_i) / (n_t + n_i);
-        return r * r;
-    }
-    double tt = asin(st);
-    double s = sin(ti - tt) / sin(ti + tt);
-    double t = tan(ti - tt) / tan(ti + tt);
-    return 0.5 * (s * s + t * t);
-}
 
 typedef double (*fn1)(double x, const void *p);
 
@@ -73,13 +56,13 @@ static double escape_integrand(double s, const void *p)
 {
     const ref_film *r = p;
     double d, mu = mu_of_s(r, s, &d);
-    return 2.0 * mu * (1.0 - ref_fresnel(mu, r->n, 1.0)) * exp(-r->tau / mu) * d;
+    return 2.0 * mu * (1.0 - tu_fresnel_angle(mu, r->n, 1.0)) * exp(-r->tau / mu) * d;
 }
 static double return_partial_integrand(double s, const void *p)
 {
     const ref_film *r = p;
     double d, mu = mu_of_s(r, s, &d);
-    return 2.0 * mu * ref_fresnel(mu, r->n, 1.0) * exp(-2.0 * r->tau / mu) * d;
+    return 2.0 * mu * tu_fresnel_angle(mu, r->n, 1.0) * exp(-2.0 * r->tau / mu) * d;
 }
 static double return_tir_integrand(double mu, const void *p)
 {
@@ -99,7 +82,7 @@ static ref_film ref_setup(double n, double tau)
 /* Total reflectance by following the flux bounce by bounce. */
 static double ref_albedo_series(const ref_film *r, double A, double cos_i)
 {
-    double F = ref_fresnel(cos_i, 1.0, r->n);
+    double F = tu_fresnel_angle(cos_i, 1.0, r->n);
     double sin_t = sin(acos(cos_i)) / r->n;
     double cos_t = sqrt(1.0 - sin_t * sin_t);
     double down = (1.0 - F) * (cos_t > 0.0 ? exp(-r->tau / cos_t) : 0.0); /* flux arriving at the base */
@@ -120,22 +103,6 @@ static double diffuse_integrand(double nu, const void *p)
 {
     const diffuse_args *d = p;
     return nu > 0.0 ? 2.0 * nu * ref_albedo_series(d->r, d->A, nu) : 0.0;
-}
-
-static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
-static double rnd(void) /* splitmix64 -> [0,1) */
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * 0x1.0p-53;
-}
-static soak_vec3 rnd_dir_upper(void)
-{
-    double z = rnd(), phi = 2.0 * SOAK_PI * rnd();
-    double s = sqrt(fmax(0.0, 1.0 - z * z));
-    return soak_v3(s * cos(phi), s * sin(phi), z);
 }
 
 /* ---- tests ------------------------------------------------------------- */
@@ -241,7 +208,7 @@ static double consistency_integrand(double nu, const void *p)
     return 2.0 * SOAK_PI * sum / n_phi * nu; /* dw = dnu dphi */
 }
 
-static void test_brdf(void)
+static void test_brdf(tu_rng *rng)
 {
     /* consistency: int f cos dw + specular = albedo_dir */
     const double cases[][4] = {{1.33, 0.0, 0.7, 0.9}, {1.5, 0.35, 0.999, 0.3}, {1.33, 2.0, 1.0, 0.05}, {2.5, 0.1, 0.2, 1.0}};
@@ -260,9 +227,9 @@ static void test_brdf(void)
     double worst = 0.0;
     int ok = 1;
     for (int i = 0; i < 2000; ++i) {
-        soak_film film = {1.0 + 2.0 * rnd(), 10.0 * rnd(), rnd()};
-        double A = rnd();
-        soak_vec3 a = rnd_dir_upper(), b = rnd_dir_upper();
+        soak_film film = {1.0 + 2.0 * tu_uniform(rng), 10.0 * tu_uniform(rng), tu_uniform(rng)};
+        double A = tu_uniform(rng);
+        soak_vec3 a = tu_upper_dir(rng, 0.0), b = tu_upper_dir(rng, 0.0);
         double fab = -1.0, fba = -1.0;
         ok &= soak_film_brdf(&film, A, a, b, &fab) == SOAK_OK;
         ok &= soak_film_brdf(&film, A, b, a, &fba) == SOAK_OK;
@@ -332,7 +299,7 @@ static void test_thickness(void)
     soak_film_albedo_dir(&deep, 0.5, 0.8, &a2);
     soak_film_specular(&deep, 0.8, &spec);
     check_close("1 km of water, red channel: only the specular reflection", a2, spec, 1e-300);
-    check_close("specular vs reference Fresnel", spec, ref_fresnel(0.8, 1.0, 1.33), 1e-14);
+    check_close("specular vs reference Fresnel", spec, tu_fresnel_angle(0.8, 1.0, 1.33), 1e-14);
     double ad = -1.0;
     soak_film_albedo_diffuse(&deep, 0.5, &ad);
     check_close("1 km of water, diffuse light: only Rext", ad, 1.0 - 1.33 * 1.33 * clear.escape, 1e-12);
@@ -340,7 +307,7 @@ static void test_thickness(void)
     soak_film opaque = {1.5, 1e6, 1e3};
     double ao = -1.0;
     check_status("tau = 1e9 accepted", soak_film_albedo_dir(&opaque, 1.0, 0.5, &ao), SOAK_OK);
-    check_close("tau = 1e9: specular only", ao, ref_fresnel(0.5, 1.0, 1.5), 1e-14);
+    check_close("tau = 1e9: specular only", ao, tu_fresnel_angle(0.5, 1.0, 1.5), 1e-14);
 }
 
 static void test_grazing(void)
@@ -406,13 +373,13 @@ static void test_invalid(void)
     check_status("corrupt context rejected", soak_film_ctx_albedo_dir(&bad_ctx, 0.5, 0.5, &out), SOAK_ERR_ARG);
 }
 
-static void test_sweep(void)
+static void test_sweep(tu_rng *rng)
 {
     long bad = 0, evals = 0, mismatch = 0;
     for (int i = 0; i < 10000; ++i) {
-        double u = rnd();
-        soak_film film = {1.0 + 2.0 * rnd(), u < 0.1 ? 0.0 : pow(10.0, -3.0 + 9.0 * rnd()),
-                          u > 0.9 ? 0.0 : pow(10.0, -9.0 + 12.0 * rnd())};
+        double u = tu_uniform(rng);
+        soak_film film = {1.0 + 2.0 * tu_uniform(rng), u < 0.1 ? 0.0 : pow(10.0, -3.0 + 9.0 * tu_uniform(rng)),
+                          u > 0.9 ? 0.0 : pow(10.0, -9.0 + 12.0 * tu_uniform(rng))};
         if (i % 50 == 0) film.n = 1.0;
         soak_film_ctx ctx;
         if (soak_film_setup(&film, &ctx) != SOAK_OK) {
@@ -420,8 +387,8 @@ static void test_sweep(void)
             continue;
         }
         for (int j = 0; j < 100; ++j) {
-            double A = j == 0 ? 1.0 : rnd(), c = j == 1 ? 0.0 : rnd(), a = -1.0, f = -1.0;
-            soak_vec3 wi = rnd_dir_upper(), wo = rnd_dir_upper();
+            double A = j == 0 ? 1.0 : tu_uniform(rng), c = j == 1 ? 0.0 : tu_uniform(rng), a = -1.0, f = -1.0;
+            soak_vec3 wi = tu_upper_dir(rng, 0.0), wo = tu_upper_dir(rng, 0.0);
             soak_status s1 = soak_film_ctx_albedo_dir(&ctx, A, c, &a);
             soak_status s2 = soak_film_ctx_brdf(&ctx, A, wi, wo, &f);
             ++evals;
@@ -438,14 +405,15 @@ static void test_sweep(void)
 
 int main(void)
 {
+    tu_rng rng = tu_splitmix64(0x9E3779B97F4A7C15ull);
     test_against_series();
     test_hard_quadrature();
     test_published_water();
-    test_brdf();
+    test_brdf(&rng);
     test_energy();
     test_thickness();
     test_grazing();
     test_invalid();
-    test_sweep();
+    test_sweep(&rng);
     return check_finish();
 }

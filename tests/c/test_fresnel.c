@@ -3,9 +3,9 @@
  * cases (grazing, critical angle +-eps, equal indices) and a random sweep. */
 #include <math.h>
 #include <stdio.h>
-#include <stdint.h>
 
 #include "check.h"
+#include "testutil.h"
 #include "soak/fresnel.h"
 
 /* Closed form of 2 int_0^1 R(mu) mu dmu for a dielectric with n > 1 and
@@ -32,17 +32,9 @@ static double avg_midpoint(double eta, int cells)
     return 2.0 * sum / cells;
 }
 
-static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
-static double rnd(void)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) * (1.0 / 9007199254740992.0);
-}
-
 int main(void)
 {
+    tu_rng rng = tu_xorshift64(0x9E3779B97F4A7C15ull);
     double R, ct;
     /* Normal incidence: ((n-1)/(n+1))^2. */
     soak_fresnel_dielectric(1.0, 1.333, &R, NULL);
@@ -148,7 +140,8 @@ int main(void)
     /* 10^6 random valid inputs: every result finite and in [0,1]. */
     long bad = 0;
     for (int i = 0; i < 1000000; ++i) {
-        double c = rnd(), e = exp((rnd() * 2 - 1) * log(50.0)), k = rnd() < 0.5 ? 0.0 : rnd() * 20, Rd, Rc;
+        double c = tu_uniform(&rng), e = exp((tu_uniform(&rng) * 2 - 1) * log(50.0)),
+               k = tu_uniform(&rng) < 0.5 ? 0.0 : tu_uniform(&rng) * 20, Rd, Rc;
         if (i % 7 == 0) c = 0.0;
         if (i % 11 == 0) e = 1.0;
         soak_fresnel_dielectric(c, e, &Rd, NULL);

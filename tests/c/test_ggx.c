@@ -3,56 +3,16 @@
  * near-perfect conductor, VNDF sampling against a chi-square histogram test,
  * argument validation and a 10^6-input finiteness sweep. */
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 
 #include "check.h"
+#include "testutil.h"
 #include "soak/fresnel.h"
 #include "soak/ggx.h"
 
-/* splitmix64: small deterministic RNG private to this test. */
-static uint64_t rng_state = 0x9E3779B97F4A7C15ull;
-static double rnd(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
-}
-
-static soak_vec3 rnd_upper(void)
-{
-    double z = 1e-6 + (1.0 - 1e-6) * rnd();
-    double phi = 2.0 * SOAK_PI * rnd();
-    double s = sqrt(1.0 - z * z);
-    return soak_v3(s * cos(phi), s * sin(phi), z);
-}
-
 /* 16-point Gauss-Legendre nodes (positive half) and weights on [-1,1],
- * computed by Newton iteration on P_16 so no typed constants can be wrong. */
+ * filled once in main by tu_gauss_legendre_unit. */
 static double gx[8], gw[8];
-static void gl_init(void)
-{
-    const int n = 16;
-    for (int i = 0; i < 8; ++i) {
-        double x = cos(SOAK_PI * (i + 0.75) / (n + 0.5)), dp = 1.0;
-        for (int it = 0; it < 100; ++it) {
-            double p0 = 1.0, p1 = x;
-            for (int k = 2; k <= n; ++k) {
-                double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = n * (x * p1 - p0) / (x * x - 1.0);
-            double dx = p1 / dp;
-            x -= dx;
-            if (fabs(dx) < 1e-16) break;
-        }
-        gx[i] = x;
-        gw[i] = 2.0 / ((1.0 - x * x) * dp * dp);
-    }
-}
 
 /* Composite 16-point Gauss-Legendre of f on [a,b] with n panels. */
 typedef double (*fn1)(double x, void *ctx);
@@ -320,7 +280,7 @@ static double bin_outer(double v, void *p)
 
 #define NV 10
 #define NP 8
-static void chi_square(double alpha, double theta_o, int n)
+static void chi_square(double alpha, double theta_o, int n, tu_rng *rng)
 {
     soak_vec3 wo = soak_v3_polar(theta_o, 0.5);
     static double count[NV][NP];
@@ -330,7 +290,7 @@ static void chi_square(double alpha, double theta_o, int n)
     for (int s = 0; s < n; ++s) {
         soak_vec3 h;
         double pdf;
-        if (soak_ggx_sample_vndf(alpha, wo, rnd(), rnd(), &h, &pdf) != SOAK_OK) {
+        if (soak_ggx_sample_vndf(alpha, wo, tu_uniform(rng), tu_uniform(rng), &h, &pdf) != SOAK_OK) {
             pdf_ok = 0;
             continue;
         }
@@ -397,14 +357,16 @@ static void test_validation(void)
     check_close("output untouched on error", out, 42.0, 0.0);
 }
 
-static void test_random_finite(void)
+static void test_random_finite(tu_rng *rng)
 {
     int bad = 0, errs = 0;
     for (int n = 0; n < 1000000; ++n) {
-        double a = SOAK_GGX_ALPHA_MIN + (1.0 - SOAK_GGX_ALPHA_MIN) * (n % 3 == 0 ? rnd() * rnd() * rnd() : rnd());
-        double eta = exp(log(SOAK_ETA_MIN) + (log(SOAK_ETA_MAX) - log(SOAK_ETA_MIN)) * rnd());
-        double k = n % 4 == 0 ? 0.0 : SOAK_GGX_K_MAX * rnd() * rnd();
-        soak_vec3 wi = rnd_upper(), wo = rnd_upper(), h, hs;
+        double a = SOAK_GGX_ALPHA_MIN +
+                   (1.0 - SOAK_GGX_ALPHA_MIN) *
+                       (n % 3 == 0 ? tu_uniform(rng) * tu_uniform(rng) * tu_uniform(rng) : tu_uniform(rng));
+        double eta = exp(log(SOAK_ETA_MIN) + (log(SOAK_ETA_MAX) - log(SOAK_ETA_MIN)) * tu_uniform(rng));
+        double k = n % 4 == 0 ? 0.0 : SOAK_GGX_K_MAX * tu_uniform(rng) * tu_uniform(rng);
+        soak_vec3 wi = tu_upper_dir(rng, 1e-6), wo = tu_upper_dir(rng, 1e-6), h, hs;
         double o[8], pdf;
         soak_status s[8];
         s[0] = soak_ggx_D(a, wi, &o[0]);
@@ -412,7 +374,7 @@ static void test_random_finite(void)
         s[2] = soak_ggx_G2(a, wi, wo, &o[2]);
         s[3] = soak_ggx_brdf_dielectric(a, eta, wi, wo, &o[3]);
         s[4] = soak_ggx_brdf_conductor(a, eta, k, wi, wo, &o[4]);
-        s[5] = soak_ggx_sample_vndf(a, wo, rnd(), rnd(), &hs, &o[5]);
+        s[5] = soak_ggx_sample_vndf(a, wo, tu_uniform(rng), tu_uniform(rng), &hs, &o[5]);
         h = soak_v3_norm(soak_v3_add(wi, wo));
         s[6] = soak_ggx_pdf_vndf(a, wo, h, &o[6]);
         s[7] = soak_ggx_pdf_vndf(a, wo, hs, &pdf);
@@ -429,15 +391,16 @@ static void test_random_finite(void)
 
 int main(void)
 {
-    gl_init();
+    tu_rng rng = tu_splitmix64(0x9E3779B97F4A7C15ull);
+    tu_gauss_legendre_unit(16, 8, gx, gw);
     test_D();
     test_smith();
     test_brdf_points();
     test_vndf_normalisation_and_energy();
-    chi_square(0.5, 1.0, 200000);
-    chi_square(0.05, 1.3, 200000);
-    chi_square(1.0, 0.0, 100000);
+    chi_square(0.5, 1.0, 200000, &rng);
+    chi_square(0.05, 1.3, 200000, &rng);
+    chi_square(1.0, 0.0, 100000, &rng);
     test_validation();
-    test_random_finite();
+    test_random_finite(&rng);
     return check_finish();
 }

@@ -4,10 +4,10 @@
  * sampling vs the analytic CDF (chi-square), inverse-CDF accuracy for
  * g -> 0 and |g| -> 1, and invalid inputs. */
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 
 #include "check.h"
+#include "testutil.h"
 #include "soak/hg.h"
 
 /* int_{-1}^{1} f(c) dc with panels graded toward both ends, where lobes with
@@ -62,24 +62,15 @@ static double hg_cdf(double g, double c)
     return (1 - g) * (1 + c) / (sq * (1 + g + sq));
 }
 
-static uint64_t rs = 88172645463325252ull;
-static double rnd(void)
-{
-    rs ^= rs << 13;
-    rs ^= rs >> 7;
-    rs ^= rs << 17;
-    return (double)(rs >> 11) * (1.0 / 9007199254740992.0);
-}
-
 /* chi-square of N samples in B equal-probability bins of the analytic CDF */
-static double chi_square(const soak_hg2 *p, int N, int B)
+static double chi_square(const soak_hg2 *p, int N, int B, tu_rng *rng)
 {
     int counts[64] = {0};
     soak_vec3 in = soak_v3(0, 0, 1);
     for (int i = 0; i < N; ++i) {
         soak_vec3 out;
         double pdf;
-        soak_hg2_sample(p, in, rnd(), rnd(), rnd(), &out, &pdf);
+        soak_hg2_sample(p, in, tu_uniform(rng), tu_uniform(rng), tu_uniform(rng), &out, &pdf);
         double c = out.z;
         double F = p->w * hg_cdf(p->g1, c) + (1 - p->w) * hg_cdf(p->g2, c);
         int b = (int)(F * B);
@@ -94,6 +85,7 @@ static double chi_square(const soak_hg2 *p, int N, int B)
 
 int main(void)
 {
+    tu_rng rng = tu_xorshift64(88172645463325252ull);
     const double gs[] = {0.0, 1e-9, 0.3, -0.3, 0.9, -0.9, 0.999, -0.999, 0.999999, -0.999999};
     for (int i = 0; i < 10; ++i) {
         soak_hg2 p = {gs[i], 0.0, 1.0};
@@ -130,7 +122,7 @@ int main(void)
                               {0.05, -0.05, 0.8}, {0.8, -0.1, 0.9}};
     for (int i = 0; i < 6; ++i) {
         char what[80];
-        double chi = chi_square(&ssets[i], 200000, 50);
+        double chi = chi_square(&ssets[i], 200000, 50, &rng);
         snprintf(what, sizeof what, "sampling chi-square set %d (< 85.35)", i);
         check_true(what, chi < 85.35);
         printf("     chi-square = %.2f\n", chi);
@@ -162,7 +154,7 @@ int main(void)
     soak_vec3 in = soak_v3_norm(soak_v3(0.3, -0.5, 0.8)), out;
     double pdf, worst_len = 0, worst_pdf = 0;
     for (int i = 0; i < 10000; ++i) {
-        soak_hg2_sample(&p, in, rnd(), rnd(), rnd(), &out, &pdf);
+        soak_hg2_sample(&p, in, tu_uniform(&rng), tu_uniform(&rng), tu_uniform(&rng), &out, &pdf);
         double v;
         soak_hg2_eval(&p, fmax(-1, fmin(1, soak_v3_dot(in, out))), &v);
         worst_len = fmax(worst_len, fabs(soak_v3_len(out) - 1));
@@ -192,10 +184,10 @@ int main(void)
     /* 10^6 random valid inputs: finite values and samples. */
     long nonfinite = 0;
     for (int i = 0; i < 1000000; ++i) {
-        double gg = (rnd() * 2 - 1) * SOAK_HG_G_MAX, c = rnd() * 2 - 1, val, cs;
+        double gg = (tu_uniform(&rng) * 2 - 1) * SOAK_HG_G_MAX, c = tu_uniform(&rng) * 2 - 1, val, cs;
         if (i % 5 == 0) gg = (i % 10 == 0 ? 1 : -1) * SOAK_HG_G_MAX;
         soak_hg_eval(gg, c, &val);
-        soak_hg_sample_cos(gg, rnd(), &cs);
+        soak_hg_sample_cos(gg, tu_uniform(&rng), &cs);
         if (!soak_is_finite(val) || !(cs >= -1 && cs <= 1)) ++nonfinite;
     }
     check_close("random sweep non-finite", (double)nonfinite, 0.0, 0.0);

@@ -6,25 +6,8 @@
 #include <stdio.h>
 
 #include "check.h"
+#include "testutil.h"
 #include "soak/jensen.h"
-
-/* Unpolarised Fresnel reflectance from index n_i into n_t at cos_i:
- * (sin^2(i-t)/sin^2(i+t) + tan^2(i-t)/tan^2(i+t)) / 2, 1 beyond critical. */
-static double ref_fresnel(double cos_i, double n_i, double n_t)
-{
-    if (n_i == n_t) return 0.0;
-    double ti = acos(fmin(1.0, cos_i));
-    double st = n_i / n_t * sin(ti);
-    if (st >= 1.0) return 1.0;
-    if (ti < 1e-7) {
-        double r = (n_t - n_i) / (n_t + n_i);
-        return r * r;
-    }
-    double tt = asin(st);
-    double s = sin(ti - tt) / sin(ti + tt);
-    double t = tan(ti - tt) / tan(ti + tt);
-    return 0.5 * (s * s + t * t);
-}
 
 /* cos of the refracted angle in n_t for cos_i in n_i (Snell), -1 if none. */
 static double ref_snell(double cos_i, double n_i, double n_t)
@@ -47,16 +30,16 @@ static void test_energy_single_interfaces(void)
         soak_jensen_reflect_top(&top_only, c, &R);
         soak_jensen_transmit_down(&top_only, c, &T, NULL);
         worst_rt = fmax(worst_rt, fabs(R + T - 1.0));
-        worst_top = fmax(worst_top, fabs(R - ref_fresnel(c, 1.0, 1.33)));
+        worst_top = fmax(worst_top, fabs(R - tu_fresnel_angle(c, 1.0, 1.33)));
         soak_jensen_transmit_down(&no_film, c, &T, &c3);
-        worst_single = fmax(worst_single, fabs(T - (1.0 - ref_fresnel(c, 1.0, 1.5))));
+        worst_single = fmax(worst_single, fabs(T - (1.0 - tu_fresnel_angle(c, 1.0, 1.5))));
         worst_single = fmax(worst_single, fabs(c3 - ref_snell(c, 1.0, 1.5)));
         soak_jensen_transmit_down(&no_film_k2, c, &Tk, NULL);
-        double F = ref_fresnel(c, 1.0, 1.5);
+        double F = tu_fresnel_angle(c, 1.0, 1.5);
         worst_k = fmax(worst_k, fabs(Tk - (1.0 - F * F)));
         int tir = -1;
         soak_jensen_transmit_up(&top_only, c, &Tup, NULL, &tir);
-        double want = ref_snell(c, 1.33, 1.0) < 0.0 ? 0.0 : 1.0 - ref_fresnel(c, 1.33, 1.0);
+        double want = ref_snell(c, 1.33, 1.0) < 0.0 ? 0.0 : 1.0 - tu_fresnel_angle(c, 1.33, 1.0);
         worst_up = fmax(worst_up, fabs(Tup - want));
     }
     check_close("top interface alone: R + T = 1", worst_rt, 0.0, 1e-15);
@@ -74,7 +57,7 @@ static void test_two_interfaces(void)
         double c1 = cosines[i], T = -1.0, c3 = -1.0, S = -1.0;
         soak_jensen_transmit_down(&l, c1, &T, &c3);
         double c2 = ref_snell(c1, 1.0, 1.33);
-        double F12 = ref_fresnel(c1, 1.0, 1.33), F23 = ref_fresnel(c2, 1.33, 1.5);
+        double F12 = tu_fresnel_angle(c1, 1.0, 1.33), F23 = tu_fresnel_angle(c2, 1.33, 1.5);
         /* energy at each interface: what is not reflected goes through */
         double want = (1.0 - F12) * (1.0 - F23);
         worst = fmax(worst, fabs(T - want));
@@ -184,7 +167,7 @@ static void test_k(void)
     soak_jensen_transmit_down(&k2, 0.05, &bg, NULL);
     check_true("seed: the gain from k > 1 is larger at normal than at grazing incidence", b0 - a0 > bg - ag);
     /* the gain at normal incidence is F23 - F23^2 times (1 - F12) */
-    double F12 = ref_fresnel(1.0, 1.0, 1.33), F23 = ref_fresnel(1.0, 1.33, 1.5);
+    double F12 = tu_fresnel_angle(1.0, 1.0, 1.33), F23 = tu_fresnel_angle(1.0, 1.33, 1.5);
     check_close("k gain at normal incidence = (1-F12)(F23 - F23^2)", b0 - a0, (1.0 - F12) * (F23 - F23 * F23), 1e-15);
 }
 

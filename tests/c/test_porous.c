@@ -5,54 +5,14 @@
  * seed 002's Eq. 2-3 written out here, reciprocity, and directional albedo by
  * an independent panel quadrature over the outgoing hemisphere. */
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 
 #include "check.h"
+#include "testutil.h"
 #include "soak/porous.h"
 
-/* splitmix64, private to this test */
-static uint64_t rng_state = 0x2545F4914F6CDD1Dull;
-static double rnd(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
-}
-
-static soak_vec3 rnd_upper(void)
-{
-    double z = 1e-6 + (1.0 - 1e-6) * rnd();
-    double phi = 2.0 * SOAK_PI * rnd();
-    double s = sqrt(1.0 - z * z);
-    return soak_v3(s * cos(phi), s * sin(phi), z);
-}
-
-/* 8-point Gauss-Legendre on [-1,1] by Newton on P_8 (test's own copy). */
+/* 8-point Gauss-Legendre on [-1,1], filled once in main. */
 static double gx[8], gw[8];
-static void gl_init(void)
-{
-    const int n = 8;
-    for (int i = 0; i < n; ++i) {
-        double x = cos(SOAK_PI * (i + 0.75) / (n + 0.5)), dp = 1.0;
-        for (int it = 0; it < 100; ++it) {
-            double p0 = 1.0, p1 = x;
-            for (int k = 2; k <= n; ++k) {
-                double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = n * (x * p1 - p0) / (x * x - 1.0);
-            double dx = p1 / dp;
-            x -= dx;
-            if (fabs(dx) < 1e-16) break;
-        }
-        gx[i] = x;
-        gw[i] = 2.0 / ((1.0 - x * x) * dp * dp);
-    }
-}
 
 /* Panel breakpoints on [lo, hi], refined geometrically (c +- w0 2^k) around
  * c and, when edge is set, also towards hi (the horizon, where the
@@ -280,17 +240,20 @@ static soak_porous_params paper_params(double porosity, double sp)
     return p;
 }
 
-static void test_forms(void)
+static void test_forms(tu_rng *rng)
 {
     /* seed 001's simplified form and seed 002 Eq. 2-3, evaluated here from
      * the building blocks, against soak_porous_eval / coeffs. */
     double worst_simpl = 0.0, worst_eq = 0.0;
     for (int s = 0; s < 2000; ++s) {
-        soak_porous_params p = {0.9 * rnd(), 0.0, rnd(), 1.0 + 100.0 * rnd(), rnd(), 5.0 * rnd(), rnd(),
-                                200.0, SOAK_BLINN_NORM_SEED001};
-        p.ks = (1.0 - p.kd) * rnd();
-        double fill = rnd();
-        soak_vec3 wi = rnd_upper(), wo = rnd_upper();
+        soak_porous_params p = {0.9 * tu_uniform(rng),  0.0,
+                                tu_uniform(rng),        1.0 + 100.0 * tu_uniform(rng),
+                                tu_uniform(rng),        5.0 * tu_uniform(rng),
+                                tu_uniform(rng),        200.0,
+                                SOAK_BLINN_NORM_SEED001};
+        p.ks = (1.0 - p.kd) * tu_uniform(rng);
+        double fill = tu_uniform(rng);
+        soak_vec3 wi = tu_upper_dir(rng, 1e-6), wo = tu_upper_dir(rng, 1e-6);
         double Gp, nb, Ap;
         soak_porous_Gp(p.m, wi.z, wo.z, &Gp);
         soak_porous_nb(p.sp, acos(wi.z), acos(wo.z), &nb);
@@ -374,15 +337,18 @@ static void test_bp_energy(void)
     }
 }
 
-static void test_bp_identities(void)
+static void test_bp_identities(tu_rng *rng)
 {
     double worst = 0.0, worst_dry = 0.0;
     for (int s = 0; s < 20000; ++s) {
-        soak_porous_params p = {0.9 * rnd(), 0.0, rnd(), 300.0 * rnd(), rnd(), 50.0 * rnd(), rnd(),
-                                300.0 * rnd(), (soak_blinn_norm)(s & 1)};
-        p.ks = (1.0 - p.kd) * rnd();
-        double fill = rnd();
-        soak_vec3 wi = rnd_upper(), wo = rnd_upper();
+        soak_porous_params p = {0.9 * tu_uniform(rng),   0.0,
+                                tu_uniform(rng),         300.0 * tu_uniform(rng),
+                                tu_uniform(rng),         50.0 * tu_uniform(rng),
+                                tu_uniform(rng),         300.0 * tu_uniform(rng),
+                                (soak_blinn_norm)(s & 1)};
+        p.ks = (1.0 - p.kd) * tu_uniform(rng);
+        double fill = tu_uniform(rng);
+        soak_vec3 wi = tu_upper_dir(rng, 1e-6), wo = tu_upper_dir(rng, 1e-6);
         double f1, f2;
         soak_porous_eval(&p, fill, wi, wo, &f1);
         soak_porous_eval(&p, fill, wo, wi, &f2);
@@ -467,12 +433,13 @@ static void test_ggx_energy(void)
     check_close("specular albedo table vs panel quadrature (max |diff|)", worst_tab, 0.0, 1e-5);
 }
 
-static void test_ggx_identities(void)
+static void test_ggx_identities(tu_rng *rng)
 {
     double worst = 0.0, worst_dry = 0.0;
     for (int s = 0; s < 40; ++s) {
-        soak_porous_ggx_params p = {rnd(), 1e-3 + rnd(), 1.0 + 2.0 * rnd(), rnd(), 50.0 * rnd(), 1e-3 + rnd(),
-                                    1.0 + 2.0 * rnd()};
+        soak_porous_ggx_params p = {
+            tu_uniform(rng),        1e-3 + tu_uniform(rng), 1.0 + 2.0 * tu_uniform(rng), tu_uniform(rng),
+            50.0 * tu_uniform(rng), 1e-3 + tu_uniform(rng), 1.0 + 2.0 * tu_uniform(rng)};
         p.roughness = fmin(p.roughness, 1.0);
         p.water_roughness = fmin(p.water_roughness, 1.0);
         soak_porous_ggx c, c0;
@@ -480,8 +447,8 @@ static void test_ggx_identities(void)
         p.porosity = 0.0;
         soak_porous_ggx_setup(&p, &c0);
         for (int k = 0; k < 500; ++k) {
-            double fill = rnd();
-            soak_vec3 wi = rnd_upper(), wo = rnd_upper();
+            double fill = tu_uniform(rng);
+            soak_vec3 wi = tu_upper_dir(rng, 1e-6), wo = tu_upper_dir(rng, 1e-6);
             double f1, f2;
             soak_porous_ggx_eval(&c, fill, wi, wo, &f1);
             soak_porous_ggx_eval(&c, fill, wo, wi, &f2);
@@ -585,7 +552,7 @@ static soak_status ggx_pdf(const void *ctx, soak_vec3 wi, soak_vec3 wo, double *
 }
 
 static void check_sampler(const char *name, const void *ctx, sample_fn sample, point_fn eval, point_fn pdf,
-                          brdf_fn f_quad, brdf_fn pdf_quad, double theta_i, double width)
+                          brdf_fn f_quad, brdf_fn pdf_quad, double theta_i, double width, tu_rng *rng)
 {
     soak_vec3 wi = soak_v3_polar(theta_i, 0.0);
     const int n = 200000;
@@ -594,7 +561,7 @@ static void check_sampler(const char *name, const void *ctx, sample_fn sample, p
     for (int k = 0; k < n; ++k) {
         soak_vec3 wo;
         double f, p;
-        if (sample(ctx, wi, rnd(), rnd(), rnd(), &wo, &f, &p) != SOAK_OK) {
+        if (sample(ctx, wi, tu_uniform(rng), tu_uniform(rng), tu_uniform(rng), &wo, &f, &p) != SOAK_OK) {
             worst = INFINITY;
             continue;
         }
@@ -627,7 +594,7 @@ static void check_sampler(const char *name, const void *ctx, sample_fn sample, p
     check_close(what, mean, E, 5.0 * sig);
 }
 
-static void test_sampling(void)
+static void test_sampling(tu_rng *rng)
 {
     const double th[] = {10.0, 60.0, 85.0};
     soak_porous_params p = paper_params(0.3, 1.3);
@@ -639,8 +606,8 @@ static void test_sampling(void)
     ggx_ctx gctx = {&c, 0.6};
     for (int t = 0; t < 3; ++t) {
         double ti = th[t] * SOAK_PI / 180.0;
-        check_sampler("Blinn-Phong porous", &bctx, bp_sample, bp_eval, bp_pdf, bp_fn, bp_pdf_fn, ti, 0.01);
-        check_sampler("GGX porous", &gctx, ggx_sample, ggx_eval, ggx_pdf, ggx_fn, ggx_pdf_fn, ti, 0.01);
+        check_sampler("Blinn-Phong porous", &bctx, bp_sample, bp_eval, bp_pdf, bp_fn, bp_pdf_fn, ti, 0.01, rng);
+        check_sampler("GGX porous", &gctx, ggx_sample, ggx_eval, ggx_pdf, ggx_fn, ggx_pdf_fn, ti, 0.01, rng);
     }
 }
 
@@ -720,33 +687,46 @@ static void test_validation(void)
 
 static int finite(double x) { return x == x && fabs(x) <= 1.7976931348623157e308; }
 
-static void test_random_finite(void)
+static void test_random_finite(tu_rng *rng)
 {
     long bad = 0, notok = 0;
     for (long s = 0; s < 1000000; ++s) {
-        double u = rnd();
-        soak_porous_params p = {u < 0.05 ? 0.0 : rnd(), 0.0, u < 0.1 ? 0.0 : rnd(), 1e4 * rnd() * rnd(), rnd(),
-                                50.0 * rnd(), rnd(), 1e4 * rnd() * rnd(), (soak_blinn_norm)(s & 1)};
-        p.ks = u > 0.95 ? 1.0 - p.kd : (1.0 - p.kd) * rnd();
-        soak_vec3 wi = rnd_upper(), wo = rnd_upper();
+        double u = tu_uniform(rng);
+        soak_porous_params p = {u < 0.05 ? 0.0 : tu_uniform(rng),
+                                0.0,
+                                u < 0.1 ? 0.0 : tu_uniform(rng),
+                                1e4 * tu_uniform(rng) * tu_uniform(rng),
+                                tu_uniform(rng),
+                                50.0 * tu_uniform(rng),
+                                tu_uniform(rng),
+                                1e4 * tu_uniform(rng) * tu_uniform(rng),
+                                (soak_blinn_norm)(s & 1)};
+        p.ks = u > 0.95 ? 1.0 - p.kd : (1.0 - p.kd) * tu_uniform(rng);
+        soak_vec3 wi = tu_upper_dir(rng, 1e-6), wo = tu_upper_dir(rng, 1e-6);
         if (s % 7 == 0) wi = soak_v3(sqrt(1.0 - 1e-300), 0.0, 1e-150); /* extreme grazing */
         double f = NAN;
-        if (soak_porous_eval(&p, rnd(), wi, wo, &f) != SOAK_OK) ++notok;
+        if (soak_porous_eval(&p, tu_uniform(rng), wi, wo, &f) != SOAK_OK) ++notok;
         else if (!finite(f) || f < 0.0) ++bad;
         double a = NAN;
-        if (soak_porous_Ap(s % 11 == 0 ? 1.0 : pow(rnd(), 40.0), 1e4 * rnd() * rnd(), &a) != SOAK_OK) ++notok;
-        else if (!finite(a) || a < 0.0 || a > 1.0) ++bad;
+        if (soak_porous_Ap(s % 11 == 0 ? 1.0 : pow(tu_uniform(rng), 40.0), 1e4 * tu_uniform(rng) * tu_uniform(rng),
+                           &a) != SOAK_OK)
+            ++notok;
+        else if (!finite(a) || a < 0.0 || a > 1.0)
+            ++bad;
         double fr = NAN;
-        if (soak_fill_fraction(1e6 * (rnd() - 0.5), 1e6 * (rnd() - 0.5), s % 5 == 0 ? 0.0 : 1e3 * rnd() * rnd(),
-                               &fr) != SOAK_OK)
+        if (soak_fill_fraction(1e6 * (tu_uniform(rng) - 0.5), 1e6 * (tu_uniform(rng) - 0.5),
+                               s % 5 == 0 ? 0.0 : 1e3 * tu_uniform(rng) * tu_uniform(rng), &fr) != SOAK_OK)
             ++notok;
         else if (!(fr >= 0.0 && fr <= 1.0)) ++bad;
         if (s % 10 == 0) {
             soak_vec3 wo;
             double fs, ps;
-            double u1 = s % 20 == 0 ? (s % 40 == 0 ? 0.0 : 1.0) : rnd();
-            if (soak_porous_sample(&p, rnd(), wi, rnd(), u1, rnd(), &wo, &fs, &ps) != SOAK_OK) ++notok;
-            else if (!finite(fs) || !finite(ps) || fs < 0.0 || ps < 0.0) ++bad;
+            double u1 = s % 20 == 0 ? (s % 40 == 0 ? 0.0 : 1.0) : tu_uniform(rng);
+            if (soak_porous_sample(&p, tu_uniform(rng), wi, tu_uniform(rng), u1, tu_uniform(rng), &wo, &fs, &ps) !=
+                SOAK_OK)
+                ++notok;
+            else if (!finite(fs) || !finite(ps) || fs < 0.0 || ps < 0.0)
+                ++bad;
         }
     }
     check_true("10^6 random valid Blinn-Phong/A_p/fill inputs: all SOAK_OK", notok == 0);
@@ -754,22 +734,30 @@ static void test_random_finite(void)
 
     long bad_g = 0, notok_g = 0;
     for (int m = 0; m < 20; ++m) {
-        soak_porous_ggx_params g = {rnd(), m == 0 ? 1e-4 : fmin(1.0, 1e-4 + rnd()), 1.0 + 2.0 * rnd(), rnd(),
-                                    50.0 * rnd(), m == 1 ? 1e-4 : fmin(1.0, 1e-4 + rnd()), 1.0 + 2.0 * rnd()};
+        soak_porous_ggx_params g = {tu_uniform(rng),
+                                    m == 0 ? 1e-4 : fmin(1.0, 1e-4 + tu_uniform(rng)),
+                                    1.0 + 2.0 * tu_uniform(rng),
+                                    tu_uniform(rng),
+                                    50.0 * tu_uniform(rng),
+                                    m == 1 ? 1e-4 : fmin(1.0, 1e-4 + tu_uniform(rng)),
+                                    1.0 + 2.0 * tu_uniform(rng)};
         soak_porous_ggx c;
         if (soak_porous_ggx_setup(&g, &c) != SOAK_OK) {
             ++notok_g;
             continue;
         }
         for (int k = 0; k < 50000; ++k) {
-            soak_vec3 wi = rnd_upper(), wo = k % 3 ? rnd_upper() : soak_v3(-wi.x, -wi.y, wi.z);
+            soak_vec3 wi = tu_upper_dir(rng, 1e-6), wo = k % 3 ? tu_upper_dir(rng, 1e-6) : soak_v3(-wi.x, -wi.y, wi.z);
             double f = NAN;
-            if (soak_porous_ggx_eval(&c, rnd(), wi, wo, &f) != SOAK_OK) ++notok_g;
+            if (soak_porous_ggx_eval(&c, tu_uniform(rng), wi, wo, &f) != SOAK_OK) ++notok_g;
             else if (!finite(f) || f < 0.0) ++bad_g;
             if (k % 10 == 0) {
-                double fs, ps, u1 = k % 20 == 0 ? (k % 40 == 0 ? 0.0 : 1.0) : rnd();
-                if (soak_porous_ggx_sample(&c, rnd(), wi, rnd(), u1, rnd(), &wo, &fs, &ps) != SOAK_OK) ++notok_g;
-                else if (!finite(fs) || !finite(ps) || fs < 0.0 || ps < 0.0) ++bad_g;
+                double fs, ps, u1 = k % 20 == 0 ? (k % 40 == 0 ? 0.0 : 1.0) : tu_uniform(rng);
+                if (soak_porous_ggx_sample(&c, tu_uniform(rng), wi, tu_uniform(rng), u1, tu_uniform(rng), &wo, &fs,
+                                           &ps) != SOAK_OK)
+                    ++notok_g;
+                else if (!finite(fs) || !finite(ps) || fs < 0.0 || ps < 0.0)
+                    ++bad_g;
             }
         }
     }
@@ -779,19 +767,20 @@ static void test_random_finite(void)
 
 int main(void)
 {
-    gl_init();
+    tu_rng rng = tu_splitmix64(0x2545F4914F6CDD1Dull);
+    tu_gauss_legendre_unit(8, 8, gx, gw);
     test_Ap();
     test_fill();
     test_Gp();
     test_nb();
-    test_forms();
+    test_forms(&rng);
     test_bp_norm();
     test_bp_energy();
-    test_bp_identities();
+    test_bp_identities(&rng);
     test_ggx_energy();
-    test_ggx_identities();
-    test_sampling();
+    test_ggx_identities(&rng);
+    test_sampling(&rng);
     test_validation();
-    test_random_finite();
+    test_random_finite(&rng);
     return check_finish();
 }

@@ -4,27 +4,13 @@
  * colour channel; and the mapping's own outputs stay physical (albedos in
  * [0,1], roughness and phase in range). */
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 
 #include "check.h"
+#include "testutil.h"
 #include "soak/models.h"
 #include "soak/preset.h"
 #include "soak/wetness.h"
-
-static uint64_t rs = 0x853c49e6748fea9bull;
-static double rnd(void)
-{
-    rs ^= rs << 13;
-    rs ^= rs >> 7;
-    rs ^= rs << 17;
-    return (double)(rs >> 11) * (1.0 / 9007199254740992.0);
-}
-static soak_vec3 rnd_dir(void)
-{
-    double z = rnd(), phi = 2 * SOAK_PI * rnd(), s = sqrt(fmax(0, 1 - z * z));
-    return soak_v3(s * cos(phi), s * sin(phi), z);
-}
 
 /* Midpoint rule in (mu^(1/2), phi), cells concentrated near the horizon. */
 static double albedo(const soak_model *m, const soak_model_ctx *ctx, soak_vec3 wi)
@@ -47,6 +33,7 @@ static int in01(soak_rgb c) { return c.r >= 0 && c.r <= 1 && c.g >= 0 && c.g <= 
 
 int main(void)
 {
+    tu_rng rng = tu_xorshift64(0x853c49e6748fea9bull);
     soak_preset_db *db = NULL;
     char err[1024];
     if (!check_status("load presets", soak_presets_load(NULL, &db, err, sizeof err), SOAK_OK)) {
@@ -89,7 +76,7 @@ int main(void)
                     if (model->setup(&mp, &ctx) != SOAK_OK) continue; /* e.g. ww without a film */
                     ++setups;
                     for (int r = 0; r < 200; ++r) {
-                        soak_vec3 a = rnd_dir(), b = rnd_dir();
+                        soak_vec3 a = tu_upper_dir(&rng, 0.0), b = tu_upper_dir(&rng, 0.0);
                         double f1 = 0, f2 = 0;
                         soak_model_eval(model, &ctx, a, b, &f1);
                         soak_model_eval(model, &ctx, b, a, &f2);

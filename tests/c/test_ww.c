@@ -10,53 +10,18 @@
  *    of the linear absorption, and the refraction fit residual.
  * The fast-path accuracy table on the fixed angle grid is printed. */
 #include <math.h>
-#include <stdint.h>
 #include <stdio.h>
 
 #include "check.h"
+#include "testutil.h"
 #include "soak/fresnel.h"
 #include "soak/ggx.h"
 #include "soak/ww.h"
 
 #define DEG (SOAK_PI / 180.0)
 
-static uint64_t rng_state = 0x2545F4914F6CDD1Dull;
-static double rnd(void) /* splitmix64 */
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
-}
-static soak_vec3 rnd_upper(double zmin)
-{
-    double z = zmin + (1.0 - zmin) * rnd(), phi = 2.0 * SOAK_PI * rnd(), s = sqrt(1.0 - z * z);
-    return soak_v3(s * cos(phi), s * sin(phi), z);
-}
-
-/* 16-point Gauss-Legendre (positive half) by Newton iteration on P_16. */
+/* 16-point Gauss-Legendre (positive half) on [-1,1], filled once in main. */
 static double gx[8], gw[8];
-static void gl_init(void)
-{
-    for (int i = 0; i < 8; ++i) {
-        double x = cos(SOAK_PI * (i + 0.75) / 16.5), dp = 1.0;
-        for (int it = 0; it < 100; ++it) {
-            double p0 = 1.0, p1 = x;
-            for (int k = 2; k <= 16; ++k) {
-                double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = 16.0 * (x * p1 - p0) / (x * x - 1.0);
-            double dx = p1 / dp;
-            x -= dx;
-            if (fabs(dx) < 1e-16) break;
-        }
-        gx[i] = x;
-        gw[i] = 2.0 / ((1.0 - x * x) * dp * dp);
-    }
-}
 
 /* Nodes and weights of composite 16-point GL on [a,b] with n panels. */
 static int gl_nodes(double a, double b, int n, double *x, double *w)
@@ -151,7 +116,7 @@ static double ww_ref(const soak_ww *m, soak_vec3 wi, soak_vec3 wo)
     return (1.0 - Fi) * fb * att * T21o / (n * n);
 }
 
-static void test_formula_and_reciprocity(void)
+static void test_formula_and_reciprocity(tu_rng *rng)
 {
     soak_rgb cn, ck;
     soak_ww_copper(&cn, &ck);
@@ -166,7 +131,7 @@ static void test_formula_and_reciprocity(void)
     double worst_ref = 0.0, worst_rec = 0.0;
     for (int k = 0; k < 5; ++k)
         for (int s = 0; s < 20000; ++s) {
-            soak_vec3 wi = rnd_upper(1e-3), wo = rnd_upper(1e-3);
+            soak_vec3 wi = tu_upper_dir(rng, 1e-3), wo = tu_upper_dir(rng, 1e-3);
             double f, g;
             soak_ww_eval(&mats[k], wi, wo, &f);
             soak_ww_eval(&mats[k], wo, wi, &g);
@@ -187,16 +152,16 @@ static void test_formula_and_reciprocity(void)
     }
 }
 
-static void test_no_interface(void)
+static void test_no_interface(tu_rng *rng)
 {
     /* n_water = 1: f must equal the base BRDF in air (thickness 0 -> a = 1). */
     soak_rgb cn, ck;
     soak_ww_copper(&cn, &ck);
     double worst = 0.0, worst_abs = 0.0;
     for (int s = 0; s < 20000; ++s) {
-        soak_vec3 wi = rnd_upper(1e-6), wo = rnd_upper(1e-6);
-        soak_ww md = dielectric(1.0, 1.0 + 2.0 * rnd(), 1e-3 + 0.999 * rnd(), rnd());
-        soak_ww mc = conductor(1.0, cn.g, ck.g, 1e-3 + rnd() * 0.999);
+        soak_vec3 wi = tu_upper_dir(rng, 1e-6), wo = tu_upper_dir(rng, 1e-6);
+        soak_ww md = dielectric(1.0, 1.0 + 2.0 * tu_uniform(rng), 1e-3 + 0.999 * tu_uniform(rng), tu_uniform(rng));
+        soak_ww mc = conductor(1.0, cn.g, ck.g, 1e-3 + tu_uniform(rng) * 0.999);
         double f, spec, Fi, Fo, want;
         soak_ww_eval(&md, wi, wo, &f);
         soak_ggx_brdf_dielectric(md.alpha, md.n_base, wi, wo, &spec);
@@ -272,7 +237,7 @@ static void test_energy(void)
     printf("     base alone max albedo %.6f\n", worst_dry);
 }
 
-static void test_sampling(void)
+static void test_sampling(tu_rng *rng)
 {
     soak_rgb cn, ck;
     soak_ww_copper(&cn, &ck);
@@ -297,7 +262,7 @@ static void test_sampling(void)
                 soak_vec3 wi;
                 double w, pdf;
                 int delta;
-                soak_ww_sample(&mats[k], wo, rnd(), rnd(), rnd(), &wi, &w, &pdf, &delta);
+                soak_ww_sample(&mats[k], wo, tu_uniform(rng), tu_uniform(rng), tu_uniform(rng), &wi, &w, &pdf, &delta);
                 sum += w;
                 sum2 += w * w;
                 if (!delta && w > 0.0) {
@@ -349,13 +314,13 @@ static void test_fbottom(void)
     check_close("n3 = n2: no base interface, F_bottom = 0", Fd, 0.0, 0.0);
 }
 
-static void test_absorption_linear(void)
+static void test_absorption_linear(tu_rng *rng)
 {
     int neg = 0, taylor_bad = 0;
     double worst_first_order = 0.0;
     for (int s = 0; s < 100000; ++s) {
-        double ap = s % 2 ? 1e-4 * rnd() : 2.0 * rnd();
-        double cl = 1e-3 + (1.0 - 1e-3) * rnd(), cv = 1e-3 + (1.0 - 1e-3) * rnd(), a;
+        double ap = s % 2 ? 1e-4 * tu_uniform(rng) : 2.0 * tu_uniform(rng);
+        double cl = 1e-3 + (1.0 - 1e-3) * tu_uniform(rng), cv = 1e-3 + (1.0 - 1e-3) * tu_uniform(rng), a;
         soak_triace_absorption_linear(ap, cl, cv, &a);
         if (a < 0.0) ++neg;
         double x = ap * (1.0 / cl + 1.0 / cv), e = exp(-x);
@@ -588,21 +553,21 @@ static void test_validation(void)
     check_close("output untouched on error", out, 7.0, 0.0);
 }
 
-static void test_random_finite(void)
+static void test_random_finite(tu_rng *rng)
 {
     long errs = 0, bad = 0;
     for (int s = 0; s < 1000000; ++s) {
         soak_ww m;
         soak_ww_default(&m);
         m.base = s & 1 ? SOAK_WW_CONDUCTOR : SOAK_WW_DIELECTRIC;
-        m.n_water = s % 5 == 0 ? SOAK_WW_N_WATER : 1.0 + 2.0 * rnd();
-        m.absorption = s % 3 == 0 ? 0.0 : SOAK_WW_ABSORPTION_MAX * rnd() * rnd() * rnd();
-        m.thickness = s % 7 == 0 ? 0.0 : SOAK_WW_THICKNESS_MAX * rnd() * rnd() * rnd();
-        m.alpha = SOAK_GGX_ALPHA_MIN + (1.0 - SOAK_GGX_ALPHA_MIN) * rnd() * rnd();
-        m.n_base = m.base ? 0.01 + 99.99 * rnd() * rnd() : 1.0 + 2.0 * rnd();
-        m.k_base = SOAK_WW_K_MAX * rnd() * rnd();
-        m.kd = rnd();
-        soak_vec3 wi = rnd_upper(1e-9), wo = rnd_upper(1e-9), v;
+        m.n_water = s % 5 == 0 ? SOAK_WW_N_WATER : 1.0 + 2.0 * tu_uniform(rng);
+        m.absorption = s % 3 == 0 ? 0.0 : SOAK_WW_ABSORPTION_MAX * tu_uniform(rng) * tu_uniform(rng) * tu_uniform(rng);
+        m.thickness = s % 7 == 0 ? 0.0 : SOAK_WW_THICKNESS_MAX * tu_uniform(rng) * tu_uniform(rng) * tu_uniform(rng);
+        m.alpha = SOAK_GGX_ALPHA_MIN + (1.0 - SOAK_GGX_ALPHA_MIN) * tu_uniform(rng) * tu_uniform(rng);
+        m.n_base = m.base ? 0.01 + 99.99 * tu_uniform(rng) * tu_uniform(rng) : 1.0 + 2.0 * tu_uniform(rng);
+        m.k_base = SOAK_WW_K_MAX * tu_uniform(rng) * tu_uniform(rng);
+        m.kd = tu_uniform(rng);
+        soak_vec3 wi = tu_upper_dir(rng, 1e-9), wo = tu_upper_dir(rng, 1e-9), v;
         double o, w, pdf;
         int delta;
         soak_status st;
@@ -613,11 +578,15 @@ static void test_random_finite(void)
         CHECK_OUT(soak_ww_eval(&m, wi, wo, &o), o);
         CHECK_OUT(soak_ww_specular(&m, wi.z, &o), o);
         CHECK_OUT(soak_ww_base_eval(&m, wi, wo, &o), o);
-        CHECK_OUT(soak_ww_sample(&m, wo, rnd(), rnd(), rnd(), &v, &w, &pdf, &delta), w);
+        CHECK_OUT(soak_ww_sample(&m, wo, tu_uniform(rng), tu_uniform(rng), tu_uniform(rng), &v, &w, &pdf, &delta), w);
         if (st == SOAK_OK && !(soak_is_finite(pdf) && pdf >= 0.0 && soak_is_finite(v.x) && v.z > 0.0)) ++bad;
-        CHECK_OUT(soak_triace_fbottom_dielectric(1.0 + 2.0 * rnd(), 1.0 + 2.0 * rnd(), &o), o);
-        CHECK_OUT(soak_triace_fbottom_conductor(1.0 + 2.0 * rnd(), 0.01 + 99.0 * rnd(), 100.0 * rnd(), &o), o);
-        CHECK_OUT(soak_triace_absorption_linear(1e3 * rnd() * rnd() * rnd(), wi.z, wo.z, &o), o);
+        CHECK_OUT(soak_triace_fbottom_dielectric(1.0 + 2.0 * tu_uniform(rng), 1.0 + 2.0 * tu_uniform(rng), &o), o);
+        CHECK_OUT(soak_triace_fbottom_conductor(1.0 + 2.0 * tu_uniform(rng), 0.01 + 99.0 * tu_uniform(rng),
+                                                100.0 * tu_uniform(rng), &o),
+                  o);
+        CHECK_OUT(
+            soak_triace_absorption_linear(1e3 * tu_uniform(rng) * tu_uniform(rng) * tu_uniform(rng), wi.z, wo.z, &o),
+            o);
         st = soak_refract_1_33(soak_v3_scale(wi, -1.0), soak_v3(0.0, 0.0, 1.0), &v);
         if (st != SOAK_OK) ++errs;
         else if (!(soak_is_finite(v.x) && soak_is_finite(v.y) && v.z < 0.0)) ++bad;
@@ -638,16 +607,17 @@ static void test_random_finite(void)
 
 int main(void)
 {
-    gl_init();
-    test_formula_and_reciprocity();
-    test_no_interface();
+    tu_rng rng = tu_splitmix64(0x2545F4914F6CDD1Dull);
+    tu_gauss_legendre_unit(16, 8, gx, gw);
+    test_formula_and_reciprocity(&rng);
+    test_no_interface(&rng);
     test_energy();
-    test_sampling();
+    test_sampling(&rng);
     test_fbottom();
-    test_absorption_linear();
+    test_absorption_linear(&rng);
     test_refract();
     test_triace_eval();
     test_validation();
-    test_random_finite();
+    test_random_finite(&rng);
     return check_finish();
 }
