@@ -222,6 +222,13 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
     if (!j) return SOAK_ERR_NOMEM;
     j->ctx.scene = scene;
     j->ctx.max_depth = opt->max_depth > 0 ? opt->max_depth : scene->max_depth;
+    rt_film *films = calloc(scene->n_materials > 0 ? (size_t)scene->n_materials : 1, sizeof *films);
+    if (!films) {
+        free(j);
+        return SOAK_ERR_NOMEM;
+    }
+    rt_films_setup(scene, films);
+    j->ctx.films = films;
     soak_status st = rt_env_build(&j->ctx.env, &scene->env);
     if (st == SOAK_OK && scene->caustic_photons > 0) {
         /* Photons are traced before the render, from the same seed. */
@@ -230,6 +237,7 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
     }
     if (st != SOAK_OK) {
         rt_env_free(&j->ctx.env);
+        free(films);
         free(j);
         return st;
     }
@@ -253,6 +261,7 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
     if (!j->pass_start) {
         rt_photons_free(&j->caustics);
         rt_env_free(&j->ctx.env);
+        free(films);
         free(j);
         return SOAK_ERR_NOMEM;
     }
@@ -348,6 +357,7 @@ done:
     free(j->pass_start);
     free(args);
     free(th);
+    free(films);
     free(j);
     return st;
 }

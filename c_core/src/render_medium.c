@@ -211,7 +211,25 @@ typedef struct nee_ctx {
     const rt_med_surface *surf;
     unsigned object_id;
     rt_path *path;
+    /* Exit point and outward normal of the last shadow path found for light
+     * li < RT_NEE_CACHE: its tangent plane predicts the next exit distance. */
+    int cached[RT_NEE_CACHE];
+    soak_vec3 cache_p[RT_NEE_CACHE], cache_n[RT_NEE_CACHE];
 } nee_ctx;
+
+/* Distance along d from x to the plane through p with normal n (pointing
+ * away from x), INFINITY when d does not go toward it. For a convex object and
+ * a tangent plane this bounds the distance to the surface from above. */
+static double plane_distance(soak_vec3 x, soak_vec3 d, soak_vec3 p, soak_vec3 n)
+{
+    double den = soak_v3_dot(d, n);
+    if (!(den > 1e-9)) return INFINITY;
+    return fmax(0.0, soak_v3_dot(soak_v3_sub(p, x), n)) / den;
+}
+
+/* Survival probability of the roulette on a shadow estimate whose medium
+ * transmittance is about T. */
+static double nee_survival(double T) { return fmin(1.0, fmax(RT_NEE_SURVIVAL_MIN, T / RT_NEE_ROULETTE_T)); }
 
 /* Vertex hook of the walk: delta lights by next-event estimation (see the
  * top of this file) and the caustic photon map, both times 1/n3^2. */
@@ -219,7 +237,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
                          soak_rng *rng)
 {
     (void)rng; /* the thread's generator: rt_rand draws from the same stream */
-    const nee_ctx *c = ctx;
+    nee_ctx *c = ctx;
     rt_thread *t = c->t;
     const soak_scene *s = t->ctx->scene;
     const soak_material *m = c->m;
@@ -231,7 +249,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
         soak_hit h;
         int found = 0;
         soak_vec3 d3 = wl;
-        double cos1 = 0, cos3 = 0;
+        double cos1 = 0, cos3 = 0, inv_q = 1.0, q1 = 1.0;
         for (int it = 0; it < 2; ++it) {
             cos1 = soak_v3_dot(wl, n);
             if (!(cos1 > 0)) {
@@ -240,11 +258,44 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
             }
             soak_vec3 tang = soak_v3_scale(soak_v3_sub(wl, soak_v3_scale(n, cos1)), 1.0 / n3);
             d3 = soak_v3_norm(soak_v3_add(tang, soak_v3_scale(n, sqrt(fmax(0.0, 1 - soak_v3_dot(tang, tang))))));
+            if (it == 0 && !c->med->coeffs) {
+                /* Roulette (see RT_NEE_ROULETTE_T), stage 1, before any ray: the exit distance predicted by the
+                 * tangent planes of the surface point the walk is heading for
+                 * and of this light's last exit point. */
+                const soak_hit *wh = &c->surf->hit;
+                soak_vec3 wn = soak_v3_dot(d_in, wh->ng) >= 0 ? wh->ng : soak_v3_scale(wh->ng, -1.0);
+                double sd = c->surf->lost ? INFINITY : plane_distance(x, d3, wh->p, wn);
+                if (li < RT_NEE_CACHE && c->cached[li]) sd = fmin(sd, plane_distance(x, d3, c->cache_p[li], c->cache_n[li]));
+                if (sd < INFINITY) {
+                    q1 = fmax(RT_NEE_PREDICT_MIN, nee_survival(rgb_max(rgb_exp(c->med->sigma_t, sd))));
+                    if (q1 < 1.0) {
+                        if (rt_rand(t) >= q1) {
+                            found = 0;
+                            break;
+                        }
+                        inv_q = 1.0 / q1;
+                    }
+                }
+            }
             soak_ray r = {x, d3, 0.0, INFINITY};
             t->n.rays++;
             if (soak_geometry_intersect(s->geometry, &r, &h, &found) != SOAK_OK || !found) {
                 found = 0;
                 break;
+            }
+            if (it == 0 && !c->med->coeffs) {
+                /* Stage 2, with the first exit found: deep inside the light
+                 * barely gets through, so the rest of the estimate (exit
+                 * refinement, shadow ray) survives with overall probability
+                 * min(q1, nee_survival(T)); survivors are divided by it. */
+                double q = fmin(1.0, nee_survival(rgb_max(rgb_exp(c->med->sigma_t, h.t))) / q1);
+                if (q < 1.0) {
+                    if (rt_rand(t) >= q) {
+                        found = 0;
+                        break;
+                    }
+                    inv_q /= q;
+                }
             }
             soak_vec3 ny = soak_v3_dot(d3, h.ng) >= 0 ? h.ng : soak_v3_scale(h.ng, -1.0);
             if (l->type == SOAK_LIGHT_POINT) wl = soak_v3_norm(soak_v3_sub(l->position, h.p));
@@ -257,6 +308,11 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
             cos3 = soak_v3_dot(d3, n);
         }
         if (!found || !(cos1 > 0) || !(cos3 > 0)) continue;
+        if (li < RT_NEE_CACHE) {
+            c->cached[li] = 1;
+            c->cache_p[li] = h.p;
+            c->cache_n[li] = n;
+        }
         double dist_light = INFINITY;
         soak_rgb E = l->value;
         if (l->type == SOAK_LIGHT_POINT) {
@@ -275,7 +331,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
         if (!rt_visible(t, soak_geometry_offset(h.p, n, wl), wl, dist_light)) continue;
         soak_rgb L = rgb_mul(rgb_mul(beta, Tm), E);
         /* 1/n3^2: the radiance factor of entering, left out of beta (cross_stack). */
-        L = rgb_scale(L, ph * Tf * cos1 / (cos3 * n3 * n3));
+        L = rgb_scale(L, inv_q * ph * Tf * cos1 / (cos3 * n3 * n3));
         if (cover > 0 && m->film_thickness > 0) {
             /* Beer-Lambert in the film, weighted by the wet share of Tf. */
             double cos2 = sqrt(fmax(0.0, 1 - (1 - cos1 * cos1) / (m->film_ior * m->film_ior)));
@@ -369,7 +425,15 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     rt_med_surface surf = {*hit, 0, n_out};
     rt_med_boundary bd = {t, &surf, obj, m, &st};
     soak_boundary boundary = rt_med_boundary_make(&bd);
-    nee_ctx nc = {t, m, obj, &mr, &surf, hit->object_id, path};
+    nee_ctx nc;
+    memset(&nc, 0, sizeof nc);
+    nc.t = t;
+    nc.m = m;
+    nc.obj = obj;
+    nc.med = &mr;
+    nc.surf = &surf;
+    nc.object_id = hit->object_id;
+    nc.path = path;
     soak_walk_options opt = rt_walk_options(path->beta);
     opt.on_vertex = medium_vertex;
     opt.vertex_ctx = &nc;

@@ -22,7 +22,12 @@
  * the light) has, in air solid angle,
  *   pdf = pdf_base(w2) * (1 - F21(cos2)) * (1/n2)^2 * cos1 / cos2,
  * the Jacobian of Snell's map dw2/dw1 = (n1/n2)^2 cos1/cos2; the two are
- * combined with the power heuristic. */
+ * combined with the power heuristic.
+ *
+ * A film over a Lambert base skips the bounce-by-bounce tracing: its
+ * expectation is the closed-form Lekner-Dorf BSDF (soak/film.h), used
+ * instead (film_lambert below); the traced routine remains for GGX bases and
+ * for films whose set-up the closed form rejects. */
 #include "render_internal.h"
 #include "soak/fresnel.h"
 #include "soak/ggx.h"
@@ -200,6 +205,102 @@ static void opaque(rt_thread *t, const soak_hit *hit, const base_model *base, do
     path->alive = 0;
 }
 
+void rt_films_setup(const soak_scene *s, rt_film *films)
+{
+    for (int i = 0; i < s->n_materials; ++i) {
+        const soak_material *m = &s->materials[i];
+        rt_film *fm = &films[i];
+        memset(fm, 0, sizeof *fm);
+        if (m->type != SOAK_MAT_WET || m->base != SOAK_BASE_LAMBERT) continue;
+        fm->ok = 1;
+        for (int ch = 0; ch < 3; ++ch) {
+            /* soak_film takes alpha * thickness only as their product tau. */
+            double tau = soak_rgb_at(m->film_absorption, ch) * m->film_thickness;
+            soak_film film = {m->film_ior, tau, 1.0};
+            double a = soak_rgb_at(m->albedo, ch);
+            if (!soak_in_range(a, 0.0, 1.0) || soak_film_setup(&film, &fm->ch[ch]) != SOAK_OK) fm->ok = 0;
+        }
+    }
+}
+
+/* Closed-form BRDF of the film over Lambert (diffuse part, 1/sr), per channel. */
+static soak_rgb film_lambert_eval(const rt_film *fm, soak_rgb albedo, soak_vec3 wi, soak_vec3 wo)
+{
+    double f[3] = {0, 0, 0};
+    for (int ch = 0; ch < 3; ++ch)
+        if (soak_film_ctx_brdf(&fm->ch[ch], soak_rgb_at(albedo, ch), wi, wo, &f[ch]) != SOAK_OK) f[ch] = 0;
+    return soak_rgb3(f[0], f[1], f[2]);
+}
+
+/* A film over an opaque Lambert base with the film's internal reflections
+ * summed in closed form (Lekner & Dorf 1988, soak/film.h): the expectation of
+ * what opaque() traces bounce by bounce for the same material. Two lobes: the
+ * mirror reflection of the film top, chosen with its probability F12(cos_o)
+ * (weight 1), and the diffuse part f_d, sampled cosine-weighted with
+ * probability 1 - F12(cos_o), i.e. pdf (1 - F12) cos_i / pi, which also
+ * serves as the BSDF pdf of the MIS with light sampling. Lights are sampled
+ * at every interaction (f_d already holds the film's transmittances), so
+ * before the lobe choice. */
+static void film_lambert(rt_thread *t, const soak_hit *hit, const rt_film *fm, soak_rgb albedo, rt_path *path)
+{
+    const rt_ctx *c = t->ctx;
+    soak_vec3 wo = soak_v3_scale(path->dir, -1.0);
+    soak_vec3 ng = soak_v3_dot(wo, hit->ng) >= 0 ? hit->ng : soak_v3_scale(hit->ng, -1.0);
+    soak_vec3 ns = soak_v3_dot(hit->ns, ng) >= 0 ? hit->ns : soak_v3_scale(hit->ns, -1.0);
+    if (soak_v3_dot(wo, ns) <= 1e-9) ns = ng; /* shading normal facing away from the viewer */
+    rt_frame f = rt_frame_make(ns);
+    soak_vec3 wl = soak_v3_norm(rt_to_local(&f, wo));
+    if (!(wl.z > 0)) {
+        path->alive = 0;
+        return;
+    }
+    double F = rt_fresnel(wl.z, fm->ch[0].n, NULL);
+    double p_diffuse = 1.0 - F;
+    /* Next-event estimation for the diffuse part, before the lobe choice. */
+    soak_vec3 p_out = soak_geometry_offset(hit->p, ng, ng);
+    int nl = rt_light_count(c);
+    for (int li = 0; li < nl; ++li) {
+        rt_light_sample ls;
+        if (!rt_light_sample_at(t, li, p_out, &ls)) continue;
+        if (soak_v3_dot(ls.wi, ng) <= 0) continue;
+        soak_vec3 l1 = soak_v3_norm(rt_to_local(&f, ls.wi));
+        if (!(l1.z > 0)) continue;
+        soak_rgb fd = film_lambert_eval(fm, albedo, l1, wl);
+        if (!(rgb_max(fd) > 0)) continue;
+        double mis = ls.pdf > 0 ? rt_power(ls.pdf, p_diffuse * l1.z * SOAK_INV_PI) : 1.0;
+        if (!rt_visible(t, p_out, ls.wi, ls.dist)) continue;
+        soak_rgb contrib = rgb_scale(rgb_mul(path->beta, rgb_mul(fd, ls.L)), l1.z * mis / (ls.pdf > 0 ? ls.pdf : 1.0));
+        path->L = rgb_add(path->L, contrib);
+    }
+    if (rt_rand(t) < F) {
+        soak_vec3 r = soak_v3(-wl.x, -wl.y, wl.z);
+        path->dir = rt_to_world(&f, r);
+        if (soak_v3_dot(path->dir, ng) <= 0) path->dir = soak_v3_sub(path->dir, soak_v3_scale(ng, 2 * soak_v3_dot(path->dir, ng)));
+        path->org = soak_geometry_offset(hit->p, ng, path->dir);
+        path->prev_delta = 1;
+        return;
+    }
+    double u1 = rt_rand(t), u2 = rt_rand(t);
+    double r = sqrt(u1), phi = 2 * SOAK_PI * u2;
+    soak_vec3 wi = soak_v3(r * cos(phi), r * sin(phi), sqrt(fmax(0.0, 1 - u1)));
+    double pdf = p_diffuse * wi.z * SOAK_INV_PI;
+    soak_rgb fd = film_lambert_eval(fm, albedo, wi, wl);
+    if (!(pdf > 0) || !(rgb_max(fd) > 0)) {
+        path->alive = 0;
+        return;
+    }
+    path->beta = rgb_mul(path->beta, rgb_scale(fd, wi.z / pdf));
+    path->dir = soak_v3_norm(rt_to_world(&f, wi));
+    if (soak_v3_dot(path->dir, ng) <= 0) {
+        path->alive = 0; /* below the geometric surface: shading-normal artefact */
+        return;
+    }
+    path->org = soak_geometry_offset(hit->p, ng, path->dir);
+    path->prev_pdf = pdf;
+    path->prev_delta = 0;
+    path->prev_pos = hit->p;
+}
+
 /* Smooth dielectric (glass, liquid): Fresnel choice between mirror
  * reflection and refraction; Beer-Lambert absorption inside is applied by
  * the path loop over each segment travelled while inside. */
@@ -254,6 +355,11 @@ void rt_surface(rt_thread *t, const soak_hit *hit, rt_path *path)
         }
         double w = soak_scene_wetness(obj, hit->p, hit->u, hit->v) * m->film_coverage;
         double n2 = rt_rand(t) < w ? m->film_ior : 1.0;
+        const rt_film *fm = t->ctx->films ? &t->ctx->films[obj->material] : NULL;
+        if (n2 != 1.0 && fm && fm->ok) {
+            film_lambert(t, hit, fm, m->albedo, path);
+            return;
+        }
         b.type = m->base;
         b.albedo = m->albedo;
         b.alpha = m->alpha;
