@@ -167,18 +167,38 @@ static soak_medium_point homogeneous_point(const soak_medium_rgb *m)
 
 typedef enum flight_end { FLIGHT_SURFACE, FLIGHT_COLLISION, FLIGHT_CAPPED } flight_end;
 
-/* Homogeneous free flight toward a surface at dmax (channel MIS, see
- * soak/medium.h). On a collision r->pos moves there and the weights take
- * the collision factor sigma_s; at the surface they take the transmittance. */
-static soak_status fly_homogeneous(const soak_medium_rgb *m, double dmax, soak_walk_result_rgb *r, soak_rng *rng,
-                                   flight_end *end)
+/* Distance to the surface from pos along dir into *dmax, for a flight whose
+ * sampled length is t. With a within test that rules the surface out
+ * before t, the closest-hit query is skipped and *dmax = INFINITY: the
+ * flight then ends at its collision, exactly as it would against the true
+ * distance (> t). */
+static soak_status surface_distance(const soak_boundary *b, soak_vec3 pos, soak_vec3 dir, double t, double *dmax)
+{
+    if (b->within && t < INFINITY && !b->within(b->ctx, pos, dir, t)) {
+        *dmax = INFINITY;
+        return SOAK_OK;
+    }
+    *dmax = b->distance(b->ctx, pos, dir);
+    return *dmax >= 0.0 ? SOAK_OK : SOAK_ERR_NUMERIC;
+}
+
+/* Homogeneous free flight toward the surface (channel MIS, see
+ * soak/medium.h): the distance t is sampled first, then the surface
+ * distance *dmax is asked (lazily, see surface_distance). On a collision
+ * r->pos moves there and the weights take the collision factor sigma_s; at
+ * the surface they take the transmittance. */
+static soak_status fly_homogeneous(const soak_medium_rgb *m, const soak_boundary *b, soak_walk_result_rgb *r,
+                                   soak_rng *rng, flight_end *end, double *dmax_out)
 {
     double sig[3] = {m->sigma_t.r, m->sigma_t.g, m->sigma_t.b};
     double alb[3] = {m->albedo.r, m->albedo.g, m->albedo.b};
     double beta[3] = {r->weight.r, r->weight.g, r->weight.b};
-    double t;
+    double t, dmax;
+    soak_status st;
     if (sig[0] == sig[1] && sig[1] == sig[2]) {
         t = free_flight(sig[0], rng); /* every channel has the same density: weights 1 */
+        if ((st = surface_distance(b, r->pos, r->dir, t, &dmax)) != SOAK_OK) return st;
+        *dmax_out = dmax;
         if (t >= dmax) {
             *end = FLIGHT_SURFACE;
             return SOAK_OK;
@@ -191,6 +211,8 @@ static soak_status fly_homogeneous(const soak_medium_rgb *m, double dmax, soak_w
         int c = u < p[0] ? 0 : (u < p[0] + p[1] ? 1 : 2);
         if (p[c] == 0.0) c = p[2] > 0.0 ? 2 : (p[1] > 0.0 ? 1 : 0); /* round-off at the top of [0,1) */
         t = free_flight(sig[c], rng);
+        if ((st = surface_distance(b, r->pos, r->dir, t, &dmax)) != SOAK_OK) return st;
+        *dmax_out = dmax;
         if (t >= dmax) {
             if (dmax == INFINITY) {
                 *end = FLIGHT_SURFACE;
@@ -320,11 +342,14 @@ soak_status soak_medium_walk_rgb(const soak_medium_rgb *m, const soak_walk_optio
     soak_medium_point local = homogeneous_point(m);
     while (r.events < opt.max_events) { /* capped: reported, never dropped silently */
         if (!(rgb_max(r.weight) > 0.0)) return finish(&r, SOAK_WALK_ABSORBED, out);
-        double dmax = boundary->distance(boundary->ctx, r.pos, r.dir);
-        if (!(dmax >= 0.0)) return SOAK_ERR_NUMERIC;
+        double dmax = INFINITY;
         flight_end fe;
-        st = m->coeffs ? fly_heterogeneous(m, dmax, opt.max_events, &r, rng, &local, &fe)
-                       : fly_homogeneous(m, dmax, &r, rng, &fe);
+        if (m->coeffs) {
+            if ((st = surface_distance(boundary, r.pos, r.dir, INFINITY, &dmax)) != SOAK_OK) return st;
+            st = fly_heterogeneous(m, dmax, opt.max_events, &r, rng, &local, &fe);
+        } else {
+            st = fly_homogeneous(m, boundary, &r, rng, &fe, &dmax);
+        }
         if (st != SOAK_OK) return st;
         if (fe == FLIGHT_CAPPED) break;
         ++r.events;
@@ -465,5 +490,6 @@ soak_status soak_slab_boundary_make(const soak_slab_boundary *s, soak_boundary *
     b->distance = slab_distance;
     b->interact = slab_interact;
     b->ctx = s;
+    b->within = NULL; /* the planar distance is already cheap */
     return SOAK_OK;
 }

@@ -263,8 +263,11 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
                  * tangent planes of the surface point the walk is heading for
                  * and of this light's last exit point. */
                 const soak_hit *wh = &c->surf->hit;
-                soak_vec3 wn = soak_v3_dot(d_in, wh->ng) >= 0 ? wh->ng : soak_v3_scale(wh->ng, -1.0);
-                double sd = c->surf->lost ? INFINITY : plane_distance(x, d3, wh->p, wn);
+                /* wh is the surface the flight was heading for when the walk
+                 * asked for it, else the last one it found (med_within
+                 * spared the query): a tangent plane either way, ng outward
+                 * (med_distance orients it; the entry hit's is outward). */
+                double sd = c->surf->lost ? INFINITY : plane_distance(x, d3, wh->p, wh->ng);
                 if (li < RT_NEE_CACHE && c->cached[li]) sd = fmin(sd, plane_distance(x, d3, c->cache_p[li], c->cache_n[li]));
                 if (sd < INFINITY) {
                     q1 = fmax(RT_NEE_PREDICT_MIN, nee_survival(rgb_max(rgb_exp(c->med->sigma_t, sd))));
@@ -360,8 +363,25 @@ static double med_distance(const void *ctx, soak_vec3 pos, soak_vec3 dir)
     soak_ray r = {pos, dir, 0.0, INFINITY};
     int found = 0;
     b->t->n.rays++;
-    b->surf->lost = soak_geometry_intersect(b->t->ctx->scene->geometry, &r, &b->surf->hit, &found) != SOAK_OK || !found;
-    return b->surf->lost ? 0.0 : b->surf->hit.t; /* lost: interact ends the walk at once */
+    soak_hit *h = &b->surf->hit;
+    b->surf->lost = soak_geometry_intersect(b->t->ctx->scene->geometry, &r, h, &found) != SOAK_OK || !found;
+    if (b->surf->lost) return 0.0; /* interact ends the walk at once */
+    if (soak_v3_dot(dir, h->ng) < 0) h->ng = soak_v3_scale(h->ng, -1.0); /* outward: the ray leaves the medium */
+    return h->t;
+}
+
+/* Occlusion ray up to dist, lengthened by a margin above Embree's float
+ * error (the scale of soak_geometry_offset), so that 0 means the surface is
+ * certainly beyond dist; a failed query answers 1 (ask the full distance). */
+static int med_within(const void *ctx, soak_vec3 pos, soak_vec3 dir, double dist)
+{
+    const rt_med_boundary *b = ctx;
+    double m = fmax(fmax(fabs(pos.x), fabs(pos.y)), fabs(pos.z));
+    soak_ray r = {pos, dir, 0.0, dist * (1.0 + 1e-5) + 1e-5 * (1.0 + m)};
+    int occluded = 1;
+    b->t->n.rays++;
+    if (soak_geometry_occluded(b->t->ctx->scene->geometry, &r, &occluded) != SOAK_OK) return 1;
+    return occluded;
 }
 
 static soak_boundary_event med_interact(const void *ctx, soak_vec3 *pos, soak_vec3 *dir, soak_rgb *weight,
@@ -392,7 +412,7 @@ static soak_boundary_event med_interact(const void *ctx, soak_vec3 *pos, soak_ve
 
 soak_boundary rt_med_boundary_make(const rt_med_boundary *b)
 {
-    soak_boundary out = {med_distance, med_interact, b};
+    soak_boundary out = {med_distance, med_interact, b, med_within};
     return out;
 }
 

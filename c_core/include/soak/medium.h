@@ -73,6 +73,16 @@ typedef struct soak_boundary {
     soak_boundary_event (*interact)(const void *ctx, soak_vec3 *pos, soak_vec3 *dir, soak_rgb *weight,
                                     soak_rng *rng);
     const void *ctx;
+    /* Optional (NULL: distance is asked before every flight). A cheap,
+     * conservative test: returns 0 only if the surface is certainly farther
+     * than dist (finite, >= 0) from pos along dir, else 1. When it is set,
+     * the homogeneous walk samples the flight distance t first and calls
+     * distance only if within(t) is 1, so in a dense medium most flights end
+     * at a collision after one cheap test (e.g. an occlusion ray) instead of
+     * a closest-hit query. The random numbers drawn are the same either way
+     * (the boundary's queries draw none). Heterogeneous media always ask
+     * distance first. */
+    int (*within)(const void *ctx, soak_vec3 pos, soak_vec3 dir, double dist);
 } soak_boundary;
 
 /* Coefficients of a medium at one point (1/length), for heterogeneous RGB
