@@ -14,6 +14,7 @@
 #include "soak/fresnel.h"
 #include "soak/hg.h"
 #include "soak/models.h"
+#include "soak/ww.h"
 
 #define NDIRS 4096
 
@@ -110,6 +111,34 @@ int main(int argc, char **argv)
                  models[i].exact ? models[i].exact : "-", err, err60);
         fputs(line, stdout);
         if (out) fputs(line, out);
+    }
+    /* The Tri-Ace fast path as a hot loop would call it: unchecked form,
+     * directions already valid (the registry rows above include argument
+     * checks on every call). */
+    {
+        soak_ww ww;
+        soak_ww_default(&ww);
+        ww.alpha = p.roughness;
+        ww.kd = p.albedo;
+        soak_ww_triace fast;
+        if (soak_ww_triace_setup(&ww, &fast) == SOAK_OK) {
+            long reps = 1;
+            double dt = 0, acc = 0;
+            for (;;) {
+                double t0 = now();
+                for (long r = 0; r < reps; ++r)
+                    for (int i = 0; i < NDIRS; ++i) acc += soak_ww_eval_triace_raw(&fast, wi_set[i], wo_set[i]);
+                dt = now() - t0;
+                if (dt > 0.3) break;
+                reps *= 2;
+            }
+            sink = acc;
+            double ns = 1e9 * dt / (reps * (double)NDIRS);
+            snprintf(line, sizeof line, "| ww-triace (unchecked _raw form) | %.1f | %.1f | ww | as above | as above |\n", ns,
+                     1e3 / ns);
+            fputs(line, stdout);
+            if (out) fputs(line, out);
+        }
     }
     /* Fresnel: exact vs Schlick, same run. */
     double t0 = now(), acc = 0;
