@@ -95,6 +95,21 @@ static int base_sample(rt_thread *t, const base_model *b, soak_vec3 wo, soak_vec
     return 1;
 }
 
+/* Continues a path from a surface hit in the world direction dir chosen
+ * by a non-delta lobe with solid-angle pdf (kept for MIS at the next hit). */
+static void continue_path(rt_path *path, const soak_hit *hit, soak_vec3 ng, soak_vec3 dir, double pdf)
+{
+    path->dir = soak_v3_norm(dir);
+    if (soak_v3_dot(path->dir, ng) <= 0) {
+        path->alive = 0; /* below the geometric surface: shading-normal artefact */
+        return;
+    }
+    path->org = soak_geometry_offset(hit->p, ng, path->dir);
+    path->prev_pdf = pdf;
+    path->prev_delta = 0;
+    path->prev_pos = hit->p;
+}
+
 static void opaque(rt_thread *t, const soak_hit *hit, const base_model *base, double n2, soak_rgb film_alpha,
                    double film_h, rt_path *path)
 {
@@ -190,15 +205,7 @@ static void opaque(rt_thread *t, const soak_hit *hit, const base_model *base, do
             out = soak_v3(wi.x * n2, wi.y * n2, cos_air);
             pdf_air = pdf * (1.0 - F) * cos_air / (n2 * n2 * wi.z);
         }
-        path->dir = soak_v3_norm(rt_to_world(&f, out));
-        if (soak_v3_dot(path->dir, ng) <= 0) {
-            path->alive = 0; /* below the geometric surface: shading-normal artefact */
-            return;
-        }
-        path->org = soak_geometry_offset(hit->p, ng, path->dir);
-        path->prev_pdf = pdf_air;
-        path->prev_delta = 0;
-        path->prev_pos = hit->p;
+        continue_path(path, hit, ng, rt_to_world(&f, out), pdf_air);
         return;
     }
     t->n.capped++;
@@ -290,15 +297,7 @@ static void film_lambert(rt_thread *t, const soak_hit *hit, const rt_film *fm, s
         return;
     }
     path->beta = rgb_mul(path->beta, rgb_scale(fd, wi.z / pdf));
-    path->dir = soak_v3_norm(rt_to_world(&f, wi));
-    if (soak_v3_dot(path->dir, ng) <= 0) {
-        path->alive = 0; /* below the geometric surface: shading-normal artefact */
-        return;
-    }
-    path->org = soak_geometry_offset(hit->p, ng, path->dir);
-    path->prev_pdf = pdf;
-    path->prev_delta = 0;
-    path->prev_pos = hit->p;
+    continue_path(path, hit, ng, rt_to_world(&f, wi), pdf);
 }
 
 /* Smooth dielectric (glass, liquid): Fresnel choice between mirror
