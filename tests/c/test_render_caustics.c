@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "render_harness.h"
 #include "soak/render.h"
 #include "soak/scene.h"
 
@@ -24,30 +25,7 @@
 
 static int render_mean(const char *text, int spp, double *mean, double *se)
 {
-    soak_scene scene;
-    char err[1024] = "";
-    if (!check_status("caustic scene", soak_scene_parse(text, "caustics", ".", &scene, err, sizeof err), SOAK_OK)) {
-        printf("  %s\n", err);
-        return 0;
-    }
-    double s = 0, s2 = 0;
-    for (int r = 0; r < REPS; ++r) {
-        soak_render_options opt;
-        soak_render_options_default(&opt);
-        opt.threads = 2;
-        opt.spp = spp;
-        opt.seed = 300 + (uint64_t)r;
-        soak_image img;
-        if (soak_render(&scene, &opt, &img, NULL, err, sizeof err) != SOAK_OK) break;
-        double v = (img.pixels[0] + img.pixels[1] + img.pixels[2]) / 3.0;
-        s += v;
-        s2 += v * v;
-        soak_image_free(&img);
-    }
-    soak_scene_free(&scene);
-    *mean = s / REPS;
-    *se = sqrt(fmax(0.0, (s2 / REPS - *mean * *mean) / (REPS - 1)));
-    return 1;
+    return rh_render_mean("caustic scene", text, ".", REPS, spp, 300, RH_FIRST_PIXEL, mean, se);
 }
 
 #define SLAB_SCENE(render_extra, lens)                                                                             \

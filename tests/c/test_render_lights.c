@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "render_harness.h"
 #include "soak/ggx.h"
 #include "soak/image.h"
 #include "soak/render.h"
@@ -32,30 +33,7 @@
 
 static int render_mean(const char *what, const char *text, const char *base_dir, int spp_total, double *mean, double *se)
 {
-    soak_scene scene;
-    char err[1024] = "";
-    if (!check_status(what, soak_scene_parse(text, what, base_dir, &scene, err, sizeof err), SOAK_OK)) {
-        printf("  %s\n", err);
-        return 0;
-    }
-    double s = 0, s2 = 0;
-    for (int r = 0; r < REPS; ++r) {
-        soak_render_options opt;
-        soak_render_options_default(&opt);
-        opt.threads = 2;
-        opt.spp = spp_total / REPS;
-        opt.seed = 11 + (uint64_t)r;
-        soak_image img;
-        if (soak_render(&scene, &opt, &img, NULL, err, sizeof err) != SOAK_OK) break;
-        double v = (img.pixels[0] + img.pixels[1] + img.pixels[2]) / 3.0;
-        s += v;
-        s2 += v * v;
-        soak_image_free(&img);
-    }
-    soak_scene_free(&scene);
-    *mean = s / REPS;
-    *se = sqrt(fmax(0.0, (s2 / REPS - *mean * *mean) / (REPS - 1)));
-    return 1;
+    return rh_render_mean(what, text, base_dir, REPS, spp_total / REPS, 11, RH_FIRST_PIXEL, mean, se);
 }
 
 /* 1x1 image of the plane point at the origin seen from 60 degrees. */

@@ -29,6 +29,7 @@
 #include "soak/bake_volume.h"
 
 #include "check.h"
+#include "render_harness.h"
 #include "soak/film.h"
 #include "soak/measure.h"
 #include "soak/render.h"
@@ -39,37 +40,7 @@
 /* Mean over pixels and channels of REPS renders, and its standard error. */
 static int render_mean(const char *what, const char *text, int spp_total, double *mean, double *se)
 {
-    soak_scene scene;
-    char err[1024] = "";
-    if (!check_status(what, soak_scene_parse(text, what, ".", &scene, err, sizeof err), SOAK_OK)) {
-        printf("  %s\n", err);
-        return 0;
-    }
-    double s = 0, s2 = 0;
-    for (int r = 0; r < REPS; ++r) {
-        soak_render_options opt;
-        soak_render_options_default(&opt);
-        opt.threads = 2;
-        opt.spp = spp_total / REPS;
-        opt.seed = 77 + (uint64_t)r;
-        soak_image img;
-        soak_render_stats st;
-        if (soak_render(&scene, &opt, &img, &st, err, sizeof err) != SOAK_OK) {
-            soak_scene_free(&scene);
-            return 0;
-        }
-        double v = 0;
-        int n = img.width * img.height * 3;
-        for (int i = 0; i < n; ++i) v += img.pixels[i];
-        v /= n;
-        s += v;
-        s2 += v * v;
-        soak_image_free(&img);
-    }
-    soak_scene_free(&scene);
-    *mean = s / REPS;
-    *se = sqrt(fmax(0.0, (s2 / REPS - *mean * *mean) / (REPS - 1)));
-    return 1;
+    return rh_render_mean(what, text, ".", REPS, spp_total / REPS, 77, RH_ALL_PIXELS, mean, se);
 }
 
 /* Camera at angle theta_deg from the +z normal, looking at the origin, tiny fov. */

@@ -1,0 +1,18 @@
+/* Shared harness of the render tests: repeated renders of a scene text with
+ * consecutive seeds, reduced to a mean and its standard error. This runs
+ * the code under test; the references stay in each test. */
+#ifndef SOAK_TEST_RENDER_HARNESS_H
+#define SOAK_TEST_RENDER_HARNESS_H
+
+#include <stdint.h>
+
+typedef enum { RH_FIRST_PIXEL, RH_ALL_PIXELS } rh_reduce;
+
+/* Parses `text` (relative paths against base_dir), renders it `reps` times
+ * with spp_per_rep samples on 2 threads and seeds seed_base, seed_base+1,
+ * ...; each render is reduced to the channel mean of its first pixel or of
+ * all pixels. A parse or render failure is a failed check and returns 0. */
+int rh_render_mean(const char *what, const char *text, const char *base_dir, int reps, int spp_per_rep,
+                   uint64_t seed_base, rh_reduce reduce, double *mean, double *se);
+
+#endif
