@@ -127,7 +127,7 @@ typedef struct rt_light_sample {
 /* Light index in [0, n_lights) or n_lights for the environment. Returns 0 if
  * the light cannot illuminate p (inside a sphere light, zero value). */
 int rt_light_sample_at(rt_thread *t, int light, soak_vec3 p, rt_light_sample *s);
-int rt_light_count(const rt_ctx *c); /* lights + environment if any */
+int rt_light_count(const rt_ctx *c); /* lights + the environment if it is a map */
 int rt_light_is_delta(const rt_ctx *c, int light);
 /* Solid-angle pdf of sampling direction wi toward sphere light l from p. */
 double rt_sphere_light_pdf(const soak_light *l, soak_vec3 p);
