@@ -6,6 +6,7 @@
 
 #include <embree3/rtcore.h>
 #include <math.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,6 +20,7 @@ typedef struct geo_object {
     unsigned *idx;
     soak_vec3 center; /* spheres */
     double radius;
+    int isolated; /* no other surface enters the interior (spheres; set at commit) */
 } geo_object;
 
 struct soak_geometry {
@@ -88,6 +90,8 @@ static geo_object *push_object(soak_geometry *g)
     memset(o, 0, sizeof *o);
     return o;
 }
+
+static soak_vec3 vtx(const double *a, unsigned i) { return soak_v3(a[3 * i], a[3 * i + 1], a[3 * i + 2]); }
 
 static int vec_ok(soak_vec3 v) { return soak_is_finite(v.x) && soak_is_finite(v.y) && soak_is_finite(v.z); }
 
@@ -276,6 +280,16 @@ static int sphere_roots(soak_vec3 c, double r, soak_vec3 o, soak_vec3 d, double 
     return 2;
 }
 
+/* Outward normal and (longitude, colatitude) texture coordinates at p. */
+static void sphere_surface(const geo_object *o, soak_vec3 p, soak_vec3 *ng, double *u, double *v)
+{
+    soak_vec3 n = soak_v3_norm(soak_v3_sub(p, o->center));
+    double phi = atan2(n.y, n.x);
+    *ng = n;
+    *u = (phi < 0 ? phi + 2 * SOAK_PI : phi) / (2 * SOAK_PI);
+    *v = acos(fmax(-1.0, fmin(1.0, n.z))) / SOAK_PI;
+}
+
 static void sphere_bounds(const struct RTCBoundsFunctionArguments *args)
 {
     const geo_object *o = args->geometryUserPtr;
@@ -363,6 +377,74 @@ soak_status soak_geometry_add_sphere(soak_geometry *g, soak_vec3 center, double 
     return commit_and_attach(g, geom, object_id);
 }
 
+/* Closest point to p on triangle abc, by the Voronoi regions of its
+ * vertices, edges and face (C. Ericson, Real-Time Collision Detection, 2005,
+ * sec. 5.1.5). */
+static soak_vec3 closest_on_triangle(soak_vec3 p, soak_vec3 a, soak_vec3 b, soak_vec3 c)
+{
+    soak_vec3 ab = soak_v3_sub(b, a), ac = soak_v3_sub(c, a), ap = soak_v3_sub(p, a);
+    double d1 = soak_v3_dot(ab, ap), d2 = soak_v3_dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return a;
+    soak_vec3 bp = soak_v3_sub(p, b);
+    double d3 = soak_v3_dot(ab, bp), d4 = soak_v3_dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return b;
+    double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return soak_v3_add(a, soak_v3_scale(ab, d1 / (d1 - d3)));
+    soak_vec3 cp = soak_v3_sub(p, c);
+    double d5 = soak_v3_dot(ab, cp), d6 = soak_v3_dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return c;
+    double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return soak_v3_add(a, soak_v3_scale(ac, d2 / (d2 - d6)));
+    double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+        return soak_v3_add(b, soak_v3_scale(soak_v3_sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6))));
+    double den = va + vb + vc;
+    if (!(fabs(den) > 0)) return a; /* degenerate triangle */
+    return soak_v3_add(a, soak_v3_add(soak_v3_scale(ab, vb / den), soak_v3_scale(ac, vc / den)));
+}
+
+typedef struct nearest_query {
+    const soak_geometry *g;
+    unsigned skip; /* object not counted */
+    soak_vec3 p;
+    double best;   /* smallest distance found so far, double */
+} nearest_query;
+
+/* rtcPointQuery callback, once per primitive whose bounds meet the query
+ * ball: exact distance in double, and the ball shrinks to it. */
+static bool nearest_prim(struct RTCPointQueryFunctionArguments *args)
+{
+    nearest_query *q = args->userPtr;
+    if (args->geomID >= q->g->count || args->geomID == q->skip) return false;
+    const geo_object *o = &q->g->objects[args->geomID];
+    double d;
+    if (o->kind == SOAK_SHAPE_SPHERE) {
+        d = fabs(soak_v3_len(soak_v3_sub(q->p, o->center)) - o->radius);
+    } else {
+        const unsigned *tri = o->idx + 3 * args->primID;
+        d = soak_v3_len(soak_v3_sub(q->p, closest_on_triangle(q->p, vtx(o->pos, tri[0]), vtx(o->pos, tri[1]), vtx(o->pos, tri[2]))));
+    }
+    if (!(d < q->best)) return false;
+    q->best = d;
+    args->query->radius = nextafterf((float)d, INFINITY); /* rounded up: never culls a nearer primitive */
+    return true;
+}
+
+/* A sphere is isolated when every other surface is at least its radius from
+ * its centre (less a relative 1e-9, so a plane it rests on, touching it at
+ * one point, does not count). */
+static int sphere_isolated(const soak_geometry *g, unsigned id)
+{
+    const geo_object *o = &g->objects[id];
+    nearest_query q = {g, id, o->center, INFINITY};
+    float reach = (float)(o->radius * (1 + 1e-6)) + 1e-6f * (float)(1 + soak_v3_len(o->center));
+    struct RTCPointQuery pq = {(float)o->center.x, (float)o->center.y, (float)o->center.z, 0.0f, reach};
+    struct RTCPointQueryContext ctx;
+    rtcInitPointQueryContext(&ctx);
+    rtcPointQuery(g->scene, &pq, &ctx, nearest_prim, &q);
+    return q.best >= o->radius * (1 - 1e-9);
+}
+
 soak_status soak_geometry_commit(soak_geometry *g)
 {
     if (!g) return SOAK_ERR_NULL;
@@ -376,6 +458,8 @@ soak_status soak_geometry_commit(soak_geometry *g)
     rtcCommitScene(g->scene);
     if (g->error[0]) return SOAK_ERR_NUMERIC;
     g->committed = 1;
+    for (unsigned i = 0; i < g->count; ++i)
+        if (g->objects[i].kind == SOAK_SHAPE_SPHERE) g->objects[i].isolated = sphere_isolated(g, i);
     return SOAK_OK;
 }
 
@@ -445,7 +529,6 @@ static void to_embree(const soak_ray *r, struct RTCRay *e)
     e->flags = 0;
 }
 
-static soak_vec3 vtx(const double *a, unsigned i) { return soak_v3(a[3 * i], a[3 * i + 1], a[3 * i + 2]); }
 
 /* Fills hit from Embree's result, recomputing t and p in double. Returns 0 if
  * the refined hit falls outside the ray interval (a float-precision graze). */
@@ -459,12 +542,8 @@ static int refine(const soak_geometry *g, const soak_ray *r, const struct RTCRay
         double t0, t1, tf = rh->ray.tfar;
         if (!sphere_roots(o->center, o->radius, r->org, r->dir, &t0, &t1)) return 0;
         t = fabs(t0 - tf) <= fabs(t1 - tf) ? t0 : t1;
-        soak_vec3 p = soak_v3_add(r->org, soak_v3_scale(r->dir, t));
-        ng = soak_v3_norm(soak_v3_sub(p, o->center));
+        sphere_surface(o, soak_v3_add(r->org, soak_v3_scale(r->dir, t)), &ng, &u, &v);
         ns = ng;
-        double phi = atan2(ng.y, ng.x);
-        u = (phi < 0 ? phi + 2 * SOAK_PI : phi) / (2 * SOAK_PI);
-        v = acos(fmax(-1.0, fmin(1.0, ng.z))) / SOAK_PI;
     } else {
         const unsigned *tri = o->idx + 3 * rh->hit.primID;
         soak_vec3 p0 = vtx(o->pos, tri[0]), p1 = vtx(o->pos, tri[1]), p2 = vtx(o->pos, tri[2]);
@@ -557,6 +636,51 @@ soak_status soak_geometry_occluded_n(const soak_geometry *g, const soak_ray *ray
         if (st != SOAK_OK) return st;
     }
     return SOAK_OK;
+}
+
+static const geo_object *local_sphere(const soak_geometry *g, unsigned id)
+{
+    const geo_object *o = id < g->count ? &g->objects[id] : NULL;
+    return o && o->kind == SOAK_SHAPE_SPHERE && o->isolated ? o : NULL;
+}
+
+soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, soak_hit *hit,
+                                          int *found)
+{
+    if (!g || !ray || !hit || !found) return SOAK_ERR_NULL;
+    const geo_object *o = g->committed ? local_sphere(g, object_id) : NULL;
+    if (!o) return soak_geometry_intersect(g, ray, hit, found);
+    if (!ray_ok(ray)) return SOAK_ERR_ARG;
+    double t0, t1, t;
+    *found = 0;
+    if (!sphere_roots(o->center, o->radius, ray->org, ray->dir, &t0, &t1)) return SOAK_OK;
+    t = t0 > ray->tnear ? t0 : t1;
+    if (!(t > ray->tnear && t < ray->tfar)) return SOAK_OK;
+    hit->t = t;
+    hit->p = soak_v3_add(ray->org, soak_v3_scale(ray->dir, t));
+    sphere_surface(o, hit->p, &hit->ng, &hit->u, &hit->v);
+    hit->ns = hit->ng;
+    hit->prim_id = 0;
+    hit->object_id = object_id;
+    *found = 1;
+    return SOAK_OK;
+}
+
+soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int *occluded)
+{
+    if (!g || !ray || !occluded) return SOAK_ERR_NULL;
+    const geo_object *o = g->committed ? local_sphere(g, object_id) : NULL;
+    if (!o) return soak_geometry_occluded(g, ray, occluded);
+    if (!ray_ok(ray)) return SOAK_ERR_ARG;
+    double t0, t1;
+    int n = sphere_roots(o->center, o->radius, ray->org, ray->dir, &t0, &t1);
+    *occluded = n && ((t0 > ray->tnear && t0 < ray->tfar) || (t1 > ray->tnear && t1 < ray->tfar));
+    return SOAK_OK;
+}
+
+int soak_geometry_object_isolated(const soak_geometry *g, unsigned object_id)
+{
+    return g && g->committed && local_sphere(g, object_id) != NULL;
 }
 
 soak_vec3 soak_geometry_offset(soak_vec3 p, soak_vec3 ng, soak_vec3 dir)

@@ -74,6 +74,100 @@ static void test_sphere(void)
     soak_geometry_destroy(g);
 }
 
+/* Deterministic points/directions for the local-query test (LCG, not the
+ * library's generator). */
+static double lcg01(unsigned long long *s)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*s >> 11) / 9007199254740992.0;
+}
+
+static soak_vec3 unit_dir(unsigned long long *s)
+{
+    double z = 1 - 2 * lcg01(s), phi = 6.283185307179586 * lcg01(s), r = sqrt(fmax(0.0, 1 - z * z));
+    return soak_v3(r * cos(phi), r * sin(phi), z);
+}
+
+/* Local queries (a walk inside one object) against the whole-scene queries,
+ * and the isolation rule: a sphere resting on a plane or holding nothing is
+ * isolated; one cut by a quad or holding another sphere is not. */
+static void test_local_queries(void)
+{
+    soak_geometry *g = NULL;
+    char err[256] = "";
+    if (!check_status("create", soak_geometry_create(&g, err, sizeof err), SOAK_OK)) return;
+    unsigned rest = 0, cut = 0, outer = 0, inner = 0, floor_id = 0, blade = 0;
+    soak_geometry_add_quad(g, soak_v3(-10, -10, 0), soak_v3(20, 0, 0), soak_v3(0, 20, 0), &floor_id);
+    soak_geometry_add_sphere(g, soak_v3(0, 0, 0.6), 0.6, &rest);         /* touches the floor at one point */
+    soak_geometry_add_sphere(g, soak_v3(3, 0, 0.5), 0.6, &cut);          /* floor cuts it */
+    soak_geometry_add_sphere(g, soak_v3(-4, 0, 3), 1.0, &outer);         /* holds `inner` */
+    soak_geometry_add_sphere(g, soak_v3(-4, 0.2, 3), 0.3, &inner);
+    soak_geometry_add_quad(g, soak_v3(6, -1, 2), soak_v3(0, 2, 0), soak_v3(0, 0, 2), &blade);
+    unsigned blade_sphere = 0;
+    soak_geometry_add_sphere(g, soak_v3(6.5, 0, 3), 0.7, &blade_sphere); /* quad 0.5 from its centre */
+    if (!check_status("commit", soak_geometry_commit(g), SOAK_OK)) {
+        soak_geometry_destroy(g);
+        return;
+    }
+    check_true("sphere resting on the floor: isolated", soak_geometry_object_isolated(g, rest));
+    check_true("inner sphere: isolated", soak_geometry_object_isolated(g, inner));
+    check_true("sphere cut by the floor: not isolated", !soak_geometry_object_isolated(g, cut));
+    check_true("sphere holding another: not isolated", !soak_geometry_object_isolated(g, outer));
+    check_true("sphere cut by a quad: not isolated", !soak_geometry_object_isolated(g, blade_sphere));
+    check_true("a quad: not isolated (no closed form)", !soak_geometry_object_isolated(g, floor_id));
+
+    /* From random points inside the resting sphere, the local closest hit and
+     * occlusion equal the scene's (which refines Embree's float hit in double). */
+    unsigned long long s = 12345;
+    double worst_t = 0, worst_n = 0, worst_uv = 0;
+    int hits_differ = 0, occl_differ = 0, n = 20000;
+    for (int i = 0; i < n; ++i) {
+        soak_vec3 d = unit_dir(&s), o;
+        do {
+            o = soak_v3(1.2 * lcg01(&s) - 0.6, 1.2 * lcg01(&s) - 0.6, 1.2 * lcg01(&s));
+        } while (soak_v3_len(soak_v3_sub(o, soak_v3(0, 0, 0.6))) > 0.59);
+        soak_ray r = mkray(o, d);
+        soak_hit hl, hs;
+        int fl = 0, fs = 0;
+        soak_geometry_intersect_local(g, rest, &r, &hl, &fl);
+        soak_geometry_intersect(g, &r, &hs, &fs);
+        if (fl != fs || (fl && (hl.object_id != hs.object_id))) {
+            hits_differ++;
+            continue;
+        }
+        worst_t = fmax(worst_t, fabs(hl.t - hs.t));
+        worst_n = fmax(worst_n, soak_v3_len(soak_v3_sub(hl.ng, hs.ng)));
+        worst_uv = fmax(worst_uv, fmax(fabs(hl.u - hs.u), fabs(hl.v - hs.v)));
+        r.tfar = 1.2 * lcg01(&s);
+        int ol = -1, os = -1;
+        soak_geometry_occluded_local(g, rest, &r, &ol);
+        soak_geometry_occluded(g, &r, &os);
+        /* Embree's float test may disagree within its float error of the surface. */
+        if (ol != os && fabs(r.tfar - hs.t) > 1e-5) occl_differ++;
+    }
+    printf("  local vs scene queries inside an isolated sphere (%d rays): max |dt| %.2e, |dn| %.2e, |duv| %.2e\n", n,
+           worst_t, worst_n, worst_uv);
+    check_true("local hits the same object as the scene query", hits_differ == 0);
+    check_true("local occlusion = scene occlusion", occl_differ == 0);
+    check_close("local t = scene t", worst_t, 0.0, 1e-9);
+    check_close("local normal = scene normal", worst_n, 0.0, 1e-9);
+    check_close("local uv = scene uv", worst_uv, 0.0, 1e-9);
+
+    /* A sphere that is not isolated falls back to the scene: from inside the
+     * cut sphere, straight down, the floor is hit first. */
+    soak_ray down = mkray(soak_v3(3, 0, 0.5), soak_v3(0, 0, -1));
+    soak_hit h;
+    int found = 0;
+    soak_geometry_intersect_local(g, cut, &down, &h, &found);
+    check_true("not isolated: the floor inside the sphere is found", found && h.object_id == floor_id);
+    check_close("floor distance", found ? h.t : -1, 0.5, 1e-9);
+    soak_ray bad = mkray(soak_v3(NAN, 0, 0), soak_v3(0, 0, 1));
+    int occ = 0;
+    check_status("NaN origin rejected (local)", soak_geometry_intersect_local(g, rest, &bad, &h, &found), SOAK_ERR_ARG);
+    check_status("NaN origin rejected (local occlusion)", soak_geometry_occluded_local(g, rest, &bad, &occ), SOAK_ERR_ARG);
+    soak_geometry_destroy(g);
+}
+
 static void test_quad_box(void)
 {
     soak_geometry *g = NULL;
@@ -287,6 +381,7 @@ int main(void)
 {
     test_sphere();
     test_quad_box();
+    test_local_queries();
     test_mesh_files();
     test_threads();
     return check_finish();

@@ -104,6 +104,19 @@ soak_status soak_geometry_intersect_n(const soak_geometry *g, const soak_ray *ra
                                       int *found);
 soak_status soak_geometry_occluded_n(const soak_geometry *g, const soak_ray *rays, size_t n, int *occluded);
 
+/* Queries for a walk inside object object_id (a medium): they equal the
+ * whole-scene queries for rays starting inside it whenever no other surface
+ * enters its interior, and then only its own surface is tested. An isolated
+ * sphere (every other surface at least its radius from its centre, decided
+ * at commit) is answered in closed form in double precision, without the
+ * BVH; every other case falls back to the scene query. Cycles' subsurface
+ * walk likewise intersects only its own object (scene_intersect_local). */
+soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, soak_hit *hit,
+                                          int *found);
+soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int *occluded);
+/* 1 when the local queries of object_id take the closed-form path. */
+int soak_geometry_object_isolated(const soak_geometry *g, unsigned object_id);
+
 /* Origin for a ray leaving the surface at p toward direction dir: p moved off
  * the surface along ng to dir's side by an amount scaled to |p|, so the new
  * ray does not re-hit the surface it starts on (Embree works in float). */
