@@ -672,6 +672,15 @@ soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object
     const geo_object *o = g->committed ? local_sphere(g, object_id) : NULL;
     if (!o) return soak_geometry_occluded(g, ray, occluded);
     if (!ray_ok(ray)) return SOAK_ERR_ARG;
+    /* From inside (the walk's case) the segment crosses the convex surface
+     * iff it ends outside: two squared distances, no root. */
+    double r2 = o->radius * o->radius;
+    soak_vec3 a = soak_v3_sub(soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tnear)), o->center);
+    if (soak_v3_dot(a, a) < r2 && ray->tfar < INFINITY) {
+        soak_vec3 b = soak_v3_sub(soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tfar)), o->center);
+        *occluded = soak_v3_dot(b, b) >= r2;
+        return SOAK_OK;
+    }
     double t0, t1;
     int n = sphere_roots(o->center, o->radius, ray->org, ray->dir, &t0, &t1);
     *occluded = n && ((t0 > ray->tnear && t0 < ray->tfar) || (t1 > ray->tnear && t1 < ray->tfar));

@@ -79,6 +79,14 @@ soak_status soak_hg2_sample(const soak_hg2 *p, soak_vec3 dir_in, double u_lobe, 
     double len = soak_v3_len(dir_in);
     if (!soak_in_range(len, 0.999, 1.001)) return SOAK_ERR_ARG; /* also rejects NaN components */
     dir_in = soak_v3_scale(dir_in, 1.0 / len);
+    *dir_out = soak_hg2_sample_dir_raw(p, dir_in, u_lobe, u_cos, u_phi);
+    double c = fmax(-1.0, fmin(1.0, soak_v3_dot(*dir_out, dir_in)));
+    *pdf = p->w * soak_hg_eval_raw(p->g1, c) + (1.0 - p->w) * soak_hg_eval_raw(p->g2, c);
+    return SOAK_OK;
+}
+
+soak_vec3 soak_hg2_sample_dir_raw(const soak_hg2 *p, soak_vec3 dir_in, double u_lobe, double u_cos, double u_phi)
+{
     double g = u_lobe < p->w ? p->g1 : p->g2;
     double c = soak_hg_sample_cos_raw(g, u_cos);
     double s = sqrt(fmax(0.0, (1.0 - c) * (1.0 + c)));
@@ -87,9 +95,7 @@ soak_status soak_hg2_sample(const soak_hg2 *p, soak_vec3 dir_in, double u_lobe, 
     soak_v3_basis(dir_in, &t, &b);
     soak_vec3 d = soak_v3_add(soak_v3_add(soak_v3_scale(t, s * cos(phi)), soak_v3_scale(b, s * sin(phi))),
                               soak_v3_scale(dir_in, c));
-    *dir_out = soak_v3_norm(d);
-    *pdf = p->w * soak_hg_eval_raw(p->g1, c) + (1.0 - p->w) * soak_hg_eval_raw(p->g2, c);
-    return SOAK_OK;
+    return soak_v3_norm(d);
 }
 
 double soak_hg2_mean_cosine(const soak_hg2 *p)

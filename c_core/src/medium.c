@@ -150,7 +150,7 @@ static soak_status point_at(const soak_medium_rgb *m, soak_vec3 pos, soak_medium
             return SOAK_ERR_NUMERIC;
         soak_rgb_set(sigma_n, c, fmax(0.0, mu - ss - sa));
     }
-    return SOAK_OK;
+    return soak_hg2_validate(&p->phase) == SOAK_OK ? SOAK_OK : SOAK_ERR_NUMERIC;
 }
 
 static soak_medium_point homogeneous_point(const soak_medium_rgb *m)
@@ -290,17 +290,16 @@ static soak_status fly_heterogeneous(const soak_medium_rgb *m, double dmax, long
     }
 }
 
+/* The phase function is valid here: checked with the medium, or by point_at
+ * for a grid. The sampled direction comes back normalised, so round-off
+ * never accumulates over long walks. */
 static soak_status scatter(const soak_hg2 *phase, soak_vec3 *dir, soak_rng *rng, const soak_walk_options *opt)
 {
     double u_lobe = soak_rng_uniform(rng);
     double u_cos = soak_rng_uniform(rng);
     double u_phi = soak_rng_uniform(rng);
-    soak_vec3 out;
-    double pdf;
-    soak_status st = soak_hg2_sample(phase, *dir, u_lobe, u_cos, u_phi, &out, &pdf);
-    if (st != SOAK_OK) return st;
-    /* Renormalise so that round-off never accumulates over long walks. */
-    out = soak_v3_norm(out);
+    soak_vec3 out = soak_hg2_sample_dir_raw(phase, *dir, u_lobe, u_cos, u_phi);
+    if (!unit_vector(out)) return SOAK_ERR_NUMERIC;
     if (opt->on_scatter) opt->on_scatter(opt->scatter_ctx, *dir, out);
     *dir = out;
     return SOAK_OK;

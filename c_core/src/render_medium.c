@@ -238,6 +238,9 @@ static double plane_distance(soak_vec3 x, soak_vec3 d, soak_vec3 p, soak_vec3 n)
     return fmax(0.0, soak_v3_dot(soak_v3_sub(p, x), n)) / den;
 }
 
+/* Largest channel transmittance over distance d: one exponential. */
+static double max_transmittance(soak_rgb sigma_t, double d) { return exp(-fmin(sigma_t.r, fmin(sigma_t.g, sigma_t.b)) * d); }
+
 /* Survival probability of the roulette on a shadow estimate whose medium
  * transmittance is about T. */
 static double nee_survival(double T) { return fmin(1.0, fmax(RT_NEE_SURVIVAL_MIN, T / RT_NEE_ROULETTE_T)); }
@@ -281,7 +284,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
                 double sd = c->surf->lost ? INFINITY : plane_distance(x, d3, wh->p, wh->ng);
                 if (li < RT_NEE_CACHE && c->cached[li]) sd = fmin(sd, plane_distance(x, d3, c->cache_p[li], c->cache_n[li]));
                 if (sd < INFINITY) {
-                    q1 = fmax(RT_NEE_PREDICT_MIN, nee_survival(rgb_max(rgb_exp(c->med->sigma_t, sd))));
+                    q1 = fmax(RT_NEE_PREDICT_MIN, nee_survival(max_transmittance(c->med->sigma_t, sd)));
                     if (q1 < 1.0) {
                         if (rt_rand(t) >= q1) {
                             found = 0;
@@ -302,7 +305,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
                  * barely gets through, so the rest of the estimate (exit
                  * refinement, shadow ray) survives with overall probability
                  * min(q1, nee_survival(T)); survivors are divided by it. */
-                double q = fmin(1.0, nee_survival(rgb_max(rgb_exp(c->med->sigma_t, h.t))) / q1);
+                double q = fmin(1.0, nee_survival(max_transmittance(c->med->sigma_t, h.t)) / q1);
                 if (q < 1.0) {
                     if (rt_rand(t) >= q) {
                         found = 0;

@@ -44,5 +44,7 @@ double soak_hg2_mean_cosine(const soak_hg2 *p);
 /* Unchecked forms for hot loops (inputs already valid). */
 double soak_hg_eval_raw(double g, double cos_theta);
 double soak_hg_sample_cos_raw(double g, double u);
+/* soak_hg2_sample's direction alone: p valid, dir_in unit, u in [0,1). */
+soak_vec3 soak_hg2_sample_dir_raw(const soak_hg2 *p, soak_vec3 dir_in, double u_lobe, double u_cos, double u_phi);
 
 #endif
