@@ -35,14 +35,18 @@ typedef struct cam_setup {
 
 static soak_vec3 camera_ray(rt_thread *t, const cam_setup *c, int px, int py, soak_vec3 *org)
 {
-    double sx = (2 * (px + rt_rand(t)) / c->W - 1) * c->tan_half * c->aspect;
-    double sy = (1 - 2 * (py + rt_rand(t)) / c->H) * c->tan_half;
+    double jx, jy;
+    rt_rand2(t, &jx, &jy);
+    double sx = (2 * (px + jx) / c->W - 1) * c->tan_half * c->aspect;
+    double sy = (1 - 2 * (py + jy) / c->H) * c->tan_half;
     soak_vec3 d = soak_v3_norm(soak_v3_add(c->fwd, soak_v3_add(soak_v3_scale(c->right, sx), soak_v3_scale(c->up, sy))));
     *org = c->pos;
     if (c->aperture > 0) {
         /* Thin lens: every ray through the lens disk meets at the focus plane. */
         soak_vec3 focus = soak_v3_add(c->pos, soak_v3_scale(d, c->focus / soak_v3_dot(d, c->fwd)));
-        double r = c->aperture * sqrt(rt_rand(t)), phi = 2 * SOAK_PI * rt_rand(t);
+        double ur, uphi;
+        rt_rand2(t, &ur, &uphi);
+        double r = c->aperture * sqrt(ur), phi = 2 * SOAK_PI * uphi;
         *org = soak_v3_add(c->pos, soak_v3_add(soak_v3_scale(c->right, r * cos(phi)), soak_v3_scale(c->up, r * sin(phi))));
         d = soak_v3_norm(soak_v3_sub(focus, *org));
     }
@@ -167,6 +171,7 @@ static void *worker(void *argp)
                     double *acc = local + 3 * ((y - y0) * tw + (x - x0));
                     for (int sidx = s0; sidx < s1; ++sidx) {
                         soak_rng_seed(&t.rng, j->seed, pixel * (uint64_t)j->spp + (uint64_t)sidx);
+                        rt_qmc_start(&t, j->seed, pixel, (uint32_t)sidx);
                         soak_vec3 org, dir = camera_ray(&t, &j->cam, x, y, &org);
                         soak_rgb L = radiance(&t, org, dir);
                         acc[0] += L.r;

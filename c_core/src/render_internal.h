@@ -30,6 +30,8 @@
 #define RT_NEE_SURVIVAL_MIN 1e-3
 #define RT_NEE_PREDICT_MIN 0.05
 #define RT_NEE_CACHE 4
+/* Random numbers per camera path taken from the Sobol pairs (render_sampler.c). */
+#define RT_QMC_DIMS 16
 /* Bounces inside the film of one surface interaction. */
 #define RT_FILM_MAX_BOUNCES 256
 
@@ -62,13 +64,32 @@ typedef struct rt_counters {
     long long rays, capped, leaked;
 } rt_counters;
 
+/* Quasi-random state of the current camera path (render_sampler.c):
+ * dimensions dim < end come from the scrambled Sobol pairs, the rest from
+ * rng. end = 0 (a zeroed thread, e.g. the photon tracer) means plain PCG. */
+typedef struct rt_qmc {
+    uint32_t seed, index;
+    uint32_t pair_index, seed_x, seed_y; /* of the current pair */
+    int dim, end;
+} rt_qmc;
+
 typedef struct rt_thread {
     const rt_ctx *ctx;
     soak_rng rng;
+    rt_qmc qmc;
     rt_counters n;
 } rt_thread;
 
-static inline double rt_rand(rt_thread *t) { return soak_rng_uniform(&t->rng); }
+/* Starts the quasi-random dimensions of sample `sample` of pixel `pixel`. */
+void rt_qmc_start(rt_thread *t, uint64_t seed, uint64_t pixel, uint32_t sample);
+double rt_qmc_next(rt_thread *t);
+static inline double rt_rand(rt_thread *t)
+{
+    return t->qmc.dim < t->qmc.end ? rt_qmc_next(t) : soak_rng_uniform(&t->rng);
+}
+/* Two numbers meant as one 2D sample (pixel position, a direction): they
+ * start a new Sobol pair so they are stratified jointly. */
+void rt_rand2(rt_thread *t, double *u1, double *u2);
 
 static inline soak_rgb rgb_mul(soak_rgb a, soak_rgb b) { return soak_rgb3(a.r * b.r, a.g * b.g, a.b * b.b); }
 static inline soak_rgb rgb_scale(soak_rgb a, double s) { return soak_rgb3(a.r * s, a.g * s, a.b * s); }

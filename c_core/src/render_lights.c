@@ -112,14 +112,17 @@ static int env_sample(rt_thread *t, rt_light_sample *s)
     const soak_environment *e = &c->scene->env;
     if (e->type != SOAK_ENV_MAP || !(c->env.total > 0)) return 0;
     int W = e->map.width, H = e->map.height;
-    int i = upper_bound(c->env.row_cdf, H, rt_rand(t) * c->env.total);
+    double u_row, u_col, u_x, u_z;
+    rt_rand2(t, &u_row, &u_col);
+    rt_rand2(t, &u_x, &u_z);
+    int i = upper_bound(c->env.row_cdf, H, u_row * c->env.total);
     const double *cc = c->env.col_cdf + (size_t)i * (W + 1);
     if (!(cc[W] > 0)) return 0;
-    int j = upper_bound(cc, W, rt_rand(t) * cc[W]);
-    double u = (j + rt_rand(t)) / W;
+    int j = upper_bound(cc, W, u_col * cc[W]);
+    double u = (j + u_x) / W;
     /* Uniform in cos(theta) over the pixel's band = uniform in solid angle. */
     double z0 = cos(SOAK_PI * i / H), z1 = cos(SOAK_PI * (i + 1) / H);
-    double z = z0 + (z1 - z0) * rt_rand(t);
+    double z = z0 + (z1 - z0) * u_z;
     double phi = 2 * SOAK_PI * u + e->rotation_deg * SOAK_PI / 180.0, r = sqrt(fmax(0.0, 1 - z * z));
     s->wi = soak_v3(r * cos(phi), r * sin(phi), z);
     s->L = rt_env_eval(c, s->wi);
@@ -176,8 +179,10 @@ int rt_light_sample_at(rt_thread *t, int light, soak_vec3 p, rt_light_sample *s)
         soak_vec3 axis = soak_v3_scale(d, 1.0 / dist);
         double s2 = r * r / (dist * dist), cosmax = sqrt(1 - s2);
         double one_minus = s2 / (1 + cosmax);
-        double cos_t = 1 - rt_rand(t) * one_minus, sin_t = sqrt(fmax(0.0, 1 - cos_t * cos_t));
-        double phi = 2 * SOAK_PI * rt_rand(t);
+        double u_cos, u_phi;
+        rt_rand2(t, &u_cos, &u_phi);
+        double cos_t = 1 - u_cos * one_minus, sin_t = sqrt(fmax(0.0, 1 - cos_t * cos_t));
+        double phi = 2 * SOAK_PI * u_phi;
         rt_frame f = rt_frame_make(axis);
         s->wi = soak_v3_norm(rt_to_world(&f, soak_v3(sin_t * cos(phi), sin_t * sin(phi), cos_t)));
         /* Nearer root of the ray-sphere intersection. */

@@ -76,7 +76,8 @@ static double base_pdf(const base_model *b, soak_vec3 wi, soak_vec3 wo)
 static int base_sample(rt_thread *t, const base_model *b, soak_vec3 wo, soak_vec3 *wi, soak_rgb *weight, double *pdf)
 {
     if (b->type == SOAK_BASE_LAMBERT) {
-        double u1 = rt_rand(t), u2 = rt_rand(t);
+        double u1, u2;
+        rt_rand2(t, &u1, &u2);
         double r = sqrt(u1), phi = 2 * SOAK_PI * u2;
         *wi = soak_v3(r * cos(phi), r * sin(phi), sqrt(fmax(0.0, 1 - u1)));
         *pdf = wi->z * SOAK_INV_PI;
@@ -301,7 +302,8 @@ static void film_lambert(rt_thread *t, const soak_hit *hit, const rt_film *fm, s
         path->prev_delta = 1;
         return;
     }
-    double u1 = rt_rand(t), u2 = rt_rand(t);
+    double u1, u2;
+    rt_rand2(t, &u1, &u2);
     double r = sqrt(u1), phi = 2 * SOAK_PI * u2;
     soak_vec3 wi = soak_v3(r * cos(phi), r * sin(phi), sqrt(fmax(0.0, 1 - u1)));
     double pdf = p_diffuse * wi.z * SOAK_INV_PI;
