@@ -29,12 +29,17 @@ static uint32_t reverse_bits(uint32_t x)
     return (x >> 16) | (x << 16);
 }
 
-/* Sobol dimension 1 (dimension 0 is reverse_bits). */
+/* Sobol dimension 1 (dimension 0 is reverse_bits): XOR of the direction
+ * numbers v_1 = 2^31, v_{k+1} = v_k ^ (v_k >> 1) of the index's set bits. */
 static uint32_t sobol_second(uint32_t index)
 {
+    static const uint32_t v[32] = {
+        0x80000000u, 0xc0000000u, 0xa0000000u, 0xf0000000u, 0x88000000u, 0xcc000000u, 0xaa000000u, 0xff000000u,
+        0x80800000u, 0xc0c00000u, 0xa0a00000u, 0xf0f00000u, 0x88880000u, 0xcccc0000u, 0xaaaa0000u, 0xffff0000u,
+        0x80008000u, 0xc000c000u, 0xa000a000u, 0xf000f000u, 0x88008800u, 0xcc00cc00u, 0xaa00aa00u, 0xff00ff00u,
+        0x80808080u, 0xc0c0c0c0u, 0xa0a0a0a0u, 0xf0f0f0f0u, 0x88888888u, 0xccccccccu, 0xaaaaaaaau, 0xffffffffu};
     uint32_t r = 0;
-    for (uint32_t v = 1u << 31; index; index >>= 1, v ^= v >> 1)
-        if (index & 1u) r ^= v;
+    for (; index; index &= index - 1) r ^= v[__builtin_ctz(index)];
     return r;
 }
 
