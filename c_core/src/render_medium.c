@@ -206,7 +206,7 @@ static double film_shadow(const soak_material *m, double cover, double cos1)
     /* Eq. 4 flux transmittance, averaged over wet (film) and dry points. */
     double n3 = m->medium.ior, T_wet = 0, T_dry = 0;
     soak_jensen_layer dry = {1.0, 1.0, n3, m->film_k};
-    soak_jensen_shadow(&dry, cos1, &T_dry);
+    if (cover < 1) soak_jensen_shadow(&dry, cos1, &T_dry);
     if (cover > 0) {
         soak_jensen_layer wet = {1.0, m->film_ior, n3, m->film_k};
         soak_jensen_shadow(&wet, cos1, &T_wet);
@@ -344,7 +344,11 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
         if (!(Tf > 0)) continue;
         double ph = rt_hg2(&local->phase, soak_v3_dot(d_in, d3));
         soak_rgb Tm;
-        if (soak_medium_rgb_transmittance(c->med, x, d3, h.t, &t->rng, &Tm) != SOAK_OK || !(rgb_max(Tm) > 0)) continue;
+        if (!c->med->coeffs)
+            Tm = rgb_exp(c->med->sigma_t, h.t); /* homogeneous: exact, the medium was checked by the walk */
+        else if (soak_medium_rgb_transmittance(c->med, x, d3, h.t, &t->rng, &Tm) != SOAK_OK)
+            continue;
+        if (!(rgb_max(Tm) > 0)) continue;
         if (!rt_visible(t, soak_geometry_offset(h.p, n, wl), wl, dist_light)) continue;
         soak_rgb L = rgb_mul(rgb_mul(beta, Tm), E);
         /* 1/n3^2: the radiance factor of entering, left out of beta (cross_stack). */

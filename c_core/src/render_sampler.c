@@ -15,9 +15,9 @@
  * so each sample still has the expectation of plain Monte Carlo; only the
  * correlation between the samples of a pixel changes (their strata). Renders
  * with different seeds are independent, which the tests' standard errors
- * rely on. The 32 bits of a coordinate get 21 random low bits from the PCG
- * stream, so values are uniform on the same 2^-53 grid as soak_rng_uniform
- * and never reach 1. */
+ * rely on. Values lie on the 2^-32 grid in [0, 1 - 2^-32]: enough for the
+ * pixel, lobe and direction choices they serve (the walk's free flights,
+ * whose logarithm needs the 2^-53 grid, draw from the PCG stream). */
 #include "render_internal.h"
 
 static uint32_t reverse_bits(uint32_t x)
@@ -90,8 +90,7 @@ double rt_qmc_next(rt_thread *t)
     }
     uint32_t i = t->qmc.pair_index;
     uint32_t x = (d & 1) ? owen_scramble(sobol_second(i), t->qmc.seed_y) : owen_scramble(reverse_bits(i), t->qmc.seed_x);
-    uint64_t low = soak_rng_u32(&t->rng) >> 11; /* 21 bits */
-    return (double)(((uint64_t)x << 21) | low) * (1.0 / 9007199254740992.0);
+    return (double)x * (1.0 / 4294967296.0);
 }
 
 void rt_rand2(rt_thread *t, double *u1, double *u2)
