@@ -644,8 +644,8 @@ static const geo_object *local_sphere(const soak_geometry *g, unsigned id)
     return o && o->kind == SOAK_SHAPE_SPHERE && o->isolated ? o : NULL;
 }
 
-soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, soak_hit *hit,
-                                          int *found)
+soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int want_uv,
+                                          soak_hit *hit, int *found)
 {
     if (!g || !ray || !hit || !found) return SOAK_ERR_NULL;
     const geo_object *o = g->committed ? local_sphere(g, object_id) : NULL;
@@ -658,7 +658,12 @@ soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned objec
     if (!(t > ray->tnear && t < ray->tfar)) return SOAK_OK;
     hit->t = t;
     hit->p = soak_v3_add(ray->org, soak_v3_scale(ray->dir, t));
-    sphere_surface(o, hit->p, &hit->ng, &hit->u, &hit->v);
+    if (want_uv) {
+        sphere_surface(o, hit->p, &hit->ng, &hit->u, &hit->v);
+    } else { /* the walk's many boundary hits need no texture lookup (atan2, acos) */
+        hit->ng = soak_v3_norm(soak_v3_sub(hit->p, o->center));
+        hit->u = hit->v = 0;
+    }
     hit->ns = hit->ng;
     hit->prim_id = 0;
     hit->object_id = object_id;

@@ -66,6 +66,9 @@ typedef struct rt_counters {
     long long rays, capped, leaked;
 } rt_counters;
 
+/* Does the object's wetness read texture coordinates (a wet map)? */
+static inline int rt_object_uses_uv(const soak_object *obj) { return obj->wetness.type == SOAK_WETNESS_MAP; }
+
 /* Quasi-random state of the current camera path (render_sampler.c):
  * dimensions dim < end come from the scrambled Sobol pairs, the rest from
  * rng. end = 0 (a zeroed thread, e.g. the photon tracer) means plain PCG. */

@@ -296,7 +296,8 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
             }
             soak_ray r = {x, d3, 0.0, INFINITY};
             t->n.rays++;
-            if (soak_geometry_intersect_local(s->geometry, c->obj->object_id, &r, &h, &found) != SOAK_OK || !found) {
+            if (soak_geometry_intersect_local(s->geometry, c->obj->object_id, &r, rt_object_uses_uv(c->obj), &h, &found) != SOAK_OK ||
+                !found) {
                 found = 0;
                 break;
             }
@@ -383,7 +384,9 @@ static double med_distance(const void *ctx, soak_vec3 pos, soak_vec3 dir)
     b->t->n.rays++;
     soak_hit *h = &b->surf->hit;
     b->surf->lost =
-        soak_geometry_intersect_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, h, &found) != SOAK_OK || !found;
+        soak_geometry_intersect_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, rt_object_uses_uv(b->obj), h, &found) !=
+            SOAK_OK ||
+        !found;
     if (b->surf->lost) return 0.0; /* interact ends the walk at once */
     if (soak_v3_dot(dir, h->ng) < 0) h->ng = soak_v3_scale(h->ng, -1.0); /* outward: the ray leaves the medium */
     return h->t;

@@ -120,7 +120,7 @@ static void test_local_queries(void)
      * occlusion equal the scene's (which refines Embree's float hit in double). */
     unsigned long long s = 12345;
     double worst_t = 0, worst_n = 0, worst_uv = 0;
-    int hits_differ = 0, occl_differ = 0, n = 20000;
+    int hits_differ = 0, occl_differ = 0, nouv_differ = 0, n = 20000;
     for (int i = 0; i < n; ++i) {
         soak_vec3 d = unit_dir(&s), o;
         do {
@@ -129,7 +129,7 @@ static void test_local_queries(void)
         soak_ray r = mkray(o, d);
         soak_hit hl, hs;
         int fl = 0, fs = 0;
-        soak_geometry_intersect_local(g, rest, &r, &hl, &fl);
+        soak_geometry_intersect_local(g, rest, &r, 1, &hl, &fl);
         soak_geometry_intersect(g, &r, &hs, &fs);
         if (fl != fs || (fl && (hl.object_id != hs.object_id))) {
             hits_differ++;
@@ -138,6 +138,10 @@ static void test_local_queries(void)
         worst_t = fmax(worst_t, fabs(hl.t - hs.t));
         worst_n = fmax(worst_n, soak_v3_len(soak_v3_sub(hl.ng, hs.ng)));
         worst_uv = fmax(worst_uv, fmax(fabs(hl.u - hs.u), fabs(hl.v - hs.v)));
+        soak_hit hn;
+        int fn = 0;
+        soak_geometry_intersect_local(g, rest, &r, 0, &hn, &fn);
+        if (!fn || hn.t != hl.t || soak_v3_len(soak_v3_sub(hn.ng, hl.ng)) > 1e-15 || hn.u != 0 || hn.v != 0) nouv_differ++;
         r.tfar = 1.2 * lcg01(&s);
         int ol = -1, os = -1;
         soak_geometry_occluded_local(g, rest, &r, &ol);
@@ -149,6 +153,7 @@ static void test_local_queries(void)
            worst_t, worst_n, worst_uv);
     check_true("local hits the same object as the scene query", hits_differ == 0);
     check_true("local occlusion = scene occlusion", occl_differ == 0);
+    check_true("without uv: same t and normal, u = v = 0", nouv_differ == 0);
     check_close("local t = scene t", worst_t, 0.0, 1e-9);
     check_close("local normal = scene normal", worst_n, 0.0, 1e-9);
     check_close("local uv = scene uv", worst_uv, 0.0, 1e-9);
@@ -158,12 +163,12 @@ static void test_local_queries(void)
     soak_ray down = mkray(soak_v3(3, 0, 0.5), soak_v3(0, 0, -1));
     soak_hit h;
     int found = 0;
-    soak_geometry_intersect_local(g, cut, &down, &h, &found);
+    soak_geometry_intersect_local(g, cut, &down, 1, &h, &found);
     check_true("not isolated: the floor inside the sphere is found", found && h.object_id == floor_id);
     check_close("floor distance", found ? h.t : -1, 0.5, 1e-9);
     soak_ray bad = mkray(soak_v3(NAN, 0, 0), soak_v3(0, 0, 1));
     int occ = 0;
-    check_status("NaN origin rejected (local)", soak_geometry_intersect_local(g, rest, &bad, &h, &found), SOAK_ERR_ARG);
+    check_status("NaN origin rejected (local)", soak_geometry_intersect_local(g, rest, &bad, 1, &h, &found), SOAK_ERR_ARG);
     check_status("NaN origin rejected (local occlusion)", soak_geometry_occluded_local(g, rest, &bad, &occ), SOAK_ERR_ARG);
     soak_geometry_destroy(g);
 }

@@ -110,9 +110,11 @@ soak_status soak_geometry_occluded_n(const soak_geometry *g, const soak_ray *ray
  * sphere (every other surface at least its radius from its centre, decided
  * at commit) is answered in closed form in double precision, without the
  * BVH; every other case falls back to the scene query. Cycles' subsurface
- * walk likewise intersects only its own object (scene_intersect_local). */
-soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, soak_hit *hit,
-                                          int *found);
+ * walk likewise intersects only its own object (scene_intersect_local).
+ * With want_uv = 0 a closed-form hit leaves u = v = 0 (a walk needs texture
+ * coordinates only for a wet map). */
+soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int want_uv,
+                                          soak_hit *hit, int *found);
 soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int *occluded);
 /* 1 when the local queries of object_id take the closed-form path. */
 int soak_geometry_object_isolated(const soak_geometry *g, unsigned object_id);
