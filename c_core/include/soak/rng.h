@@ -24,10 +24,22 @@ typedef struct soak_rng {
 /* Any seed and stream are valid. */
 void soak_rng_seed(soak_rng *rng, uint64_t seed, uint64_t stream);
 
-/* Next 32 random bits. */
-uint32_t soak_rng_u32(soak_rng *rng);
+/* Next 32 random bits. Inline: the tracers' walks draw several per step. */
+static inline uint32_t soak_rng_u32(soak_rng *rng)
+{
+    uint64_t old = rng->state;
+    rng->state = old * 6364136223846793005ull + rng->inc;
+    uint32_t xorshifted = (uint32_t)(((old >> 18) ^ old) >> 27);
+    uint32_t rot = (uint32_t)(old >> 59);
+    return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
+}
 
 /* Uniform double in [0, 1) with 53 random bits (two 32-bit draws); never 1. */
-double soak_rng_uniform(soak_rng *rng);
+static inline double soak_rng_uniform(soak_rng *rng)
+{
+    uint64_t hi = soak_rng_u32(rng) >> 5; /* 27 bits */
+    uint64_t lo = soak_rng_u32(rng) >> 6; /* 26 bits */
+    return (double)((hi << 26) | lo) * (1.0 / 9007199254740992.0);
+}
 
 #endif
