@@ -101,7 +101,12 @@ void rt_rand2(rt_thread *t, double *u1, double *u2);
 static inline soak_rgb rgb_mul(soak_rgb a, soak_rgb b) { return soak_rgb3(a.r * b.r, a.g * b.g, a.b * b.b); }
 static inline soak_rgb rgb_scale(soak_rgb a, double s) { return soak_rgb3(a.r * s, a.g * s, a.b * s); }
 static inline soak_rgb rgb_add(soak_rgb a, soak_rgb b) { return soak_rgb3(a.r + b.r, a.g + b.g, a.b + b.b); }
-static inline double rgb_max(soak_rgb a) { return fmax(a.r, fmax(a.g, a.b)); }
+/* fmax's result (a NaN argument is ignored) without the libm call, which
+ * the compiler keeps unless NaN semantics are given up (-ffinite-math-only,
+ * which would also break the isnan-based input checks). Signed zeros may
+ * come out either way, as C allows fmax to do. */
+static inline double rt_max(double a, double b) { return (a > b || b != b) ? a : b; }
+static inline double rgb_max(soak_rgb a) { return rt_max(a.r, rt_max(a.g, a.b)); }
 static inline soak_rgb rgb_exp(soak_rgb a, double s)
 {
     return soak_rgb3(exp(-a.r * s), exp(-a.g * s), exp(-a.b * s));

@@ -398,7 +398,7 @@ static double med_distance(const void *ctx, soak_vec3 pos, soak_vec3 dir)
 static int med_within(const void *ctx, soak_vec3 pos, soak_vec3 dir, double dist)
 {
     const rt_med_boundary *b = ctx;
-    double m = fmax(fmax(fabs(pos.x), fabs(pos.y)), fabs(pos.z));
+    double m = rt_max(rt_max(fabs(pos.x), fabs(pos.y)), fabs(pos.z));
     soak_ray r = {pos, dir, 0.0, dist * (1.0 + 1e-5) + 1e-5 * (1.0 + m)};
     int occluded = 1;
     b->t->n.rays++;
