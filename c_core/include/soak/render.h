@@ -12,10 +12,14 @@
  * scenes/README.md for the model details, the approximations and the image
  * transforms.
  *
+ * Sampling: the first random numbers of a camera path are quasi-random
+ * (scrambled Sobol pairs, render_sampler.c), the rest pseudo-random.
+ *
  * Determinism: sample s of pixel i always uses RNG stream i * spp + s of the
- * seed, and a pixel's passes are summed in order, so the image depends only
- * on the scene, seed and spp -- not on the thread count or scheduling (it
- * does change when a render is stopped early). */
+ * seed and Sobol point s of the pixel's scramble, and a pixel's passes are
+ * summed in order, so the image depends only on the scene, seed and spp --
+ * not on the thread count or scheduling (it does change when a render is
+ * stopped early). */
 #ifndef SOAK_RENDER_H
 #define SOAK_RENDER_H
 
