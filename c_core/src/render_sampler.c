@@ -18,6 +18,7 @@
  * rely on. Values lie on the 2^-32 grid in [0, 1 - 2^-32]: enough for the
  * pixel, lobe and direction choices they serve (the walk's free flights,
  * whose logarithm needs the 2^-53 grid, draw from the PCG stream). */
+#include "hash.h"
 #include "render_internal.h"
 
 static uint32_t reverse_bits(uint32_t x)
@@ -58,18 +59,7 @@ static uint32_t lk_permute(uint32_t x, uint32_t seed)
 
 static uint32_t owen_scramble(uint32_t x, uint32_t seed) { return reverse_bits(lk_permute(reverse_bits(x), seed)); }
 
-/* 32-bit integer mix (a "lowbias32" style avalanche). */
-static uint32_t mix32(uint32_t x)
-{
-    x ^= x >> 16;
-    x *= 0x7feb352du;
-    x ^= x >> 15;
-    x *= 0x846ca68bu;
-    x ^= x >> 16;
-    return x;
-}
-
-static uint32_t hash2(uint32_t a, uint32_t b) { return mix32(a ^ mix32(b + 0x9e3779b9u)); }
+static uint32_t hash2(uint32_t a, uint32_t b) { return soak_mix32(a ^ soak_mix32(b + 0x9e3779b9u)); }
 
 void rt_qmc_start(rt_thread *t, uint64_t seed, uint64_t pixel, uint32_t sample)
 {

@@ -1,9 +1,10 @@
-/* Inline hashing shared by the bakers (private to libsoak and its tests).
+/* Inline hashing shared by the bakers and the render sampler (private to
+ * libsoak and its tests).
  * lowbias32 finaliser: C. Wellons, "Prospecting for hash functions" (2018),
  * constants 0x7feb352d / 0x846ca68b; bias ~0.17 on the avalanche test. The
  * coordinates are chained one at a time so lattice neighbours decorrelate. */
-#ifndef SOAK_BAKE_HASH_H
-#define SOAK_BAKE_HASH_H
+#ifndef SOAK_HASH_H
+#define SOAK_HASH_H
 
 #include <stdint.h>
 
