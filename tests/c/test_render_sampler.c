@@ -49,7 +49,7 @@ static void test_nets(void)
             }
         }
     check_true("values in [0,1)", out_of_range == 0);
-    check_true("256 samples of every pair form a (0,8,2)-net (20 pixels x 8 pairs x 9 shapes)", bad == 0);
+    check_true("256 samples of every pair form a (0,8,2)-net (20 pixels, every pair, 9 interval shapes)", bad == 0);
 }
 
 static void test_uniform_unbiased(void)
