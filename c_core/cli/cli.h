@@ -27,6 +27,7 @@ int soak_cmd_demo(int argc, char **argv);
 int soak_cmd_render(int argc, char **argv);
 int soak_cmd_measure(int argc, char **argv);
 int soak_cmd_bake(int argc, char **argv);
+int soak_cmd_export(int argc, char **argv);
 
 /* Prints "soak <cmd>: <message>" to stderr. */
 void cli_error(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));

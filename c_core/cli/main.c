@@ -11,6 +11,7 @@ static const soak_cli_command commands[] = {
     {"demo", "the main job: wet-vs-dry table, swatch sheet, bakes and renders of the default scene", soak_cmd_demo},
     {"render", "render a JSON scene with the reference path tracer", soak_cmd_render},
     {"measure", "virtual gonio-reflectometer: traced reflectance of canonical configurations", soak_cmd_measure},
+    {"export", "the core's data for renderer front ends (json, povray, blender, osl)", soak_cmd_export},
     {"bake", "bake wet maps and parameter volumes (turbulence, waves, drying, rain, combine, volume)", soak_cmd_bake},
 };
 static const int n_commands = (int)(sizeof commands / sizeof commands[0]);
