@@ -45,11 +45,17 @@ int check_status(const char *what, soak_status got, soak_status want)
 void check_skip(const char *what, const char *reason)
 {
     ++n_skip;
-    printf("SKIPPED %s: %s\n", what, reason);
+    printf("SKIPPED: %s (%s)\n", reason, what);
 }
 
 int check_finish(void)
 {
     printf("%d passed, %d failed, %d skipped\n", n_pass, n_fail, n_skip);
-    return n_fail ? 1 : 0;
+    if (n_fail) return 1;
+    if (n_pass == 0 && n_skip > 0) return CHECK_SKIP_EXIT; /* ctest: Skipped, never Passed */
+    if (n_pass == 0) {
+        printf("FAIL no check ran\n");
+        return 1;
+    }
+    return 0;
 }
