@@ -66,6 +66,8 @@ typedef struct rt_ctx {
 
 typedef struct rt_counters {
     long long rays, capped, leaked;
+    long long nan_paths;  /* camera paths whose radiance was NaN/Inf (dropped to 0) */
+    long long geom_errors; /* geometry queries that failed (the path or ray ended) */
 } rt_counters;
 
 /* Does the object's wetness read texture coordinates (a wet map)? */

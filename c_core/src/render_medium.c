@@ -296,8 +296,9 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
             }
             soak_ray r = {x, d3, 0.0, INFINITY};
             t->n.rays++;
-            if (soak_geometry_intersect_local(s->geometry, c->obj->object_id, &r, rt_object_uses_uv(c->obj), &h, &found) != SOAK_OK ||
-                !found) {
+            soak_status gst = soak_geometry_intersect_local(s->geometry, c->obj->object_id, &r, rt_object_uses_uv(c->obj), &h, &found);
+            if (gst != SOAK_OK) t->n.geom_errors++;
+            if (gst != SOAK_OK || !found) {
                 found = 0;
                 break;
             }
@@ -383,10 +384,10 @@ static double med_distance(const void *ctx, soak_vec3 pos, soak_vec3 dir)
     int found = 0;
     b->t->n.rays++;
     soak_hit *h = &b->surf->hit;
-    b->surf->lost =
-        soak_geometry_intersect_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, rt_object_uses_uv(b->obj), h, &found) !=
-            SOAK_OK ||
-        !found;
+    soak_status st =
+        soak_geometry_intersect_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, rt_object_uses_uv(b->obj), h, &found);
+    if (st != SOAK_OK) b->t->n.geom_errors++;
+    b->surf->lost = st != SOAK_OK || !found;
     if (b->surf->lost) return 0.0; /* interact ends the walk at once */
     if (soak_v3_dot(dir, h->ng) < 0) h->ng = soak_v3_scale(h->ng, -1.0); /* outward: the ray leaves the medium */
     return h->t;
@@ -402,7 +403,10 @@ static int med_within(const void *ctx, soak_vec3 pos, soak_vec3 dir, double dist
     soak_ray r = {pos, dir, 0.0, dist * (1.0 + 1e-5) + 1e-5 * (1.0 + m)};
     int occluded = 1;
     b->t->n.rays++;
-    if (soak_geometry_occluded_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, &occluded) != SOAK_OK) return 1;
+    if (soak_geometry_occluded_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, &occluded) != SOAK_OK) {
+        b->t->n.geom_errors++;
+        return 1;
+    }
     return occluded;
 }
 
