@@ -67,6 +67,7 @@ static soak_rgb radiance(rt_thread *t, soak_vec3 org, soak_vec3 dir)
     rt_path path;
     memset(&path, 0, sizeof path);
     path.beta = soak_rgb3(1, 1, 1);
+    path.eta_scale = 1.0;
     path.org = org;
     path.dir = dir;
     path.prev_delta = 1;
@@ -107,7 +108,7 @@ static soak_rgb radiance(rt_thread *t, soak_vec3 org, soak_vec3 dir)
         if (depth >= 3) {
             /* Roulette with survival min(1, max beta): unbiased, and it never
              * fires while the throughput stays at 1 (albedo 1). */
-            double q = fmin(1.0, rgb_max(path.beta));
+            double q = fmin(1.0, rt_rr_weight(&path));
             if (!(q > 0) || rt_rand(t) >= q) break;
             path.beta = rgb_scale(path.beta, 1.0 / q);
         }

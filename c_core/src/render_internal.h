@@ -170,8 +170,16 @@ double rt_sphere_light_pdf(const soak_light *l, soak_vec3 p);
 int rt_visible(rt_thread *t, soak_vec3 p, soak_vec3 wi, double dist);
 
 /* ---- surfaces (render_surface.c) ---- */
+/* Radiance convention: a refraction into index ratio eta multiplies the
+ * radiance by 1/eta^2, and beta carries that factor; eta_scale carries its
+ * inverse (pbrt's etaScale), so beta * eta_scale, the weight Russian roulette
+ * plays on (rt_rr_weight), does not count a factor that the path's exit
+ * undoes. Films and media over a base never put their 1/n^2 into beta:
+ * estimates gathered inside carry it explicitly (render_surface.c,
+ * render_medium.c). */
 typedef struct rt_path {
-    soak_rgb beta;    /* throughput */
+    soak_rgb beta;    /* throughput, radiance factors of refractions included */
+    double eta_scale; /* product of eta^2 over the refractions so far */
     soak_rgb L;       /* radiance gathered */
     soak_vec3 org, dir;
     double prev_pdf;  /* solid-angle pdf of the last BSDF-sampled direction */
@@ -181,6 +189,9 @@ typedef struct rt_path {
     int inside;       /* inside a dielectric: absorb applies per unit length */
     soak_rgb absorb;
 } rt_path;
+
+/* The weight Russian roulette plays on: max_c beta_c * eta_scale. */
+static inline double rt_rr_weight(const rt_path *p) { return rgb_max(p->beta) * p->eta_scale; }
 
 /* Handles the surface interaction at hit: gathers next-event estimates into
  * path->L, updates beta and sets the next ray (or alive = 0). */

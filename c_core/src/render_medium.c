@@ -354,7 +354,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
         if (!rt_visible(t, soak_geometry_offset(h.p, n, wl), wl, dist_light)) continue;
         soak_rgb L = rgb_mul(rgb_mul(beta, Tm), E);
         /* 1/n3^2: the radiance factor of entering, left out of beta (cross_stack). */
-        L = rgb_scale(L, inv_q * ph * Tf * cos1 / (cos3 * n3 * n3));
+        L = rgb_scale(L, inv_q * ph * Tf * cos1 / (cos3 * n3 * n3 * c->path->eta_scale)); /* walk weights: see rt_wet_medium */
         if (cover > 0 && m->film_thickness > 0) {
             /* Beer-Lambert in the film, weighted by the wet share of Tf. */
             double cos2 = sqrt(fmax(0.0, 1 - (1 - cos1 * cos1) / (m->film_ior * m->film_ior)));
@@ -372,7 +372,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
         soak_rgb g = rt_photons_gather(t->ctx->caustics, x, d_in, &local->phase, c->object_id);
         soak_rgb ss = local->sigma_s;
         soak_rgb ls = soak_rgb3(ss.r > 0 ? g.r / ss.r : 0, ss.g > 0 ? g.g / ss.g : 0, ss.b > 0 ? g.b / ss.b : 0);
-        c->path->L = rgb_add(c->path->L, rgb_scale(rgb_mul(beta, ls), 1.0 / (n3 * n3)));
+        c->path->L = rgb_add(c->path->L, rgb_scale(rgb_mul(beta, ls), 1.0 / (n3 * n3 * c->path->eta_scale)));
     }
     return 1;
 }
@@ -480,7 +480,9 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     nc.surf = &surf;
     nc.object_id = hit->object_id;
     nc.path = path;
-    soak_walk_options opt = rt_walk_options(path->beta);
+    /* The walk's roulette plays on its weight: start it at beta * eta_scale
+     * (rt_rr_weight's convention) and undo the scale on what it returns. */
+    soak_walk_options opt = rt_walk_options(rgb_scale(path->beta, path->eta_scale));
     opt.on_vertex = medium_vertex;
     opt.vertex_ctx = &nc;
     soak_walk_result_rgb w;
@@ -495,7 +497,7 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     if (w.end == SOAK_WALK_CAPPED) t->n.capped++;
     if (w.end != SOAK_WALK_EXITED) return;
     path->alive = 1;
-    path->beta = w.weight;
+    path->beta = rgb_scale(w.weight, 1.0 / path->eta_scale);
     path->dir = w.dir;
     path->org = soak_geometry_offset(surf.hit.p, surf.n_ref, w.dir);
     path->prev_delta = 1;
