@@ -12,9 +12,9 @@
  *  2. The same lit by a sun only (light sampling through the film, the only
  *     strategy for a delta light): L = f(wi, wo) E cos_i with f the closed-
  *     form BRDF (soak_film_brdf).
- *  3. The same lit by a sphere light (light sampling and BSDF sampling
+ *  3. The same lit by a wide sphere light (light sampling and BSDF sampling
  *     combined by MIS): L = int f L_e cos dw over the light's cone, by
- *     quadrature here.
+ *     quadrature here, plus the film top's mirror image of the light.
  *  4. A GGX conductor base under a film, uniform sky: the directional albedo
  *     F12 + (1 - F12) E(mu2), where E, the fraction escaping the film after
  *     any number of base reflections and internal (total) reflections, solves
@@ -53,6 +53,8 @@ static void scene_text(char *buf, size_t n, double theta_deg, const char *lights
              " \"objects\": [{\"type\": \"plane\", \"size\": [4000, 4000], \"material\": \"m\"}]}",
              -5 * sin(t), 5 * cos(t), lights, N2, base);
 }
+
+static double fresnel(double n1, double n2, double ci);
 
 static const char *LAMBERT = "{\"type\": \"lambert\", \"albedo\": 0.5}";
 
@@ -94,8 +96,9 @@ static void test_sun_lambert(void)
 
 static void test_sphere_lambert(void)
 {
-    /* sphere light of radiance 3, radius 3, centre 10 away at 40 deg */
-    const double ts = 40 * SOAK_PI / 180, D = 10, R = 3, Le = 3;
+    /* sphere light of radiance 1, radius 9, centre 12 away at 40 deg: a wide
+     * cone, where light and BSDF sampling have comparable pdfs (MIS matters) */
+    const double ts = 40 * SOAK_PI / 180, D = 12, R = 9, Le = 1;
     soak_vec3 c = soak_v3(D * sin(ts), 0, D * cos(ts));
     char lights[256];
     snprintf(lights, sizeof lights,
@@ -104,7 +107,7 @@ static void test_sphere_lambert(void)
     /* reference: midpoint rule over the cone (cos from cos_max to 1, azimuth) */
     const double cmax = sqrt(1 - (R / D) * (R / D));
     soak_vec3 ax = soak_v3(sin(ts), 0, cos(ts)), u = soak_v3(cos(ts), 0, -sin(ts)), v = soak_v3(0, 1, 0);
-    const double tv = 30 * SOAK_PI / 180;
+    const double tv = 20 * SOAK_PI / 180; /* its mirror direction is 4.7 deg inside the light cone */
     soak_vec3 wo = soak_v3(0, -sin(tv), cos(tv));
     soak_film film = {N2, 0, 0};
     double ref = 0;
@@ -119,11 +122,15 @@ static void test_sphere_lambert(void)
             ref += f * Le * wi.z * (1 - cmax) / NC * 2 * SOAK_PI / NP;
         }
     }
+    /* the film top's mirror image of the camera direction: Fresnel x Le when it meets the light */
+    soak_vec3 mirror = soak_v3(0, sin(tv), cos(tv));
+    double cd = soak_v3_dot(c, mirror);
+    if (cd > 0 && soak_v3_dot(c, c) - cd * cd < R * R) ref += fresnel(1, N2, cos(tv)) * Le;
     char text[2048];
-    scene_text(text, sizeof text, 30, lights, LAMBERT);
+    scene_text(text, sizeof text, 20, lights, LAMBERT);
     double m, se;
     if (!traced("traced film, sphere light", text, 65536, &m, &se)) return;
-    printf("  traced film over Lambert 0.5, sphere light, view 30 deg: %.5f +- %.5f, quadrature %.5f\n", m, se, ref);
+    printf("  traced film over Lambert 0.5, sphere light, view 20 deg: %.5f +- %.5f, quadrature %.5f\n", m, se, ref);
     check_close("traced film under a sphere light (MIS) = closed-form BRDF over the light's cone", m, ref,
                 4 * se + 1e-3);
 }
