@@ -231,10 +231,35 @@ static soak_status open_group(ctx *c, const cJSON *m, const char *path, const ch
     return check_object(c, *group, gpath, allowed, known, why);
 }
 
+/* The optional "measured" group (see soak/preset.h). */
+static soak_status parse_measured(ctx *c, const cJSON *m, const char *path, soak_preset *p)
+{
+    static const char *const keys[] = {"wet_dry_ratio", "spread", "dry_albedo", "wetness", "quantity", "source", NULL};
+    const cJSON *g = NULL;
+    char gp[PATH_MAX_LEN];
+    const char *quantity = NULL;
+    soak_status st = open_group(c, m, path, "measured", keys, NULL, "measured", &g, gp);
+    if (st == SOAK_OK) st = get_number(c, g, gp, "wet_dry_ratio", 0.0, 10.0, &p->measured_ratio);
+    if (st == SOAK_OK) st = get_number(c, g, gp, "spread", 0.0, 1.0, &p->measured_spread);
+    if (st == SOAK_OK) st = get_number(c, g, gp, "dry_albedo", 1e-6, 1.0, &p->measured_dry_albedo);
+    if (st == SOAK_OK) st = get_number(c, g, gp, "wetness", 0.0, 1.0, &p->measured_wetness);
+    if (st == SOAK_OK) st = get_string(c, g, gp, "quantity", &quantity);
+    if (st == SOAK_OK) st = get_string(c, g, gp, "source", &p->measured_source);
+    if (st != SOAK_OK) return st;
+    if (strcmp(quantity, "albedo_total") != 0 && strcmp(quantity, "albedo") != 0) {
+        char sub[PATH_MAX_LEN];
+        join(sub, gp, "quantity");
+        return fail(c, SOAK_ERR_ARG, sub, "'%s' is not one of albedo_total, albedo", quantity);
+    }
+    p->measured_total = strcmp(quantity, "albedo_total") == 0;
+    p->has_measured = 1;
+    return SOAK_OK;
+}
+
 static soak_status parse_material(ctx *c, const cJSON *m, const char *path, soak_preset *p)
 {
     static const char *const all_keys[] = {"name",     "display_name", "kind",  "albedo",  "roughness", "ior",
-                                           "porosity", "medium",       "phase", "wetting", "sheet",     NULL};
+                                           "porosity", "medium",       "phase", "wetting", "sheet",     "measured", NULL};
     static const char *const head_keys[] = {"name", "display_name", "kind", NULL};
     if (!cJSON_IsObject(m)) return fail(c, SOAK_ERR_PARSE, path, "expected an object");
     /* The kind decides which groups are required, so read it first. */
@@ -257,7 +282,7 @@ static soak_status parse_material(ctx *c, const cJSON *m, const char *path, soak
     char why[64];
     snprintf(why, sizeof why, "kind %s", kind_names[k]);
 
-    const char *keys[16];
+    const char *keys[17];
     int nk = 0;
     for (int i = 0; head_keys[i]; ++i) keys[nk++] = head_keys[i];
     keys[nk++] = "albedo";
@@ -268,6 +293,8 @@ static soak_status parse_material(ctx *c, const cJSON *m, const char *path, soak
     if (!conductor) keys[nk++] = "medium";
     if (!conductor) keys[nk++] = "phase";
     if (sheet) keys[nk++] = "sheet";
+    const int measured = cJSON_GetObjectItemCaseSensitive(m, "measured") != NULL;
+    if (measured) keys[nk++] = "measured"; /* optional for every kind */
     keys[nk] = NULL;
     soak_status st = check_object(c, m, path, keys, all_keys, why);
     if (st == SOAK_OK) st = get_name(c, m, path, &p->name);
@@ -363,8 +390,9 @@ static soak_status parse_material(ctx *c, const cJSON *m, const char *path, soak
         st = open_group(c, m, path, "sheet", sheet_keys, NULL, why, &g, gp);
         if (st == SOAK_OK) st = get_number(c, g, gp, "thickness_mm", 1e-3, 1000.0, &p->thickness_mm);
         if (st == SOAK_OK) st = get_string(c, g, gp, "source", &p->sheet_source);
+        if (st != SOAK_OK) return st;
     }
-    return st;
+    return measured ? parse_measured(c, m, path, p) : SOAK_OK;
 }
 
 soak_status soak_preset_derive(soak_preset *p)

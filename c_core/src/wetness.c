@@ -76,6 +76,19 @@ static double conductor_film(double n, double k, double n_liq, double two_pass)
     return t12 * t12 * r23 * two_pass / (1.0 - r12 * r23 * two_pass);
 }
 
+/* Step 5 for dielectrics: the diffuse light leaving through a film over a
+ * Lambertian base, T(A) - T(0), and the film's own specular part T(0). */
+static soak_status film_parts(const soak_film *film, double base, double *diffuse, double *specular)
+{
+    double total = 0.0;
+    soak_status st = soak_film_albedo_diffuse(film, base, &total);
+    if (st == SOAK_OK) st = soak_film_albedo_diffuse(film, 0.0, specular);
+    if (st != SOAK_OK) return st;
+    *diffuse = total - *specular;
+    if (*diffuse < 0.0) *diffuse = 0.0; /* rounding when base = 0 */
+    return SOAK_OK;
+}
+
 soak_status soak_wetness_eval(const soak_preset *p, const soak_liquid *l, const soak_wet_input *in,
                               soak_wet_params *out)
 {
@@ -128,28 +141,35 @@ soak_status soak_wetness_eval(const soak_preset *p, const soak_liquid *l, const 
         o.albedo_subsurface = p->albedo;
     }
 
-    /* Step 5. */
+    /* Step 5: one Lekner-Dorf interface wherever liquid meets air -- the
+     * pore water's surface (area fraction porosity f, zero thickness) and
+     * the film (coverage c, which replaces it: one interface, one TIR). */
     soak_film film = {l->ior, 0.0, in->film_thickness_m};
+    const soak_film pores = {l->ior, 0.0, 0.0};
+    const double pore_area = porous ? p->porosity * o.fill : 0.0;
     for (int i = 0; i < 3; ++i) {
         double base = soak_rgb_at(o.albedo_subsurface, i);
         double diffuse, specular;
+        double open = base, open_total = base; /* the part not under the film */
         if (conductor) {
             double two_pass = exp(-2.0 * 1000.0 * soak_rgb_at(l->sigma_a, i) * in->film_thickness_m);
             soak_fresnel_r0(l->ior, 0.0, &specular);
             diffuse = conductor_film(soak_rgb_at(p->ior_n, i), soak_rgb_at(p->ior_k, i), l->ior, two_pass);
         } else {
             film.alpha = soak_rgb_at(o.film_absorption_per_m, i);
-            double total = 0.0;
-            st = soak_film_albedo_diffuse(&film, base, &total);
-            if (st == SOAK_OK) st = soak_film_albedo_diffuse(&film, 0.0, &specular);
+            st = film_parts(&film, base, &diffuse, &specular);
+            if (st == SOAK_OK && pore_area > 0.0) {
+                double pore_diffuse = 0.0, pore_specular = 0.0;
+                st = film_parts(&pores, base, &pore_diffuse, &pore_specular);
+                open = lerp(base, pore_diffuse, pore_area);
+                open_total = lerp(base, pore_diffuse + pore_specular, pore_area);
+            }
             if (st != SOAK_OK) return st;
-            diffuse = total - specular;
-            if (diffuse < 0.0) diffuse = 0.0; /* rounding when base = 0 */
         }
         double c = o.film_coverage;
         soak_rgb_set(&o.albedo_film, i, diffuse);
-        soak_rgb_set(&o.albedo, i, c > 0.0 ? lerp(base, diffuse, c) : base);
-        soak_rgb_set(&o.albedo_total, i, c > 0.0 ? lerp(base, diffuse + specular, c) : base);
+        soak_rgb_set(&o.albedo, i, c > 0.0 ? lerp(open, diffuse, c) : open);
+        soak_rgb_set(&o.albedo_total, i, c > 0.0 ? lerp(open_total, diffuse + specular, c) : open_total);
     }
 
     /* Step 6. */

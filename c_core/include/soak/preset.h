@@ -16,13 +16,15 @@
  *   phase        dry + wet       dry + wet          dry                -
  *   wetting     t_fill + film   t_fill + film      film              film
  *   sheet             -               x               -                 -
+ *   measured      optional        optional        optional          optional
  *
  * Keys: top level {format: "soak-materials", version: 1, description,
  * materials: [...], liquids: [...]}; a material {name, display_name, kind,
  * albedo {rgb, source}, roughness {ggx_alpha_dry, ggx_alpha_wet, source},
  * ior {n, k, source}, porosity {alpha, s_p, source}, medium {sigma_t_per_mm,
  * source}, phase {dry {g1, g2, w}, wet {g1, g2, w}, source}, wetting {t_fill,
- * film_thickness_mm, source}, sheet {thickness_mm, source}}; a liquid {name,
+ * film_thickness_mm, source}, sheet {thickness_mm, source}, measured
+ * {wet_dry_ratio, spread, dry_albedo, wetness, quantity, source}}; a liquid {name,
  * display_name, ior, sigma_a_per_mm, sigma_s_per_mm, source}.
  *
  * Units: extinction sigma_t and liquid sigma_a/sigma_s in 1/mm; thicknesses
@@ -94,6 +96,19 @@ typedef struct soak_preset {
 
     double thickness_mm; /* thin sheets: sheet thickness, mm; 0 = semi-infinite */
     const char *sheet_source;
+
+    /* Optional "measured" group: a published wet/dry reflectance ratio the
+     * wet parameters are calibrated against (docs/calibration.md). The
+     * ratio is quantity(wetness) / dry_albedo for the chain evaluated at the
+     * grey dry albedo of the measured sample; spread is the measurement's
+     * half range. has_measured = 0 when the group is absent. */
+    int has_measured;
+    double measured_ratio;      /* [0, 10] */
+    double measured_spread;     /* [0, 1] */
+    double measured_dry_albedo; /* (0, 1] */
+    double measured_wetness;    /* [0, 1] */
+    int measured_total;         /* 1: albedo_total (film specular included), 0: albedo */
+    const char *measured_source;
 
     /* Derived on load (see above). Zero for conductors. */
     soak_rgb omega_dry;   /* single-scattering albedo of the dry medium */

@@ -36,24 +36,41 @@
  *      omega_dry = inverse of R(omega, g_dry) at the dry albedo (on load),
  *      omega     = sigma_s / (sigma_s + sigma_a)         (= omega_dry at f=0),
  *      albedo_subsurface = R(omega, g(f)).
- *    Darkening thus comes only from the phase change (g up: more scattering
- *    events before escape, seed 000 sec. 2.2) and from the liquid's own
- *    absorption; no eyeballed factor. Conductors: no subsurface, unchanged.
+ *    The phase change is the grains' index matching only (Twomey, Bohren &
+ *    Mergenthaler 1986: liquid instead of air around the grains makes their
+ *    scattering more forward); plus the liquid's own absorption. The
+ *    liquid-air interface is NOT in this step (step 5). Conductors: no
+ *    subsurface, unchanged.
  *
- * 5. Film (Lekner & Dorf 1988, soak/film.h) over the area fraction c:
- *      dielectrics: albedo_film = T(A) - T(0), T = soak_film_albedo_diffuse
- *        with the base A = albedo_subsurface, index n_liquid, absorption
- *        1000 sigma_a,liquid (1/m) and the film thickness: the diffuse light
- *        leaving through the film (T(0) is the film's own specular part).
- *      conductors: normal incidence, incoherent sum over the film,
- *        albedo_film = (1 - R12)^2 R23 e / (1 - R12 R23 e), e = exp(-2 sigma_a h),
- *        R12 = F0(n_liquid), R23 = F0(n / n_liquid, k / n_liquid).
- *      albedo       = (1 - c) albedo_subsurface + c albedo_film
- *      albedo_total = (1 - c) albedo_subsurface + c (albedo_film + film specular)
+ * 5. Liquid-air interface (Lekner & Dorf 1988, soak/film.h): the darkening
+ *    by total internal reflection happens wherever liquid meets air, whether
+ *    the liquid fills the pores or lies on top -- once per unit area:
+ *      pore water: area fraction a = porosity f (the pores' share of the
+ *        surface, as step 6's water specular), zero thickness;
+ *      film: coverage c, thickness h; where the film lies it REPLACES the
+ *        pore water's surface (one interface, one TIR).
+ *    With T_h(A) = soak_film_albedo_diffuse (index n_liquid, absorption
+ *    1000 sigma_a,liquid 1/m, thickness h) for dielectrics,
+ *      albedo_film  = T_h(A) - T_h(0)   (A = albedo_subsurface; T_h(0) is the
+ *                                        interface's own specular part S_h)
+ *      open         = (1 - a) A + a (T_0(A) - T_0(0))
+ *      open_total   = (1 - a) A + a T_0(A)
+ *    conductors: normal incidence, incoherent sum over the film,
+ *      albedo_film = (1 - R12)^2 R23 e / (1 - R12 R23 e), e = exp(-2 sigma_a h),
+ *      R12 = F0(n_liquid), R23 = F0(n / n_liquid, k / n_liquid); open = A.
+ *      albedo       = (1 - c) open       + c albedo_film
+ *      albedo_total = (1 - c) open_total + c (albedo_film + S_h)
  *    albedo is what a renderer puts under a separate, non-compensating film
- *    (clear-coat) lobe of index n_liquid with weight c; albedo_total is the
- *    hemispherical reflectance a measurement would give (without the
- *    material's own dry specular lobe).
+ *    (clear-coat) lobe of index n_liquid with weight c, plus step 6's water
+ *    specular for the pore water; albedo_total is the hemispherical
+ *    reflectance a measurement would give (without the material's own dry
+ *    specular lobe).
+ *    Why: the chain used to model no interface over saturated pores and
+ *    then stacked the film's TIR on a phase change whose wet values
+ *    (seed 000) were eyeballed to the WHOLE darkening -- interface included
+ *    -- so the interface darkening counted twice (wet/dry 0.23-0.39). The
+ *    wet phase values are now calibrated against measured wet/dry ratios
+ *    with the interface modelled here (docs/calibration.md).
  *
  * 6. Roughness and specular weights: GGX alpha lerps dry -> wet by f (pores
  *    filled with a flat liquid surface); Merillou/Hnat (seed 002 Eq. 3) at
