@@ -129,7 +129,7 @@ static soak_status ww_triace_setup(const soak_model_params *p, soak_model_ctx *c
     soak_status st = ww_setup(p, c);
     if (st != SOAK_OK) return st;
     ww_ctx *m = (ww_ctx *)c->bytes;
-    return soak_ww_triace_setup(&m->ww, &m->fast); /* fitted for n_water = 1.33 only */
+    return soak_ww_triace_setup(&m->ww, &m->fast); /* n_water in [SOAK_WW_TRIACE_N_MIN, _MAX] */
 }
 static soak_status ww_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
 {

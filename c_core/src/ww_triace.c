@@ -77,8 +77,10 @@ soak_status soak_ww_triace_setup(const soak_ww *m, soak_ww_triace *fast)
     if (!m || !fast) return SOAK_ERR_NULL;
     soak_status s = soak_ww_validate(m);
     if (s != SOAK_OK) return s;
-    if (m->n_water != SOAK_WW_N_WATER) return SOAK_ERR_ARG;
-    const double n2 = SOAK_WW_N_WATER;
+    if (!soak_in_range(m->n_water, SOAK_WW_TRIACE_N_MIN, SOAK_WW_TRIACE_N_MAX)) return SOAK_ERR_ARG;
+    /* The liquid's own index in every Fresnel term and the radiance
+     * compression; only the refraction polynomial stays the 1.33 fit. */
+    const double n2 = m->n_water;
     double t21 = 1.0 - f0(n2, 1.0, 0.0);
     soak_ww_triace r;
     r.r0_top = f0(1.0, n2, 0.0);

@@ -138,16 +138,26 @@ soak_status soak_refract_1_33(soak_vec3 i, soak_vec3 n, soak_vec3 *t);
 
 /* Precomputed constants of the fast evaluation. */
 typedef struct soak_ww_triace {
-    double r0_top;       /* F0(1, 1.33) for Schlick's T12 */
+    double r0_top;       /* F0(1, n_water) for Schlick's T12 */
     double fbottom;      /* specular F_bottom */
     double diffuse;      /* kd/pi (1 - F0(n2,1)) (1 - F0(n2,n3))^2, 0 for conductors */
     double alpha2;       /* GGX alpha^2 */
     double alpha_prime;  /* absorption * thickness */
-    double inv_n2;       /* 1 / 1.33^2, radiance compression */
+    double inv_n2;       /* 1 / n_water^2, radiance compression */
 } soak_ww_triace;
 
-/* Requires n_water == SOAK_WW_N_WATER (the refraction polynomial is fitted
- * for 1.33 only); any other value returns SOAK_ERR_ARG. */
+/* Accepts the liquid's index n_water in [SOAK_WW_TRIACE_N_MIN,
+ * SOAK_WW_TRIACE_N_MAX] (water 1.333, and the shipped coffee, cola, wine);
+ * others return SOAK_ERR_ARG. The Fresnel terms (r0_top, fbottom, diffuse)
+ * and inv_n2 use n_water; the refraction polynomial is seed 001's fit for
+ * 1.33 at every accepted index. Its error (tests/c/test_ww.c, printed table):
+ * at n_water = 1.333 the fast path equals the exact model at normal
+ * incidence without absorption, and its largest relative error over the
+ * 0..85 degree grid (already above 1 at grazing for n = 1.33) rises by at
+ * most 0.02, over theta <= 60 degrees by at most 0.005 (measured: 0.054-0.225
+ * at 1.33 -> within +0.004 at 1.333). */
+#define SOAK_WW_TRIACE_N_MIN 1.30
+#define SOAK_WW_TRIACE_N_MAX 1.36
 soak_status soak_ww_triace_setup(const soak_ww *m, soak_ww_triace *fast);
 
 /* Fast WW: f ~ (1 - F12_Schlick(cos_i)) a_lin / n^2 *
