@@ -140,8 +140,10 @@ soak_status soak_wetness_eval(const soak_preset *p, const soak_liquid *l, const 
         } else {
             film.alpha = soak_rgb_at(o.film_absorption_per_m, i);
             double total = 0.0;
-            st = soak_film_albedo_diffuse(&film, base, &total);
-            if (st == SOAK_OK) st = soak_film_albedo_diffuse(&film, 0.0, &specular);
+            soak_film_ctx ctx;
+            st = soak_film_setup(&film, &ctx);
+            if (st == SOAK_OK) st = soak_film_ctx_albedo_diffuse(&ctx, base, &total);
+            if (st == SOAK_OK) st = soak_film_ctx_albedo_diffuse(&ctx, 0.0, &specular);
             if (st != SOAK_OK) return st;
             diffuse = total - specular;
             if (diffuse < 0.0) diffuse = 0.0; /* rounding when base = 0 */
