@@ -1,5 +1,5 @@
 #define _POSIX_C_SOURCE 200809L
-#include "staged_files.h"
+#include "soak/staged_files.h"
 
 #include <errno.h>
 #include <stdlib.h>

@@ -11,8 +11,8 @@
 
 #include <cjson/cJSON.h>
 
-#include "soak/bake_volume.h"
-#include "staged_files.h"
+#include "soak/volume.h"
+#include "soak/staged_files.h"
 
 typedef struct channel_range {
     double offset, scale; /* real = offset + scale * stored, stored in [0,1] */

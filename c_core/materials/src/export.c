@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "staged_files.h"
+#include "soak/staged_files.h"
 
 static const soak_export_target targets[] = {
     {"json", "generic JSON interface (schema: c_core/data/export.schema.json)", "soak_export.json",

@@ -8,8 +8,8 @@
 #include <vector>
 
 extern "C" {
-#include "soak/bake_volume.h"
-#include "staged_files.h"
+#include "soak/volume.h"
+#include "soak/staged_files.h"
 }
 
 #ifdef SOAK_HAVE_OPENVDB

@@ -17,7 +17,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "hash.h"
+#include "soak/hash.h"
 
 #define COORD_LIMIT 1e9 /* largest lattice coordinate: indices stay in int32 */
 #define MAX_TOP_CELLS 2e4

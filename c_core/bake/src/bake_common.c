@@ -10,7 +10,7 @@
 #include <strings.h>
 #include <unistd.h>
 
-#include "hash.h"
+#include "soak/hash.h"
 
 int soak_bake_threads(const soak_bake_exec *exec)
 {

@@ -18,7 +18,7 @@
  * rely on. Values lie on the 2^-32 grid in [0, 1 - 2^-32]: enough for the
  * pixel, lobe and direction choices they serve (the walk's free flights,
  * whose logarithm needs the 2^-53 grid, draw from the PCG stream). */
-#include "hash.h"
+#include "soak/hash.h"
 #include "render_internal.h"
 
 static uint32_t reverse_bits(uint32_t x)

@@ -8,8 +8,8 @@
 
 #include <cjson/cJSON.h>
 
-#include "soak/bake_volume.h"
-#include "staged_files.h"
+#include "soak/volume.h"
+#include "soak/staged_files.h"
 
 static void set_err(char *err, size_t errlen, const char *fmt, const char *a, const char *b)
 {

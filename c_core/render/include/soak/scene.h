@@ -12,7 +12,7 @@
 
 #include <stddef.h>
 
-#include "soak/bake_volume.h"
+#include "soak/volume.h"
 #include "soak/geometry.h"
 #include "soak/hg.h"
 #include "soak/image.h"
