@@ -1,6 +1,7 @@
 /* Merillou porous BRDF post-process and Hnat's wet extension on Blinn-Phong.
  * Formulas, sources and corrections to the seeds: soak/porous.h. */
 #include "soak/porous.h"
+#include "porous_internal.h"
 
 #include <math.h>
 #include <stddef.h>

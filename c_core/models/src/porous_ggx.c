@@ -2,6 +2,7 @@
  * argument: soak/porous.h (above soak_porous_ggx_params). GGX terms come from
  * soak/ggx.h; pore terms (n_b, A_p) from porous.c. */
 #include "soak/porous.h"
+#include "porous_internal.h"
 
 #include <math.h>
 #include <stddef.h>

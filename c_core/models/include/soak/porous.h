@@ -229,12 +229,4 @@ soak_status soak_porous_ggx_spec_albedo(const soak_porous_ggx *c, double fill, d
 soak_status soak_porous_ggx_albedo_factor(const soak_porous_ggx *c, double fill, double *diffuse_albedo,
                                           double *factor);
 
-/* ---- Unchecked forms for the library's loops (inputs already valid) ---- */
-double soak_porous_nb_raw(double sp, double theta_i, double theta_o);
-double soak_porous_Ap_raw(double ka, double nb);
-/* (1 - A_p) = (1 - k_a)^n_b computed from r = 1 - k_a without cancellation. */
-double soak_porous_keep_raw(double r, double nb);
-/* n-point Gauss-Legendre nodes and weights on [0,1], 2 <= n <= 64. */
-void soak_porous_gauss_legendre_raw(int n, double *x, double *w);
-
 #endif
