@@ -2,6 +2,7 @@
  * (`soak materials --json --table N`). Field names carry their units. */
 #include <cjson/cJSON.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "soak/wetness.h"
 
@@ -148,7 +149,10 @@ static soak_status build(cJSON *root, const soak_preset_db *db, const soak_liqui
     builder b = {1};
     add_str(&b, root, "format", "soak-materials-export");
     add_num(&b, root, "version", 1);
-    add_str(&b, root, "materials_file", soak_presets_path(db));
+    /* the file name only: an absolute build-machine path would make the
+     * output differ between machines */
+    const char *path = soak_presets_path(db), *slash = strrchr(path, '/');
+    add_str(&b, root, "materials_file", slash ? slash + 1 : path);
     add_str(&b, root, "table_liquid", liq->name);
     add_num(&b, root, "table_rows", table_n >= 2 ? table_n : 0);
     add_str(&b, root, "table_note",
