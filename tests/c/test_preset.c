@@ -224,6 +224,42 @@ static void check_malformed(void)
                    "liquids[0].sigma_a_per_mm[1]");
     expect_failure(dir, "wrong format tag", "\"soak-materials\"", "\"other\"", SOAK_ERR_PARSE, "format");
 
+    /* The optional measured group: a file without it (the template, every
+     * file before it existed) loads with has_measured = 0; with it, every key
+     * is required and checked. */
+    const char *wet_end = "\"film_thickness_mm\": 0.5, \"source\": \"s\"}}\n ]";
+    const char *measured = "\"film_thickness_mm\": 0.5, \"source\": \"s\"},\n   \"measured\": {\"wet_dry_ratio\": 0.6, "
+                           "\"spread\": 0.03, \"dry_albedo\": 0.4, \"wetness\": 1, \"quantity\": \"albedo_total\", "
+                           "\"source\": \"m\"}}\n ]";
+    snprintf(path, sizeof path, "%s/variant.json", dir);
+    if (write_variant(path, NULL, NULL) && soak_presets_load(path, &db, err, sizeof err) == SOAK_OK) {
+        check_true("no measured group: has_measured = 0", !soak_presets_find(db, "sand")->has_measured);
+        soak_presets_free(db);
+    }
+    if (write_variant(path, wet_end, measured)) {
+        soak_status st = soak_presets_load(path, &db, err, sizeof err);
+        if (!check_status("measured group loads", st, SOAK_OK)) printf("  %s\n", err);
+        const soak_preset *sm = st == SOAK_OK ? soak_presets_find(db, "sand") : NULL;
+        check_true("measured group read", sm && sm->has_measured && sm->measured_ratio == 0.6 &&
+                                              sm->measured_spread == 0.03 && sm->measured_dry_albedo == 0.4 &&
+                                              sm->measured_wetness == 1.0 && sm->measured_total == 1 &&
+                                              strcmp(sm->measured_source, "m") == 0);
+        if (st == SOAK_OK) soak_presets_free(db);
+        db = NULL;
+        remove(path);
+    }
+    char bad[512];
+    snprintf(bad, sizeof bad, "%s", measured);
+    char *q = strstr(bad, "albedo_total");
+    memcpy(q, "albedo_xxxxx", 12);
+    expect_failure(dir, "measured quantity unknown", wet_end, bad, SOAK_ERR_ARG, "materials[1].measured.quantity");
+    snprintf(bad, sizeof bad, "%s", measured);
+    memcpy(strstr(bad, "0.03"), "-1.0", 4);
+    expect_failure(dir, "measured spread negative", wet_end, bad, SOAK_ERR_ARG, "materials[1].measured.spread");
+    snprintf(bad, sizeof bad, "%s", measured);
+    memcpy(strstr(bad, "\"wetness\""), "\"wetnesz\"", 9);
+    expect_failure(dir, "measured key misspelt", wet_end, bad, SOAK_ERR_PARSE, "materials[1].measured.wetnesz");
+
     err[0] = '\0';
     snprintf(path, sizeof path, "%s/does_not_exist.json", dir);
     check_status("missing file -> IO", soak_presets_load(path, &db, err, sizeof err), SOAK_ERR_IO);
