@@ -100,6 +100,14 @@ extern "C" soak_status soak_image_read(const char *path, soak_image *img, char *
         set_err(err, errlen, std::string(path) + ": volume images are not supported");
         return SOAK_ERR_UNSUPPORTED;
     }
+    double bytes = (double)spec.width * spec.height * ch * sizeof(float);
+    if (bytes > SOAK_IMAGE_MAX_BYTES) {
+        set_err(err, errlen, std::string(path) + ": a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                                 " image needs " + std::to_string((long long)(bytes / 1048576)) +
+                                 " MiB as float pixels; the limit is " +
+                                 std::to_string((long long)(SOAK_IMAGE_MAX_BYTES / 1048576)) + " MiB");
+        return SOAK_ERR_ARG;
+    }
     soak_status st = soak_image_alloc(img, spec.width, spec.height, ch);
     if (st != SOAK_OK) {
         set_err(err, errlen, std::string(path) + ": image size out of range or out of memory");
@@ -113,7 +121,16 @@ extern "C" soak_status soak_image_read(const char *path, soak_image *img, char *
     in->close();
     size_t n = (size_t)img->width * img->height * img->channels;
     for (size_t i = 0; i < n; ++i)
-        if (!std::isfinite(img->pixels[i])) img->pixels[i] = 0.0f;
+        if (!std::isfinite(img->pixels[i])) {
+            size_t px = i / img->channels;
+            set_err(err, errlen, std::string(path) + ": pixel (" + std::to_string(px % img->width) + ", " +
+                                     std::to_string(px / img->width) + ") channel " +
+                                     std::to_string(i % img->channels) + " is " +
+                                     (std::isnan(img->pixels[i]) ? "NaN" : "infinite") +
+                                     ": images must hold finite values");
+            soak_image_free(img);
+            return SOAK_ERR_ARG;
+        }
     return SOAK_OK;
 }
 

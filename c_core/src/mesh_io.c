@@ -112,11 +112,36 @@ static void walk(walk_state *w, const struct aiNode *node, const double *parent)
     for (unsigned ci = 0; ci < node->mNumChildren; ++ci) walk(w, node->mChildren[ci], M);
 }
 
+static int raw_vertices_finite(const struct aiScene *sc, const char *path, char *err, size_t errlen)
+{
+    for (unsigned mi = 0; mi < sc->mNumMeshes; ++mi) {
+        const struct aiMesh *m = sc->mMeshes[mi];
+        for (unsigned vi = 0; vi < m->mNumVertices; ++vi) {
+            const struct aiVector3D *p = &m->mVertices[vi];
+            if (isfinite(p->x) && isfinite(p->y) && isfinite(p->z)) continue;
+            if (err && errlen)
+                snprintf(err, errlen, "%s: vertex %u of mesh %u has a non-finite coordinate (%g, %g, %g)", path, vi + 1,
+                         mi + 1, p->x, p->y, p->z);
+            return 0;
+        }
+    }
+    return 1;
+}
+
 soak_status soak_mesh_import(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen)
 {
     if (!path || !mesh) return SOAK_ERR_NULL;
-    const struct aiScene *sc = aiImportFile(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                                                      aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+    /* Coordinates are checked before post-processing: joining identical
+     * vertices merges a NaN vertex into another one (NaN compares equal in
+     * its spatial sort), leaving a silently degenerate triangle. */
+    const struct aiScene *sc = aiImportFile(path, 0);
+    if (sc && sc->mRootNode && !raw_vertices_finite(sc, path, err, errlen)) {
+        aiReleaseImport(sc);
+        return SOAK_ERR_PARSE;
+    }
+    if (sc && sc->mRootNode)
+        sc = aiApplyPostProcessing(sc, aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                                           aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
     if (!sc || !sc->mRootNode) {
         set_err(err, errlen, "%s: cannot read mesh (%s)", path, aiGetErrorString());
         if (sc) aiReleaseImport(sc);

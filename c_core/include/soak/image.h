@@ -36,8 +36,14 @@ typedef struct soak_image_write_opts {
 soak_status soak_image_alloc(soak_image *img, int width, int height, int channels);
 void soak_image_free(soak_image *img);
 
+/* Largest image soak_image_read decodes: 1 GiB of float pixels (e.g.
+ * 16384 x 16384 x 1, 8192 x 8192 x 4). */
+#define SOAK_IMAGE_MAX_BYTES (1024.0 * 1024.0 * 1024.0)
+
 /* Reads any format OIIO reads, converting to float. err gets a message
- * naming the file on failure. */
+ * naming the file on failure. A NaN or infinite pixel is an error
+ * (SOAK_ERR_ARG naming the pixel), as is an image above SOAK_IMAGE_MAX_BYTES
+ * (refused from its header, before any decoding). */
 soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t errlen);
 
 /* Writes by extension (.exr .png .tif/.tiff .jpg .hdr ...). Linear PNGs carry
