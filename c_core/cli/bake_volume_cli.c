@@ -104,7 +104,8 @@ static int parse_rgb(const char *opt, const char *text, double lo, double hi, so
 static int parse_triple(const char *opt, const char *text, double lo, double hi, double out[3])
 {
     soak_rgb c;
-    if (!strchr(text, ',')) {
+    const char *c1 = strchr(text, ','), *c2 = c1 ? strchr(c1 + 1, ',') : NULL;
+    if (!c2 || strchr(c2 + 1, ',')) {
         cli_error(CMD, "%s: expected three comma-separated values, got '%s'", opt, text);
         return 0;
     }

@@ -67,4 +67,21 @@ scene_with "$SPHERE" "{\"type\": \"map\", \"file\": \"$D/huge.png\"}" >"$D/huge_
 expect_exit 1 "16000^2 environment map" -- "$SOAK" render "$D/huge_sky.json" --width 8 --height 8 --spp 1 -o "$D/o.exr"
 expect_stderr "huge\.png: a 16000x16000 image needs 2929 MiB .* the limit is 1024 MiB" "huge map: states the memory and the limit"
 
+# Silent acceptance in scenes and options (item 8): each a specific error.
+S="$R/scene"
+expect_exit 1 "duplicate key" -- "$SOAK" render "$S/duplicate_key.json" -o "$D/o.exr"
+expect_stderr 'duplicate_key\.json: duplicate key "camera"' "duplicate key: named"
+expect_exit 1 "render.width 31.7" -- "$SOAK" render "$S/fractional_width.json" -o "$D/o.exr"
+expect_stderr "render\.width: must be a whole number, got 31\.7" "width 31.7: not truncated"
+expect_exit 1 "render.spp 2.9" -- "$SOAK" render "$S/fractional_spp.json" -o "$D/o.exr"
+expect_stderr "render\.spp: must be a whole number, got 2\.9" "spp 2.9: not truncated"
+expect_exit 1 "100k nested arrays" -- "$SOAK" render "$S/nested_arrays_100k.json" -o "$D/o.exr"
+expect_stderr "nested deeper than 1000 levels" "nesting: says so"
+expect_exit 1 "NaN in a scene" -- "$SOAK" render "$S/syntax_nan.json" -o "$D/o.exr"
+expect_stderr "JSON syntax error \(NaN/Infinity are not JSON numbers\)" "NaN: hint given"
+expect_exit 1 "trailing comma" -- "$SOAK" render "$S/syntax_comma.json" -o "$D/o.exr"
+expect_stderr "column 25: JSON syntax error$" "trailing comma: no NaN hint"
+expect_exit 2 "--dims 1,2" -- "$SOAK" bake volume --dry-sigma-s 1 --dry-sigma-a 1 --dims 1,2 -o "$D/v"
+expect_stderr "\-\-dims: expected three comma-separated values" "--dims 1,2: asks for three values"
+
 finish
