@@ -202,6 +202,9 @@ extern "C" soak_status soak_image_stage(soak_staged *stage, const char *path, co
     if (o.tone == SOAK_TONE_SRGB) spec.attribute("oiio:ColorSpace", "sRGB");
     else spec.attribute("oiio:ColorSpace", "Linear");
     if (ext == "exr") spec.attribute("compression", "zip");
+    // An empty DateTime keeps OIIO's EXR and TIFF writers from stamping the
+    // clock into the file: the same pixels give the same bytes.
+    spec.attribute("DateTime", "");
     bool integer = type.basetype == TypeDesc::UINT16 || type.basetype == TypeDesc::UINT8;
     std::vector<float> px((size_t)img->width * img->height * img->channels);
     convert_pixels(img, o, integer, px.data());
@@ -247,6 +250,23 @@ static bool texture_reads_back(const char *tmp, int levels, std::string &why)
     return n == levels;
 }
 
+// Every tile from a zero-padded buffer: write_image leaves the padding of
+// partial edge tiles uninitialised, so the same texture got different bytes.
+static bool write_tiles(ImageOutput &w, const ImageSpec &spec, const float *px)
+{
+    const int tw = spec.tile_width, th = spec.tile_height, ch = spec.nchannels;
+    std::vector<float> tile((size_t)tw * th * ch);
+    for (int y0 = 0; y0 < spec.height; y0 += th)
+        for (int x0 = 0; x0 < spec.width; x0 += tw) {
+            std::fill(tile.begin(), tile.end(), 0.0f);
+            for (int y = y0; y < std::min(y0 + th, spec.height); ++y)
+                std::memcpy(&tile[((size_t)(y - y0) * tw) * ch], px + ((size_t)y * spec.width + x0) * ch,
+                            (size_t)(std::min(x0 + tw, spec.width) - x0) * ch * sizeof(float));
+            if (!w.write_tile(x0, y0, 0, TypeDesc::FLOAT, tile.data())) return false;
+        }
+    return true;
+}
+
 // A mip-mapped, tiled TIFF texture as maketx makes it ("Plain Texture",
 // 64x64 tiles, each level half the previous, lanczos3 filtered; TIFF holds
 // the levels as subimages, which readers take as MIP levels). OIIO's
@@ -270,6 +290,7 @@ static soak_status write_tx(const char *tmp, const std::string &path, const soak
         spec.attribute("wrapmodes", "black,black");
         spec.attribute("oiio:ColorSpace", "Linear");
         spec.attribute("compression", "zip");
+        spec.attribute("DateTime", "");
         specs.push_back(spec);
         if (x == 1 && y == 1) break;
     }
@@ -278,7 +299,7 @@ static soak_status write_tx(const char *tmp, const std::string &path, const soak
     bool ok = w->open(tmp, (int)specs.size(), specs.data());
     for (size_t mip = 0; ok && mip < specs.size(); ++mip) {
         ok = (mip == 0 || w->open(tmp, specs[mip], ImageOutput::AppendSubimage)) &&
-             w->write_image(TypeDesc::FLOAT, level.localpixels());
+             write_tiles(*w, specs[mip], (const float *)level.localpixels());
         if (!ok || mip + 1 == specs.size()) break;
         ImageBuf next(ImageSpec(specs[mip + 1].width, specs[mip + 1].height, img->channels, TypeDesc::FLOAT));
         ok = ImageBufAlgo::resize(next, level, "lanczos3");

@@ -172,4 +172,15 @@ ln -s missing/x.png "$D/dangling.png"
 expect_exit 1 "-o a dangling symlink" -- "$SOAK" bake turbulence --width 8 --height 8 -o "$D/dangling.png"
 expect_stderr "symbolic link to a missing file" "dangling link: says so"
 
+# ---- 5. same seed, same bytes (the clock no longer stamps EXR/TIFF) ----
+rm -rf "$D" && mkdir -p "$D"
+for ext in exr tif tx png; do
+    "$SOAK" bake turbulence --width 100 --height 70 --seed 4 --threads 1 -o "$D/a.$ext" 2>/dev/null
+done
+sleep 1.1 # the DateTime stamp has one-second resolution
+for ext in exr tif tx png; do
+    "$SOAK" bake turbulence --width 100 --height 70 --seed 4 --threads 2 -o "$D/b.$ext" 2>/dev/null
+    cmp -s "$D/a.$ext" "$D/b.$ext" && ok "bake .$ext: same bytes a second later on 2 threads" || bad "bake .$ext: bytes differ"
+done
+
 finish
