@@ -67,6 +67,11 @@ scene_with "$SPHERE" "{\"type\": \"map\", \"file\": \"$D/huge.png\"}" >"$D/huge_
 expect_exit 1 "16000^2 environment map" -- "$SOAK" render "$D/huge_sky.json" --width 8 --height 8 --spp 1 -o "$D/o.exr"
 expect_stderr "huge\.png: a 16000x16000 image needs 2929 MiB .* the limit is 1024 MiB" "huge map: states the memory and the limit"
 
+# A 16384^2 render took 10.6 GB and ignored --time: refused up front.
+scene_with "$SPHERE" "$CONST" >"$D/plain.json"
+expect_exit 2 "16384^2 render" -- "$SOAK" render "$D/plain.json" --width 16384 --height 16384 --time 5 -o "$D/o.exr"
+expect_stderr "16384x16384 render needs 13312 MiB .* the limit is 4096 MiB" "16384^2 render: states memory and limit"
+
 # Silent acceptance in scenes and options (item 8): each a specific error.
 S="$R/scene"
 expect_exit 1 "duplicate key" -- "$SOAK" render "$S/duplicate_key.json" -o "$D/o.exr"
