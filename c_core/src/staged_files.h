@@ -1,5 +1,0 @@
-/* Internal name of the staged output set; the API is public in soak/staged.h. */
-#ifndef SOAK_STAGED_FILES_H
-#define SOAK_STAGED_FILES_H
-#include "soak/staged.h"
-#endif
