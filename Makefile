@@ -5,7 +5,7 @@ BUILD      ?= build
 BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc)
 
-.PHONY: all deps build build-asan demo test test-release test-asan bench clean
+.PHONY: all deps build build-asan demo test test-release test-asan bench fuzz clean
 
 all: build
 
@@ -41,8 +41,18 @@ test-asan: build-asan
 
 test: test-release test-asan
 
+# libFuzzer runs of tests/fuzz's targets (clang needed; not part of make test,
+# which replays the stored corpora and reproducers in every build).
+# FUZZ_SECONDS per target (default 900: an hour for the four).
+BUILD_FUZZ   ?= build-fuzz
+FUZZ_SECONDS ?= 900
+fuzz: deps
+	@CC=clang CXX=clang++ cmake -S . -B $(BUILD_FUZZ) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOAK_SANITIZE=ON -DSOAK_FUZZ=ON > $(BUILD_FUZZ).configure.log || (cat $(BUILD_FUZZ).configure.log; exit 1)
+	@cmake --build $(BUILD_FUZZ) -j $(JOBS) --target fuzz_scene fuzz_preset fuzz_image fuzz_mesh
+	@bash tests/fuzz/run.sh $(BUILD_FUZZ) $(FUZZ_SECONDS)
+
 bench: build
 	@bash c_core/bench/run.sh $(BUILD)
 
 clean:
-	rm -rf $(BUILD) $(BUILD_ASAN) $(BUILD).configure.log $(BUILD_ASAN).configure.log
+	rm -rf $(BUILD) $(BUILD_ASAN) $(BUILD_FUZZ) $(BUILD).configure.log $(BUILD_ASAN).configure.log $(BUILD_FUZZ).configure.log

@@ -230,6 +230,7 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
         if (err && errlen) snprintf(err, errlen, "render options out of range");
         return SOAK_ERR_ARG;
     }
+    double t_start = now_seconds(); /* --time covers every phase */
     render_job *j = calloc(1, sizeof *j);
     if (!j) return SOAK_ERR_NOMEM;
     j->ctx.scene = scene;
@@ -244,7 +245,8 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
     soak_status st = rt_env_build(&j->ctx.env, &scene->env);
     if (st == SOAK_OK && scene->caustic_photons > 0) {
         /* Photons are traced before the render, from the same seed. */
-        st = rt_photons_build(&j->ctx, scene->caustic_photons, scene->caustic_radius, opt->seed, &j->caustics);
+        st = rt_photons_build(&j->ctx, scene->caustic_photons, scene->caustic_radius, opt->seed, opt->cancel,
+                              opt->time_limit > 0 ? t_start + opt->time_limit : 0, &j->caustics);
         if (st == SOAK_OK) j->ctx.caustics = &j->caustics;
     }
     if (st != SOAK_OK) {
@@ -329,7 +331,7 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
         /* Short waits first so tiny renders (tests) do not idle. */
         struct timespec ts = {0, wait_ms * 1000 * 1000};
         nanosleep(&ts, NULL);
-        if ((opt->cancel && *opt->cancel) || (opt->time_limit > 0 && now_seconds() - t0 > opt->time_limit))
+        if ((opt->cancel && *opt->cancel) || (opt->time_limit > 0 && now_seconds() - t_start > opt->time_limit))
             atomic_store(&j->stop, 1);
         if (opt->progress)
             opt->progress(opt->progress_ctx, (double)atomic_load(&j->done_items) / (double)j->total_items);

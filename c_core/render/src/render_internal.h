@@ -2,6 +2,7 @@
 #ifndef SOAK_RENDER_INTERNAL_H
 #define SOAK_RENDER_INTERNAL_H
 
+#include <signal.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -260,7 +261,10 @@ typedef struct rt_photon_map {
 
 /* Traces n photons from the sun and point lights through dielectric objects
  * and stores them at their first scattering event inside a wet medium. */
-soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed, rt_photon_map *map);
+/* Stops early (keeping what is traced, rescaled) when *cancel becomes
+ * non-zero or the monotonic clock passes deadline (0: none). */
+soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed,
+                             const volatile sig_atomic_t *cancel, double deadline, rt_photon_map *map);
 void rt_photons_free(rt_photon_map *map);
 /* sigma_s L_s estimate: sum over photons of object obj within the radius of
  * p(cos) * power / (4/3 pi r^3), cos between the photon's propagation and the
