@@ -22,6 +22,7 @@ build-asan: deps
 
 demo: build
 	@$(BUILD)/bin/soak demo --out out/demo
+	@bash povray/render_scenes.sh $(BUILD)/bin/soak out/demo/povray full
 
 test-release: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
