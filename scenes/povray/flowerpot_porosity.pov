@@ -5,7 +5,7 @@
 global_settings { assumed_gamma 1.0 ambient_light 1 }
 #declare Soak_Ambient = 0.15;
 #include "soak.inc"
-camera { location <0, -12, 4> look_at <0, 0, 1> sky z up z right -x * 2.4 angle 50 }
+camera { location <0, -24, 7> look_at <0, 0, 0.8> sky z up z right -x * 2.67 angle 50 }
 light_source { <-0.4, -0.8, 0.8> * 1e4 rgb 1 parallel point_at 0 }
 sky_sphere { pigment { gradient z color_map { [0 rgb 0.7] [1 rgb <0.35, 0.45, 0.7>] } } }
 plane { z, 0 pigment { rgb 0.5 } finish { ambient 0.15 diffuse 1 } }
