@@ -1,0 +1,73 @@
+/* Small vector and colour types. Directions passed to the models are unit
+ * vectors in the local shading frame: the surface normal is +z and the
+ * upper hemisphere (the side of the air) is z > 0. */
+#ifndef SOAK_VEC_H
+#define SOAK_VEC_H
+
+#include <math.h>
+
+typedef struct soak_vec3 {
+    double x, y, z;
+} soak_vec3;
+
+typedef struct soak_rgb {
+    double r, g, b;
+} soak_rgb;
+
+static inline soak_vec3 soak_v3(double x, double y, double z)
+{
+    soak_vec3 v = {x, y, z};
+    return v;
+}
+static inline soak_vec3 soak_v3_add(soak_vec3 a, soak_vec3 b) { return soak_v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline soak_vec3 soak_v3_sub(soak_vec3 a, soak_vec3 b) { return soak_v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline soak_vec3 soak_v3_scale(soak_vec3 a, double s) { return soak_v3(a.x * s, a.y * s, a.z * s); }
+static inline double soak_v3_dot(soak_vec3 a, soak_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline soak_vec3 soak_v3_cross(soak_vec3 a, soak_vec3 b)
+{
+    return soak_v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static inline double soak_v3_len(soak_vec3 a) { return sqrt(soak_v3_dot(a, a)); }
+static inline soak_vec3 soak_v3_norm(soak_vec3 a)
+{
+    double l = soak_v3_len(a);
+    return l > 0.0 ? soak_v3_scale(a, 1.0 / l) : a;
+}
+/* Unit direction from polar angle theta (from +z) and azimuth phi, radians. */
+static inline soak_vec3 soak_v3_polar(double theta, double phi)
+{
+    double s = sin(theta);
+    return soak_v3(s * cos(phi), s * sin(phi), cos(theta));
+}
+/* Orthonormal basis (t, b) around unit n (Duff et al. 2017, JCGT 6(1)). */
+static inline void soak_v3_basis(soak_vec3 n, soak_vec3 *t, soak_vec3 *b)
+{
+    double sign = copysign(1.0, n.z);
+    double a = -1.0 / (sign + n.z);
+    double c = n.x * n.y * a;
+    *t = soak_v3(1.0 + sign * n.x * n.x * a, sign * c, -sign * n.x);
+    *b = soak_v3(c, sign + n.y * n.y * a, -n.y);
+}
+
+static inline soak_rgb soak_rgb3(double r, double g, double b)
+{
+    soak_rgb c = {r, g, b};
+    return c;
+}
+static inline double soak_rgb_at(soak_rgb c, int i) { return i == 0 ? c.r : (i == 1 ? c.g : c.b); }
+/* Largest channel (plain comparisons: no libm call in the tracer's loops). */
+static inline double soak_rgb_max(soak_rgb c)
+{
+    double m = c.r > c.g ? c.r : c.g;
+    return m > c.b ? m : c.b;
+}
+static inline void soak_rgb_set(soak_rgb *c, int i, double v)
+{
+    if (i == 0) c->r = v; else if (i == 1) c->g = v; else c->b = v;
+}
+
+#define SOAK_PI 3.14159265358979323846
+#define SOAK_INV_PI 0.31830988618379067154
+#define SOAK_INV_4PI 0.07957747154594766788
+
+#endif
