@@ -58,15 +58,19 @@ def camera(span):
 
 
 def layered_material(exp, name, w):
-    """The model the tables represent, traced exactly: the core's film (Lekner-Dorf,
-    coverage c) over a Lambertian base of the core's subsurface albedo (step 4)."""
+    """The model the tables represent, traced exactly: the core's liquid-air interface
+    (wetness.h step 5, Lekner-Dorf) over a Lambertian base of the core's subsurface
+    albedo (step 4). The interface covers the film's area c plus the uncovered pores'
+    area (1 - c) a, a = water_specular_weight (zero-thickness pore water; a clear
+    liquid's film thickness does not matter for water's absorption)."""
     m = next(m for m in exp["materials"] if m["name"] == name)
     liq = next(l for l in exp["liquids"] if l["name"] == "water")
     k = m["liquids"]["water"]["knots"]
     i = k["wetness"].index(w)
     unit_m = UNIT_MM / 1000.0
     film = {"ior": liq["ior"], "thickness": m["film_thickness_m"] / unit_m,
-            "absorption": [a * unit_m for a in liq["sigma_a_per_m"]], "coverage": k["film_coverage"][i]}
+            "absorption": [a * unit_m for a in liq["sigma_a_per_m"]],
+            "coverage": k["film_coverage"][i] + (1 - k["film_coverage"][i]) * k["water_specular_weight"][i]}
     if m["kind"] == "conductor":
         return None
     if m["kind"] == "thin_sheet":
@@ -216,16 +220,8 @@ def main():
     def coverage(name, w):
         m = next(m for m in exp["materials"] if m["name"] == name)
         k = m["liquids"]["water"]["knots"]
-        return k["film_coverage"][k["wetness"].index(w)]
-
-    def pore_reflection(name, w):
-        """Radiance of the sky reflected by the liquid in uncovered pores: soak.inc
-        adds it (reflection weight (1 - c) * water_specular_weight), the traced
-        layered reference has no such lobe."""
-        m = next(m for m in exp["materials"] if m["name"] == name)
-        k = m["liquids"]["water"]["knots"]
         i = k["wetness"].index(w)
-        return (1 - k["film_coverage"][i]) * k["water_specular_weight"][i] * fresnel(1.0, n_water) * SKY_L
+        return k["film_coverage"][i] + (1 - k["film_coverage"][i]) * k["water_specular_weight"][i]
 
     ground = render_pair(soak, root, tmp, "ground", patches, SUN_DIR, SKY_L, 2.0, spp, exp)
     collect("ground", patches, ground, coverage)
@@ -244,7 +240,6 @@ def main():
     # Error budget (povray/README.md, "Measured error"): relative
     #   noise: 4 standard errors of the reference's region mean;
     #   tables: linear interpolation 0.002 (absolute) and half-float EXR output 1e-3 relative;
-    #   pores: the sky reflected by the liquid in uncovered pores (pore_reflection);
     #   film: c * 1.5 * film_angle_bound (POV-Ray's pigment cannot vary with the light's angle);
     #   metals: 0.03 (POV-Ray mirror at F0 under the film vs GGX alpha 0.05 directional albedo);
     #   sheets: 0.35 (Kubelka-Munk two-flux vs the traced slab, measured in tests/c/test_sheet.c,
@@ -252,7 +247,7 @@ def main():
     def budget(tag, ref, err, cov, name="", w=0.0):
         b = 4 * err / max(ref, 1e-9) + 0.002 / max(ref, 1e-9) + 1e-3
         if tag == "ground":
-            b += cov * film_b + pore_reflection(name, w) / max(ref, 1e-9)
+            b += cov * film_b  # cov: the interface's area (film + pore water)
         elif tag == "metal":
             b += 0.03
         elif tag == "backlit":
