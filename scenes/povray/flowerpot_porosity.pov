@@ -1,11 +1,12 @@
-// The flowerpot porosity sweep: one terracotta colour, fully wet, with the
-// wetting class of presets of increasing porosity (left to right): the more
-// porous, the darker the wet pot; the glaze-like non-porous one only gains a film.
+// The flowerpot porosity sweep: one terracotta colour, each pot with its pores
+// just full (wetness = the preset's saturation, no film yet), with the wetting
+// class of presets of increasing porosity (left to right; the leftmost, the
+// non-porous class, stays dry): the more porous, the darker and glossier.
 #version 3.7;
 global_settings { assumed_gamma 1.0 ambient_light 1 }
 #declare Soak_Ambient = 0.15;
 #include "soak.inc"
-camera { location <0, -24, 7> look_at <0, 0, 0.8> sky z up z right -x * 2.67 angle 50 }
+camera { location <0, -17, 5> look_at <0, 0, 0.8> sky z up z right -x * 2.67 angle 62 }
 light_source { <-0.4, -0.8, 0.8> * 1e4 rgb 1 parallel point_at 0 }
 sky_sphere { pigment { gradient z color_map { [0 rgb 0.7] [1 rgb <0.35, 0.45, 0.7>] } } }
 plane { z, 0 pigment { rgb 0.5 } finish { ambient 0.15 diffuse 1 } }
@@ -34,7 +35,7 @@ plane { z, 0 pigment { rgb 0.5 } finish { ambient 0.15 diffuse 1 } }
       difference { cone { 0, 0.55, <0, 0, 1.4>, 0.8 } cone { <0, 0, 0.1>, 0.47, <0, 0, 1.45>, 0.72 } }
       torus { 0.78, 0.06 rotate x * 90 translate z * 1.4 }
       translate <(K - 4) * 1.9, 0, 0>
-      Soak_Wet_User_Material(Soak_Preset_Names[P], "water", 1, Terracotta)
+      Soak_Wet_User_Material(Soak_Preset_Names[P], "water", Soak_Preset_Saturation[P], Terracotta)
     }
     #declare K = K + 1;
   #end
