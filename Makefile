@@ -22,6 +22,7 @@ build-asan: deps
 
 demo: build
 	@$(BUILD)/bin/soak demo --out out/demo
+	@bash povray/render_scenes.sh $(BUILD)/bin/soak out/demo/povray full
 
 # Each pass lists the skipped tests with their reasons and fails when a test
 # failed, was skipped for want of povray or blender (the set-up installs
