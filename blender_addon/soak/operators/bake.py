@@ -3,6 +3,7 @@
 material's wetness source."""
 
 import os
+import shutil
 import subprocess
 import tempfile
 
@@ -69,6 +70,12 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
         return True
 
     def _finish(self, context):
+        try:
+            return self._load(context)
+        finally:
+            shutil.rmtree(self._dir, ignore_errors=True)
+
+    def _load(self, context):
         out, err = self._proc.communicate()
         if self._proc.returncode != 0:
             msg = (err or out or "").strip().splitlines()
@@ -108,6 +115,7 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
         if event.type == "ESC":
             self._proc.terminate()
             self._proc.wait()
+            shutil.rmtree(self._dir, ignore_errors=True)
             self._stop(context)
             self.report({"WARNING"}, "wet-map bake cancelled")
             return {"CANCELLED"}
