@@ -15,7 +15,11 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: soak materials [--json] [--table N] [--liquid NAME] [--materials FILE]\n\n"
             "Lists the material presets: kind, porosity, index, dry albedo and the\n"
-            "albedo when fully wet (wetness 1, steady state) with the chosen liquid.\n\n"
+            "albedo when fully wet (wetness 1, steady state) with the chosen liquid,\n"
+            "the wet/dry ratio of the total reflectance (film specular included), and\n"
+            "for presets calibrated against a published measurement the measured\n"
+            "ratio +- its spread beside the model's ratio at the measured sample's dry\n"
+            "albedo (docs/calibration.md; the measurement is for water).\n\n"
             "options:\n"
             "  --json            print every preset and liquid with all fields, sources\n"
             "                    and derived sigma_s/sigma_a (1/mm) as JSON on stdout\n"
@@ -33,11 +37,38 @@ static void usage(FILE *out)
 
 static void print_rgb(soak_rgb c) { printf("%6.3f %6.3f %6.3f", c.r, c.g, c.b); }
 
+/* The chain's wet/dry ratio at the measured sample's grey dry albedo (the
+ * comparison of docs/calibration.md and tests/c/test_calibration.c). */
+static soak_status measured_model_ratio(const soak_preset *p, const soak_liquid *liq, double *ratio)
+{
+    soak_preset q = *p;
+    double dry = p->measured_dry_albedo;
+    q.albedo = soak_rgb3(dry, dry, dry);
+    soak_status st = soak_preset_derive(&q);
+    soak_wet_input in = soak_wet_input_steady(&q, p->measured_wetness);
+    soak_wet_params o;
+    if (st == SOAK_OK) st = soak_wetness_eval(&q, liq, &in, &o);
+    if (st == SOAK_OK) *ratio = (p->measured_total ? o.albedo_total.g : o.albedo.g) / dry;
+    return st;
+}
+
+static double mean_ratio(soak_rgb wet, soak_rgb dry)
+{
+    double s = 0.0;
+    int n = 0;
+    for (int c = 0; c < 3; ++c)
+        if (soak_rgb_at(dry, c) > 0.0) {
+            s += soak_rgb_at(wet, c) / soak_rgb_at(dry, c);
+            ++n;
+        }
+    return n ? s / n : 0.0;
+}
+
 static int print_summary(const soak_preset_db *db, const soak_liquid *liq)
 {
     printf("presets from %s; wet = wetness 1, steady state, liquid %s\n\n", soak_presets_path(db), liq->name);
-    printf("%-10s %-20s %8s %6s  %-20s  %-20s  %s\n", "name", "kind", "porosity", "ior", "dry albedo R G B",
-           "wet albedo R G B", "mean cos dry->wet");
+    printf("%-10s %-20s %8s %6s  %-20s  %-20s  %-17s  %7s  %s\n", "name", "kind", "porosity", "ior",
+           "dry albedo R G B", "wet albedo R G B", "mean cos dry->wet", "wet/dry", "measured wet/dry | model at sample");
     for (int i = 0; i < soak_presets_count(db); ++i) {
         const soak_preset *p = soak_presets_at(db, i);
         soak_wet_input in = soak_wet_input_steady(p, 1.0);
@@ -60,9 +91,20 @@ static int print_summary(const soak_preset_db *db, const soak_liquid *liq)
         printf("  ");
         print_rgb(wet.albedo);
         if (p->kind == SOAK_KIND_CONDUCTOR)
-            printf("  -\n");
+            printf("  %-17s", "-");
         else
-            printf("  %.3f -> %.3f\n", soak_hg2_mean_cosine(&p->phase_dry), wet.mean_cosine);
+            printf("  %.3f -> %.3f    ", soak_hg2_mean_cosine(&p->phase_dry), wet.mean_cosine);
+        printf("  %7.3f  ", mean_ratio(wet.albedo_total, p->albedo));
+        double model = 0.0;
+        if (!p->has_measured) {
+            printf("-\n");
+        } else if ((st = measured_model_ratio(p, liq, &model)) != SOAK_OK) {
+            cli_error(CMD, "%s: wetness mapping at the measured dry albedo failed: %s", p->name, soak_status_str(st));
+            return SOAK_EXIT_FAIL;
+        } else {
+            printf("%.3f +- %.3f | %.3f (dry %.3f)\n", p->measured_ratio, p->measured_spread, model,
+                   p->measured_dry_albedo);
+        }
     }
     printf("\nliquids:");
     for (int i = 0; i < soak_presets_liquid_count(db); ++i) printf(" %s", soak_presets_liquid_at(db, i)->name);

@@ -185,8 +185,13 @@ static void test_base_errors(const soak_preset *p, const soak_liquid *l)
                  SOAK_ERR_ARG);
     check_status("base NULL rejected", soak_wet_params_for_base(p, l, NULL, (soak_rgb){0.5, 0.5, 0.5}, &o),
                  SOAK_ERR_NULL);
-    double k[4];
+    double k[SOAK_EXPORT_KNOTS_MAX];
     int n = 0;
+    /* hard cases: no film at all, and a 1 m deep layer of liquid */
+    check_status("knots: zero film thickness", soak_export_knots(p, l, 0.0, k, SOAK_EXPORT_KNOTS_MAX, &n), SOAK_OK);
+    check_status("knots: 1 m film", soak_export_knots(p, l, 1.0, k, SOAK_EXPORT_KNOTS_MAX, &n), SOAK_OK);
+    check_status("knots: film thickness above 1 m rejected", soak_export_knots(p, l, 1.5, k, SOAK_EXPORT_KNOTS_MAX, &n),
+                 SOAK_ERR_ARG);
     check_status("knots: room for too few", soak_export_knots(p, l, -1.0, k, 1, &n), SOAK_ERR_ARG);
     check_status("knots: NaN film thickness", soak_export_knots(p, l, NAN, k, 4, &n), SOAK_ERR_ARG);
 }

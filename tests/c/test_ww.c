@@ -503,7 +503,43 @@ static void test_triace_eval(void)
     }
     soak_ww m = dielectric(1.2, 1.5, 0.3, 0.5);
     soak_ww_triace t;
-    check_status("triace setup rejects n_water != 1.33", soak_ww_triace_setup(&m, &t), SOAK_ERR_ARG);
+    check_status("triace setup rejects n_water 1.2 (outside 1.30-1.36)", soak_ww_triace_setup(&m, &t), SOAK_ERR_ARG);
+    m.n_water = 1.37;
+    check_status("triace setup rejects n_water 1.37", soak_ww_triace_setup(&m, &t), SOAK_ERR_ARG);
+    m.n_water = NAN;
+    check_status("triace setup rejects NaN n_water", soak_ww_triace_setup(&m, &t), SOAK_ERR_ARG);
+
+    /* The shipped water, n = 1.333: the same grid against the exact model
+     * at 1.333 (its Fresnel terms use 1.333, the refraction polynomial is the
+     * 1.33 fit). */
+    double e133[5] = {0}, e133_60[5] = {0};
+    for (int k = 0; k < 5; ++k) {
+        soak_ww mk = mats[k];
+        mk.n_water = 1.333;
+        double ff, fe;
+        check_status("triace setup accepts n_water 1.333", soak_ww_triace_setup(&mk, &t), SOAK_OK);
+        soak_ww_eval_triace(&t, up, up, &ff);
+        soak_ww_eval(&mk, up, up, &fe);
+        char what[120];
+        snprintf(what, sizeof what, "n 1.333: fast = exact at normal incidence, %s", names[k]);
+        check_rel(what, ff, fe, 1e-12);
+        for (int ti = 0; ti <= 17; ++ti)
+            for (int to = 0; to <= 17; ++to)
+                for (int ph = 0; ph < 2; ++ph) {
+                    double a = ti * 5.0 * DEG, b = to * 5.0 * DEG;
+                    soak_vec3 wi = soak_v3(sin(a), 0.0, cos(a));
+                    soak_vec3 wo = soak_v3(ph ? -sin(b) : sin(b), 0.0, cos(b));
+                    soak_ww_eval_triace(&t, wi, wo, &ff);
+                    soak_ww_eval(&mk, wi, wo, &fe);
+                    e133[k] = fmax(e133[k], fabs(ff - fe) / fe);
+                    if (ti <= 12 && to <= 12) e133_60[k] = fmax(e133_60[k], fabs(ff - fe) / fe);
+                }
+        printf("       n 1.333 %-28s full fast eval max rel err: %.4f [%.4f] (n 1.33: %.4f [%.4f])\n", names[k],
+               e133[k], e133_60[k], e_full[k], e_full60[k]);
+        snprintf(what, sizeof what, "n 1.333: error within 0.02 of the 1.33 fit's (all), 0.005 (<= 60 deg), %s",
+                 names[k]);
+        check_true(what, e133[k] <= e_full[k] + 0.02 && e133_60[k] <= e_full60[k] + 0.005);
+    }
 }
 
 static void test_validation(void)

@@ -1,0 +1,109 @@
+/* soak export: the table of target writers, the reproducible header and the
+ * atomic file output every target shares. */
+#define _POSIX_C_SOURCE 200809L
+#include "soak/export.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "soak/staged_files.h"
+
+static const soak_export_target targets[] = {
+    {"json", "generic JSON interface (schema: c_core/data/export.schema.json)", "soak_export.json",
+     soak_export_write_json},
+    {"povray", "POV-Ray include with per-preset, per-liquid tables (povray/soak_materials.inc)", "soak_materials.inc",
+     soak_export_write_povray},
+    {"blender", "data shipped inside the Blender add-on (blender_addon/soak/)", "soak_data.json",
+     soak_export_write_blender},
+    {"osl", "OSL shader math for Cycles (osl/)", "soak_wet.osl", soak_export_write_osl},
+};
+
+const soak_export_target *soak_export_targets(int *count)
+{
+    if (count) *count = (int)(sizeof targets / sizeof targets[0]);
+    return targets;
+}
+
+const soak_export_target *soak_export_find_target(const char *name)
+{
+    if (!name) return NULL;
+    for (size_t i = 0; i < sizeof targets / sizeof targets[0]; ++i)
+        if (strcmp(targets[i].name, name) == 0) return &targets[i];
+    return NULL;
+}
+
+/* FNV-1a, 64 bit: a content fingerprint, not a security hash. */
+static uint64_t fnv1a64(const unsigned char *p, size_t n, uint64_t h)
+{
+    for (size_t i = 0; i < n; ++i) {
+        h ^= p[i];
+        h *= 0x100000001b3ULL;
+    }
+    return h;
+}
+
+soak_status soak_export_header_make(const soak_preset_db *db, soak_export_header *h)
+{
+    if (!db || !h) return SOAK_ERR_NULL;
+    memset(h, 0, sizeof *h);
+    h->generator = SOAK_EXPORT_GENERATOR;
+    h->format_version = SOAK_EXPORT_FORMAT_VERSION;
+    const char *path = soak_presets_path(db);
+    const char *slash = strrchr(path, '/');
+    snprintf(h->materials_file, sizeof h->materials_file, "%s", slash ? slash + 1 : path);
+    FILE *f = fopen(path, "rb");
+    if (!f) return SOAK_ERR_IO;
+    uint64_t hash = 0xcbf29ce484222325ULL;
+    unsigned char buf[8192];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0) hash = fnv1a64(buf, n, hash);
+    int bad = ferror(f);
+    fclose(f);
+    if (bad) return SOAK_ERR_IO;
+    snprintf(h->materials_hash, sizeof h->materials_hash, "%016llx", (unsigned long long)hash);
+    return SOAK_OK;
+}
+
+static soak_status write_all(const char *text, size_t len, FILE *f)
+{
+    if (len && fwrite(text, 1, len, f) != len) return SOAK_ERR_IO;
+    return fflush(f) == 0 ? SOAK_OK : SOAK_ERR_IO;
+}
+
+soak_status soak_export_run(const soak_export_target *target, const soak_preset_db *db, const char *path, char *err,
+                            size_t errlen)
+{
+    if (!target || !db || !err || !errlen) return SOAK_ERR_NULL;
+    err[0] = '\0';
+    char *text = NULL;
+    size_t len = 0;
+    FILE *mem = open_memstream(&text, &len);
+    if (!mem) return SOAK_ERR_NOMEM;
+    soak_status st = target->write(db, mem, err, errlen);
+    if (fclose(mem) != 0 && st == SOAK_OK) st = SOAK_ERR_NOMEM;
+    if (st != SOAK_OK) {
+        free(text);
+        return st;
+    }
+    if (!path || strcmp(path, "-") == 0) {
+        st = write_all(text, len, stdout);
+        if (st != SOAK_OK) snprintf(err, errlen, "writing to stdout failed");
+        free(text);
+        return st;
+    }
+    soak_staged staged;
+    soak_staged_init(&staged);
+    FILE *f = NULL;
+    st = soak_staged_open(&staged, path, &f, err, errlen);
+    if (st == SOAK_OK) {
+        st = write_all(text, len, f);
+        if (st != SOAK_OK) snprintf(err, errlen, "%s: write failed", path);
+        soak_status cs = soak_staged_close(f, path, err, errlen);
+        if (st == SOAK_OK) st = cs;
+    }
+    free(text);
+    if (st == SOAK_OK) return soak_staged_commit(&staged, err, errlen);
+    soak_staged_abort(&staged);
+    return st;
+}

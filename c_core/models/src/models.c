@@ -1,0 +1,223 @@
+/* Adapters from soak_model_params to each model's own API (soak/models.h). */
+#include "soak/models.h"
+
+#include <string.h>
+
+#include "soak/film.h"
+#include "soak/ggx.h"
+#include "soak/porous.h"
+#include "soak/ww.h"
+
+_Static_assert(sizeof(soak_porous_ggx) + sizeof(double) <= sizeof(soak_model_ctx), "model context too small");
+
+void soak_model_params_default(soak_model_params *p)
+{
+    p->albedo = 0.5;
+    p->ior = 1.5;
+    p->k = 0.0;
+    p->roughness = 0.3;
+    p->n_film = 1.33;
+    p->absorption = 0.35;
+    p->thickness = 1e-3;
+    p->porosity = 0.3;
+    p->sp = 2.0;
+    p->fill = 1.0;
+    p->ks = 0.05;
+    p->ks_water = 0.02;
+}
+
+static int unit(soak_vec3 v) { return soak_in_range(soak_v3_dot(v, v), 1.0 - 1e-5, 1.0 + 1e-5); }
+
+soak_status soak_model_eval(const soak_model *m, const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo, double *f)
+{
+    if (!m || !ctx || !f) return SOAK_ERR_NULL;
+    if (!unit(wi) || !unit(wo)) return SOAK_ERR_ARG;
+    if (!(wi.z > 0.0 && wo.z > 0.0)) {
+        *f = 0.0;
+        return SOAK_OK;
+    }
+    double v;
+    soak_status st = m->eval(ctx, wi, wo, &v);
+    if (st != SOAK_OK) return st;
+    if (!(v >= 0.0 && v <= 1e300)) return SOAK_ERR_NUMERIC;
+    *f = v;
+    return SOAK_OK;
+}
+
+/* --- Lambert ------------------------------------------------------------ */
+typedef struct { double albedo; } lambert_ctx;
+static soak_status lambert_setup(const soak_model_params *p, soak_model_ctx *c)
+{
+    if (!soak_in_range(p->albedo, 0.0, 1.0)) return SOAK_ERR_ARG;
+    ((lambert_ctx *)c->bytes)->albedo = p->albedo;
+    return SOAK_OK;
+}
+static soak_status lambert_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
+{
+    (void)wi;
+    (void)wo;
+    *f = ((const lambert_ctx *)c->bytes)->albedo * SOAK_INV_PI;
+    return SOAK_OK;
+}
+
+/* --- GGX base, dry --------------------------------------------------------- */
+typedef struct { double alpha, eta, k; } ggx_ctx;
+static soak_status ggx_setup(const soak_model_params *p, soak_model_ctx *c)
+{
+    ggx_ctx *g = (ggx_ctx *)c->bytes;
+    g->alpha = p->roughness;
+    g->eta = p->ior;
+    g->k = p->k;
+    double f;
+    /* Validate through the model itself at normal incidence. */
+    soak_vec3 n = soak_v3(0, 0, 1);
+    return p->k > 0.0 ? soak_ggx_brdf_conductor(p->roughness, p->ior, p->k, n, n, &f)
+                      : soak_ggx_brdf_dielectric(p->roughness, p->ior, n, n, &f);
+}
+static soak_status ggx_dielectric_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
+{
+    const ggx_ctx *g = (const ggx_ctx *)c->bytes;
+    return soak_ggx_brdf_dielectric(g->alpha, g->eta, wi, wo, f);
+}
+static soak_status ggx_conductor_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
+{
+    const ggx_ctx *g = (const ggx_ctx *)c->bytes;
+    return soak_ggx_brdf_conductor(g->alpha, g->eta, g->k, wi, wo, f);
+}
+
+/* --- Lekner-Dorf film over Lambert ----------------------------------------- */
+typedef struct { soak_film film; soak_film_ctx ctx; double albedo; } film_ctx;
+static soak_status film_setup(const soak_model_params *p, soak_model_ctx *c)
+{
+    film_ctx *m = (film_ctx *)c->bytes;
+    m->film.n = p->n_film;
+    m->film.alpha = p->absorption;
+    m->film.thickness = p->thickness;
+    m->albedo = p->albedo;
+    if (!soak_in_range(p->albedo, 0.0, 1.0)) return SOAK_ERR_ARG;
+    return soak_film_setup(&m->film, &m->ctx);
+}
+static soak_status film_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
+{
+    const film_ctx *m = (const film_ctx *)c->bytes;
+    return soak_film_brdf(&m->film, m->albedo, wi, wo, f);
+}
+static soak_status film_ctx_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
+{
+    const film_ctx *m = (const film_ctx *)c->bytes;
+    return soak_film_ctx_brdf(&m->ctx, m->albedo, wi, wo, f);
+}
+
+/* --- Weidlich-Wilkie with a water layer, and the Tri-Ace fast path ---------- */
+typedef struct { soak_ww ww; soak_ww_triace fast; } ww_ctx;
+static soak_status ww_setup(const soak_model_params *p, soak_model_ctx *c)
+{
+    ww_ctx *m = (ww_ctx *)c->bytes;
+    soak_ww_default(&m->ww);
+    m->ww.base = p->k > 0.0 ? SOAK_WW_CONDUCTOR : SOAK_WW_DIELECTRIC;
+    m->ww.n_water = p->n_film;
+    m->ww.absorption = p->absorption;
+    m->ww.thickness = p->thickness;
+    m->ww.alpha = p->roughness;
+    m->ww.n_base = p->ior;
+    m->ww.k_base = p->k;
+    m->ww.kd = m->ww.base == SOAK_WW_DIELECTRIC ? p->albedo : 0.0;
+    return soak_ww_validate(&m->ww);
+}
+static soak_status ww_triace_setup(const soak_model_params *p, soak_model_ctx *c)
+{
+    soak_status st = ww_setup(p, c);
+    if (st != SOAK_OK) return st;
+    ww_ctx *m = (ww_ctx *)c->bytes;
+    return soak_ww_triace_setup(&m->ww, &m->fast); /* n_water in [SOAK_WW_TRIACE_N_MIN, _MAX] */
+}
+static soak_status ww_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
+{
+    return soak_ww_eval(&((const ww_ctx *)c->bytes)->ww, wi, wo, f);
+}
+static soak_status ww_triace_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
+{
+    return soak_ww_eval_triace(&((const ww_ctx *)c->bytes)->fast, wi, wo, f);
+}
+
+/* --- Merillou porous + Hnat wetting (Blinn-Phong), and the GGX variant ----- */
+typedef struct { soak_porous_params p; double fill; } porous_ctx;
+static soak_status porous_setup(const soak_model_params *p, soak_model_ctx *c)
+{
+    porous_ctx *m = (porous_ctx *)c->bytes;
+    memset(&m->p, 0, sizeof m->p);
+    m->p.kd = p->albedo;
+    m->p.ks = p->ks;
+    /* Beckmann RMS slope from GGX alpha (same second moment) and seed 001's
+     * Blinn-Phong exponent n = 2/m^2 - 2, clamped at 0. */
+    m->p.m = p->roughness;
+    double n = 2.0 / (p->roughness * p->roughness) - 2.0;
+    m->p.spec_power = n < 0.0 ? 0.0 : (n > SOAK_POROUS_POWER_MAX ? SOAK_POROUS_POWER_MAX : n);
+    m->p.porosity = p->porosity;
+    m->p.sp = p->sp;
+    m->p.ks_water = p->ks_water;
+    m->p.water_power = 200.0;
+    m->p.norm = SOAK_BLINN_NORM_ENERGY;
+    m->fill = p->fill;
+    if (!soak_in_range(p->fill, 0.0, 1.0)) return SOAK_ERR_ARG;
+    return soak_porous_validate(&m->p);
+}
+static soak_status porous_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
+{
+    const porous_ctx *m = (const porous_ctx *)c->bytes;
+    return soak_porous_eval(&m->p, m->fill, wi, wo, f);
+}
+
+typedef struct { soak_porous_ggx g; double fill; } porous_ggx_ctx;
+static soak_status porous_ggx_setup(const soak_model_params *p, soak_model_ctx *c)
+{
+    porous_ggx_ctx *m = (porous_ggx_ctx *)c->bytes;
+    soak_porous_ggx_params q = {.albedo = p->albedo,
+                                .roughness = p->roughness,
+                                .eta = p->ior,
+                                .porosity = p->porosity,
+                                .sp = p->sp,
+                                .water_roughness = 0.02,
+                                .eta_water = p->n_film};
+    m->fill = p->fill;
+    if (!soak_in_range(p->fill, 0.0, 1.0)) return SOAK_ERR_ARG;
+    return soak_porous_ggx_setup(&q, &m->g);
+}
+static soak_status porous_ggx_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
+{
+    const porous_ggx_ctx *m = (const porous_ggx_ctx *)c->bytes;
+    return soak_porous_ggx_eval(&m->g, m->fill, wi, wo, f);
+}
+
+static const soak_model models[] = {
+    {"lambert", "Lambertian base, albedo/pi", NULL, lambert_setup, lambert_eval},
+    {"ggx-dielectric", "dry GGX microfacet specular of a dielectric (Walter et al. 2007)", NULL, ggx_setup,
+     ggx_dielectric_eval},
+    {"ggx-conductor", "dry GGX microfacet conductor with complex IOR (--ior n --k k)", NULL, ggx_setup,
+     ggx_conductor_eval},
+    {"film", "Lekner-Dorf water film over Lambert, all interreflections (diffuse part; exact)", NULL, film_setup,
+     film_eval},
+    {"film-ctx", "the same film with its hemispherical averages precomputed once", "film", film_setup, film_ctx_eval},
+    {"ww", "Weidlich-Wilkie layered BRDF: smooth water over GGX dielectric (+Lambert) or conductor (non-delta part)",
+     NULL, ww_setup, ww_eval},
+    {"ww-triace", "Tri-Ace fast path of ww: F_bottom, linear absorption, no refraction", "ww", ww_triace_setup,
+     ww_triace_eval},
+    {"porous", "Merillou porous post-process with Hnat wetting on Blinn-Phong (seed 002)", NULL, porous_setup,
+     porous_eval},
+    {"porous-ggx", "energy-conserving porous wetting on a GGX + Fresnel base", NULL, porous_ggx_setup,
+     porous_ggx_eval},
+};
+
+const soak_model *soak_models(size_t *count)
+{
+    if (count) *count = sizeof models / sizeof models[0];
+    return models;
+}
+
+const soak_model *soak_model_find(const char *name)
+{
+    if (!name) return NULL;
+    for (size_t i = 0; i < sizeof models / sizeof models[0]; ++i)
+        if (strcmp(models[i].name, name) == 0) return &models[i];
+    return NULL;
+}

@@ -1,0 +1,161 @@
+/* Tri-Ace fast paths for the water-over-base Weidlich-Wilkie BRDF (seed 001,
+ * "Refract vector", "Fresnel term", "Absorption term"; Gotanda, tri-Ace).
+ * Declared and documented in soak/ww.h; accuracy against soak_ww_eval is
+ * measured in tests/c/test_ww.c. The per-sample path has no pow/exp, and
+ * every division is by a quantity bounded away from zero (refracted cosines
+ * >= ~0.65 for n = 1.33, GGX terms >= alpha^2 * cos^2 > 0). */
+#include <math.h>
+
+#include "soak/fresnel.h"
+#include "soak/ggx.h"
+#include "soak/ww.h"
+
+/* Seed 001, refract_1_33: fit of (eta cos_i - cos_t) for eta = 1/1.33 on cos_i in [0, 1]. */
+#define R133_ETA 0.7518796992481203 /* 1 / 1.33 */
+#define R133_C0 (-0.666308423880957)
+#define R133_C1 0.7518796992481197
+#define R133_C2 (-0.34853799144237796)
+
+static double f0(double na, double nb, double kb)
+{
+    double d = nb - na, s = nb + na;
+    return (d * d + kb * kb) / (s * s + kb * kb);
+}
+
+soak_status soak_triace_fbottom_dielectric(double n2, double n3, double *F)
+{
+    if (!F) return SOAK_ERR_NULL;
+    if (!soak_in_range(n2, SOAK_ETA_MIN, SOAK_ETA_MAX) || !soak_in_range(n3, SOAK_ETA_MIN, SOAK_ETA_MAX))
+        return SOAK_ERR_ARG;
+    *F = f0(n2, n3, 0.0) * (1.0 - f0(n2, 1.0, 0.0));
+    return SOAK_OK;
+}
+
+soak_status soak_triace_fbottom_conductor(double n2, double n3, double k3, double *F)
+{
+    if (!F) return SOAK_ERR_NULL;
+    if (!soak_in_range(n2, SOAK_ETA_MIN, SOAK_ETA_MAX) || !soak_in_range(n3, SOAK_ETA_MIN, SOAK_ETA_MAX) ||
+        !soak_in_range(k3, 0.0, SOAK_ETA_MAX))
+        return SOAK_ERR_ARG;
+    *F = f0(n2, n3, k3) * (1.0 - f0(n2, 1.0, 0.0));
+    return SOAK_OK;
+}
+
+soak_status soak_triace_absorption_linear(double alpha_prime, double cos_l, double cos_v, double *a)
+{
+    if (!a) return SOAK_ERR_NULL;
+    if (!soak_in_range(alpha_prime, 0.0, 1e9) || !(cos_l > 0.0 && cos_l <= 1.0) || !(cos_v > 0.0 && cos_v <= 1.0))
+        return SOAK_ERR_ARG;
+    if (alpha_prime == 0.0) { /* no absorption; avoids 0 * (huge) */
+        *a = 1.0;
+        return SOAK_OK;
+    }
+    double v = 1.0 - alpha_prime * (1.0 / cos_l + 1.0 / cos_v);
+    *a = v > 0.0 ? v : 0.0;
+    return SOAK_OK;
+}
+
+soak_status soak_refract_1_33(soak_vec3 i, soak_vec3 n, soak_vec3 *t)
+{
+    if (!t) return SOAK_ERR_NULL;
+    const double tol = 2.0 * SOAK_GGX_UNIT_TOL;
+    if (!soak_in_range(i.x, -2.0, 2.0) || !soak_in_range(i.y, -2.0, 2.0) || !soak_in_range(i.z, -2.0, 2.0) ||
+        !soak_in_range(n.x, -2.0, 2.0) || !soak_in_range(n.y, -2.0, 2.0) || !soak_in_range(n.z, -2.0, 2.0))
+        return SOAK_ERR_ARG;
+    if (!(fabs(soak_v3_dot(i, i) - 1.0) <= tol) || !(fabs(soak_v3_dot(n, n) - 1.0) <= tol)) return SOAK_ERR_ARG;
+    double c = -soak_v3_dot(i, n);
+    if (!(c >= -tol)) return SOAK_ERR_ARG; /* i must arrive on the side n points to */
+    if (c < 0.0) c = 0.0;
+    if (c > 1.0) c = 1.0;
+    double p = (R133_C2 * c + R133_C1) * c + R133_C0;
+    *t = soak_v3_add(soak_v3_scale(i, R133_ETA), soak_v3_scale(n, p));
+    return SOAK_OK;
+}
+
+soak_status soak_ww_triace_setup(const soak_ww *m, soak_ww_triace *fast)
+{
+    if (!m || !fast) return SOAK_ERR_NULL;
+    soak_status s = soak_ww_validate(m);
+    if (s != SOAK_OK) return s;
+    if (!soak_in_range(m->n_water, SOAK_WW_TRIACE_N_MIN, SOAK_WW_TRIACE_N_MAX)) return SOAK_ERR_ARG;
+    /* The liquid's own index in every Fresnel term and the radiance
+     * compression; only the refraction polynomial stays the 1.33 fit. */
+    const double n2 = m->n_water;
+    double t21 = 1.0 - f0(n2, 1.0, 0.0);
+    soak_ww_triace r;
+    r.r0_top = f0(1.0, n2, 0.0);
+    if (m->base == SOAK_WW_CONDUCTOR) {
+        r.fbottom = f0(n2, m->n_base, m->k_base) * t21;
+        r.diffuse = 0.0;
+    } else {
+        double f23 = f0(n2, m->n_base, 0.0);
+        r.fbottom = f23 * t21;
+        /* Diffuse counterpart of F_bottom: (1 - F23)^2 for the way in and out
+         * of the base, (1 - F21) for leaving the film, all at normal
+         * incidence (seed 001 notes F_bottom must not be applied to the
+         * diffuse term). */
+        r.diffuse = m->kd * SOAK_INV_PI * t21 * (1.0 - f23) * (1.0 - f23);
+    }
+    r.alpha2 = m->alpha * m->alpha;
+    r.alpha_prime = m->absorption * m->thickness;
+    r.inv_n2 = 1.0 / (n2 * n2);
+    if (!soak_is_finite(r.alpha_prime) || r.alpha_prime > 1e9) return SOAK_ERR_ARG;
+    *fast = r;
+    return SOAK_OK;
+}
+
+/* Upward unit direction in the water for an air direction w (z > 0): the
+ * reverse of refract_1_33(-w, +z), renormalised. */
+static inline soak_vec3 refract_up(soak_vec3 w)
+{
+    double c = w.z;
+    double p = (R133_C2 * c + R133_C1) * c + R133_C0;
+    double x = R133_ETA * w.x, y = R133_ETA * w.y, z = R133_ETA * c - p;
+    double inv = 1.0 / sqrt(x * x + y * y + z * z);
+    return soak_v3(x * inv, y * inv, z * inv);
+}
+
+double soak_ww_eval_triace_raw(const soak_ww_triace *fast, soak_vec3 wi, soak_vec3 wo)
+{
+    soak_vec3 a = refract_up(wi), b = refract_up(wo);
+    double a2 = fast->alpha2;
+
+    /* GGX D of h' = a + b without normalising h': D = a2 |h|^4 / (pi (hx^2 + hy^2 + a2 hz^2)^2). */
+    double hx = a.x + b.x, hy = a.y + b.y, hz = a.z + b.z;
+    double hs = hx * hx + hy * hy, hz2 = hz * hz;
+    double q = (hs + hz2) / (hs + a2 * hz2);
+    double D = a2 * q * q * SOAK_INV_PI;
+    double ri = sqrt(a.z * a.z + a2 * (1.0 - a.z * a.z));
+    double ro = sqrt(b.z * b.z + a2 * (1.0 - b.z * b.z));
+    double vis = 0.5 / (ri * b.z + ro * a.z);
+
+    /* Schlick T12 at the air side (no total internal reflection going in). */
+    double m = 1.0 - wi.z, m2 = m * m;
+    double t12 = (1.0 - fast->r0_top) * (1.0 - m2 * m2 * m);
+
+    double ab = 1.0 - fast->alpha_prime * (a.z + b.z) / (a.z * b.z);
+    if (ab < 0.0) ab = 0.0;
+    return t12 * ab * fast->inv_n2 * (fast->fbottom * D * vis + fast->diffuse);
+}
+
+soak_status soak_ww_eval_triace(const soak_ww_triace *fast, soak_vec3 wi, soak_vec3 wo, double *f)
+{
+    if (!fast || !f) return SOAK_ERR_NULL;
+    if (!soak_in_range(fast->alpha2, SOAK_GGX_ALPHA_MIN * SOAK_GGX_ALPHA_MIN, 1.0) ||
+        !soak_in_range(fast->alpha_prime, 0.0, 1e9) || !soak_in_range(fast->fbottom, 0.0, 1.0) ||
+        !soak_in_range(fast->diffuse, 0.0, SOAK_INV_PI) || !soak_in_range(fast->r0_top, 0.0, 1.0) ||
+        !soak_in_range(fast->inv_n2, 0.0, 1.0))
+        return SOAK_ERR_ARG;
+    const double tol = 2.0 * SOAK_GGX_UNIT_TOL;
+    if (!soak_in_range(wi.x, -2.0, 2.0) || !soak_in_range(wi.y, -2.0, 2.0) || !(wi.z > 0.0 && wi.z <= 2.0) ||
+        !soak_in_range(wo.x, -2.0, 2.0) || !soak_in_range(wo.y, -2.0, 2.0) || !(wo.z > 0.0 && wo.z <= 2.0))
+        return SOAK_ERR_ARG;
+    double li = soak_v3_dot(wi, wi), lo = soak_v3_dot(wo, wo);
+    if (!(fabs(li - 1.0) <= tol) || !(fabs(lo - 1.0) <= tol)) return SOAK_ERR_ARG;
+    wi = soak_v3_scale(wi, 1.0 / sqrt(li));
+    wo = soak_v3_scale(wo, 1.0 / sqrt(lo));
+    double v = soak_ww_eval_triace_raw(fast, wi, wo);
+    if (!soak_is_finite(v) || v < 0.0) return SOAK_ERR_NUMERIC;
+    *f = v;
+    return SOAK_OK;
+}

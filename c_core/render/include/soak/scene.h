@@ -1,0 +1,152 @@
+/* JSON scene description for the reference path tracer (`soak render`).
+ * The format is documented with a complete example in scenes/README.md.
+ *
+ * Every error message has the form "<file>: <json path>: <reason>", e.g.
+ * "scene.json: objects[2].radius: must be > 0, got -1", or for syntax
+ * errors "scene.json: line 12, column 5: JSON syntax error". Unknown keys
+ * are errors (a misspelt key would otherwise be silently ignored). Relative
+ * file names inside a scene (meshes, wet maps, environment maps, volumes)
+ * are resolved against the scene file's folder. */
+#ifndef SOAK_SCENE_H
+#define SOAK_SCENE_H
+
+#include <stddef.h>
+
+#include "soak/volume.h"
+#include "soak/geometry.h"
+#include "soak/hg.h"
+#include "soak/image.h"
+#include "soak/status.h"
+#include "soak/vec.h"
+
+typedef struct soak_camera {
+    soak_vec3 position, look_at, up;
+    double fov_deg;        /* vertical field of view, (0, 179] */
+    double aperture;       /* lens radius, 0 = pinhole */
+    double focus_distance; /* > 0; default |look_at - position| */
+    double exposure;       /* stops, applied before the PNG tone curve */
+} soak_camera;
+
+typedef enum soak_light_type {
+    SOAK_LIGHT_DIRECTIONAL = 0, /* sun: delta direction */
+    SOAK_LIGHT_POINT,
+    SOAK_LIGHT_SPHERE /* spherical area light, also a geometry object */
+} soak_light_type;
+
+typedef struct soak_light {
+    soak_light_type type;
+    soak_vec3 direction; /* unit, pointing TO the light (directional) */
+    soak_vec3 position;  /* point / sphere centre */
+    double radius;       /* sphere */
+    soak_rgb value;      /* irradiance (directional, W/m^2 on a surface facing it),
+                            intensity (point, W/sr), radiance (sphere) */
+    unsigned object_id;  /* sphere: its geometry object */
+} soak_light;
+
+typedef enum soak_env_type { SOAK_ENV_NONE = 0, SOAK_ENV_CONSTANT, SOAK_ENV_MAP } soak_env_type;
+
+typedef struct soak_environment {
+    soak_env_type type;
+    soak_rgb radiance;   /* constant */
+    soak_image map;      /* equirectangular, +z up, top row = zenith */
+    double scale;        /* multiplies the map */
+    double rotation_deg; /* about +z */
+} soak_environment;
+
+/* Participating medium of a wet material's scattering base. Coefficients
+ * per scene length unit. With a volume, the parameters inside the volume's
+ * box (placed at volume_origin) come from the grid (trilinear); outside it
+ * the homogeneous values below apply. */
+typedef struct soak_scene_medium {
+    soak_rgb sigma_s, sigma_a;
+    soak_hg2 phase;
+    double ior;                /* material index n3, [1, 3] */
+    soak_volume *volume;       /* owned by the scene; NULL = homogeneous */
+    soak_vec3 volume_origin;
+    double majorant;           /* max sigma_t over channels and the volume */
+} soak_scene_medium;
+
+typedef enum soak_material_type {
+    SOAK_MAT_LAMBERT = 0,
+    SOAK_MAT_DIELECTRIC,
+    SOAK_MAT_CONDUCTOR,
+    SOAK_MAT_WET,
+    SOAK_MAT_EMITTER /* sphere lights */
+} soak_material_type;
+
+typedef enum soak_base_type { SOAK_BASE_LAMBERT = 0, SOAK_BASE_GGX, SOAK_BASE_MEDIUM } soak_base_type;
+
+typedef struct soak_material {
+    char name[64];
+    soak_material_type type;
+    /* lambert, and the lambert base of wet */
+    soak_rgb albedo;
+    /* dielectric: index and interior absorption (1/length) */
+    double ior;
+    soak_rgb absorption;
+    /* conductor, and the ggx base of wet: complex index relative to vacuum/air, GGX alpha */
+    soak_rgb eta, k;
+    double alpha;
+    /* wet: film (seed 000 Eq. 1-4) and base */
+    double film_ior;       /* n2, [1, 3] */
+    double film_k;         /* Fresnel exponent k of the film-material interface */
+    double film_thickness; /* length units, for absorption */
+    soak_rgb film_absorption; /* 1/length */
+    double film_coverage;  /* probability of the film at a wet point, [0,1] (1 unless a preset says less) */
+    soak_base_type base;
+    soak_scene_medium medium;     /* wet state (and dry when has_dry == 0) */
+    soak_scene_medium dry_medium; /* base medium where the object is dry */
+    int has_dry;
+    soak_rgb radiance; /* emitter */
+} soak_material;
+
+typedef enum soak_wetness_type {
+    SOAK_WETNESS_CONSTANT = 0,
+    SOAK_WETNESS_MAP,   /* image over UV, mean of colour channels, clamped to [0,1] */
+    SOAK_WETNESS_PLANE  /* wet where dot(normal, p) < offset, linear blend of width blend */
+} soak_wetness_type;
+
+typedef struct soak_wetness {
+    soak_wetness_type type;
+    double value;       /* constant */
+    soak_image map;     /* map: u right, v up (v = 0 is the bottom row) */
+    soak_vec3 normal;   /* plane */
+    double offset, blend;
+} soak_wetness;
+
+typedef struct soak_object {
+    soak_shape_kind shape;
+    unsigned object_id; /* geometry object */
+    int material;       /* index into materials */
+    soak_wetness wetness;
+} soak_object;
+
+typedef struct soak_scene {
+    char path[1024];
+    int width, height, spp, max_depth;
+    long long caustic_photons; /* volume photon map for caustics into media; 0 = off */
+    double caustic_radius;     /* photon gather radius (length units) */
+    soak_camera camera;
+    soak_environment env;
+    soak_light *lights;
+    int n_lights;
+    soak_material *materials;
+    int n_materials;
+    soak_object *objects; /* indexed by geometry object id */
+    int n_objects;
+    soak_geometry *geometry;
+    char **inputs; /* every file the scene reads (for -o checks) */
+    int n_inputs;
+} soak_scene;
+
+/* Reads and validates a scene file; builds and commits its geometry. */
+soak_status soak_scene_load(const char *path, soak_scene *scene, char *err, size_t errlen);
+/* Same from text; name is used in messages, base_dir resolves relative files. */
+soak_status soak_scene_parse(const char *text, const char *name, const char *base_dir, soak_scene *scene, char *err,
+                             size_t errlen);
+void soak_scene_free(soak_scene *scene);
+
+/* Wetness in [0,1] of object at a hit (position and uv). */
+double soak_scene_wetness(const soak_object *obj, soak_vec3 p, double u, double v);
+
+#endif

@@ -1,0 +1,277 @@
+/* Soak grid format (<prefix>.json + <prefix>.raw), specified in
+ * soak/bake_volume.h next to soak_volume_write_grid. */
+#include <errno.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cjson/cJSON.h>
+
+#include "soak/volume.h"
+#include "soak/staged_files.h"
+
+static void set_err(char *err, size_t errlen, const char *fmt, const char *a, const char *b)
+{
+    if (err && errlen) snprintf(err, errlen, fmt, a, b);
+}
+
+static const char *base_name(const char *path)
+{
+    const char *s = strrchr(path, '/');
+    return s ? s + 1 : path;
+}
+
+static cJSON *medium_json(const soak_vol_medium *m, double wetness)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "wetness", wetness);
+    double s[3] = {m->sigma_s.r, m->sigma_s.g, m->sigma_s.b}, a[3] = {m->sigma_a.r, m->sigma_a.g, m->sigma_a.b};
+    cJSON_AddItemToObject(o, "sigma_s", cJSON_CreateDoubleArray(s, 3));
+    cJSON_AddItemToObject(o, "sigma_a", cJSON_CreateDoubleArray(a, 3));
+    cJSON_AddNumberToObject(o, "g1", m->g1);
+    cJSON_AddNumberToObject(o, "g2", m->g2);
+    cJSON_AddNumberToObject(o, "w", m->w);
+    return o;
+}
+
+static void put_le32(unsigned char *p, float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, 4);
+    for (int b = 0; b < 4; ++b) p[b] = (unsigned char)(u >> (8 * b));
+}
+
+static float get_le32(const unsigned char *p)
+{
+    uint32_t u = 0;
+    for (int b = 0; b < 4; ++b) u |= (uint32_t)p[b] << (8 * b);
+    float f;
+    memcpy(&f, &u, 4);
+    return f;
+}
+
+soak_status soak_volume_write_grid(const soak_volume *v, const char *prefix, const soak_vol_medium *rows, int n_rows,
+                                   double penetration_depth, char *err, size_t errlen)
+{
+    if (!v || !v->data || !prefix) return SOAK_ERR_NULL;
+    char json_path[4096], raw_path[4096];
+    snprintf(json_path, sizeof json_path, "%s.json", prefix);
+    snprintf(raw_path, sizeof raw_path, "%s.raw", prefix);
+
+    cJSON *root = cJSON_CreateObject();
+    cJSON_AddStringToObject(root, "format", "soak-volume-grid");
+    cJSON_AddNumberToObject(root, "version", 1);
+    int dims[3] = {v->nx, v->ny, v->nz};
+    cJSON_AddItemToObject(root, "dims", cJSON_CreateIntArray(dims, 3));
+    cJSON_AddItemToObject(root, "size", cJSON_CreateDoubleArray(v->size, 3));
+    cJSON_AddBoolToObject(root, "cell_centered", 1);
+    cJSON_AddStringToObject(root, "order", "x fastest, then y, then z");
+    cJSON_AddStringToObject(root, "dtype", "float32le");
+    cJSON_AddStringToObject(root, "data", base_name(raw_path));
+    cJSON *ch = cJSON_AddArrayToObject(root, "channels");
+    for (int c = 0; c < SOAK_VOL_NCHANNELS; ++c) cJSON_AddItemToArray(ch, cJSON_CreateString(soak_volume_channel_name(c)));
+    cJSON_AddStringToObject(root, "units", "sigma per length unit of size");
+    if (rows && n_rows >= 2) {
+        cJSON *model = cJSON_AddObjectToObject(root, "model");
+        cJSON *table = cJSON_AddArrayToObject(model, "wetness_table");
+        for (int i = 0; i < n_rows; ++i) cJSON_AddItemToArray(table, medium_json(&rows[i], (double)i / (n_rows - 1)));
+        cJSON_AddNumberToObject(model, "penetration_depth", penetration_depth);
+        cJSON_AddStringToObject(model, "profile", "p(d) = 1 - S(d/delta), S(t) = 3t^2 - 2t^3, cell averaged");
+    }
+    char *text = cJSON_Print(root);
+    cJSON_Delete(root);
+    if (!text) return SOAK_ERR_NOMEM;
+
+    soak_staged stage;
+    soak_staged_init(&stage);
+    FILE *f = NULL;
+    soak_status st = soak_staged_open(&stage, raw_path, &f, err, errlen);
+    if (st == SOAK_OK) {
+        size_t n = soak_volume_count(v) * SOAK_VOL_NCHANNELS;
+        unsigned char buf[4096];
+        for (size_t i = 0; i < n;) {
+            size_t m = 0;
+            for (; m < sizeof buf / 4 && i < n; ++m, ++i) put_le32(buf + 4 * m, v->data[i]);
+            fwrite(buf, 4, m, f);
+        }
+        st = soak_staged_close(f, raw_path, err, errlen);
+    }
+    if (st == SOAK_OK) st = soak_staged_open(&stage, json_path, &f, err, errlen);
+    if (st == SOAK_OK) {
+        fputs(text, f);
+        fputc('\n', f);
+        st = soak_staged_close(f, json_path, err, errlen);
+    }
+    cJSON_free(text);
+    if (st != SOAK_OK) {
+        soak_staged_abort(&stage);
+        return st;
+    }
+    return soak_staged_commit(&stage, err, errlen);
+}
+
+static char *read_text(const char *path, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+        return NULL;
+    }
+    size_t cap = 4096, len = 0;
+    char *s = malloc(cap);
+    size_t got;
+    while (s && (got = fread(s + len, 1, cap - len - 1, f)) > 0) {
+        len += got;
+        if (len + 1 == cap) {
+            if (cap > (64u << 20)) break; /* a header is never this large */
+            char *t = realloc(s, cap *= 2);
+            if (!t) {
+                free(s);
+                s = NULL;
+            } else
+                s = t;
+        }
+    }
+    fclose(f);
+    if (s) s[len] = '\0';
+    return s;
+}
+
+static int json_int3(const cJSON *a, int lo, int hi, int out[3])
+{
+    if (!cJSON_IsArray(a) || cJSON_GetArraySize(a) != 3) return 0;
+    for (int i = 0; i < 3; ++i) {
+        const cJSON *x = cJSON_GetArrayItem(a, i);
+        if (!cJSON_IsNumber(x) || !(x->valuedouble >= lo && x->valuedouble <= hi) ||
+            x->valuedouble != (double)(int)x->valuedouble)
+            return 0;
+        out[i] = (int)x->valuedouble;
+    }
+    return 1;
+}
+
+static int json_pos3(const cJSON *a, double out[3])
+{
+    if (!cJSON_IsArray(a) || cJSON_GetArraySize(a) != 3) return 0;
+    for (int i = 0; i < 3; ++i) {
+        const cJSON *x = cJSON_GetArrayItem(a, i);
+        if (!cJSON_IsNumber(x) || !(x->valuedouble > 0.0 && soak_is_finite(x->valuedouble))) return 0;
+        out[i] = x->valuedouble;
+    }
+    return 1;
+}
+
+/* Raw path: the "data" name resolved against the header's folder. */
+static void data_path(const char *json_path, const char *name, char *out, size_t len)
+{
+    const char *slash = strrchr(json_path, '/');
+    int dirlen = slash ? (int)(slash - json_path + 1) : 0;
+    snprintf(out, len, "%.*s%s", dirlen, json_path, name);
+}
+
+static soak_status parse_header(const cJSON *root, const char *path, int dims[3], double size[3], int map[], int *nch,
+                                const char **data, char *err, size_t errlen)
+{
+    const cJSON *fmt = cJSON_GetObjectItemCaseSensitive(root, "format");
+    const cJSON *ver = cJSON_GetObjectItemCaseSensitive(root, "version");
+    const cJSON *dt = cJSON_GetObjectItemCaseSensitive(root, "dtype");
+    const cJSON *ch = cJSON_GetObjectItemCaseSensitive(root, "channels");
+    const cJSON *dn = cJSON_GetObjectItemCaseSensitive(root, "data");
+    if (!cJSON_IsString(fmt) || strcmp(fmt->valuestring, "soak-volume-grid") != 0 || !cJSON_IsNumber(ver) ||
+        ver->valuedouble != 1.0) {
+        set_err(err, errlen, "%s: not a soak-volume-grid version 1 header%s", path, "");
+        return SOAK_ERR_PARSE;
+    }
+    if (!json_int3(cJSON_GetObjectItemCaseSensitive(root, "dims"), 1, SOAK_VOLUME_MAX_DIM, dims) ||
+        !json_pos3(cJSON_GetObjectItemCaseSensitive(root, "size"), size)) {
+        set_err(err, errlen, "%s: bad %s", path, "\"dims\" or \"size\"");
+        return SOAK_ERR_PARSE;
+    }
+    if (!cJSON_IsString(dt) || strcmp(dt->valuestring, "float32le") != 0 || !cJSON_IsString(dn) ||
+        strchr(dn->valuestring, '/') || !cJSON_IsArray(ch)) {
+        set_err(err, errlen, "%s: bad %s", path, "\"dtype\", \"data\" or \"channels\"");
+        return SOAK_ERR_PARSE;
+    }
+    *nch = cJSON_GetArraySize(ch);
+    if (*nch < 1 || *nch > 64) {
+        set_err(err, errlen, "%s: bad %s", path, "\"channels\" count");
+        return SOAK_ERR_PARSE;
+    }
+    for (int c = 0; c < SOAK_VOL_NCHANNELS; ++c) map[c] = -1;
+    for (int k = 0; k < *nch; ++k) {
+        const cJSON *s = cJSON_GetArrayItem(ch, k);
+        if (!cJSON_IsString(s)) continue;
+        for (int c = 0; c < SOAK_VOL_NCHANNELS; ++c)
+            if (strcmp(s->valuestring, soak_volume_channel_name(c)) == 0) map[c] = k;
+    }
+    for (int c = 0; c < SOAK_VOL_NCHANNELS; ++c)
+        if (map[c] < 0) {
+            set_err(err, errlen, "%s: channel '%s' missing", path, soak_volume_channel_name(c));
+            return SOAK_ERR_PARSE;
+        }
+    *data = dn->valuestring;
+    return SOAK_OK;
+}
+
+soak_status soak_volume_read_grid(const char *json_path, soak_volume *v, char *err, size_t errlen)
+{
+    if (!json_path || !v) return SOAK_ERR_NULL;
+    memset(v, 0, sizeof *v);
+    char *text = read_text(json_path, err, errlen);
+    if (!text) return SOAK_ERR_IO;
+    cJSON *root = cJSON_Parse(text);
+    free(text);
+    if (!root) {
+        set_err(err, errlen, "%s: malformed JSON%s", json_path, "");
+        return SOAK_ERR_PARSE;
+    }
+    int dims[3], map[SOAK_VOL_NCHANNELS], nch = 0;
+    double size[3];
+    const char *name = NULL;
+    soak_status st = parse_header(root, json_path, dims, size, map, &nch, &name, err, errlen);
+    char raw[4096];
+    if (st == SOAK_OK) data_path(json_path, name, raw, sizeof raw);
+    cJSON_Delete(root);
+    if (st != SOAK_OK) return st;
+    st = soak_volume_alloc(v, dims[0], dims[1], dims[2], size);
+    if (st != SOAK_OK) return st;
+
+    FILE *f = fopen(raw, "rb");
+    if (!f) {
+        set_err(err, errlen, "%s: cannot open: %s", raw, strerror(errno));
+        soak_volume_free(v);
+        return SOAK_ERR_IO;
+    }
+    size_t n = soak_volume_count(v);
+    long want = (long)(n * (size_t)nch * 4);
+    if (fseek(f, 0, SEEK_END) != 0 || ftell(f) != want) {
+        set_err(err, errlen, "%s: size does not match %s", raw, "channels * nx*ny*nz * 4 bytes");
+        fclose(f);
+        soak_volume_free(v);
+        return SOAK_ERR_PARSE;
+    }
+    unsigned char *buf = malloc(n * 4);
+    st = buf ? SOAK_OK : SOAK_ERR_NOMEM;
+    for (int c = 0; c < SOAK_VOL_NCHANNELS && st == SOAK_OK; ++c) {
+        if (fseek(f, (long)((size_t)map[c] * n * 4), SEEK_SET) != 0 || fread(buf, 4, n, f) != n) {
+            set_err(err, errlen, "%s: read failed%s", raw, "");
+            st = SOAK_ERR_IO;
+            break;
+        }
+        float *plane = soak_volume_plane(v, c);
+        for (size_t i = 0; i < n; ++i) {
+            float x = get_le32(buf + 4 * i);
+            if (!soak_is_finite(x)) {
+                set_err(err, errlen, "%s: non-finite value in channel %s", raw, soak_volume_channel_name(c));
+                st = SOAK_ERR_PARSE;
+                break;
+            }
+            plane[i] = x;
+        }
+    }
+    free(buf);
+    fclose(f);
+    if (st != SOAK_OK) soak_volume_free(v);
+    return st;
+}
