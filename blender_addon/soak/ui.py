@@ -44,7 +44,9 @@ class SOAK_PT_wetness(bpy.types.Panel):
             row = layout.row()
             row.operator("soak.key_drying", icon="KEY_HLT")
             row.operator("soak.make_dry", icon="CANCEL")
-        layout.operator("soak.bake_wetmap", icon="RENDER_STILL")
+        row = layout.row()
+        row.operator("soak.bake_wetmap", icon="RENDER_STILL")
+        row.operator("soak.import_volume", icon="VOLUME_DATA")
 
 
 classes = (SOAK_PT_wetness,)

@@ -21,8 +21,12 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import common  # noqa: E402
 
 A = common.args()
-TOL = 0.005 + 2e-4
-N = 16  # N x N test points per preset and liquid
+ENGINE = A.get("engine", "CYCLES")
+TOL = float(A.get("tol", 0.005 + 2e-4))
+N = int(A.get("n", 16))  # N x N test points per render
+ROUNDS = int(A.get("rounds", 1))  # renders per preset and liquid (different points)
+ONLY = A.get("presets", "").split(",") if A.get("presets") else None
+LIQUIDS = A.get("liquids", "").split(",") if A.get("liquids") else None
 
 
 def image(name, px):
@@ -35,12 +39,15 @@ def image(name, px):
 
 def setup():
     sc = bpy.context.scene
-    sc.render.engine = "CYCLES"
+    sc.render.engine = ENGINE
     sc.cycles.samples = 1
+    if ENGINE == "BLENDER_EEVEE":
+        sc.eevee.taa_render_samples = 1
+        sc.render.filter_size = 0.0
     sc.cycles.use_denoising = False
     sc.cycles.pixel_filter_type = "BOX"
     sc.cycles.filter_width = 0.01
-    sc.render.resolution_x = sc.render.resolution_y = N
+    sc.render.resolution_x = sc.render.resolution_y = max(N, 4)
     sc.render.resolution_percentage = 100
     sc.render.image_settings.file_format = "OPEN_EXR"
     sc.render.image_settings.color_depth = "32"
@@ -58,12 +65,12 @@ def setup():
     return sc, bpy.context.object
 
 
-def points(table):
+def points(table, first=0):
     """(dry rgb, wetness, expected rgb) at the json export's nodes."""
     a, w = table["dry_albedo"], table["wetness"]
     alb = table["albedo"]
     out = []
-    k = 0
+    k = first * 37
     while len(out) < N * N:
         iw = k % len(w)
         ia = [(k // len(w) + 7 * c) % len(a) for c in range(3)]
@@ -93,9 +100,12 @@ def main():
     sc, plane = setup()
     worst = {"colour": 0.0, "coat": 0.0, "rough": 0.0}
     failures = []
-    for m in ref["materials"]:
-        for liquid, t in m["liquids"].items():
-            pts = points(t["base_colour"])
+    combos = [(m, liquid, t, k) for m in ref["materials"] for liquid, t in m["liquids"].items()
+              for k in range(ROUNDS)
+              if (ONLY is None or m["name"] in ONLY) and (LIQUIDS is None or liquid in LIQUIDS)]
+    for m, liquid, t, k in combos:
+        if True:
+            pts = points(t["base_colour"], k)
             mat = bpy.data.materials.new(f"{m['name']}_{liquid}")
             mat.use_nodes = True
             plane.data.materials.clear()
@@ -124,15 +134,17 @@ def main():
                                ("rough", gn.outputs["Roughness"])):
                 tree.links.new(sock, em.inputs["Color"])
                 tree.links.new(em.outputs[0], out.inputs["Surface"])
-                path = os.path.join(A["tmp"], f"{m['name']}_{liquid}_{what}.exr")
+                path = os.path.join(A["tmp"], f"{m['name']}_{liquid}_{k}_{what}.exr")
                 sc.render.filepath = path
                 bpy.ops.render.render(write_still=True)
                 img = bpy.data.images.load(path, check_existing=False)
                 px = list(img.pixels)
                 bpy.data.images.remove(img)
                 kn = t["knots"]
+                npx = len(px) // 4
                 for i, (dry, w, want) in enumerate(pts):
-                    got = px[4 * i: 4 * i + 3]
+                    # N = 1: the whole (constant) image is the point: its mean
+                    got = px[4 * i: 4 * i + 3] if N > 1 else [sum(px[c::4]) / npx for c in range(3)]
                     if what == "colour":
                         exp = want
                     elif what == "coat":

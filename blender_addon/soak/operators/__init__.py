@@ -1,8 +1,8 @@
 import bpy
 
-from . import wet, bake
+from . import wet, bake, volume
 
-classes = wet.classes + bake.classes
+classes = wet.classes + bake.classes + volume.classes
 
 
 def register():
