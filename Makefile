@@ -5,7 +5,7 @@ BUILD      ?= build
 BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc)
 
-.PHONY: all deps build build-asan demo test test-release test-asan bench fuzz clean
+.PHONY: all deps build build-asan addon demo test test-release test-asan bench fuzz clean
 
 all: build
 
@@ -20,9 +20,15 @@ build-asan: deps
 	@cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOAK_SANITIZE=ON > $(BUILD_ASAN).configure.log || (cat $(BUILD_ASAN).configure.log; exit 1)
 	@cmake --build $(BUILD_ASAN) -j $(JOBS)
 
-demo: build
+# The Blender add-on, installable in Blender 3.x (bl_info) and 4.2+ (extension manifest).
+addon:
+	@mkdir -p $(BUILD) && /usr/bin/python3 blender_addon/build_zip.py $(BUILD)/soak_blender.zip
+	@echo "built $(BUILD)/soak_blender.zip"
+
+demo: build addon
 	@$(BUILD)/bin/soak demo --out out/demo
 	@bash povray/render_scenes.sh $(BUILD)/bin/soak out/demo/povray full
+	@blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out out/demo/blender --soak $(BUILD)/bin/soak
 
 # Each pass lists the skipped tests with their reasons and fails when a test
 # failed, was skipped for want of povray or blender (the set-up installs
