@@ -1,7 +1,7 @@
 """The "Soak Wet" node group and its insertion in front of a Principled BSDF.
 
 The group evaluates, with native nodes only:
-  L      = Wetness * Wet Map * P,  P = clamp((Time - Start Time) / Fill Time)
+  L      = Wetness * min(Wet Map / Puddle Level, 1) * P,  P = clamp((Time - Start Time) / Fill Time)
            (1 - P when Drying; P = 1 unless Schedule), wetness.h step 1;
   colour = the core's wetness function for any dry colour, looked up per
            channel in the exported float image (bilinear between pixel
@@ -27,6 +27,7 @@ INPUTS = (
     ("Roughness", "factor", 0.5, 0.0, 1.0),
     ("Wetness", "factor", 1.0, 0.0, 1.0),
     ("Wet Map", "factor", 1.0, 0.0, 1.0),
+    ("Puddle Level", "factor", 1.0, 0.0, 1.0),
     ("Schedule", "factor", 0.0, 0.0, 1.0),
     ("Drying", "factor", 0.0, 0.0, 1.0),
     ("Time", "float", 1.0, -1e9, 1e9),
@@ -76,7 +77,11 @@ def _liquid_schedule(b, gin):
     p = b.math("MULTIPLY_ADD", dry, gin.outputs["Drying"], p)  # P + D (1 - 2P)
     one_minus = b.math("SUBTRACT", 1.0, p)
     p = b.math("MULTIPLY_ADD", one_minus, b.math("SUBTRACT", 1.0, gin.outputs["Schedule"]), p)
-    w = b.math("MULTIPLY", gin.outputs["Wetness"], gin.outputs["Wet Map"], clamp=True)
+    # Puddle Level: wet-map values at or above it count as fully wet (standing
+    # water: the core's film at full coverage); 1 leaves the map as it is.
+    level = b.math("MAXIMUM", gin.outputs["Puddle Level"], 1e-3)
+    wet_map = b.math("DIVIDE", gin.outputs["Wet Map"], level, clamp=True)
+    w = b.math("MULTIPLY", gin.outputs["Wetness"], wet_map, clamp=True)
     return b.math("MULTIPLY", w, p, clamp=True)
 
 
@@ -365,3 +370,12 @@ def rebuild(mat, settings):
                 s.default_value = keep[s.name]
         for src, name in links:
             mat.node_tree.links.new(src, gn.inputs[name])
+        m, t = data.material(settings.preset), data.table(settings.preset, settings.liquid)
+        if settings.colour_source == "PRESET":
+            gn.inputs["Base Color"].default_value = list(m["dry_albedo"]) + [1.0]
+            gn.inputs["Roughness"].default_value = t["params"][0][0]
+        gn.inputs["Fill Time"].default_value = m["t_fill"]
+        bsdf = mat.node_tree.nodes.get(json.loads(gn[RESTORE_KEY])["bsdf"])
+        cior = compat.principled_input(bsdf, "coat_ior") if bsdf is not None else None
+        if cior is not None:
+            cior.default_value = data.liquid(settings.liquid)["ior"]

@@ -3,7 +3,7 @@ import bpy
 from . import nodes
 from .operators.wet import osl_available
 
-GROUP_CONTROLS = ("Wetness", "Schedule", "Drying", "Time", "Start Time", "Fill Time", "Spill Edge")
+GROUP_CONTROLS = ("Wetness", "Puddle Level", "Schedule", "Drying", "Time", "Start Time", "Fill Time", "Spill Edge")
 
 
 class SOAK_PT_wetness(bpy.types.Panel):

@@ -2,6 +2,7 @@
 tree exactly (links and values), so does undo; keyframed drying brightens
 the render monotonically; Bake Wet Map reports a missing or failing soak
 cleanly and, with soak, loads a map of the mesh's UV layout."""
+import json
 import os
 import sys
 
@@ -130,6 +131,28 @@ def main():
         common.fail(f"drying is not monotonic: {lums}")
     if not lums[-1] > 1.5 * lums[0]:
         common.fail(f"drying changes too little: {lums}")
+
+    # 3b. Puddle Level: a wet-map value at the level counts as fully wet
+    gn = mat.node_tree.nodes["Soak Wet"]
+    gn.inputs["Schedule"].default_value = 0.0
+    looks = {}
+    for wet_map, level in ((1.0, 1.0), (0.4, 0.4), (0.4, 1.0)):
+        gn.inputs["Wet Map"].default_value = wet_map
+        gn.inputs["Puddle Level"].default_value = level
+        looks[(wet_map, level)] = render_lum(sc, os.path.join(A["tmp"], f"puddle_{wet_map}_{level}.exr"))
+    print("puddle level:", looks)
+    if abs(looks[(0.4, 0.4)] - looks[(1.0, 1.0)]) > 1e-4 * looks[(1.0, 1.0)]:
+        common.fail(f"wet map 0.4 at puddle level 0.4 is not fully wet: {looks}")
+    if not looks[(0.4, 1.0)] > 1.2 * looks[(1.0, 1.0)]:
+        common.fail(f"wet map 0.4 without puddles should be drier (brighter): {looks}")
+
+    # 3c. changing the preset rebuilds the group in place (keys kept)
+    mat.soak.preset = "concrete"
+    gn = mat.node_tree.nodes["Soak Wet"]
+    if json.loads(gn.node_tree["soak_group"])["preset"] != "concrete":
+        common.fail("preset change did not rebuild the group")
+    if not (mat.animation_data or mat.node_tree.animation_data):
+        common.fail("the drying keys were lost")
 
     # 4. Bake Wet Map: missing soak, failing soak, working soak
     prefs = bpy.context.preferences.addons["soak"].preferences
