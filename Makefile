@@ -27,7 +27,7 @@ addon:
 
 demo: build addon
 	@$(BUILD)/bin/soak demo --out out/demo
-	@blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out out/demo/blender --soak $(BUILD)/bin/soak
+	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out out/demo/blender --soak $(BUILD)/bin/soak
 
 test-release: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
