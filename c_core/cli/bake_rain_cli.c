@@ -8,6 +8,7 @@
 #include "cli.h"
 #include "soak/bake_rain.h"
 #include "soak/geometry.h"
+#include "soak/staged.h"
 
 #define CMD "bake rain"
 
@@ -83,20 +84,22 @@ static void on_progress(void *user, double fraction)
     cli_progress_update(user, fraction);
 }
 
-/* Writes every requested image or none (later failures remove earlier ones). */
+/* Writes every requested image or none: all are staged, then renamed
+ * together, so a failure keeps every previous output. */
 static int write_outputs(const char *const *paths, const soak_image *const *imgs, int n)
 {
     char err[4352] = "";
-    for (int k = 0; k < n; ++k) {
-        if (!paths[k]) continue;
-        soak_status st = soak_bake_write(paths[k], imgs[k], 0, err, sizeof err);
-        if (st != SOAK_OK) {
-            for (int q = 0; q < k; ++q)
-                if (paths[q]) remove(paths[q]);
-            return bake_fail(CMD, st, err);
-        }
+    soak_staged stage;
+    soak_staged_init(&stage);
+    soak_status st = SOAK_OK;
+    for (int k = 0; k < n && st == SOAK_OK; ++k)
+        if (paths[k]) st = soak_bake_stage(&stage, paths[k], imgs[k], 0, err, sizeof err);
+    if (st != SOAK_OK) {
+        soak_staged_abort(&stage);
+        return bake_fail(CMD, st, err);
     }
-    return SOAK_EXIT_OK;
+    st = soak_staged_commit(&stage, err, sizeof err);
+    return st == SOAK_OK ? SOAK_EXIT_OK : bake_fail(CMD, st, err);
 }
 
 int soak_bake_rain_main(int argc, char **argv)

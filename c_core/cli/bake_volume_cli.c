@@ -6,6 +6,7 @@
 
 #include "bake_cli.h"
 #include "cli.h"
+#include "soak/staged.h"
 #include "soak/bake_volume.h"
 #include "soak/preset.h"
 
@@ -103,7 +104,8 @@ static int parse_rgb(const char *opt, const char *text, double lo, double hi, so
 static int parse_triple(const char *opt, const char *text, double lo, double hi, double out[3])
 {
     soak_rgb c;
-    if (!strchr(text, ',')) {
+    const char *c1 = strchr(text, ','), *c2 = c1 ? strchr(c1 + 1, ',') : NULL;
+    if (!c2 || strchr(c2 + 1, ',')) {
         cli_error(CMD, "%s: expected three comma-separated values, got '%s'", opt, text);
         return 0;
     }
@@ -265,6 +267,13 @@ static int check_outputs(const vol_args *a)
     char path[4352], err[4608];
     if (strlen(a->output) > 4000) {
         cli_error(CMD, "-o: prefix too long");
+        return SOAK_EXIT_USAGE;
+    }
+    const char *slash = strrchr(a->output, '/');
+    const char *name = slash ? slash + 1 : a->output;
+    if (!*name || !strcmp(name, ".") || !strcmp(name, "..")) {
+        cli_error(CMD, "-o '%s': needs a file name prefix after the folder, e.g. '%s%sbox'", a->output, a->output,
+                  *name && !slash ? "/" : "");
         return SOAK_EXIT_USAGE;
     }
     for (int k = 0; k < 5 + SOAK_VOL_NCHANNELS; ++k) {
@@ -431,32 +440,28 @@ int soak_bake_volume_main(int argc, char **argv)
         cli_error(CMD, "%s", st == SOAK_ERR_ARG && a.map ? "--map: the map holds NaN values" : soak_status_str(st));
         rc = st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
     }
-    /* Each writer is atomic; if a later one fails, the earlier outputs of
-     * this run are removed so that a failed bake leaves nothing. */
+    /* Every format is staged, then all are renamed together: a failure
+     * keeps every previous output and leaves no new file. */
+    soak_staged stage;
+    soak_staged_init(&stage);
     char path[4352];
-    int done_vdb = 0, done_grid = 0;
     if (!rc && a.fmt_vdb) {
         snprintf(path, sizeof path, "%s.vdb", a.output);
-        st = soak_volume_write_vdb(&v, path, err, sizeof err);
+        st = soak_volume_stage_vdb(&stage, &v, path, err, sizeof err);
         if (st != SOAK_OK) rc = bake_fail(CMD, st, err);
-        else done_vdb = 1;
     }
     if (!rc && a.fmt_grid) {
-        st = soak_volume_write_grid(&v, a.output, rows, n_rows, a.depth, err, sizeof err);
+        st = soak_volume_stage_grid(&stage, &v, a.output, rows, n_rows, a.depth, err, sizeof err);
         if (st != SOAK_OK) rc = bake_fail(CMD, st, err);
-        else done_grid = 1;
     }
     if (!rc && a.fmt_df3) {
-        st = soak_volume_write_df3(&v, a.output, a.bits, err, sizeof err);
+        st = soak_volume_stage_df3(&stage, &v, a.output, a.bits, err, sizeof err);
         if (st != SOAK_OK) rc = bake_fail(CMD, st, err);
     }
     if (rc) {
-        static const char *const written[] = {".vdb", ".json", ".raw"};
-        for (int k = 0; k < 3; ++k)
-            if (k == 0 ? done_vdb : done_grid) {
-                snprintf(path, sizeof path, "%s%s", a.output, written[k]);
-                remove(path);
-            }
+        soak_staged_abort(&stage);
+    } else if ((st = soak_staged_commit(&stage, err, sizeof err)) != SOAK_OK) {
+        rc = bake_fail(CMD, st, err);
     } else {
         printf("%s: %dx%dx%d voxels,%s%s%s\n", a.output, v.nx, v.ny, v.nz, a.fmt_vdb ? " vdb" : "",
                a.fmt_grid ? " grid" : "", a.fmt_df3 ? " df3" : "");

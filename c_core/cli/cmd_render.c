@@ -14,6 +14,11 @@
 
 static volatile sig_atomic_t interrupted = 0;
 
+/* Memory of a render per pixel: the sums (3 doubles) and sample count (an
+ * int) of soak_render, its float RGB image and the encoder's copy of it. */
+#define RENDER_BYTES_PER_PIXEL (3 * 8 + 4 + 3 * 4 + 3 * 4)
+#define RENDER_MAX_MIB 4096
+
 static void on_sigint(int sig)
 {
     (void)sig;
@@ -35,7 +40,8 @@ static void usage(FILE *out)
             "  --threads N         worker threads (default: the number of CPUs)\n"
             "  --seed S            random seed (default 1); same seed + spp -> identical pixels\n"
             "  --time T            stop after T seconds and keep what is done\n"
-            "  --width W --height H  image size (default: the scene's render.width/height)\n"
+            "  --width W --height H  image size (default: the scene's render.width/height); a render\n"
+            "                      takes 52 bytes per pixel and is refused above 4096 MiB (about 9000^2)\n"
             "  --max-depth N       path length cap (default: the scene's render.max_depth)\n"
             "  -q, --quiet         no statistics on stdout\n\n"
             "example:\n"
@@ -112,6 +118,12 @@ int soak_cmd_render(int argc, char **argv)
         cli_error(cmd, "-o %s: refusing to overwrite the scene file", out_path);
         return SOAK_EXIT_USAGE;
     }
+    char err[4096];
+    soak_status pst = soak_path_check_writable(out_path, err, sizeof err);
+    if (pst == SOAK_ERR_ARG) {
+        cli_error(cmd, "-o: %s", err);
+        return SOAK_EXIT_USAGE;
+    }
     int linear = has_ext(out_path, ".exr") || has_ext(out_path, ".hdr") || has_ext(out_path, ".tif") ||
                  has_ext(out_path, ".tiff");
     int toned = has_ext(out_path, ".png") || has_ext(out_path, ".jpg") || has_ext(out_path, ".jpeg");
@@ -119,8 +131,7 @@ int soak_cmd_render(int argc, char **argv)
         cli_error(cmd, "-o %s: unsupported extension (use .exr, .hdr, .tif, .png or .jpg)", out_path);
         return SOAK_EXIT_USAGE;
     }
-    char err[4096];
-    if (soak_path_check_writable(out_path, err, sizeof err) != SOAK_OK) {
+    if (pst != SOAK_OK) {
         cli_error(cmd, "-o %s: %s", out_path, err);
         return SOAK_EXIT_FAIL;
     }
@@ -137,6 +148,14 @@ int soak_cmd_render(int argc, char **argv)
             return SOAK_EXIT_USAGE;
         }
 
+    int W = width > 0 ? (int)width : scene.width, H = height > 0 ? (int)height : scene.height;
+    double need_mib = (double)W * H * RENDER_BYTES_PER_PIXEL / 1048576.0;
+    if (need_mib > RENDER_MAX_MIB) {
+        cli_error(cmd, "a %dx%d render needs %.0f MiB (%d bytes per pixel); the limit is %d MiB", W, H, need_mib,
+                  RENDER_BYTES_PER_PIXEL, RENDER_MAX_MIB);
+        soak_scene_free(&scene);
+        return SOAK_EXIT_USAGE;
+    }
     struct sigaction sa, old;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_sigint;
@@ -189,7 +208,8 @@ int soak_cmd_render(int argc, char **argv)
         printf("samples per pixel: %d..%d%s\n", stats.min_spp, stats.max_spp, stats.stopped_early ? " (stopped early)" : "");
         printf("paths: %lld (%.0f paths/s)\n", stats.paths, stats.paths / secs);
         printf("rays: %lld (%.0f rays/s)\n", stats.rays, stats.rays / secs);
-        printf("capped paths: %lld, leaked medium paths: %lld\n", stats.capped, stats.leaked);
+        printf("capped paths: %lld, leaked medium paths: %lld, NaN paths: %lld, geometry errors: %lld\n", stats.capped,
+               stats.leaked, stats.nan_paths, stats.geometry_errors);
         printf("time: %.2f s with %ld threads\n", stats.seconds, threads);
     }
     if (interrupted) {

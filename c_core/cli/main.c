@@ -1,4 +1,5 @@
 /* soak: git-style entry point; each subcommand is in its own cmd_*.c. */
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -27,16 +28,28 @@ static void usage(FILE *out)
     fprintf(out, "\nexample:\n  soak albedo --material sand --wetness 1\n");
 }
 
+/* Results that never reached stdout (a full disk, /dev/full, a closed pipe)
+ * turn a successful exit into a failure. */
+static int check_stdout(const char *name, int rc)
+{
+    if (fflush(stdout) == 0 && !ferror(stdout)) return rc;
+    if (rc != SOAK_EXIT_OK) return rc; /* the command has reported its failure */
+    int e = errno;
+    fprintf(stderr, "soak%s%s: cannot write the results to standard output: %s\n", name ? " " : "", name ? name : "",
+            strerror(e ? e : EIO));
+    return rc == SOAK_EXIT_OK ? SOAK_EXIT_FAIL : rc;
+}
+
 int main(int argc, char **argv)
 {
     int rc = cli_dispatch_help(argc, argv, usage);
-    if (rc >= 0) return rc;
+    if (rc >= 0) return check_stdout(NULL, rc);
     if (strcmp(argv[1], "--version") == 0) {
         printf("soak 0.1.0\n");
-        return SOAK_EXIT_OK;
+        return check_stdout(NULL, SOAK_EXIT_OK);
     }
     const soak_cli_command *cmd = cli_find(commands, n_commands, argv[1]);
-    if (cmd) return cmd->run(argc - 1, argv + 1);
+    if (cmd) return check_stdout(cmd->name, cmd->run(argc - 1, argv + 1));
     fprintf(stderr, "soak: unknown command '%s' (see 'soak --help')\n", argv[1]);
     return SOAK_EXIT_USAGE;
 }

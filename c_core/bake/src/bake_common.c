@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "soak/hash.h"
+#include "soak/staged.h"
 
 int soak_bake_threads(const soak_bake_exec *exec)
 {
@@ -140,19 +141,34 @@ static int supported_extension(const char *ext)
     return 0;
 }
 
-soak_status soak_bake_write(const char *path, const soak_image *img, int float_exr, char *err, size_t errlen)
+soak_status soak_bake_stage(soak_staged *stage, const char *path, const soak_image *img, int float_exr, char *err,
+                            size_t errlen)
 {
-    if (!path || !img || !img->pixels) return SOAK_ERR_NULL;
+    if (!stage || !path || !img || !img->pixels) return SOAK_ERR_NULL;
+    soak_status st = soak_path_check_writable(path, err, errlen);
+    if (st != SOAK_OK) return st;
     const char *ext = extension_of(path);
     if (!supported_extension(ext)) {
         if (err && errlen) snprintf(err, errlen, "%s: unsupported output type (use .exr, .png, .tif or .tx)", path);
         return SOAK_ERR_ARG;
     }
-    if (strcasecmp(ext, "tx") == 0) return soak_image_write_tx(path, img, err, errlen);
+    if (strcasecmp(ext, "tx") == 0) return soak_image_stage_tx(stage, path, img, err, errlen);
     soak_image_write_opts opts = {SOAK_TONE_LINEAR, SOAK_PIXEL_AUTO};
     if (strcasecmp(ext, "exr") == 0) opts.pixel_type = float_exr ? SOAK_PIXEL_FLOAT : SOAK_PIXEL_HALF;
     else opts.pixel_type = SOAK_PIXEL_UINT16;
-    return soak_image_write(path, img, &opts, err, errlen);
+    return soak_image_stage(stage, path, img, &opts, err, errlen);
+}
+
+soak_status soak_bake_write(const char *path, const soak_image *img, int float_exr, char *err, size_t errlen)
+{
+    soak_staged stage;
+    soak_staged_init(&stage);
+    soak_status st = soak_bake_stage(&stage, path, img, float_exr, err, errlen);
+    if (st != SOAK_OK) {
+        soak_staged_abort(&stage);
+        return st;
+    }
+    return soak_staged_commit(&stage, err, errlen);
 }
 
 /* Finds the single integer conversion of a pattern. Returns the number of
@@ -231,6 +247,8 @@ soak_status soak_bake_check_output(const char *path, const char *const *inputs, 
                                    size_t errlen)
 {
     if (!path || (n_inputs > 0 && !inputs)) return SOAK_ERR_NULL;
+    soak_status st = soak_path_check_writable(path, err, errlen);
+    if (st == SOAK_ERR_ARG) return st;
     if (!supported_extension(extension_of(path))) {
         if (err && errlen) snprintf(err, errlen, "%s: unsupported output type (use .exr, .png, .tif or .tx)", path);
         return SOAK_ERR_ARG;

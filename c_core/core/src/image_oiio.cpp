@@ -2,7 +2,9 @@
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/filesystem.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +16,7 @@
 
 extern "C" {
 #include "soak/image.h"
+#include "soak/staged.h"
 }
 
 using namespace OIIO;
@@ -33,14 +36,6 @@ std::string extension_of(const std::string &path)
     std::string ext = path.substr(dot + 1);
     for (auto &c : ext) c = (char)std::tolower((unsigned char)c);
     return ext;
-}
-
-std::string temp_path_for(const std::string &path)
-{
-    size_t slash = path.find_last_of('/');
-    std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
-    std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    return dir + "." + base + ".tmp" + std::to_string((long)getpid()) + "." + extension_of(path);
 }
 
 TypeDesc pixel_type_for(const std::string &ext, soak_pixel_type t)
@@ -105,6 +100,14 @@ extern "C" soak_status soak_image_read(const char *path, soak_image *img, char *
         set_err(err, errlen, std::string(path) + ": volume images are not supported");
         return SOAK_ERR_UNSUPPORTED;
     }
+    double bytes = (double)spec.width * spec.height * ch * sizeof(float);
+    if (bytes > SOAK_IMAGE_MAX_BYTES) {
+        set_err(err, errlen, std::string(path) + ": a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                                 " image needs " + std::to_string((long long)(bytes / 1048576)) +
+                                 " MiB as float pixels; the limit is " +
+                                 std::to_string((long long)(SOAK_IMAGE_MAX_BYTES / 1048576)) + " MiB");
+        return SOAK_ERR_ARG;
+    }
     soak_status st = soak_image_alloc(img, spec.width, spec.height, ch);
     if (st != SOAK_OK) {
         set_err(err, errlen, std::string(path) + ": image size out of range or out of memory");
@@ -118,28 +121,16 @@ extern "C" soak_status soak_image_read(const char *path, soak_image *img, char *
     in->close();
     size_t n = (size_t)img->width * img->height * img->channels;
     for (size_t i = 0; i < n; ++i)
-        if (!std::isfinite(img->pixels[i])) img->pixels[i] = 0.0f;
-    return SOAK_OK;
-}
-
-extern "C" soak_status soak_path_check_writable(const char *path, char *err, size_t errlen)
-{
-    if (!path || !*path) {
-        set_err(err, errlen, "output path is empty");
-        return SOAK_ERR_ARG;
-    }
-    std::string p(path);
-    size_t slash = p.find_last_of('/');
-    std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : p.substr(0, slash));
-    struct stat sb;
-    if (stat(dir.c_str(), &sb) != 0 || !S_ISDIR(sb.st_mode)) {
-        set_err(err, errlen, p + ": output folder '" + dir + "' does not exist");
-        return SOAK_ERR_IO;
-    }
-    if (access(dir.c_str(), W_OK) != 0) {
-        set_err(err, errlen, p + ": output folder '" + dir + "' is not writable");
-        return SOAK_ERR_IO;
-    }
+        if (!std::isfinite(img->pixels[i])) {
+            size_t px = i / img->channels;
+            set_err(err, errlen, std::string(path) + ": pixel (" + std::to_string(px % img->width) + ", " +
+                                     std::to_string(px / img->width) + ") channel " +
+                                     std::to_string(i % img->channels) + " is " +
+                                     (std::isnan(img->pixels[i]) ? "NaN" : "infinite") +
+                                     ": images must hold finite values");
+            soak_image_free(img);
+            return SOAK_ERR_ARG;
+        }
     return SOAK_OK;
 }
 
@@ -152,28 +143,52 @@ extern "C" int soak_path_same(const char *a, const char *b)
     return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
 }
 
-static soak_status write_buf(const std::string &path, ImageBuf &buf, TypeDesc type, char *err, size_t errlen)
+
+namespace {
+
+// Encodes img in the format named by path's extension into memory (every
+// writer OIIO 2.4 has for our formats accepts an I/O proxy), so that every
+// byte reaches the disk through one checked write.
+soak_status encode(const std::string &path, const ImageSpec &spec, const float *pixels, std::vector<unsigned char> &out,
+                   char *err, size_t errlen)
 {
-    std::string tmp = temp_path_for(path);
-    buf.set_write_format(type);
-    if (!buf.write(tmp)) {
-        std::remove(tmp.c_str());
-        set_err(err, errlen, path + ": cannot write image: " + buf.geterror());
-        return SOAK_ERR_IO;
+    auto w = ImageOutput::create(path);
+    if (!w) {
+        set_err(err, errlen, path + ": unsupported output type: " + OIIO::geterror());
+        return SOAK_ERR_ARG;
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        set_err(err, errlen, path + ": cannot move finished image into place: " + std::strerror(errno));
+    if (!w->supports("ioproxy")) {
+        set_err(err, errlen, path + ": this output type cannot be written safely (no I/O proxy)");
+        return SOAK_ERR_UNSUPPORTED;
+    }
+    Filesystem::IOVecOutput proxy(out);
+    w->set_ioproxy(&proxy);
+    if (!w->open(path, spec) || !w->write_image(TypeDesc::FLOAT, pixels) || !w->close()) {
+        set_err(err, errlen, path + ": cannot encode image: " + w->geterror());
         return SOAK_ERR_IO;
     }
     return SOAK_OK;
 }
 
-extern "C" soak_status soak_image_write(const char *path, const soak_image *img, const soak_image_write_opts *opts,
-                                        char *err, size_t errlen)
+void convert_pixels(const soak_image *img, const soak_image_write_opts &o, bool integer, float *dst)
 {
-    if (!path || !img || !img->pixels) return SOAK_ERR_NULL;
-    soak_status st = soak_path_check_writable(path, err, errlen);
+    size_t n = (size_t)img->width * img->height * img->channels;
+    for (size_t i = 0; i < n; ++i) {
+        float v = img->pixels[i];
+        if (!std::isfinite(v)) v = 0.0f;
+        if (o.tone == SOAK_TONE_SRGB && (img->channels < 4 || (i % 4) != 3)) v = srgb_encode(v);
+        if (integer) v = v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v);
+        dst[i] = v;
+    }
+}
+
+} // namespace
+
+extern "C" soak_status soak_image_stage(soak_staged *stage, const char *path, const soak_image *img,
+                                        const soak_image_write_opts *opts, char *err, size_t errlen)
+{
+    if (!stage || !path || !img || !img->pixels) return SOAK_ERR_NULL;
+    soak_status st = soak_output_path_check(path, err, errlen);
     if (st != SOAK_OK) return st;
     std::string ext = extension_of(path);
     if (ext.empty()) {
@@ -183,45 +198,141 @@ extern "C" soak_status soak_image_write(const char *path, const soak_image *img,
     soak_image_write_opts o = {SOAK_TONE_LINEAR, SOAK_PIXEL_AUTO};
     if (opts) o = *opts;
     TypeDesc type = pixel_type_for(ext, o.pixel_type);
-    ImageSpec spec(img->width, img->height, img->channels, TypeDesc::FLOAT);
+    ImageSpec spec(img->width, img->height, img->channels, type);
     if (o.tone == SOAK_TONE_SRGB) spec.attribute("oiio:ColorSpace", "sRGB");
     else spec.attribute("oiio:ColorSpace", "Linear");
     if (ext == "exr") spec.attribute("compression", "zip");
-    ImageBuf buf(spec);
-    size_t n = (size_t)img->width * img->height * img->channels;
-    float *dst = (float *)buf.localpixels();
+    // An empty DateTime keeps OIIO's EXR and TIFF writers from stamping the
+    // clock into the file: the same pixels give the same bytes.
+    spec.attribute("DateTime", "");
     bool integer = type.basetype == TypeDesc::UINT16 || type.basetype == TypeDesc::UINT8;
-    for (size_t i = 0; i < n; ++i) {
-        float v = img->pixels[i];
-        if (!std::isfinite(v)) v = 0.0f;
-        if (o.tone == SOAK_TONE_SRGB && (img->channels < 4 || (i % 4) != 3)) v = srgb_encode(v);
-        if (integer) v = v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v);
-        dst[i] = v;
+    std::vector<float> px((size_t)img->width * img->height * img->channels);
+    convert_pixels(img, o, integer, px.data());
+    std::vector<unsigned char> bytes;
+    st = encode(path, spec, px.data(), bytes, err, errlen);
+    if (st != SOAK_OK) return st;
+    return soak_staged_write(stage, path, bytes.data(), bytes.size(), err, errlen);
+}
+
+extern "C" soak_status soak_image_write(const char *path, const soak_image *img, const soak_image_write_opts *opts,
+                                        char *err, size_t errlen)
+{
+    soak_staged stage;
+    soak_staged_init(&stage);
+    soak_status st = soak_image_stage(&stage, path, img, opts, err, errlen);
+    if (st != SOAK_OK) {
+        soak_staged_abort(&stage);
+        return st;
     }
-    return write_buf(path, buf, type, err, errlen);
+    return soak_staged_commit(&stage, err, errlen);
+}
+
+// Reads every level of the texture at tmp back, which fails on a file cut
+// short by a failed write that the TIFF writer did not report.
+static bool texture_reads_back(const char *tmp, int levels, std::string &why)
+{
+    auto in = ImageInput::open(tmp);
+    if (!in) {
+        why = OIIO::geterror();
+        return false;
+    }
+    std::vector<float> px;
+    int n = 0;
+    for (; in->seek_subimage(0, n); ++n) { // a texture's levels read as MIP levels
+        const ImageSpec &s = in->spec();
+        px.resize((size_t)s.width * s.height * s.nchannels);
+        if (!in->read_image(0, n, 0, s.nchannels, TypeDesc::FLOAT, px.data())) {
+            why = in->geterror();
+            return false;
+        }
+    }
+    if (n != levels) why = "texture has " + std::to_string(n) + " of its " + std::to_string(levels) + " levels";
+    return n == levels;
+}
+
+// Every tile from a zero-padded buffer: write_image leaves the padding of
+// partial edge tiles uninitialised, so the same texture got different bytes.
+static bool write_tiles(ImageOutput &w, const ImageSpec &spec, const float *px)
+{
+    const int tw = spec.tile_width, th = spec.tile_height, ch = spec.nchannels;
+    std::vector<float> tile((size_t)tw * th * ch);
+    for (int y0 = 0; y0 < spec.height; y0 += th)
+        for (int x0 = 0; x0 < spec.width; x0 += tw) {
+            std::fill(tile.begin(), tile.end(), 0.0f);
+            for (int y = y0; y < std::min(y0 + th, spec.height); ++y)
+                std::memcpy(&tile[((size_t)(y - y0) * tw) * ch], px + ((size_t)y * spec.width + x0) * ch,
+                            (size_t)(std::min(x0 + tw, spec.width) - x0) * ch * sizeof(float));
+            if (!w.write_tile(x0, y0, 0, TypeDesc::FLOAT, tile.data())) return false;
+        }
+    return true;
+}
+
+// A mip-mapped, tiled TIFF texture as maketx makes it ("Plain Texture",
+// 64x64 tiles, each level half the previous, lanczos3 filtered; TIFF holds
+// the levels as subimages, which readers take as MIP levels). OIIO's
+// make_texture writes through its own temporary file next to the target
+// (which an interrupt would leave behind), and OIIO 2.4's TIFF writer loses
+// every subimage but the last through an in-memory I/O proxy, so the levels
+// are written here to the staged file's path and read back.
+static soak_status write_tx(const char *tmp, const std::string &path, const soak_image *img, char *err,
+                            size_t errlen)
+{
+    auto w = ImageOutput::create("tiff");
+    if (!w) {
+        set_err(err, errlen, path + ": cannot make texture: " + OIIO::geterror());
+        return SOAK_ERR_UNSUPPORTED;
+    }
+    std::vector<ImageSpec> specs;
+    for (int x = img->width, y = img->height;; x = std::max(1, x / 2), y = std::max(1, y / 2)) {
+        ImageSpec spec(x, y, img->channels, TypeDesc::HALF);
+        spec.tile_width = spec.tile_height = 64;
+        spec.attribute("textureformat", "Plain Texture");
+        spec.attribute("wrapmodes", "black,black");
+        spec.attribute("oiio:ColorSpace", "Linear");
+        spec.attribute("compression", "zip");
+        spec.attribute("DateTime", "");
+        specs.push_back(spec);
+        if (x == 1 && y == 1) break;
+    }
+    ImageBuf level(ImageSpec(img->width, img->height, img->channels, TypeDesc::FLOAT));
+    std::memcpy(level.localpixels(), img->pixels, (size_t)img->width * img->height * img->channels * sizeof(float));
+    bool ok = w->open(tmp, (int)specs.size(), specs.data());
+    for (size_t mip = 0; ok && mip < specs.size(); ++mip) {
+        ok = (mip == 0 || w->open(tmp, specs[mip], ImageOutput::AppendSubimage)) &&
+             write_tiles(*w, specs[mip], (const float *)level.localpixels());
+        if (!ok || mip + 1 == specs.size()) break;
+        ImageBuf next(ImageSpec(specs[mip + 1].width, specs[mip + 1].height, img->channels, TypeDesc::FLOAT));
+        ok = ImageBufAlgo::resize(next, level, "lanczos3");
+        level.swap(next);
+    }
+    std::string why;
+    if (!ok || !w->close()) why = w->geterror() + level.geterror();
+    else texture_reads_back(tmp, (int)specs.size(), why);
+    if (!why.empty()) {
+        set_err(err, errlen, path + ": cannot write texture: " + why);
+        return SOAK_ERR_IO;
+    }
+    return SOAK_OK;
+}
+
+extern "C" soak_status soak_image_stage_tx(soak_staged *stage, const char *path, const soak_image *img, char *err,
+                                           size_t errlen)
+{
+    if (!stage || !path || !img || !img->pixels) return SOAK_ERR_NULL;
+    const char *tmp = nullptr;
+    soak_status st = soak_staged_add(stage, path, &tmp, err, errlen);
+    if (st != SOAK_OK) return st;
+    return write_tx(tmp, path, img, err, errlen);
 }
 
 extern "C" soak_status soak_image_write_tx(const char *path, const soak_image *img, char *err, size_t errlen)
 {
-    if (!path || !img || !img->pixels) return SOAK_ERR_NULL;
-    soak_status st = soak_path_check_writable(path, err, errlen);
-    if (st != SOAK_OK) return st;
-    ImageSpec spec(img->width, img->height, img->channels, TypeDesc::FLOAT);
-    spec.attribute("oiio:ColorSpace", "Linear");
-    ImageBuf src(spec, (void *)img->pixels);
-    ImageSpec config;
-    config.format = TypeDesc::HALF;
-    config.attribute("maketx:filtername", "lanczos3");
-    std::string tmp = temp_path_for(path);
-    if (!ImageBufAlgo::make_texture(ImageBufAlgo::MakeTxTexture, src, tmp, config)) {
-        std::remove(tmp.c_str());
-        set_err(err, errlen, std::string(path) + ": cannot make texture: " + OIIO::geterror());
-        return SOAK_ERR_IO;
+    soak_staged stage;
+    soak_staged_init(&stage);
+    soak_status st = soak_image_stage_tx(&stage, path, img, err, errlen);
+    if (st != SOAK_OK) {
+        soak_staged_abort(&stage);
+        return st;
     }
-    if (std::rename(tmp.c_str(), path) != 0) {
-        std::remove(tmp.c_str());
-        set_err(err, errlen, std::string(path) + ": cannot move finished texture into place");
-        return SOAK_ERR_IO;
-    }
-    return SOAK_OK;
+    return soak_staged_commit(&stage, err, errlen);
 }

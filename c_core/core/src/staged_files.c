@@ -1,12 +1,21 @@
-#define _POSIX_C_SOURCE 200809L
-#include "soak/staged_files.h"
+/* Staged output files; see soak/staged.h. */
+#define _GNU_SOURCE
+#include "soak/staged.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "soak/image.h"
+
+static void set_err(char *err, size_t errlen, const char *fmt, const char *a, const char *b)
+{
+    if (err && errlen) snprintf(err, errlen, fmt, a, b);
+}
 
 void soak_staged_init(soak_staged *s)
 {
@@ -16,46 +25,165 @@ void soak_staged_init(soak_staged *s)
 static void free_all(soak_staged *s)
 {
     for (int i = 0; i < s->count; ++i) {
-        free(s->tmp[i]);
-        free(s->dst[i]);
+        soak_staged_file *f = &s->files[i];
+        if (f->fd >= 0) close(f->fd);
+        if (f->named) unlink(f->named);
+        free(f->named);
+        free(f->dst);
     }
-    free(s->tmp);
-    free(s->dst);
+    free(s->files);
     soak_staged_init(s);
+}
+
+static const char *base_of(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+/* The folder part of path ("." when none, "/" for the root). */
+static void dir_of(const char *path, char *dir, size_t n)
+{
+    const char *slash = strrchr(path, '/');
+    if (!slash) snprintf(dir, n, ".");
+    else if (slash == path) snprintf(dir, n, "/");
+    else snprintf(dir, n, "%.*s", (int)(slash - path), path);
+}
+
+soak_status soak_path_check_writable(const char *path, char *err, size_t errlen)
+{
+    if (!path || !*path) {
+        set_err(err, errlen, "%soutput path is empty%s", "", "");
+        return SOAK_ERR_ARG;
+    }
+    const char *base = base_of(path);
+    if (!*base || !strcmp(base, ".") || !strcmp(base, "..")) {
+        set_err(err, errlen, "%s: names a folder, not a file%s", path, "");
+        return SOAK_ERR_ARG;
+    }
+    if (base[0] == '.' && !strchr(base + 1, '.')) {
+        set_err(err, errlen, "%s: no file name before the extension '%s'", path, base);
+        return SOAK_ERR_ARG;
+    }
+    char dir[PATH_MAX];
+    if (strlen(path) >= sizeof dir) {
+        set_err(err, errlen, "%.200s...: output path too long%s", path, "");
+        return SOAK_ERR_ARG;
+    }
+    dir_of(path, dir, sizeof dir);
+    struct stat sb;
+    if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode)) {
+        set_err(err, errlen, "%s: output folder '%s' does not exist", path, dir);
+        return SOAK_ERR_IO;
+    }
+    if (access(dir, W_OK) != 0) {
+        set_err(err, errlen, "%s: output folder '%s' is not writable", path, dir);
+        return SOAK_ERR_IO;
+    }
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode)) {
+        set_err(err, errlen, S_ISDIR(sb.st_mode) ? "%s: is a folder, not a file%s"
+                                                 : "%s: exists and is not a regular file%s", path, "");
+        return SOAK_ERR_ARG;
+    }
+    return SOAK_OK;
+}
+
+soak_status soak_output_path_check(const char *path, char *err, size_t errlen)
+{
+    return soak_path_check_writable(path, err, errlen);
+}
+
+/* dst itself, or the file a symbolic link dst points to (malloc'ed). */
+static soak_status resolve(const char *dst, char **out, char *err, size_t errlen)
+{
+    struct stat lb;
+    *out = NULL;
+    if (dst && *dst && lstat(dst, &lb) == 0 && S_ISLNK(lb.st_mode)) {
+        *out = realpath(dst, NULL);
+        if (!*out) {
+            set_err(err, errlen, "%s: is a symbolic link to a missing file (%s)", dst, strerror(errno));
+            return SOAK_ERR_IO;
+        }
+        return SOAK_OK;
+    }
+    *out = strdup(dst ? dst : "");
+    return *out ? SOAK_OK : SOAK_ERR_NOMEM;
+}
+
+static soak_status grow(soak_staged *s)
+{
+    if (s->count < s->capacity) return SOAK_OK;
+    int cap = s->capacity ? 2 * s->capacity : 8;
+    soak_staged_file *f = realloc(s->files, (size_t)cap * sizeof *f);
+    if (!f) return SOAK_ERR_NOMEM;
+    s->files = f;
+    s->capacity = cap;
+    return SOAK_OK;
+}
+
+static char *named_temp(const char *dst, int index)
+{
+    const char *base = base_of(dst);
+    size_t n = strlen(dst) + 64;
+    char *tmp = malloc(n);
+    if (tmp) snprintf(tmp, n, "%.*s.%s.tmp%ld.%d", (int)(base - dst), dst, base, (long)getpid(), index);
+    return tmp;
+}
+
+/* An anonymous file in dst's folder, or -1 when the file system or /proc
+ * does not allow one. */
+static int anonymous_file(const char *dst, char *proc, size_t n)
+{
+#ifdef O_TMPFILE
+    char dir[PATH_MAX];
+    dir_of(dst, dir, sizeof dir);
+    int fd = open(dir, O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    if (fd < 0) return -1;
+    snprintf(proc, n, "/proc/self/fd/%d", fd);
+    if (access(proc, F_OK) != 0) {
+        close(fd);
+        return -1;
+    }
+    return fd;
+#else
+    (void)dst, (void)proc, (void)n;
+    return -1;
+#endif
 }
 
 soak_status soak_staged_add(soak_staged *s, const char *dst, const char **tmp_out, char *err, size_t errlen)
 {
     if (!s || !dst || !tmp_out) return SOAK_ERR_NULL;
-    soak_status st = soak_path_check_writable(dst, err, errlen);
-    if (st != SOAK_OK) return st;
-    if (s->count == s->capacity) {
-        int cap = s->capacity ? 2 * s->capacity : 8;
-        char **t = realloc(s->tmp, (size_t)cap * sizeof *t);
-        if (!t) return SOAK_ERR_NOMEM;
-        s->tmp = t;
-        char **d = realloc(s->dst, (size_t)cap * sizeof *d);
-        if (!d) return SOAK_ERR_NOMEM;
-        s->dst = d;
-        s->capacity = cap;
+    char *real = NULL;
+    soak_status st = resolve(dst, &real, err, errlen);
+    if (st == SOAK_OK) st = soak_path_check_writable(real, err, errlen);
+    if (st == SOAK_OK) st = grow(s);
+    if (st != SOAK_OK) {
+        free(real);
+        return st;
     }
-    /* Hidden temporary next to the target: ".<base>.tmp<pid>.<n>" */
-    const char *slash = strrchr(dst, '/');
-    size_t dirlen = slash ? (size_t)(slash - dst + 1) : 0;
-    size_t n = strlen(dst) + 64;
-    char *tmp = malloc(n);
-    char *cpy = malloc(strlen(dst) + 1);
-    if (!tmp || !cpy) {
-        free(tmp);
-        free(cpy);
-        return SOAK_ERR_NOMEM;
+    soak_staged_file *f = &s->files[s->count];
+    memset(f, 0, sizeof *f);
+    f->dst = real;
+    f->fd = anonymous_file(real, f->path, sizeof f->path);
+    if (f->fd < 0) {
+        f->named = named_temp(real, s->count);
+        if (!f->named) {
+            free(real);
+            return SOAK_ERR_NOMEM;
+        }
+        f->fd = open(f->named, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (f->fd < 0 || strlen(f->named) >= sizeof f->path) {
+            set_err(err, errlen, "%s: cannot create a temporary file: %s", dst, strerror(f->fd < 0 ? errno : ENAMETOOLONG));
+            if (f->fd >= 0) close(f->fd), unlink(f->named);
+            free(f->named);
+            free(real);
+            return SOAK_ERR_IO;
+        }
+        snprintf(f->path, sizeof f->path, "%s", f->named);
     }
-    snprintf(tmp, n, "%.*s.%s.tmp%ld.%d", (int)dirlen, dst, dst + dirlen, (long)getpid(), s->count);
-    strcpy(cpy, dst);
-    s->tmp[s->count] = tmp;
-    s->dst[s->count] = cpy;
     s->count++;
-    *tmp_out = tmp;
+    *tmp_out = f->path;
     return SOAK_OK;
 }
 
@@ -66,9 +194,11 @@ soak_status soak_staged_open(soak_staged *s, const char *dst, FILE **f, char *er
     const char *tmp = NULL;
     soak_status st = soak_staged_add(s, dst, &tmp, err, errlen);
     if (st != SOAK_OK) return st;
-    *f = fopen(tmp, "wb");
+    int fd = dup(s->files[s->count - 1].fd);
+    *f = fd >= 0 ? fdopen(fd, "wb") : NULL;
     if (!*f) {
-        if (err && errlen) snprintf(err, errlen, "%s: cannot create file: %s", dst, strerror(errno));
+        set_err(err, errlen, "%s: cannot create file: %s", dst, strerror(errno));
+        if (fd >= 0) close(fd);
         return SOAK_ERR_IO;
     }
     return SOAK_OK;
@@ -76,32 +206,78 @@ soak_status soak_staged_open(soak_staged *s, const char *dst, FILE **f, char *er
 
 soak_status soak_staged_close(FILE *f, const char *dst, char *err, size_t errlen)
 {
-    int bad = ferror(f);
-    if (fclose(f) != 0) bad = 1;
+    if (!f) return SOAK_ERR_NULL;
+    int bad = fflush(f) != 0 || ferror(f);
+    int e = errno;
+    if (fclose(f) != 0 && !bad) bad = 1, e = errno;
     if (bad) {
-        if (err && errlen) snprintf(err, errlen, "%s: write failed (disk full?)", dst);
+        set_err(err, errlen, "%s: write failed: %s", dst, strerror(e));
         return SOAK_ERR_IO;
     }
+    return SOAK_OK;
+}
+
+soak_status soak_staged_write(soak_staged *s, const char *dst, const void *data, size_t len, char *err,
+                              size_t errlen)
+{
+    const char *tmp = NULL;
+    soak_status st = soak_staged_add(s, dst, &tmp, err, errlen);
+    if (st != SOAK_OK) return st;
+    int fd = s->files[s->count - 1].fd;
+    const char *p = data;
+    while (len > 0) {
+        ssize_t w = write(fd, p, len);
+        if (w < 0 && errno == EINTR) continue;
+        if (w <= 0) {
+            set_err(err, errlen, "%s: write failed: %s", dst, strerror(w < 0 ? errno : ENOSPC));
+            return SOAK_ERR_IO;
+        }
+        p += w;
+        len -= (size_t)w;
+    }
+    return SOAK_OK;
+}
+
+/* Gives staged file f its final name. */
+static soak_status publish(soak_staged_file *f, int index, char *err, size_t errlen)
+{
+    if (!f->named) {
+        char *name = named_temp(f->dst, index);
+        if (!name) return SOAK_ERR_NOMEM;
+        if (linkat(AT_FDCWD, f->path, AT_FDCWD, name, AT_SYMLINK_FOLLOW) != 0) {
+            set_err(err, errlen, "%s: cannot name the finished file: %s", f->dst, strerror(errno));
+            free(name);
+            return SOAK_ERR_IO;
+        }
+        f->named = name;
+    }
+    if (rename(f->named, f->dst) != 0) {
+        set_err(err, errlen, "%s: cannot move into place: %s", f->dst, strerror(errno));
+        return SOAK_ERR_IO;
+    }
+    free(f->named);
+    f->named = NULL;
     return SOAK_OK;
 }
 
 soak_status soak_staged_commit(soak_staged *s, char *err, size_t errlen)
 {
     for (int i = 0; i < s->count; ++i) {
-        if (rename(s->tmp[i], s->dst[i]) != 0) {
-            if (err && errlen) snprintf(err, errlen, "%s: cannot move into place: %s", s->dst[i], strerror(errno));
-            /* Files already renamed stay complete; the rest are removed. */
-            for (int j = i; j < s->count; ++j) remove(s->tmp[j]);
+        if (fsync(s->files[i].fd) != 0) {
+            set_err(err, errlen, "%s: write failed: %s", s->files[i].dst, strerror(errno));
             free_all(s);
             return SOAK_ERR_IO;
         }
     }
+    /* Every output is complete on disk: only a rename can fail from here
+     * (files already renamed then stay complete, the rest are removed). */
+    soak_status st = SOAK_OK;
+    for (int i = 0; i < s->count && st == SOAK_OK; ++i) st = publish(&s->files[i], i, err, errlen);
     free_all(s);
-    return SOAK_OK;
+    return st;
 }
 
 void soak_staged_abort(soak_staged *s)
 {
-    for (int i = 0; i < s->count; ++i) remove(s->tmp[i]);
     free_all(s);
 }

@@ -1,5 +1,6 @@
 /* Adapters from soak_model_params to each model's own API (soak/models.h). */
 #include "soak/models.h"
+#include "soak/fresnel.h"
 
 #include <string.h>
 
@@ -16,7 +17,7 @@ void soak_model_params_default(soak_model_params *p)
     p->ior = 1.5;
     p->k = 0.0;
     p->roughness = 0.3;
-    p->n_film = 1.33;
+    p->n_film = SOAK_WATER_IOR;
     p->absorption = 0.35;
     p->thickness = 1e-3;
     p->porosity = 0.3;

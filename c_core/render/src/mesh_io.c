@@ -1,5 +1,6 @@
 /* Mesh files through Assimp's C API: every mesh of the file merged into one
- * soak_mesh with its node transforms applied. See soak/geometry.h. */
+ * soak_mesh with its node transforms applied. See soak/geometry.h; the
+ * import runs in a child process (mesh_contain.c). */
 #define _POSIX_C_SOURCE 200809L
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
@@ -10,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "mesh_import.h"
 #include "soak/geometry.h"
 
 static void set_err(char *err, size_t errlen, const char *fmt, const char *a, const char *b)
@@ -110,17 +112,36 @@ static void walk(walk_state *w, const struct aiNode *node, const double *parent)
     for (unsigned ci = 0; ci < node->mNumChildren; ++ci) walk(w, node->mChildren[ci], M);
 }
 
-soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen)
+static int raw_vertices_finite(const struct aiScene *sc, const char *path, char *err, size_t errlen)
+{
+    for (unsigned mi = 0; mi < sc->mNumMeshes; ++mi) {
+        const struct aiMesh *m = sc->mMeshes[mi];
+        for (unsigned vi = 0; vi < m->mNumVertices; ++vi) {
+            const struct aiVector3D *p = &m->mVertices[vi];
+            if (isfinite(p->x) && isfinite(p->y) && isfinite(p->z)) continue;
+            if (err && errlen)
+                snprintf(err, errlen, "%s: vertex %u of mesh %u has a non-finite coordinate (%g, %g, %g)", path, vi + 1,
+                         mi + 1, p->x, p->y, p->z);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+soak_status soak_mesh_import(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen)
 {
     if (!path || !mesh) return SOAK_ERR_NULL;
-    FILE *fp = fopen(path, "rb");
-    if (!fp) {
-        set_err(err, errlen, "%s: cannot open mesh file (%s)", path, strerror(errno));
-        return SOAK_ERR_IO;
+    /* Coordinates are checked before post-processing: joining identical
+     * vertices merges a NaN vertex into another one (NaN compares equal in
+     * its spatial sort), leaving a silently degenerate triangle. */
+    const struct aiScene *sc = aiImportFile(path, 0);
+    if (sc && sc->mRootNode && !raw_vertices_finite(sc, path, err, errlen)) {
+        aiReleaseImport(sc);
+        return SOAK_ERR_PARSE;
     }
-    fclose(fp);
-    const struct aiScene *sc = aiImportFile(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                                                      aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+    if (sc && sc->mRootNode)
+        sc = aiApplyPostProcessing(sc, aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                                           aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
     if (!sc || !sc->mRootNode) {
         set_err(err, errlen, "%s: cannot read mesh (%s)", path, aiGetErrorString());
         if (sc) aiReleaseImport(sc);
@@ -159,12 +180,32 @@ soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, c
     walk_state fill = {sc, &m, 0, 0, 0, 0, 0};
     walk(&fill, sc->mRootNode, I);
     aiReleaseImport(sc);
-    for (size_t i = 0; i < 3 * m.n_vertices; ++i)
-        if (!isfinite(m.positions[i])) {
-            soak_mesh_free(&m);
-            set_err(err, errlen, "%s: %s", path, "non-finite vertex coordinate");
-            return SOAK_ERR_PARSE;
-        }
     *mesh = m;
-    return SOAK_OK;
+    return soak_mesh_validate(mesh, path, err, errlen);
+}
+
+soak_status soak_mesh_validate(soak_mesh *m, const char *path, char *err, size_t errlen)
+{
+    const char *why = NULL;
+    char buf[96];
+    for (size_t i = 0; i < 3 * m->n_vertices && !why; ++i)
+        if (!isfinite(m->positions[i])) {
+            snprintf(buf, sizeof buf, "vertex %zu has a non-finite coordinate", i / 3 + 1);
+            why = buf;
+        }
+    for (size_t i = 0; m->uvs && i < 2 * m->n_vertices && !why; ++i)
+        if (!isfinite(m->uvs[i])) {
+            snprintf(buf, sizeof buf, "vertex %zu has a non-finite texture coordinate", i / 2 + 1);
+            why = buf;
+        }
+    for (size_t i = 0; i < 3 * m->n_triangles && !why; ++i)
+        if (m->indices[i] >= m->n_vertices) {
+            snprintf(buf, sizeof buf, "triangle %zu names vertex %u of %zu", i / 3 + 1, m->indices[i] + 1,
+                     m->n_vertices);
+            why = buf;
+        }
+    if (!why) return SOAK_OK;
+    set_err(err, errlen, "%s: %s", path, why);
+    soak_mesh_free(m);
+    return SOAK_ERR_PARSE;
 }

@@ -2,6 +2,7 @@
 #ifndef SOAK_RENDER_INTERNAL_H
 #define SOAK_RENDER_INTERNAL_H
 
+#include <signal.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -66,6 +67,8 @@ typedef struct rt_ctx {
 
 typedef struct rt_counters {
     long long rays, capped, leaked;
+    long long nan_paths;  /* camera paths whose radiance was NaN/Inf (dropped to 0) */
+    long long geom_errors; /* geometry queries that failed (the path or ray ended) */
 } rt_counters;
 
 /* Does the object's wetness read texture coordinates (a wet map)? */
@@ -168,8 +171,16 @@ double rt_sphere_light_pdf(const soak_light *l, soak_vec3 p);
 int rt_visible(rt_thread *t, soak_vec3 p, soak_vec3 wi, double dist);
 
 /* ---- surfaces (render_surface.c) ---- */
+/* Radiance convention: a refraction into index ratio eta multiplies the
+ * radiance by 1/eta^2, and beta carries that factor; eta_scale carries its
+ * inverse (pbrt's etaScale), so beta * eta_scale, the weight Russian roulette
+ * plays on (rt_rr_weight), does not count a factor that the path's exit
+ * undoes. Films and media over a base never put their 1/n^2 into beta:
+ * estimates gathered inside carry it explicitly (render_surface.c,
+ * render_medium.c). */
 typedef struct rt_path {
-    soak_rgb beta;    /* throughput */
+    soak_rgb beta;    /* throughput, radiance factors of refractions included */
+    double eta_scale; /* product of eta^2 over the refractions so far */
     soak_rgb L;       /* radiance gathered */
     soak_vec3 org, dir;
     double prev_pdf;  /* solid-angle pdf of the last BSDF-sampled direction */
@@ -179,6 +190,9 @@ typedef struct rt_path {
     int inside;       /* inside a dielectric: absorb applies per unit length */
     soak_rgb absorb;
 } rt_path;
+
+/* The weight Russian roulette plays on: max_c beta_c * eta_scale. */
+static inline double rt_rr_weight(const rt_path *p) { return rgb_max(p->beta) * p->eta_scale; }
 
 /* Handles the surface interaction at hit: gathers next-event estimates into
  * path->L, updates beta and sets the next ray (or alive = 0). */
@@ -247,7 +261,10 @@ typedef struct rt_photon_map {
 
 /* Traces n photons from the sun and point lights through dielectric objects
  * and stores them at their first scattering event inside a wet medium. */
-soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed, rt_photon_map *map);
+/* Stops early (keeping what is traced, rescaled) when *cancel becomes
+ * non-zero or the monotonic clock passes deadline (0: none). */
+soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed,
+                             const volatile sig_atomic_t *cancel, double deadline, rt_photon_map *map);
 void rt_photons_free(rt_photon_map *map);
 /* sigma_s L_s estimate: sum over photons of object obj within the radius of
  * p(cos) * power / (4/3 pi r^3), cos between the photon's propagation and the

@@ -203,6 +203,9 @@ int rt_visible(rt_thread *t, soak_vec3 p, soak_vec3 wi, double dist)
     if (!(r.tfar > 0)) return 1;
     int occ = 1;
     t->n.rays++;
-    if (soak_geometry_occluded(t->ctx->scene->geometry, &r, &occ) != SOAK_OK) return 0;
+    if (soak_geometry_occluded(t->ctx->scene->geometry, &r, &occ) != SOAK_OK) {
+        t->n.geom_errors++;
+        return 0;
+    }
     return !occ;
 }

@@ -296,8 +296,9 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
             }
             soak_ray r = {x, d3, 0.0, INFINITY};
             t->n.rays++;
-            if (soak_geometry_intersect_local(s->geometry, c->obj->object_id, &r, rt_object_uses_uv(c->obj), &h, &found) != SOAK_OK ||
-                !found) {
+            soak_status gst = soak_geometry_intersect_local(s->geometry, c->obj->object_id, &r, rt_object_uses_uv(c->obj), &h, &found);
+            if (gst != SOAK_OK) t->n.geom_errors++;
+            if (gst != SOAK_OK || !found) {
                 found = 0;
                 break;
             }
@@ -353,7 +354,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
         if (!rt_visible(t, soak_geometry_offset(h.p, n, wl), wl, dist_light)) continue;
         soak_rgb L = rgb_mul(rgb_mul(beta, Tm), E);
         /* 1/n3^2: the radiance factor of entering, left out of beta (cross_stack). */
-        L = rgb_scale(L, inv_q * ph * Tf * cos1 / (cos3 * n3 * n3));
+        L = rgb_scale(L, inv_q * ph * Tf * cos1 / (cos3 * n3 * n3 * c->path->eta_scale)); /* walk weights: see rt_wet_medium */
         if (cover > 0 && m->film_thickness > 0) {
             /* Beer-Lambert in the film, weighted by the wet share of Tf. */
             double cos2 = sqrt(fmax(0.0, 1 - (1 - cos1 * cos1) / (m->film_ior * m->film_ior)));
@@ -371,7 +372,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
         soak_rgb g = rt_photons_gather(t->ctx->caustics, x, d_in, &local->phase, c->object_id);
         soak_rgb ss = local->sigma_s;
         soak_rgb ls = soak_rgb3(ss.r > 0 ? g.r / ss.r : 0, ss.g > 0 ? g.g / ss.g : 0, ss.b > 0 ? g.b / ss.b : 0);
-        c->path->L = rgb_add(c->path->L, rgb_scale(rgb_mul(beta, ls), 1.0 / (n3 * n3)));
+        c->path->L = rgb_add(c->path->L, rgb_scale(rgb_mul(beta, ls), 1.0 / (n3 * n3 * c->path->eta_scale)));
     }
     return 1;
 }
@@ -383,10 +384,10 @@ static double med_distance(const void *ctx, soak_vec3 pos, soak_vec3 dir)
     int found = 0;
     b->t->n.rays++;
     soak_hit *h = &b->surf->hit;
-    b->surf->lost =
-        soak_geometry_intersect_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, rt_object_uses_uv(b->obj), h, &found) !=
-            SOAK_OK ||
-        !found;
+    soak_status st =
+        soak_geometry_intersect_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, rt_object_uses_uv(b->obj), h, &found);
+    if (st != SOAK_OK) b->t->n.geom_errors++;
+    b->surf->lost = st != SOAK_OK || !found;
     if (b->surf->lost) return 0.0; /* interact ends the walk at once */
     if (soak_v3_dot(dir, h->ng) < 0) h->ng = soak_v3_scale(h->ng, -1.0); /* outward: the ray leaves the medium */
     return h->t;
@@ -402,7 +403,10 @@ static int med_within(const void *ctx, soak_vec3 pos, soak_vec3 dir, double dist
     soak_ray r = {pos, dir, 0.0, dist * (1.0 + 1e-5) + 1e-5 * (1.0 + m)};
     int occluded = 1;
     b->t->n.rays++;
-    if (soak_geometry_occluded_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, &occluded) != SOAK_OK) return 1;
+    if (soak_geometry_occluded_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, &occluded) != SOAK_OK) {
+        b->t->n.geom_errors++;
+        return 1;
+    }
     return occluded;
 }
 
@@ -476,7 +480,9 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     nc.surf = &surf;
     nc.object_id = hit->object_id;
     nc.path = path;
-    soak_walk_options opt = rt_walk_options(path->beta);
+    /* The walk's roulette plays on its weight: start it at beta * eta_scale
+     * (rt_rr_weight's convention) and undo the scale on what it returns. */
+    soak_walk_options opt = rt_walk_options(rgb_scale(path->beta, path->eta_scale));
     opt.on_vertex = medium_vertex;
     opt.vertex_ctx = &nc;
     soak_walk_result_rgb w;
@@ -491,7 +497,7 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     if (w.end == SOAK_WALK_CAPPED) t->n.capped++;
     if (w.end != SOAK_WALK_EXITED) return;
     path->alive = 1;
-    path->beta = w.weight;
+    path->beta = rgb_scale(w.weight, 1.0 / path->eta_scale);
     path->dir = w.dir;
     path->org = soak_geometry_offset(surf.hit.p, surf.n_ref, w.dir);
     path->prev_delta = 1;

@@ -15,7 +15,9 @@
  * (J&C 1998 eq. 8, our notation). The estimate is biased by the blur of
  * radius r and consistent as r -> 0 with more photons. Sphere lights and the
  * environment emit no photons (their caustics into media are missing). */
+#define _POSIX_C_SOURCE 200809L
 #include <stdlib.h>
+#include <time.h>
 
 #include "render_internal.h"
 #include "soak/hg.h"
@@ -149,7 +151,27 @@ static void cell_of(const rt_photon_map *m, soak_vec3 x, int64_t c[3])
     c[2] = (int64_t)floor(x.z / m->radius);
 }
 
-soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed, rt_photon_map *map)
+static int should_stop(const volatile sig_atomic_t *cancel, double deadline)
+{
+    if (cancel && *cancel) return 1;
+    if (!(deadline > 0)) return 0;
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec > deadline;
+}
+
+/* Photons traced before a stop carry the power of n: scale them to the k
+ * actually emitted so the caustic estimate stays unbiased. */
+static void rescale(photon_list *l, long long n, long long k)
+{
+    if (k <= 0 || k >= n) return;
+    double s = (double)n / (double)k;
+    for (size_t i = 0; i < l->n; ++i)
+        for (int c = 0; c < 3; ++c) l->p[i].power[c] = (float)(l->p[i].power[c] * s);
+}
+
+soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed,
+                             const volatile sig_atomic_t *cancel, double deadline, rt_photon_map *map)
 {
     memset(map, 0, sizeof *map);
     map->radius = radius;
@@ -194,7 +216,9 @@ soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64
     t.ctx = c;
     photon_list list = {0};
     int ok = 1;
-    for (long long i = 0; i < n && ok; ++i) {
+    long long i = 0;
+    for (; i < n && ok; ++i) {
+        if ((i & 1023) == 0 && i > 0 && should_stop(cancel, deadline)) break;
         soak_rng_seed(&t.rng, seed ^ 0x5bd1e9955bd1e995ull, (uint64_t)i);
         double u = rt_rand(&t) * total, acc = 0;
         int li = 0;
@@ -228,7 +252,8 @@ soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64
         free(list.p);
         return SOAK_ERR_NOMEM;
     }
-    map->emitted = n;
+    rescale(&list, n, i);
+    map->emitted = i;
     if (list.n == 0) {
         free(list.p);
         return SOAK_OK;

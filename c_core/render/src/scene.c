@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "scene_json.h"
 
@@ -181,6 +182,13 @@ soak_status sj_file(scene_ctx *c, const char *file, const char *path, char *out,
     return SOAK_OK;
 }
 
+/* Counts are whole numbers: 31.7 is an error, not 31. */
+static soak_status whole(scene_ctx *c, const char *path, double v)
+{
+    if (v == floor(v)) return SOAK_OK;
+    return sj_fail(c, SOAK_ERR_ARG, path, "must be a whole number, got %g", v);
+}
+
 static soak_status parse_render(scene_ctx *c, const cJSON *j)
 {
     static const char *const keys[] = {"width", "height", "spp", "max_depth", "caustic_photons", "caustic_radius", NULL};
@@ -196,6 +204,11 @@ static soak_status parse_render(scene_ctx *c, const cJSON *j)
         if (st == SOAK_OK) st = sj_num(c, j, "height", "render", 1, 16384, 0, 192, &h);
         if (st == SOAK_OK) st = sj_num(c, j, "spp", "render", 1, 1e7, 0, 16, &spp);
         if (st == SOAK_OK) st = sj_num(c, j, "max_depth", "render", 1, 1e5, 0, 256, &md);
+        if (st == SOAK_OK) st = whole(c, "render.width", w);
+        if (st == SOAK_OK) st = whole(c, "render.height", h);
+        if (st == SOAK_OK) st = whole(c, "render.spp", spp);
+        if (st == SOAK_OK) st = whole(c, "render.max_depth", md);
+        if (st == SOAK_OK) st = whole(c, "render.caustic_photons", np);
         if (st != SOAK_OK) return st;
     }
     s->width = (int)w;
@@ -303,10 +316,10 @@ static soak_status parse_lights(scene_ctx *c, const cJSON *j)
     int n = cJSON_GetArraySize(j);
     s->lights = calloc((size_t)(n > 0 ? n : 1), sizeof *s->lights);
     if (!s->lights) return SOAK_ERR_NOMEM;
-    for (int i = 0; i < n; ++i) {
+    const cJSON *l = j->child;
+    for (int i = 0; i < n; ++i, l = l->next) {
         char p[64];
         sj_index(p, sizeof p, "lights", i);
-        const cJSON *l = cJSON_GetArrayItem(j, i);
         const char *type;
         soak_light *L = &s->lights[i];
         soak_status st = sj_str(c, l, "type", p, 1, &type);
@@ -518,11 +531,13 @@ static soak_status parse_objects(scene_ctx *c, const cJSON *j)
 {
     if (!j) return sj_fail(c, SOAK_ERR_PARSE, "objects", "missing (required)");
     if (!cJSON_IsArray(j)) return sj_fail(c, SOAK_ERR_PARSE, "objects", "must be an array");
-    int n = cJSON_GetArraySize(j);
-    for (int i = 0; i < n; ++i) {
+    int i = 0;
+    const cJSON *item;
+    cJSON_ArrayForEach(item, j) /* cJSON_GetArrayItem(j, i) walks the list: quadratic */
+    {
         char p[64];
-        sj_index(p, sizeof p, "objects", i);
-        soak_status st = parse_object(c, cJSON_GetArrayItem(j, i), p);
+        sj_index(p, sizeof p, "objects", i++);
+        soak_status st = parse_object(c, item, p);
         if (st != SOAK_OK) return st;
     }
     return SOAK_OK;
@@ -542,6 +557,48 @@ static void syntax_position(const char *text, const char *at, int *line, int *co
     }
 }
 
+/* Depth of open arrays/objects at position at (strings skipped). */
+static int nesting_at(const char *text, const char *at)
+{
+    int depth = 0, max = 0, in_string = 0;
+    for (const char *p = text; p < at && *p; ++p) {
+        if (in_string) {
+            if (*p == '\\' && p[1]) ++p;
+            else if (*p == '"') in_string = 0;
+        } else if (*p == '"') {
+            in_string = 1;
+        } else if (*p == '[' || *p == '{') {
+            if (++depth > max) max = depth;
+        } else if (*p == ']' || *p == '}') {
+            --depth;
+        }
+    }
+    return max;
+}
+
+/* 1 when the text at the error reads like NaN or Infinity. */
+static int non_number_at(const char *at)
+{
+    while (*at == ' ' || *at == '\t' || *at == ':' || *at == '-' || *at == '+') ++at;
+    return strncasecmp(at, "nan", 3) == 0 || strncasecmp(at, "inf", 3) == 0;
+}
+
+/* The first key that appears twice in one object, anywhere in the tree;
+ * NULL when there is none. Pairwise within an object: objects here have a
+ * handful of keys (arrays, which can be long, are only walked). */
+static const char *duplicate_key(const cJSON *node, int depth)
+{
+    if (depth > CJSON_NESTING_LIMIT) return NULL;
+    for (const cJSON *a = node ? node->child : NULL; a; a = a->next) {
+        if (cJSON_IsObject(node) && a->string)
+            for (const cJSON *b = a->next; b; b = b->next)
+                if (b->string && strcmp(a->string, b->string) == 0) return a->string;
+        const char *d = duplicate_key(a, depth + 1);
+        if (d) return d;
+    }
+    return NULL;
+}
+
 soak_status soak_scene_parse(const char *text, const char *name, const char *base_dir, soak_scene *scene, char *err,
                              size_t errlen)
 {
@@ -553,10 +610,22 @@ soak_status soak_scene_parse(const char *text, const char *name, const char *bas
     cJSON *root = cJSON_ParseWithOpts(text, &end, 1);
     if (!root) {
         int line, col;
-        syntax_position(text, end ? end : text, &line, &col);
-        if (err && errlen)
-            snprintf(err, errlen, "%s: line %d, column %d: JSON syntax error (NaN/Infinity are not JSON numbers)", c.name,
-                     line, col);
+        const char *at = end ? end : text;
+        syntax_position(text, at, &line, &col);
+        if (err && errlen) {
+            if (nesting_at(text, at) >= CJSON_NESTING_LIMIT)
+                snprintf(err, errlen, "%s: line %d, column %d: arrays and objects nested deeper than %d levels", c.name,
+                         line, col, CJSON_NESTING_LIMIT);
+            else
+                snprintf(err, errlen, "%s: line %d, column %d: JSON syntax error%s", c.name, line, col,
+                         non_number_at(at) ? " (NaN/Infinity are not JSON numbers)" : "");
+        }
+        return SOAK_ERR_PARSE;
+    }
+    const char *dup = duplicate_key(root, 0);
+    if (dup) {
+        if (err && errlen) snprintf(err, errlen, "%s: duplicate key \"%s\"", c.name, dup);
+        cJSON_Delete(root);
         return SOAK_ERR_PARSE;
     }
     static const char *const keys[] = {"render", "camera", "environment", "lights", "materials", "objects", NULL};

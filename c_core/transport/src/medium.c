@@ -51,12 +51,6 @@ static int weights_ok(soak_rgb w)
     return soak_in_range(w.r, 0.0, 1e300) && soak_in_range(w.g, 0.0, 1e300) && soak_in_range(w.b, 0.0, 1e300);
 }
 
-static double rgb_max(soak_rgb c)
-{
-    double m = c.r > c.g ? c.r : c.g;
-    return m > c.b ? m : c.b;
-}
-
 static soak_status resolve_options(const soak_walk_options *opt, soak_walk_options *out)
 {
     if (!opt) {
@@ -320,7 +314,7 @@ static soak_status scatter(const soak_hg2 *phase, soak_vec3 *dir, soak_rng *rng,
  * q (expected value unchanged). Returns 0 when the path is terminated. */
 static int roulette(soak_rgb *weight, const soak_walk_options *opt, soak_rng *rng)
 {
-    double wmax = rgb_max(*weight);
+    double wmax = soak_rgb_max(*weight);
     if (!opt->roulette || wmax >= opt->roulette_threshold) return 1;
     double q = wmax / opt->roulette_threshold;
     if (soak_rng_uniform(rng) >= q) return 0;
@@ -350,7 +344,7 @@ soak_status soak_medium_walk_rgb(const soak_medium_rgb *m, const soak_walk_optio
     soak_walk_result_rgb r = {SOAK_WALK_CAPPED, pos, dir, opt.weight, 0, 0};
     soak_medium_point local = homogeneous_point(m);
     while (r.events < opt.max_events) { /* capped: reported, never dropped silently */
-        if (!(rgb_max(r.weight) > 0.0)) return finish(&r, SOAK_WALK_ABSORBED, out);
+        if (!(soak_rgb_max(r.weight) > 0.0)) return finish(&r, SOAK_WALK_ABSORBED, out);
         double dmax = INFINITY;
         flight_end fe;
         if (m->coeffs) {
@@ -368,9 +362,9 @@ soak_status soak_medium_walk_rgb(const soak_medium_rgb *m, const soak_walk_optio
             soak_boundary_event ev = boundary->interact(boundary->ctx, &r.pos, &r.dir, &r.weight, rng);
             if (!weights_ok(r.weight) || !unit_vector(r.dir) || !finite_point(r.pos)) return SOAK_ERR_NUMERIC;
             if (ev == SOAK_BOUNDARY_EXIT) return finish(&r, SOAK_WALK_EXITED, out);
-            if (ev == SOAK_BOUNDARY_ABSORB || !(rgb_max(r.weight) > 0.0)) return finish(&r, SOAK_WALK_ABSORBED, out);
+            if (ev == SOAK_BOUNDARY_ABSORB || !(soak_rgb_max(r.weight) > 0.0)) return finish(&r, SOAK_WALK_ABSORBED, out);
         } else {
-            if (!(rgb_max(r.weight) > 0.0)) return finish(&r, SOAK_WALK_ABSORBED, out);
+            if (!(soak_rgb_max(r.weight) > 0.0)) return finish(&r, SOAK_WALK_ABSORBED, out);
             if (!weights_ok(r.weight)) return SOAK_ERR_NUMERIC;
             if (opt.on_vertex && !opt.on_vertex(opt.vertex_ctx, r.pos, r.dir, r.weight, &local, rng))
                 return finish(&r, SOAK_WALK_STOPPED, out);
@@ -413,7 +407,7 @@ soak_status soak_medium_rgb_transmittance(const soak_medium_rgb *m, soak_vec3 po
         soak_rgb sn;
         if ((st = point_at(m, soak_v3_add(pos, soak_v3_scale(dir, t)), &p, &sn)) != SOAK_OK) return st;
         tr = soak_rgb3(tr.r * sn.r / mu, tr.g * sn.g / mu, tr.b * sn.b / mu);
-        if (rgb_max(tr) == 0.0) break;
+        if (soak_rgb_max(tr) == 0.0) break;
     }
     *T = tr;
     return SOAK_OK;

@@ -201,7 +201,8 @@ static char *pov_include(const soak_volume *v, const char *prefix, const channel
     return b.s;
 }
 
-soak_status soak_volume_write_df3(const soak_volume *v, const char *prefix, int bits, char *err, size_t errlen)
+soak_status soak_volume_stage_df3(soak_staged *stage, const soak_volume *v, const char *prefix, int bits, char *err,
+                                  size_t errlen)
 {
     if (!v || !v->data || !prefix) return SOAK_ERR_NULL;
     if (bits != 8 && bits != 16 && bits != 32) return SOAK_ERR_ARG;
@@ -210,14 +211,12 @@ soak_status soak_volume_write_df3(const soak_volume *v, const char *prefix, int 
     channel_range r[SOAK_VOL_NCHANNELS];
     for (int c = 0; c < SOAK_VOL_NCHANNELS; ++c) r[c] = range_of(soak_volume_plane(v, c), n);
 
-    soak_staged stage;
-    soak_staged_init(&stage);
     soak_status st = SOAK_OK;
     char path[4096];
     for (int c = 0; c < SOAK_VOL_NCHANNELS && st == SOAK_OK; ++c) {
         snprintf(path, sizeof path, "%s_%s.df3", prefix, soak_volume_channel_name(c));
         FILE *f = NULL;
-        st = soak_staged_open(&stage, path, &f, err, errlen);
+        st = soak_staged_open(stage, path, &f, err, errlen);
         if (st != SOAK_OK) break;
         st = write_df3_file(f, v, soak_volume_plane(v, c), r[c], bits);
         soak_status cs = soak_staged_close(f, path, err, errlen);
@@ -228,14 +227,22 @@ soak_status soak_volume_write_df3(const soak_volume *v, const char *prefix, int 
     if (st == SOAK_OK && (!json || !inc)) st = SOAK_ERR_NOMEM;
     if (st == SOAK_OK) {
         snprintf(path, sizeof path, "%s_df3.json", prefix);
-        st = write_text(&stage, path, json, err, errlen);
+        st = write_text(stage, path, json, err, errlen);
     }
     if (st == SOAK_OK) {
         snprintf(path, sizeof path, "%s.inc", prefix);
-        st = write_text(&stage, path, inc, err, errlen);
+        st = write_text(stage, path, inc, err, errlen);
     }
     cJSON_free(json);
     free(inc);
+    return st;
+}
+
+soak_status soak_volume_write_df3(const soak_volume *v, const char *prefix, int bits, char *err, size_t errlen)
+{
+    soak_staged stage;
+    soak_staged_init(&stage);
+    soak_status st = soak_volume_stage_df3(&stage, v, prefix, bits, err, errlen);
     if (st != SOAK_OK) {
         soak_staged_abort(&stage);
         return st;

@@ -51,8 +51,9 @@ static float get_le32(const unsigned char *p)
     return f;
 }
 
-soak_status soak_volume_write_grid(const soak_volume *v, const char *prefix, const soak_vol_medium *rows, int n_rows,
-                                   double penetration_depth, char *err, size_t errlen)
+soak_status soak_volume_stage_grid(soak_staged *stage, const soak_volume *v, const char *prefix,
+                                   const soak_vol_medium *rows, int n_rows, double penetration_depth, char *err,
+                                   size_t errlen)
 {
     if (!v || !v->data || !prefix) return SOAK_ERR_NULL;
     char json_path[4096], raw_path[4096];
@@ -83,10 +84,8 @@ soak_status soak_volume_write_grid(const soak_volume *v, const char *prefix, con
     cJSON_Delete(root);
     if (!text) return SOAK_ERR_NOMEM;
 
-    soak_staged stage;
-    soak_staged_init(&stage);
     FILE *f = NULL;
-    soak_status st = soak_staged_open(&stage, raw_path, &f, err, errlen);
+    soak_status st = soak_staged_open(stage, raw_path, &f, err, errlen);
     if (st == SOAK_OK) {
         size_t n = soak_volume_count(v) * SOAK_VOL_NCHANNELS;
         unsigned char buf[4096];
@@ -97,13 +96,22 @@ soak_status soak_volume_write_grid(const soak_volume *v, const char *prefix, con
         }
         st = soak_staged_close(f, raw_path, err, errlen);
     }
-    if (st == SOAK_OK) st = soak_staged_open(&stage, json_path, &f, err, errlen);
+    if (st == SOAK_OK) st = soak_staged_open(stage, json_path, &f, err, errlen);
     if (st == SOAK_OK) {
         fputs(text, f);
         fputc('\n', f);
         st = soak_staged_close(f, json_path, err, errlen);
     }
     cJSON_free(text);
+    return st;
+}
+
+soak_status soak_volume_write_grid(const soak_volume *v, const char *prefix, const soak_vol_medium *rows, int n_rows,
+                                   double penetration_depth, char *err, size_t errlen)
+{
+    soak_staged stage;
+    soak_staged_init(&stage);
+    soak_status st = soak_volume_stage_grid(&stage, v, prefix, rows, n_rows, penetration_depth, err, errlen);
     if (st != SOAK_OK) {
         soak_staged_abort(&stage);
         return st;

@@ -4,6 +4,7 @@
 // headers); otherwise the entry points report SOAK_ERR_UNSUPPORTED.
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -65,13 +66,23 @@ extern "C" int soak_volume_have_vdb(void)
     return 1;
 }
 
-extern "C" soak_status soak_volume_write_vdb(const soak_volume *v, const char *path, char *err, size_t errlen)
+// A written file read back in full: io::File does not report every failed
+// write (a full disk can leave it short without an exception).
+static void read_back(const char *tmp, size_t n_grids)
 {
-    if (!v || !v->data || !path) return SOAK_ERR_NULL;
-    soak_staged stage;
-    soak_staged_init(&stage);
+    openvdb::io::File in(tmp);
+    in.open(false);
+    openvdb::GridPtrVecPtr grids = in.getGrids();
+    in.close();
+    if (!grids || grids->size() != n_grids) throw std::runtime_error("file incomplete after writing");
+}
+
+extern "C" soak_status soak_volume_stage_vdb(soak_staged *stage, const soak_volume *v, const char *path, char *err,
+                                             size_t errlen)
+{
+    if (!stage || !v || !v->data || !path) return SOAK_ERR_NULL;
     const char *tmp = nullptr;
-    soak_status st = soak_staged_add(&stage, path, &tmp, err, errlen);
+    soak_status st = soak_staged_add(stage, path, &tmp, err, errlen);
     if (st != SOAK_OK) return st;
     try {
         openvdb::initialize();
@@ -97,12 +108,12 @@ extern "C" soak_status soak_volume_write_vdb(const soak_volume *v, const char *p
         openvdb::io::File file(tmp);
         file.write(grids);
         file.close();
+        read_back(tmp, grids.size());
     } catch (const std::exception &e) {
         set_err(err, errlen, std::string(path) + ": OpenVDB write failed: " + e.what());
-        soak_staged_abort(&stage);
         return SOAK_ERR_IO;
     }
-    return soak_staged_commit(&stage, err, errlen);
+    return SOAK_OK;
 }
 
 extern "C" soak_status soak_volume_read_vdb_grid(const char *path, const char *grid, int nx, int ny, int nz,
@@ -152,9 +163,10 @@ extern "C" int soak_volume_have_vdb(void)
     return 0;
 }
 
-extern "C" soak_status soak_volume_write_vdb(const soak_volume *v, const char *path, char *err, size_t errlen)
+extern "C" soak_status soak_volume_stage_vdb(soak_staged *stage, const soak_volume *v, const char *path, char *err,
+                                             size_t errlen)
 {
-    if (!v || !path) return SOAK_ERR_NULL;
+    if (!stage || !v || !path) return SOAK_ERR_NULL;
     if (err && errlen) std::snprintf(err, errlen, "%s: this build of libsoak has no OpenVDB support", path);
     return SOAK_ERR_UNSUPPORTED;
 }
@@ -170,3 +182,15 @@ extern "C" soak_status soak_volume_read_vdb_grid(const char *path, const char *g
 }
 
 #endif
+
+extern "C" soak_status soak_volume_write_vdb(const soak_volume *v, const char *path, char *err, size_t errlen)
+{
+    soak_staged stage;
+    soak_staged_init(&stage);
+    soak_status st = soak_volume_stage_vdb(&stage, v, path, err, errlen);
+    if (st != SOAK_OK) {
+        soak_staged_abort(&stage);
+        return st;
+    }
+    return soak_staged_commit(&stage, err, errlen);
+}

@@ -63,8 +63,12 @@ double soak_smoothstep(double e0, double e1, double x);
 
 /* Output writing by extension: .exr (half, or float when float_exr), .png and
  * .tif (16-bit linear; PNG with gAMA 1.0), .tx (mip-mapped tiled texture via
- * maketx). Atomic (temp file + rename). */
+ * maketx). Atomic and checked (soak/staged.h). */
 soak_status soak_bake_write(const char *path, const soak_image *img, int float_exr, char *err, size_t errlen);
+/* The same as one member of a set of outputs replaced together. */
+struct soak_staged;
+soak_status soak_bake_stage(struct soak_staged *stage, const char *path, const soak_image *img, int float_exr,
+                            char *err, size_t errlen);
 
 /* 1 if pattern holds exactly one printf integer conversion (%d, %4d, %04d)
  * and otherwise only "%%"; 0 if it holds none; -1 if malformed. */

@@ -1,7 +1,8 @@
 /* Image I/O for every part of Soak, through OpenImageIO (thin C++ shim).
  * Pixels are float, channel-interleaved, top row first, linear values.
- * Writes are atomic: the image goes to a temporary file in the destination
- * folder that is renamed over the target only when complete. */
+ * Writes are atomic and checked: the image is encoded in memory, written to
+ * an anonymous temporary in the destination folder, flushed to disk, and only
+ * then given its name (soak/staged.h); a failed write is an error. */
 #ifndef SOAK_IMAGE_H
 #define SOAK_IMAGE_H
 
@@ -35,8 +36,14 @@ typedef struct soak_image_write_opts {
 soak_status soak_image_alloc(soak_image *img, int width, int height, int channels);
 void soak_image_free(soak_image *img);
 
+/* Largest image soak_image_read decodes: 1 GiB of float pixels (e.g.
+ * 16384 x 16384 x 1, 8192 x 8192 x 4). */
+#define SOAK_IMAGE_MAX_BYTES (1024.0 * 1024.0 * 1024.0)
+
 /* Reads any format OIIO reads, converting to float. err gets a message
- * naming the file on failure. */
+ * naming the file on failure. A NaN or infinite pixel is an error
+ * (SOAK_ERR_ARG naming the pixel), as is an image above SOAK_IMAGE_MAX_BYTES
+ * (refused from its header, before any decoding). */
 soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t errlen);
 
 /* Writes by extension (.exr .png .tif/.tiff .jpg .hdr ...). Linear PNGs carry
@@ -48,11 +55,20 @@ soak_status soak_image_write(const char *path, const soak_image *img, const soak
 /* Mip-mapped tiled texture (.tx) for OSL via OIIO's make_texture. */
 soak_status soak_image_write_tx(const char *path, const soak_image *img, char *err, size_t errlen);
 
+/* The same two writes as members of a set of outputs replaced together
+ * (soak/staged.h): nothing reaches path before soak_staged_commit. */
+struct soak_staged;
+soak_status soak_image_stage(struct soak_staged *stage, const char *path, const soak_image *img,
+                             const soak_image_write_opts *opts, char *err, size_t errlen);
+soak_status soak_image_stage_tx(struct soak_staged *stage, const char *path, const soak_image *img, char *err,
+                                size_t errlen);
+
 /* 1 if both paths name the same existing file (same device and inode), or are
  * equal strings; used to refuse overwriting an input. */
 int soak_path_same(const char *a, const char *b);
 
-/* 0 if the folder that would contain path exists and is writable. */
+/* 0 if path is acceptable as an output (see soak/staged.h) and the folder
+ * that would contain it exists and is writable. */
 soak_status soak_path_check_writable(const char *path, char *err, size_t errlen);
 
 #endif

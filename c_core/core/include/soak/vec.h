@@ -55,6 +55,12 @@ static inline soak_rgb soak_rgb3(double r, double g, double b)
     return c;
 }
 static inline double soak_rgb_at(soak_rgb c, int i) { return i == 0 ? c.r : (i == 1 ? c.g : c.b); }
+/* Largest channel (plain comparisons: no libm call in the tracer's loops). */
+static inline double soak_rgb_max(soak_rgb c)
+{
+    double m = c.r > c.g ? c.r : c.g;
+    return m > c.b ? m : c.b;
+}
 static inline void soak_rgb_set(soak_rgb *c, int i, double v)
 {
     if (i == 0) c->r = v; else if (i == 1) c->g = v; else c->b = v;

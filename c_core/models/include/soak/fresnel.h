@@ -14,6 +14,10 @@
 #include "soak/status.h"
 
 #define SOAK_ETA_MIN 1e-3
+/* Water at 20 C around 589 nm (IAPWS 1997 formulation): the default liquid
+ * index wherever a model or scene does not name one; c_core/data/materials.json
+ * ships the same value. */
+#define SOAK_WATER_IOR 1.333
 #define SOAK_ETA_MAX 1e3
 
 /* Unpolarised dielectric reflectance. Also returns cos of the transmitted

@@ -16,7 +16,7 @@ typedef struct soak_model_params {
     double ior;        /* base index relative to air (default 1.5; metals: n) */
     double k;          /* base extinction for conductors (default 0) */
     double roughness;  /* GGX alpha of the base, [1e-4,1] (default 0.3) */
-    double n_film;     /* liquid index, [1,3] (default 1.33; 1 = no film) */
+    double n_film;     /* liquid index, [1,3] (default SOAK_WATER_IOR = 1.333; 1 = no film) */
     double absorption; /* liquid absorption coefficient, 1/m (default 0.35) */
     double thickness;  /* film thickness, m (default 1e-3) */
     double porosity;   /* [0,1] (default 0.3) */

@@ -64,7 +64,11 @@ typedef struct soak_hit {
  * vertices joined, all meshes of the file merged with their node transforms
  * applied. With require_uvs, a file without texture coordinates fails with
  * SOAK_ERR_PARSE and "<file>: mesh has no UVs". Missing/unreadable files
- * give SOAK_ERR_IO with the file and the reason. */
+ * give SOAK_ERR_IO with the file and the reason. Formats: .obj .ply .stl .off
+ * .gltf .glb (others: SOAK_ERR_UNSUPPORTED). Assimp runs in a child process
+ * with a time limit (SOAK_MESH_TIMEOUT seconds, default 120): a crash or a
+ * hang there is SOAK_ERR_PARSE naming the file; non-finite coordinates and
+ * out-of-range indices are rejected. */
 soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen);
 void soak_mesh_free(soak_mesh *mesh);
 

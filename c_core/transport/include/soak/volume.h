@@ -114,6 +114,17 @@ soak_status soak_volume_read_grid(const char *json_path, soak_volume *v, char *e
  * centre, so the voxels exactly cover the box. SOAK_ERR_UNSUPPORTED when
  * libsoak was built without OpenVDB. */
 soak_status soak_volume_write_vdb(const soak_volume *v, const char *path, char *err, size_t errlen);
+/* The three writers above as members of one set of outputs replaced
+ * together (soak/staged.h): nothing reaches the prefix's files before
+ * soak_staged_commit. */
+struct soak_staged;
+soak_status soak_volume_stage_df3(struct soak_staged *stage, const soak_volume *v, const char *prefix, int bits,
+                                  char *err, size_t errlen);
+soak_status soak_volume_stage_grid(struct soak_staged *stage, const soak_volume *v, const char *prefix,
+                                   const soak_vol_medium *rows, int n_rows, double penetration_depth, char *err,
+                                   size_t errlen);
+soak_status soak_volume_stage_vdb(struct soak_staged *stage, const soak_volume *v, const char *path, char *err,
+                                  size_t errlen);
 /* 1 when the build has OpenVDB. */
 int soak_volume_have_vdb(void);
 /* Reads one float grid through OpenVDB: the value at each index (i,j,k) of

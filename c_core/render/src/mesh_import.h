@@ -1,0 +1,18 @@
+/* The two halves of soak_mesh_load: the Assimp import itself (run in a
+ * child process by mesh_contain.c, and called directly by the fuzzer) and
+ * the checks on what comes back. */
+#ifndef SOAK_MESH_IMPORT_H
+#define SOAK_MESH_IMPORT_H
+
+#include "soak/geometry.h"
+
+/* Assimp import in this process, validated. No containment: a malformed
+ * file may crash or hang it. */
+soak_status soak_mesh_import(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen);
+/* Rejects (and frees) a mesh with a non-finite coordinate or an index past
+ * its vertices, naming path and the first offender. */
+soak_status soak_mesh_validate(soak_mesh *m, const char *path, char *err, size_t errlen);
+/* 1 when path's extension is a mesh format Soak accepts (and fuzzes). */
+int soak_mesh_format_ok(const char *path);
+
+#endif
