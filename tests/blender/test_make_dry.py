@@ -86,6 +86,20 @@ def main():
         common.fail("make_dry left a Soak Wet node group behind")
     print("make_dry restores exactly: ok")
 
+    # 1b. "Use OSL shader" with Cycles OSL on: applied by soak.osl_nodes when
+    # that module ships, otherwise reported; either way the material is wet
+    # and Make Dry restores it
+    bpy.context.scene.render.engine = "CYCLES"
+    bpy.context.scene.cycles.shading_system = True
+    mat.soak.preset, mat.soak.wetness_source, mat.soak.use_osl = "sand", "CONSTANT", True
+    if bpy.ops.soak.make_wet() != {"FINISHED"}:
+        common.fail("make_wet with Use OSL shader")
+    bpy.ops.soak.make_dry()
+    if common.tree_state(mat.node_tree) != before:
+        common.fail("make_dry after the OSL variant did not restore the tree")
+    mat.soak.use_osl = False
+    bpy.context.scene.cycles.shading_system = False
+
     # 2. undo restores
     bpy.ops.ed.undo_push(message="before wet")
     obname = ob.name
