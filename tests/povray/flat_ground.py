@@ -58,7 +58,9 @@ def camera(span):
 
 
 def layered_material(exp, name, w):
-    """The model the tables represent, traced exactly: the core's liquid-air interface
+    """Thin sheets only (opaque presets use soak render's "preset" material, which
+    since the chain's interface landed in scene_material.c is this same model).
+    The model the tables represent, traced exactly: the core's liquid-air interface
     (wetness.h step 5, Lekner-Dorf) over a Lambertian base of the core's subsurface
     albedo (step 4). The interface covers the film's area c plus the uncovered pores'
     area (1 - c) a, a = water_specular_weight (zero-thickness pore water; a clear
@@ -71,8 +73,8 @@ def layered_material(exp, name, w):
     film = {"ior": liq["ior"], "thickness": m["film_thickness_m"] / unit_m,
             "absorption": [a * unit_m for a in liq["sigma_a_per_m"]],
             "coverage": k["film_coverage"][i] + (1 - k["film_coverage"][i]) * k["water_specular_weight"][i]}
-    if m["kind"] == "conductor":
-        return None
+    if m["kind"] != "thin_sheet":
+        return None  # soak render's "preset" material is this model (scene_material.c)
     if m["kind"] == "thin_sheet":
         # the medium of the tables (Kubelka-Munk assumes an index-matched, unbacked sheet)
         sig_s = [v * unit_m for v in k["sigma_s_per_m"][i]]
