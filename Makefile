@@ -28,7 +28,7 @@ addon:
 demo: build addon
 	@$(BUILD)/bin/soak demo --out out/demo
 	@bash povray/render_scenes.sh $(BUILD)/bin/soak out/demo/povray full
-	@blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out out/demo/blender --soak $(BUILD)/bin/soak
+	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out out/demo/blender --soak $(BUILD)/bin/soak
 
 # Each pass lists the skipped tests with their reasons and fails when a test
 # failed, was skipped for want of povray or blender (the set-up installs

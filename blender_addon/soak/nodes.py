@@ -1,7 +1,7 @@
 """The "Soak Wet" node group and its insertion in front of a Principled BSDF.
 
 The group evaluates, with native nodes only:
-  L      = Wetness * Wet Map * P,  P = clamp((Time - Start Time) / Fill Time)
+  L      = Wetness * min(Wet Map / Puddle Level, 1) * P,  P = clamp((Time - Start Time) / Fill Time)
            (1 - P when Drying; P = 1 unless Schedule), wetness.h step 1;
   colour = the core's wetness function for any dry colour, looked up per
            channel in the exported float image (bilinear between pixel
@@ -27,6 +27,7 @@ INPUTS = (
     ("Roughness", "factor", 0.5, 0.0, 1.0),
     ("Wetness", "factor", 1.0, 0.0, 1.0),
     ("Wet Map", "factor", 1.0, 0.0, 1.0),
+    ("Puddle Level", "factor", 1.0, 0.0, 1.0),
     ("Schedule", "factor", 0.0, 0.0, 1.0),
     ("Drying", "factor", 0.0, 0.0, 1.0),
     ("Time", "float", 1.0, -1e9, 1e9),
@@ -76,7 +77,11 @@ def _liquid_schedule(b, gin):
     p = b.math("MULTIPLY_ADD", dry, gin.outputs["Drying"], p)  # P + D (1 - 2P)
     one_minus = b.math("SUBTRACT", 1.0, p)
     p = b.math("MULTIPLY_ADD", one_minus, b.math("SUBTRACT", 1.0, gin.outputs["Schedule"]), p)
-    w = b.math("MULTIPLY", gin.outputs["Wetness"], gin.outputs["Wet Map"], clamp=True)
+    # Puddle Level: wet-map values at or above it count as fully wet (standing
+    # water: the core's film at full coverage); 1 leaves the map as it is.
+    level = b.math("MAXIMUM", gin.outputs["Puddle Level"], 1e-3)
+    wet_map = b.math("DIVIDE", gin.outputs["Wet Map"], level, clamp=True)
+    w = b.math("MULTIPLY", gin.outputs["Wetness"], wet_map, clamp=True)
     return b.math("MULTIPLY", w, p, clamp=True)
 
 
@@ -92,21 +97,66 @@ def _row_coordinate(b, L, t):
     return b.math("MULTIPLY_ADD", r, 1.0 / rows, 0.5 / rows)
 
 
-def _sample(b, image, u, v):
+def _lookup(b, image, u, v, interpolation):
     xyz = b.node("ShaderNodeCombineXYZ")
-    if isinstance(u, float):
-        xyz.inputs[0].default_value = u
-    else:
-        b.link(u, xyz.inputs[0])
-    b.link(v, xyz.inputs[1])
-    tex = b.node("ShaderNodeTexImage", image=image, interpolation="Linear", extension="EXTEND")
+    for i, c in enumerate((u, v)):
+        if isinstance(c, float):
+            xyz.inputs[i].default_value = c
+        else:
+            b.link(c, xyz.inputs[i])
+    tex = b.node("ShaderNodeTexImage", image=image, interpolation=interpolation, extension="EXTEND")
     b.link(xyz.outputs[0], tex.inputs["Vector"])
-    sep = b.node("ShaderNodeSeparateColor")
-    b.link(tex.outputs["Color"], sep.inputs[0])
+    return tex.outputs["Color"]
+
+
+def _lerp(b, a, c, f):
+    d = b.node("ShaderNodeVectorMath", operation="SUBTRACT")
+    b.link(c, d.inputs[0])
+    b.link(a, d.inputs[1])
+    m = b.node("ShaderNodeVectorMath", operation="MULTIPLY_ADD")
+    b.link(d.outputs[0], m.inputs[0])
+    b.link(f, m.inputs[1])
+    b.link(a, m.inputs[2])
+    return m.outputs[0]
+
+
+def _texel_pair(b, coord, size):
+    """Centres of the two texels around coord (texture space) and the weight."""
+    x = b.math("MULTIPLY_ADD", coord, float(size), -0.5)
+    x0 = b.math("FLOOR", x)
+    f = b.math("SUBTRACT", x, x0)
+    c0 = b.math("MULTIPLY_ADD", x0, 1.0 / size, 0.5 / size)
+    c1 = b.math("ADD", c0, 1.0 / size)
+    return c0, c1, f
+
+
+def _sample(b, image, u, v, exact=False):
+    """Image lookup at (u, v) split into channels. exact: bilinear between
+    texel centres from four Closest lookups (EEVEE's Linear filter is not
+    the plain bilinear one the core's tables were refined for)."""
+    if not exact:
+        sep = b.node("ShaderNodeSeparateColor")
+        b.link(_lookup(b, image, u, v, "Linear"), sep.inputs[0])
+        return sep
+    w, h = image.size
+    if isinstance(u, float):
+        us = (u, u, 0.0)
+        uf = b.math("MULTIPLY", 0.0, 0.0)
+    else:
+        us = _texel_pair(b, u, w)
+        uf = us[2]
+    v0, v1, vf = _texel_pair(b, v, h)
+    rows = []
+    for vv in (v0, v1):
+        a = _lookup(b, image, us[0], vv, "Closest")
+        c = _lookup(b, image, us[1], vv, "Closest")
+        rows.append(_lerp(b, a, c, uf))
+    sep = b.node("ShaderNodeSeparateXYZ")
+    b.link(_lerp(b, rows[0], rows[1], vf), sep.inputs[0])
     return sep
 
 
-def build_group(tree, preset, liquid_name):
+def build_group(tree, preset, liquid_name, exact=False):
     """(Re)builds the inside of a Soak Wet group for a preset and liquid."""
     t = data.table(preset, liquid_name)
     m = data.material(preset)
@@ -117,7 +167,7 @@ def build_group(tree, preset, liquid_name):
         compat.new_socket(tree, name, "INPUT", kind, default, lo, hi)
     for name, kind in OUTPUTS:
         compat.new_socket(tree, name, "OUTPUT", kind)
-    tree[GROUP_TAG] = json.dumps({"preset": preset, "liquid": liquid_name})
+    tree[GROUP_TAG] = json.dumps({"preset": preset, "liquid": liquid_name, "exact": bool(exact)})
     b = _Builder(tree)
     gin = b.node("NodeGroupInput")
     gout = b.node("NodeGroupOutput")
@@ -132,16 +182,16 @@ def build_group(tree, preset, liquid_name):
         a = b.math("MINIMUM", b.math("MAXIMUM", sep_in.outputs[c], 0.0), 1.0)
         s = b.math("SUBTRACT", 1.0, b.math("SQRT", b.math("SUBTRACT", 1.0, a)))
         u = b.math("MULTIPLY_ADD", s, (na - 1) / na, 0.5 / na)
-        b.link(_sample(b, alb_img, u, v).outputs[c], comb.inputs[c])
+        b.link(_sample(b, alb_img, u, v, exact).outputs[c], comb.inputs[c])
     b.link(comb.outputs[0], gout.inputs["Base Color"])
-    par = _sample(b, par_img, 0.5 / 3.0, v)
+    par = _sample(b, par_img, 0.5 / 3.0, v, exact)
     r0 = max(t["params"][0][0], 1e-4)
     rough = b.math("MULTIPLY", gin.outputs["Roughness"], b.math("DIVIDE", par.outputs[0], r0), clamp=True)
     b.link(rough, gout.inputs["Roughness"])
     b.link(par.outputs[1], gout.inputs["Coat Weight"])
     b.link(L, gout.inputs["Liquid"])
     if m["kind"] == "thin_sheet":
-        sheet = _sample(b, par_img, 2.5 / 3.0, v)
+        sheet = _sample(b, par_img, 2.5 / 3.0, v, exact)
         tc = b.node("ShaderNodeCombineColor")
         for c in range(3):
             b.link(sheet.outputs[c], tc.inputs[c])
@@ -222,7 +272,7 @@ def make_wet(mat, settings):
     restore["bsdf_out"] = [[l.to_node.name, l.to_socket.identifier] for l in bsdf.outputs[0].links]
 
     ng = bpy.data.node_groups.new("Soak Wet", "ShaderNodeTree")
-    build_group(ng, settings.preset, settings.liquid)
+    build_group(ng, settings.preset, settings.liquid, settings.exact_lookups)
     gn = tree.nodes.new("ShaderNodeGroup")
     gn.node_tree = ng
     gn.name = gn.label = "Soak Wet"
@@ -359,9 +409,18 @@ def rebuild(mat, settings):
     if gn is not None and gn.node_tree is not None:
         keep = {s.name: _value(s) for s in gn.inputs}
         links = [(l.from_socket, l.to_socket.name) for s in gn.inputs for l in s.links]
-        build_group(gn.node_tree, settings.preset, settings.liquid)
+        build_group(gn.node_tree, settings.preset, settings.liquid, settings.exact_lookups)
         for s in gn.inputs:
             if keep.get(s.name) is not None:
                 s.default_value = keep[s.name]
         for src, name in links:
             mat.node_tree.links.new(src, gn.inputs[name])
+        m, t = data.material(settings.preset), data.table(settings.preset, settings.liquid)
+        if settings.colour_source == "PRESET":
+            gn.inputs["Base Color"].default_value = list(m["dry_albedo"]) + [1.0]
+            gn.inputs["Roughness"].default_value = t["params"][0][0]
+        gn.inputs["Fill Time"].default_value = m["t_fill"]
+        bsdf = mat.node_tree.nodes.get(json.loads(gn[RESTORE_KEY])["bsdf"])
+        cior = compat.principled_input(bsdf, "coat_ior") if bsdf is not None else None
+        if cior is not None:
+            cior.default_value = data.liquid(settings.liquid)["ior"]

@@ -35,6 +35,10 @@ class SoakMaterialSettings(bpy.types.PropertyGroup):
     wet_map: PointerProperty(name="Wet Map", type=bpy.types.Image)
     attribute_name: StringProperty(name="Attribute", default="dp_wetmap")
     noise_scale: FloatProperty(name="Noise Scale", default=5.0, min=0.0)
+    exact_lookups: bpy.props.BoolProperty(
+        name="Exact lookups (EEVEE)", default=False, update=_rebuild,
+        description="Interpolate the core's tables with four exact texel reads each (EEVEE's image filter "
+                    "is not plain bilinear); slower, same result in Cycles")
     use_osl: bpy.props.BoolProperty(name="Use OSL shader", default=False,
                                     description="Cycles with Open Shading Language only")
 

@@ -3,7 +3,7 @@ import bpy
 from . import nodes
 from .operators.wet import osl_available
 
-GROUP_CONTROLS = ("Wetness", "Schedule", "Drying", "Time", "Start Time", "Fill Time", "Spill Edge")
+GROUP_CONTROLS = ("Wetness", "Puddle Level", "Schedule", "Drying", "Time", "Start Time", "Fill Time", "Spill Edge")
 
 
 class SOAK_PT_wetness(bpy.types.Panel):
@@ -24,6 +24,7 @@ class SOAK_PT_wetness(bpy.types.Panel):
         s = mat.soak
         layout.prop(s, "preset")
         layout.prop(s, "liquid")
+        layout.prop(s, "exact_lookups")
         gn = nodes.find_group_node(mat.node_tree) if mat.node_tree else None
         if gn is None:
             layout.prop(s, "colour_source")

@@ -35,6 +35,7 @@ cam = sc.camera
 cam.location = (0, 0, 5)
 cam.rotation_euler = (0, 0, 0)
 mat.soak.preset, mat.soak.wetness = "sand", 0.6
+mat.soak.exact_lookups = bool(int(opts.get("--exact", "0")))
 times = {"dry": [], "wet": []}
 for r in range(repeat):
     for state in ("dry", "wet"):

@@ -73,7 +73,8 @@ def build_wet_paper(back_lit):
     sheet = bpy.context.object
     _material(sheet, "Paper", "paper", source="IMAGE", wet_map=_half_map("paper_wet"))
     _camera(sc, (0, -2.2, 2.2), (0, 0, 0))
-    _sun(sc, (0.3, -0.5, -0.8) if back_lit else (0.3, -0.5, 0.8))
+    # behind: a bright sun under the sheet (its transmittance is a few per cent)
+    _sun(sc, (0.3, -0.5, -0.8) if back_lit else (0.3, -0.5, 0.8), 30.0 if back_lit else 3.0)
     if back_lit:
         sc.world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.05
     return [("wet_paper_" + ("back" if back_lit else "front"), 1)]
@@ -88,7 +89,7 @@ def build_beach_rock():
         bpy.ops.mesh.primitive_uv_sphere_add(radius=0.45, location=(-1.5 + i, 0, 0.35), segments=32, ring_count=16)
         bpy.ops.object.shade_smooth()
         _material(bpy.context.object, f"Rock {w}", "limestone", wetness=w)
-    _camera(sc, (0, -4.5, 2.2), (0, 0, 0.3))
+    _camera(sc, (0, -6.0, 2.6), (0, 0, 0.3))
     _sun(sc, (-0.4, -0.6, 0.7))
     return [("beach_rock", 1)]
 

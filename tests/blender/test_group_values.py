@@ -112,6 +112,7 @@ def main():
             plane.data.materials.append(mat)
             mat.soak.preset, mat.soak.liquid = m["name"], liquid
             mat.soak.colour_source = "MATERIAL"
+            mat.soak.exact_lookups = bool(int(A.get("exact", "0")))
             bpy.context.view_layer.objects.active = plane
             if bpy.ops.soak.make_wet() != {"FINISHED"}:
                 common.fail(f"make_wet {m['name']} {liquid}")

@@ -2,6 +2,7 @@
 tree exactly (links and values), so does undo; keyframed drying brightens
 the render monotonically; Bake Wet Map reports a missing or failing soak
 cleanly and, with soak, loads a map of the mesh's UV layout."""
+import json
 import os
 import sys
 
@@ -85,6 +86,20 @@ def main():
         common.fail("make_dry left a Soak Wet node group behind")
     print("make_dry restores exactly: ok")
 
+    # 1b. "Use OSL shader" with Cycles OSL on: applied by soak.osl_nodes when
+    # that module ships, otherwise reported; either way the material is wet
+    # and Make Dry restores it
+    bpy.context.scene.render.engine = "CYCLES"
+    bpy.context.scene.cycles.shading_system = True
+    mat.soak.preset, mat.soak.wetness_source, mat.soak.use_osl = "sand", "CONSTANT", True
+    if bpy.ops.soak.make_wet() != {"FINISHED"}:
+        common.fail("make_wet with Use OSL shader")
+    bpy.ops.soak.make_dry()
+    if common.tree_state(mat.node_tree) != before:
+        common.fail("make_dry after the OSL variant did not restore the tree")
+    mat.soak.use_osl = False
+    bpy.context.scene.cycles.shading_system = False
+
     # 2. undo restores
     bpy.ops.ed.undo_push(message="before wet")
     obname = ob.name
@@ -130,6 +145,28 @@ def main():
         common.fail(f"drying is not monotonic: {lums}")
     if not lums[-1] > 1.5 * lums[0]:
         common.fail(f"drying changes too little: {lums}")
+
+    # 3b. Puddle Level: a wet-map value at the level counts as fully wet
+    gn = mat.node_tree.nodes["Soak Wet"]
+    gn.inputs["Schedule"].default_value = 0.0
+    looks = {}
+    for wet_map, level in ((1.0, 1.0), (0.4, 0.4), (0.4, 1.0)):
+        gn.inputs["Wet Map"].default_value = wet_map
+        gn.inputs["Puddle Level"].default_value = level
+        looks[(wet_map, level)] = render_lum(sc, os.path.join(A["tmp"], f"puddle_{wet_map}_{level}.exr"))
+    print("puddle level:", looks)
+    if abs(looks[(0.4, 0.4)] - looks[(1.0, 1.0)]) > 1e-4 * looks[(1.0, 1.0)]:
+        common.fail(f"wet map 0.4 at puddle level 0.4 is not fully wet: {looks}")
+    if not looks[(0.4, 1.0)] > 1.2 * looks[(1.0, 1.0)]:
+        common.fail(f"wet map 0.4 without puddles should be drier (brighter): {looks}")
+
+    # 3c. changing the preset rebuilds the group in place (keys kept)
+    mat.soak.preset = "concrete"
+    gn = mat.node_tree.nodes["Soak Wet"]
+    if json.loads(gn.node_tree["soak_group"])["preset"] != "concrete":
+        common.fail("preset change did not rebuild the group")
+    if not (mat.animation_data or mat.node_tree.animation_data):
+        common.fail("the drying keys were lost")
 
     # 4. Bake Wet Map: missing soak, failing soak, working soak
     prefs = bpy.context.preferences.addons["soak"].preferences
