@@ -15,6 +15,7 @@
 #include "cli.h"
 #include "soak/image.h"
 #include "soak/preset.h"
+#include "soak/staged.h"
 #include "soak/wetness.h"
 
 #define SWATCH 96
@@ -87,13 +88,15 @@ static int write_table_and_swatches(const char *cmd, const soak_preset_db *db, c
 {
     const soak_liquid *water = soak_presets_find_liquid(db, "water");
     int n = soak_presets_count(db);
-    char path[4096];
+    char path[4096], err[4352];
     snprintf(path, sizeof path, "%s/albedo_table.csv", dir);
-    char tmp[4200];
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
-    FILE *csv = fopen(tmp, "w");
-    if (!csv) {
-        cli_error(cmd, "%s: cannot write: %s", path, strerror(errno));
+    /* The table and the swatch sheet are replaced together (soak/staged.h). */
+    soak_staged stage;
+    soak_staged_init(&stage);
+    FILE *csv = NULL;
+    if (soak_staged_open(&stage, path, &csv, err, sizeof err) != SOAK_OK) {
+        soak_staged_abort(&stage);
+        cli_error(cmd, "%s", err);
         return 0;
     }
     fprintf(csv, "material,kind,dry_r,dry_g,dry_b,wet_r,wet_g,wet_b,wet_over_dry,film_specular\n");
@@ -102,6 +105,7 @@ static int write_table_and_swatches(const char *cmd, const soak_preset_db *db, c
     soak_image sheet;
     if (soak_image_alloc(&sheet, SWATCH * N_WET, SWATCH * n, 3) != SOAK_OK) {
         fclose(csv);
+        soak_staged_abort(&stage);
         cli_error(cmd, "out of memory for the swatch sheet");
         return 0;
     }
@@ -136,23 +140,24 @@ static int write_table_and_swatches(const char *cmd, const soak_preset_db *db, c
         fprintf(csv, "%s,%s,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n", p->name, soak_material_kind_name(p->kind),
                 dry.albedo.r, dry.albedo.g, dry.albedo.b, wet.albedo.r, wet.albedo.g, wet.albedo.b, ratio, spec);
     }
-    if (fclose(csv) != 0 || !ok || rename(tmp, path) != 0) {
-        remove(tmp);
-        soak_image_free(&sheet);
-        if (ok) cli_error(cmd, "%s: cannot finish writing", path);
+    soak_status st = soak_staged_close(csv, path, err, sizeof err);
+    char sheet_path[4096];
+    snprintf(sheet_path, sizeof sheet_path, "%s/swatches.png", dir);
+    soak_image_write_opts opts = {SOAK_TONE_SRGB, SOAK_PIXEL_UINT8};
+    if (ok && st == SOAK_OK) st = soak_image_stage(&stage, sheet_path, &sheet, &opts, err, sizeof err);
+    soak_image_free(&sheet);
+    if (!ok || st != SOAK_OK) {
+        soak_staged_abort(&stage);
+        if (ok) cli_error(cmd, "%s", err);
+        return 0;
+    }
+    if ((st = soak_staged_commit(&stage, err, sizeof err)) != SOAK_OK) {
+        cli_error(cmd, "%s", err);
         return 0;
     }
     printf("(diffuse albedo under diffuse light; wet = fully wet with a water film; wet/dry = luminance ratio;\n"
            " film spec = hemispherical specular reflectance the film adds)\n");
-    snprintf(path, sizeof path, "%s/swatches.png", dir);
-    char err[1024];
-    soak_image_write_opts opts = {SOAK_TONE_SRGB, SOAK_PIXEL_UINT8};
-    soak_status st = soak_image_write(path, &sheet, &opts, err, sizeof err);
-    soak_image_free(&sheet);
-    if (st != SOAK_OK) {
-        cli_error(cmd, "%s", err);
-        return 0;
-    }
+    snprintf(path, sizeof path, "%s", sheet_path);
     printf("wrote %s/albedo_table.csv and %s (rows: presets in table order; columns: wetness 0 .. 1)\n", dir, path);
     return 1;
 }

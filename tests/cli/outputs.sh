@@ -75,6 +75,19 @@ else
     echo "skip real tmpfs check: no mount namespace here (the file size limit above covers it)"
 fi
 
+# Without /proc (no anonymous temporaries) the named-temporary fallback
+# must give the same guarantees.
+if unshare -rm true 2>/dev/null; then
+    rm -rf "$D" && mkdir -p "$D"
+    unshare -rm bash -c "mount -t tmpfs none /proc && '$SOAK' bake turbulence --width 64 --height 64 -o '$D/a.exr' && \
+        cp '$D/a.exr' '$SOAK_TMP/fb_good.exr' && \
+        (ulimit -f 4; trap '' XFSZ; exec '$SOAK' ${TURB[*]} --seed 2 -o '$D/a.exr'); echo \$? > '$SOAK_TMP/fb.rc'" \
+        >/dev/null 2>&1
+    [ "$(cat "$SOAK_TMP/fb.rc")" = 1 ] && ok "no /proc: failed write is an error" || bad "no /proc: exit $(cat "$SOAK_TMP/fb.rc")"
+    same "$D/a.exr" "$SOAK_TMP/fb_good.exr" "no /proc: previous a.exr kept"
+    only a.exr
+fi
+
 # ---- 2. multi-output bakes replace all or none ----
 rm -rf "$D" && mkdir -p "$D"
 cat >"$SOAK_TMP/plane.obj" <<'OBJ'

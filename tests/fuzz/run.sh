@@ -19,10 +19,12 @@ for t in $TARGETS; do
     mkdir -p "$OUT/corpus/$t" "$OUT/artifacts/$t"
     cp -n "$HERE/corpus/$t/"* "$OUT/corpus/$t/" 2>/dev/null
     extra=()
+    [ -f "$HERE/$t.dict" ] && extra+=(-dict="$HERE/$t.dict")
     # Assimp's own crashes and hangs are known and contained at run time
     # (mesh_contain.c): keep fuzzing past them and count the artifacts.
-    [ "$t" = mesh ] && extra=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
+    [ "$t" = mesh ] && extra+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
     ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 \
+        LSAN_OPTIONS=suppressions=$HERE/../lsan.supp:fast_unwind_on_malloc=0 \
         nice -n 10 "$exe" "$OUT/corpus/$t" -max_total_time="$SECS" -timeout=10 -rss_limit_mb=3072 \
         -artifact_prefix="$OUT/artifacts/$t/" -print_final_stats=1 "${extra[@]}" >"$OUT/$t.log" 2>&1
     rc=$?
