@@ -11,9 +11,10 @@ Asserted (tolerances derived in blender_addon/README.md, "Error"):
   the back-lit thin sheet: L against E cos(theta)/pi * T_core(w) (Translucent);
   the dry metal: L against soak render of the same GGX conductor (3 %: the
     two renderers' GGX and Fresnel are the same model; 64 spp noise < 0.5 %).
-Printed, not asserted: the full table against soak render (its porous presets
-are a traced medium under an n = 1.5 interface, a different model from a
-Lambertian base; see the README's error table)."""
+Printed, not asserted: the full table against soak render (2-37 % apart for
+the dielectric presets: its Lambertian base sits under the material's and the
+liquid's interfaces; see the README's error table for what is and is not
+explained)."""
 import json
 import os
 import subprocess
