@@ -11,9 +11,10 @@ Asserted (tolerances derived in blender_addon/README.md, "Error"):
   the back-lit thin sheet: L against E cos(theta)/pi * T_core(w) (Translucent);
   the dry metal: L against soak render of the same GGX conductor (3 %: the
     two renderers' GGX and Fresnel are the same model; 64 spp noise < 0.5 %).
-Printed, not asserted: the full table against soak render (its porous presets
-are a traced medium under an n = 1.5 interface, a different model from a
-Lambertian base; see the README's error table)."""
+Printed, not asserted: the full table against soak render (2-37 % apart for
+the dielectric presets: its Lambertian base sits under the material's and the
+liquid's interfaces; see the README's error table for what is and is not
+explained)."""
 import json
 import os
 import subprocess
@@ -28,6 +29,7 @@ A = common.args()
 SOAK, ZIP, TMP = A["soak"], A["addon"], A["tmp"]
 CASES = json.load(open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "plane_cases.json")))
 DIFF_TOL = 0.025
+SOAK_NOISE = 0.01  # soak render, 16 spp over 64x64 pixels of a sunlit plane: NEE is exact, the film's lobe choice is not
 METAL_TOL = 0.03
 os.makedirs(TMP, exist_ok=True)
 
@@ -143,6 +145,32 @@ def knot(table, key, w):
     return vs[-1]
 
 
+def film_total(base, incidence):
+    """Lekner-Dorf total reflectance of a water film over a Lambertian base
+    (soak albedo --model film: the core's closed form, a second method)."""
+    r = subprocess.run([SOAK, "albedo", "--model", "film", "--base-albedo", f"{base:.6f}", "--ior", "1.333",
+                        "--incidence", str(incidence)], capture_output=True, text=True)
+    if r.returncode != 0:
+        common.fail(r.stderr)
+    return float(r.stdout.strip().splitlines()[-1])
+
+
+def angle_bound(table, w, theta_deg):
+    """How far soak render (the sun at theta) may sit from the exported albedo
+    (diffuse incidence): the liquid interface's diffuse transmission depends
+    on the angle of incidence, which a Principled base colour cannot follow.
+    Relative, over the interface's area (film + pore water)."""
+    k = table["knots"]
+    i = min(range(len(k["wetness"])), key=lambda j: abs(k["wetness"][j] - w))
+    c = k["film_coverage"][i] + (1 - k["film_coverage"][i]) * k["water_specular_weight"][i]
+    if c <= 0:
+        return 0.0
+    a = lum(k["albedo_subsurface"][i])
+    d_dir = film_total(a, theta_deg) - film_total(0.0, theta_deg)
+    d_hemi = film_total(a, "diffuse") - film_total(0.0, "diffuse")
+    return c * abs(d_dir / d_hemi - 1.0)
+
+
 def main():
     common.install_addon(ZIP)
     ref_path = os.path.join(TMP, "export.json")
@@ -153,7 +181,8 @@ def main():
     import math
     d = CASES["sun"]["direction"]
     e_cos = CASES["sun"]["irradiance"] * d[2] / math.sqrt(sum(x * x for x in d)) / math.pi
-    rows, failures = [], []
+    rows, failures, vs_soak = [], [], []
+    theta_sun = math.degrees(math.acos(d[2] / math.sqrt(sum(x * x for x in d))))
 
     def case(name, preset, wetness, liquid="water", back_lit=False, metallic=0.0, black=False):
         sc, plane, mat = setup_scene()
@@ -189,6 +218,13 @@ def main():
             got = lum(lb) - lum(sb)
             rel = check(f"{p} w={w} diffuse", got, want, DIFF_TOL + 0.005 / lum(alb))
             rows.append((p, w, lum(lb), want + lum(sb), rel, lum(ls)))
+            # Against the reference tracer (black world: the film's mirror image of
+            # the sun misses the camera, so soak render's image is its diffuse part).
+            tol = DIFF_TOL + 0.005 / lum(alb) + angle_bound(t, w, theta_sun) + SOAK_NOISE
+            r2 = got / lum(ls) - 1.0
+            if not abs(r2) <= tol:
+                failures.append(f"{p} w={w}: Cycles diffuse {got:.5f} vs soak render {lum(ls):.5f} ({r2:+.2%}, tol {tol:.2%})")
+            vs_soak.append((p, w, got, lum(ls), r2, tol))
     m = CASES["metal"]
     for w in [0.0] + CASES["wetness_levels"]:
         lb, sb, ls = case(f"{m}_{w}", m, w, metallic=1.0)
@@ -241,6 +277,10 @@ def main():
             print(f"| {p} | {w} | {lb:.4f} | {want:.4f} | {rel:+.2%} | {ls:.4f} | {lb / ls:.2f} |")
         else:
             print(f"| {p} | {w} | {lb:.4f} | {want:.4f} | {rel:+.2%} | - | - |")
+    print("\n| preset | wetness | Cycles diffuse | soak render | difference | tolerance |")
+    print("|---|---|---|---|---|---|")
+    for p, w, got, ls, r2, tol in vs_soak:
+        print(f"| {p} | {w} | {got:.4f} | {ls:.4f} | {r2:+.2%} | {tol:.2%} |")
     if failures:
         common.fail("; ".join(failures))
     print("PASS")

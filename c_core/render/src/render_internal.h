@@ -164,7 +164,6 @@ typedef struct rt_light_sample {
  * the light cannot illuminate p (inside a sphere light, zero value). */
 int rt_light_sample_at(rt_thread *t, int light, soak_vec3 p, rt_light_sample *s);
 int rt_light_count(const rt_ctx *c); /* lights + the environment if it is a map */
-int rt_light_is_delta(const rt_ctx *c, int light);
 /* Solid-angle pdf of sampling direction wi toward sphere light l from p. */
 double rt_sphere_light_pdf(const soak_light *l, soak_vec3 p);
 /* 1 when the segment from p (offset already applied) along wi up to dist is free. */
@@ -266,6 +265,8 @@ typedef struct rt_photon_map {
 soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed,
                              const volatile sig_atomic_t *cancel, double deadline, rt_photon_map *map);
 void rt_photons_free(rt_photon_map *map);
+/* Stores n photons (copied) into map's hash grid; map->radius already set. */
+soak_status rt_photon_map_store(rt_photon_map *map, const rt_photon *photons, size_t n);
 /* sigma_s L_s estimate: sum over photons of object obj within the radius of
  * p(cos) * power / (4/3 pi r^3), cos between the photon's propagation and the
  * reverse of the camera path direction d_in. */

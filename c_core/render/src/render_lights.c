@@ -133,13 +133,6 @@ static int env_sample(rt_thread *t, rt_light_sample *s)
 
 int rt_light_count(const rt_ctx *c) { return c->scene->n_lights + (c->scene->env.type == SOAK_ENV_MAP); }
 
-int rt_light_is_delta(const rt_ctx *c, int light)
-{
-    if (light >= c->scene->n_lights) return 0;
-    soak_light_type ty = c->scene->lights[light].type;
-    return ty == SOAK_LIGHT_DIRECTIONAL || ty == SOAK_LIGHT_POINT;
-}
-
 double rt_sphere_light_pdf(const soak_light *l, soak_vec3 p)
 {
     double d2 = soak_v3_dot(soak_v3_sub(l->position, p), soak_v3_sub(l->position, p));

@@ -32,18 +32,6 @@
 #include "soak/fresnel.h"
 #include "soak/ggx.h"
 
-double rt_fresnel(double cos_i, double eta, double *cos_t)
-{
-    double ct = 0;
-    if (eta == 1.0) {
-        if (cos_t) *cos_t = cos_i;
-        return 0.0;
-    }
-    double F = soak_fresnel_dielectric_raw(fmin(1.0, fmax(0.0, cos_i)), eta, &ct);
-    if (cos_t) *cos_t = ct;
-    return F;
-}
-
 typedef struct base_model {
     soak_base_type type;
     soak_rgb albedo;

@@ -11,11 +11,10 @@
 #include "soak/preset.h"
 #include "soak/wetness.h"
 
-static double rgb_max(soak_rgb c) { return fmax(c.r, fmax(c.g, c.b)); }
 
 static void medium_majorant(soak_scene_medium *m)
 {
-    double mj = rgb_max(soak_rgb3(m->sigma_s.r + m->sigma_a.r, m->sigma_s.g + m->sigma_a.g, m->sigma_s.b + m->sigma_a.b));
+    double mj = soak_rgb_max(soak_rgb3(m->sigma_s.r + m->sigma_a.r, m->sigma_s.g + m->sigma_a.g, m->sigma_s.b + m->sigma_a.b));
     if (m->volume) {
         size_t n = soak_volume_count(m->volume);
         for (int ch = 0; ch < 3; ++ch) {
