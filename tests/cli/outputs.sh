@@ -72,7 +72,7 @@ if unshare -rm true 2>/dev/null; then
     grep -q "No space left" "$SOAK_TMP/tmpfs.err" && ok "tmpfs: error says No space left" || bad "tmpfs: $(cat "$SOAK_TMP/tmpfs.err")"
     [ "$(cat "$SOAK_TMP/tmpfs.ls")" = "small.png" ] && ok "tmpfs: no temporary left" || bad "tmpfs holds: $(cat "$SOAK_TMP/tmpfs.ls")"
 else
-    echo "skip real tmpfs check: no mount namespace here (the file size limit above covers it)"
+    skip "no mount namespace here (the file size limit above covers it)" "real tmpfs check"
 fi
 
 # Without /proc (no anonymous temporaries) the named-temporary fallback
