@@ -147,7 +147,7 @@ if "$SOAK" "${VOL[@]}" --seed 1 --format vdb,grid -o "$D/v" >/dev/null 2>&1; the
     same "$D/v.json" "$SOAK_TMP/good.json" "volume: previous v.json kept"
     only v.json v.vdb
 else
-    echo "skip volume vdb,grid: no OpenVDB in this build"
+    skip "no OpenVDB in this build" "volume vdb,grid"
 fi
 
 # ---- 3. results lost on stdout fail the command ----
