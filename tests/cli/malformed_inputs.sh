@@ -27,6 +27,7 @@ declare -A WHY=(
     [obj_inf_vertex]="non-finite coordinate \(inf"
     [stl_truncated_facet]="cannot read mesh"
     [stl_binary_short]="cannot read mesh"
+    [off_fuzz_segv]="crashed on this file \(signal 11"
     [stl_fuzz_segv]="cannot read mesh \(Mesh with invalid primitive type"
 )
 exts=(obj ply stl off gltf glb)
