@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config git
   libopenimageio-dev openimageio-tools
   libembree-dev libassimp-dev libcjson-dev libopenvdb-dev libboost-dev
-  povray blender python3 python3-numpy python3-jsonschema
+  povray blender xvfb python3 python3-numpy python3-jsonschema
 )
 
 missing=()

@@ -2,7 +2,9 @@
 # Benchmark (not a test): `soak render` vs Blender Cycles on the same wet scene
 # (scenes/bench_wet_sphere.json: a wet sphere with a scattering interior on a wet
 # ground plane, one sun, constant sky), CPU, same image size and thread count, no
-# denoising, one run. Each renderer is compared with its OWN long converged
+# denoising. Same geometry: the sphere is Blender's 192x96 UV-sphere mesh for both
+# (cycles_render_scene.py --export-sphere writes it; soak loads it as a mesh object,
+# so its walk queries the BVH instead of the analytic sphere). Each renderer is compared with its OWN long converged
 # reference (the materials are equivalent, not identical: see
 # cycles_render_scene.py), then renders at increasing spp give time vs RMSE, and the
 # time to reach RMSE = TARGET x mean reference pixel value is interpolated for both.
@@ -10,12 +12,12 @@
 # paths/s); also writes it to out/bench/render_vs_cycles.md when out/bench exists
 # (c_core/bench/run.sh creates it and runs this from the repository root).
 #
-# Times: soak = wall time of the `soak render` process (scene load, BVH, render, EXR
-# write) minus the process start-up (dynamic loading of OIIO, OpenVDB, Assimp...,
-# measured as the fastest of 3 `soak render --help`); Cycles = the
-# bpy.ops.render.render call only (scene sync, BVH, render). Both start-ups are
-# reported separately. The Cycles reference is rendered first in its session, so it
-# absorbs Cycles' one-time initialisation. Sun units are checked first: a white
+# Times, the render call for both: soak = the `time:` it prints (soak_render: the
+# path tracing; scene parse, mesh load and BVH build come before it); Cycles = the
+# bpy.ops.render.render call (scene sync, BVH build, path tracing). Start-ups are
+# reported separately. Runs are interleaved by rounds: soak renders every spp, then a
+# Blender session renders every spp (after an untimed warm-up render), REPEAT times;
+# the fastest of the repeats is kept for each. Sun units are checked first: a white
 # Lambert plane under the scene's sun alone, rendered by both, must give E cos/pi;
 # Cycles' sun strength is scaled by the measured soak/Cycles ratio (1 when both agree).
 # The machine may be shared: the load average is printed with the results.
@@ -35,7 +37,8 @@ THREADS="${4:-2}"
 TARGET="${5:-0.02}"
 REPEAT="${BENCH_REPEAT:-3}"
 case "$REPEAT" in '' | *[!0-9]* | 0) echo "BENCH_REPEAT must be a positive integer"; exit 1 ;; esac
-SCENE="$ROOT/scenes/bench_wet_sphere.json"
+SCENE_SRC="$ROOT/scenes/bench_wet_sphere.json"
+SCENE="$SCENE_SRC" # Cycles reads the original; soak its mesh copy (below)
 PY=/usr/bin/python3
 REF_SEED=1000 # references use another seed than the runs: independent noise
 RUN_SEED=1
@@ -77,6 +80,20 @@ e = e[0] if isinstance(e, list) else e
 print('%.6f' % (e * d[2] / math.sqrt(sum(x * x for x in d)) / math.pi))")
 SUN_SCALE=$(echo "$soak_cal / $cycles_cal" | bc -l)
 
+# --- 1b. same geometry: soak traces Blender's UV sphere -------------------------
+blend --export-sphere "$W/uvsphere.obj" >"$W/blender_sphere.log" 2>&1 || { cat "$W/blender_sphere.log"; exit 1; }
+sphere_info=$(sed -n 's/^CYCLES_SPHERE //p' "$W/blender_sphere.log")
+"$PY" - "$SCENE_SRC" "$W/scene_mesh.json" <<'EOF'
+import json, sys
+sc = json.load(open(sys.argv[1]))
+for o in sc["objects"]:
+    if o["type"] == "sphere":
+        c, r = o.pop("center"), o.pop("radius")
+        o.update({"type": "mesh", "file": "uvsphere.obj", "translate": c, "scale": r})
+json.dump(sc, open(sys.argv[2], "w"), indent=1)
+EOF
+SOAK_SCENE="$W/scene_mesh.json"
+
 # --- 2. soak: reference, then the runs ----------------------------------------
 : >"$W/runs.tsv"
 soak_startup=1000000
@@ -86,47 +103,47 @@ for _ in 1 2 3; do
     t1=$(now)
     soak_startup=$(echo "t = $t1 - $t0; if (t < $soak_startup) t else $soak_startup" | bc -l)
 done
-soak_run() { # spp seed out -> prints seconds (wall minus start-up), keeps stdout in out.log
-    local t0 t1
-    t0=$(now)
-    "$SOAK" render "$SCENE" -o "$3" --spp "$1" --seed "$2" --threads "$THREADS" >"$3.log"
-    t1=$(now)
-    echo "$t1 - $t0 - $soak_startup" | bc -l
+soak_run() { # spp seed out -> prints the render call's seconds, keeps stdout in out.log
+    "$SOAK" render "$SOAK_SCENE" -o "$3" --spp "$1" --seed "$2" --threads "$THREADS" >"$3.log"
+    sed -n 's/^time: \([0-9.]*\) s.*/\1/p' "$3.log"
 }
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 secs=$(soak_run "$REF_SPP" "$REF_SEED" "$W/soak_ref.exr")
 printf 'soak\tref\t%s\t%s\t%s\n' "$REF_SPP" "$secs" "$W/soak_ref.exr" >>"$W/runs.tsv"
-# Each run is timed REPEAT times, the repeats interleaved (all spp, then all
-# again), and the fastest kept: the usual estimate of a program's own time on a
-# machine whose other load comes and goes. Same seed: identical images.
-declare -A best
-for _ in $(seq "$REPEAT"); do
-    for spp in $SPPS; do
-        secs=$(soak_run "$spp" "$RUN_SEED" "$W/soak_$spp.exr")
-        best[$spp]=$(echo "v = $secs; w = ${best[$spp]:-1000000000}; if (v < w) v else w" | bc -l)
-    done
-done
-for spp in $SPPS; do
-    printf 'soak\trun\t%s\t%s\t%s\n' "$spp" "${best[$spp]}" "$W/soak_$spp.exr" >>"$W/runs.tsv"
-done
 soak_paths_s=$(sed -n 's/^paths: .*(\([0-9]*\) paths\/s).*/\1/p' "$W/soak_ref.exr.log")
 soak_rays_s=$(sed -n 's/^rays: .*(\([0-9]*\) rays\/s).*/\1/p' "$W/soak_ref.exr.log")
 soak_rays=$(sed -n 's/^rays: \([0-9]*\) .*/\1/p' "$W/soak_ref.exr.log")
 soak_paths=$(sed -n 's/^paths: \([0-9]*\) .*/\1/p' "$W/soak_ref.exr.log")
 soak_inner=$(sed -n 's/^time: \([0-9.]*\) s.*/\1/p' "$W/soak_ref.exr.log")
 
-# --- 3. Cycles: one Blender session, reference first --------------------------
-jobs="$REF_SPP:$REF_SEED"
-for _ in $(seq "$REPEAT"); do
-    for spp in $SPPS; do jobs="$jobs $spp:$RUN_SEED"; done
-done
+# --- 3. Cycles reference, then the rounds: soak, Cycles, soak, Cycles, ... -------
+cycles_session() { # name jobs... -> appends CYCLES_RENDER lines to blender.log
+    local name=$1; shift
+    # shellcheck disable=SC2068
+    blend "$SCENE" "$W" "$THREADS" "$SUN_SCALE" 1:0 $@ >"$W/blender_$name.log" 2>&1 || { cat "$W/blender_$name.log"; exit 1; }
+    cat "$W/blender_$name.log" >>"$W/blender.log"
+}
+: >"$W/blender.log"
 t_launch=$(now)
-# shellcheck disable=SC2086
-blend "$SCENE" "$W" "$THREADS" "$SUN_SCALE" $jobs >"$W/blender.log" 2>&1 || { cat "$W/blender.log"; exit 1; }
+cycles_session ref "$REF_SPP:$REF_SEED"
 t_exit=$(now)
-t_start=$(sed -n 's/^CYCLES_SCRIPT_START //p' "$W/blender.log")
+t_start=$(sed -n 's/^CYCLES_SCRIPT_START //p' "$W/blender_ref.log")
 blender_startup=$(echo "$t_start - $t_launch" | bc -l)
 blender_total=$(echo "$t_exit - $t_launch" | bc -l)
+declare -A best
+for round in $(seq "$REPEAT"); do
+    for spp in $SPPS; do
+        secs=$(soak_run "$spp" "$RUN_SEED" "$W/soak_$spp.exr")
+        best[$spp]=$(echo "v = $secs; w = ${best[$spp]:-1000000000}; if (v < w) v else w" | bc -l)
+    done
+    jobs=""
+    for spp in $SPPS; do jobs="$jobs $spp:$RUN_SEED"; done
+    # shellcheck disable=SC2086
+    cycles_session "round$round" $jobs
+done
+for spp in $SPPS; do
+    printf 'soak\trun\t%s\t%s\t%s\n' "$spp" "${best[$spp]}" "$W/soak_$spp.exr" >>"$W/runs.tsv"
+done
 declare -A cbest
 while read -r _ spp seed secs; do
     if [ "$seed" = "$REF_SEED" ]; then
@@ -148,8 +165,9 @@ load_after=$(cut -d' ' -f1-3 /proc/loadavg)
     echo "Scene \`scenes/bench_wet_sphere.json\`, $(sed -n 's/.*"width": *\([0-9]*\), *"height": *\([0-9]*\).*/\1x\2/p' "$SCENE" | head -1)," \
         "$THREADS threads, CPU, no denoising, one run; RMSE over RGB against each renderer's own" \
         "$REF_SPP-spp reference (seed $REF_SEED; runs seed $RUN_SEED)."
-    echo "soak time = \`soak render\` process wall time minus its start-up; Cycles time = \`bpy.ops.render.render\` call;" \
-        "each run the fastest of $REPEAT interleaved repeats (references: one render each)."
+    echo "Same geometry: the sphere is Blender's UV-sphere mesh ($sphere_info) in both renderers." \
+        "Times are the render call for both: soak's printed \`time:\` (path tracing), Cycles' \`bpy.ops.render.render\` (sync, BVH, path tracing);" \
+        "runs interleaved by rounds (soak all spp, then a Blender session all spp after an untimed warm-up), each the fastest of $REPEAT rounds (references: one render each)."
     echo
     printf -- "- sun units (red channel): white Lambert plane, expected E cos/pi = %s; soak %s, Cycles %s -> Cycles sun strength scale %.4f\n" \
         "$expected" "$soak_cal" "$cycles_cal" "$SUN_SCALE"

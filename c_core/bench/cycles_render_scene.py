@@ -5,6 +5,12 @@ renders it at a list of sample counts, timing each bpy.ops.render.render call.
   blender -b --factory-startup --python-exit-code 1 --python cycles_render_scene.py -- \
       SCENE.json OUTDIR THREADS SUN_SCALE REF_SPP:SEED SPP:SEED ...
   blender ... --python cycles_render_scene.py -- --calibrate SCENE.json OUT.exr THREADS
+  blender ... --python cycles_render_scene.py -- --export-sphere OUT.obj
+
+--export-sphere writes the UV sphere this script renders (unit radius, at the origin,
+smooth vertex normals) as OBJ, so that soak traces the very same triangles.
+A job "SPP:0" (seed 0) is a warm-up render, neither written nor reported: it takes
+Cycles' one-time initialisation out of the timed renders of a session.
 
 Writes OUTDIR/cycles_<spp>_<seed>.exr (linear RGBA float) and prints
 "CYCLES_SCRIPT_START <epoch s>" then one "CYCLES_RENDER <spp> <seed> <seconds>" per
@@ -40,6 +46,7 @@ order and a comparable sampling cost):
 """
 import json
 import math
+import os
 import sys
 import time
 
@@ -292,7 +299,7 @@ def add_object(scene, o, mats, i):
     if not (isinstance(wet, (int, float)) and wet == 1):
         fail("objects[%d].wetness: only a constant 1 is translated" % i)
     if o["type"] == "sphere":
-        bpy.ops.mesh.primitive_uv_sphere_add(segments=192, ring_count=96, radius=float(o["radius"]),
+        bpy.ops.mesh.primitive_uv_sphere_add(segments=SPHERE_SEGMENTS, ring_count=SPHERE_RINGS, radius=float(o["radius"]),
                                              location=o["center"])
         obj = bpy.context.active_object
         bpy.ops.object.shade_smooth()
@@ -307,6 +314,28 @@ def add_object(scene, o, mats, i):
     obj.data.materials.append(mats[o["material"]])
 
 
+SPHERE_SEGMENTS, SPHERE_RINGS = 192, 96
+
+
+def export_sphere(path):
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=SPHERE_SEGMENTS, ring_count=SPHERE_RINGS, radius=1.0)
+    obj = bpy.context.active_object
+    bpy.ops.object.shade_smooth()
+    me = obj.data
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write("# Blender %s UV sphere, %d segments x %d rings, radius 1, smooth normals\n"
+                % (bpy.app.version_string, SPHERE_SEGMENTS, SPHERE_RINGS))
+        for v in me.vertices:
+            f.write("v %.9f %.9f %.9f\n" % tuple(v.co))
+        for v in me.vertices:
+            f.write("vn %.9f %.9f %.9f\n" % tuple(v.normal))
+        for p in me.polygons:
+            f.write("f " + " ".join("%d//%d" % (i + 1, i + 1) for i in p.vertices) + "\n")
+    os.replace(tmp, path)
+    print("CYCLES_SPHERE %d vertices %d faces" % (len(me.vertices), len(me.polygons)))
+
+
 def render_to(scene, path):
     t0 = time.perf_counter()
     bpy.ops.render.render(write_still=False)
@@ -319,6 +348,9 @@ def main():
     args = sys.argv[sys.argv.index("--") + 1:]
     bpy.ops.wm.read_factory_settings(use_empty=True)
     scene = bpy.context.scene
+    if args[0] == "--export-sphere":
+        export_sphere(args[1])
+        return
     if args[0] == "--calibrate":
         scene_path, out_path, threads = args[1], args[2], int(args[3])
         sc = json.load(open(scene_path))
@@ -351,6 +383,9 @@ def main():
         spp, seed = (int(x) for x in job.split(":"))
         scene.cycles.samples = spp
         scene.cycles.seed = seed
+        if seed == 0:  # warm-up
+            bpy.ops.render.render(write_still=False)
+            continue
         secs = render_to(scene, "%s/cycles_%d_%d.exr" % (outdir, spp, seed))
         print("CYCLES_RENDER %d %d %.4f" % (spp, seed, secs), flush=True)
 

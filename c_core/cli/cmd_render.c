@@ -208,7 +208,8 @@ int soak_cmd_render(int argc, char **argv)
         printf("samples per pixel: %d..%d%s\n", stats.min_spp, stats.max_spp, stats.stopped_early ? " (stopped early)" : "");
         printf("paths: %lld (%.0f paths/s)\n", stats.paths, stats.paths / secs);
         printf("rays: %lld (%.0f rays/s)\n", stats.rays, stats.rays / secs);
-        printf("capped paths: %lld, leaked medium paths: %lld\n", stats.capped, stats.leaked);
+        printf("capped paths: %lld, leaked medium paths: %lld, NaN paths: %lld, geometry errors: %lld\n", stats.capped,
+               stats.leaked, stats.nan_paths, stats.geometry_errors);
         printf("time: %.2f s with %ld threads\n", stats.seconds, threads);
     }
     if (interrupted) {

@@ -29,11 +29,7 @@ int check_rel(const char *what, double got, double want, double rel)
     return record(ok, what);
 }
 
-int check_true(const char *what, int cond)
-{
-    if (!cond) printf("FAIL %s\n", what);
-    return record(cond != 0, what);
-}
+int check_true(const char *what, int cond) { return record(cond != 0, what); }
 
 int check_status(const char *what, soak_status got, soak_status want)
 {
@@ -45,11 +41,17 @@ int check_status(const char *what, soak_status got, soak_status want)
 void check_skip(const char *what, const char *reason)
 {
     ++n_skip;
-    printf("SKIPPED %s: %s\n", what, reason);
+    printf("SKIPPED: %s (%s)\n", reason, what);
 }
 
 int check_finish(void)
 {
     printf("%d passed, %d failed, %d skipped\n", n_pass, n_fail, n_skip);
-    return n_fail ? 1 : 0;
+    if (n_fail) return 1;
+    if (n_pass == 0 && n_skip > 0) return CHECK_SKIP_EXIT; /* ctest: Skipped, never Passed */
+    if (n_pass == 0) {
+        printf("FAIL no check ran\n");
+        return 1;
+    }
+    return 0;
 }

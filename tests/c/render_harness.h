@@ -14,5 +14,10 @@ typedef enum { RH_FIRST_PIXEL, RH_ALL_PIXELS } rh_reduce;
  * all pixels. A parse or render failure is a failed check and returns 0. */
 int rh_render_mean(const char *what, const char *text, const char *base_dir, int reps, int spp_per_rep,
                    uint64_t seed_base, rh_reduce reduce, double *mean, double *se);
+/* The same with films over Lambert traced bounce by bounce
+ * (soak_render_options.trace_films) when trace_films is 1. Every render
+ * must also report no NaN path and no geometry error (checked). */
+int rh_render_mean_opt(const char *what, const char *text, const char *base_dir, int reps, int spp_per_rep,
+                       uint64_t seed_base, rh_reduce reduce, int trace_films, double *mean, double *se);
 
 #endif

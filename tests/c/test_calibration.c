@@ -74,7 +74,7 @@ static void check_measured(const soak_preset_db *db, const soak_liquid *water)
 static void check_rule(const soak_preset_db *db)
 {
     const soak_preset *sand = soak_presets_find(db, "sand");
-    if (!sand) return;
+    if (!check_true("sand preset present", sand != NULL)) return;
     double t = (1 - soak_hg2_mean_cosine(&sand->phase_wet)) / (1 - soak_hg2_mean_cosine(&sand->phase_dry));
     check_close("sand transport ratio 0.575", t, 0.575, 1e-12);
     for (int i = 0; i < soak_presets_count(db); ++i) {

@@ -241,6 +241,41 @@ static void test_sheet(void)
     check_close("sheet: two-flux vs traced slab (omega 0.99, g 0.6, tau 4)", T.g, r.transmittance, 0.03);
 }
 
+/* The thin-sheet preset itself, dry and wet: two-flux T against the traced
+ * index-matched slab of the same medium (optical thickness ~40, T ~ 1e-3:
+ * the regime of paper, far from the case above). Relative bound 0.15. */
+static void test_sheet_preset(const soak_preset_db *db)
+{
+    const soak_liquid *l = soak_presets_find_liquid(db, "water");
+    for (int i = 0; l && i < soak_presets_count(db); ++i) {
+        const soak_preset *p = soak_presets_at(db, i);
+        if (p->kind != SOAK_KIND_THIN_SHEET || !(p->thickness_mm > 0)) continue;
+        for (int k = 0; k < 2; ++k) {
+            soak_wet_input in = soak_wet_input_steady(p, k);
+            soak_wet_params w;
+            soak_rgb T;
+            char what[160];
+            snprintf(what, sizeof what, "%s wetness %d: two-flux T vs traced slab (green)", p->name, k);
+            if (!check_status(what, soak_wetness_eval(p, l, &in, &w), SOAK_OK)) continue;
+            if (!check_status(what, soak_sheet_transmittance(&w, p->thickness_mm, &T), SOAK_OK)) continue;
+            soak_measure_setup s;
+            soak_measure_setup_default(&s);
+            s.config = SOAK_MEASURE_SLAB;
+            s.quantity = SOAK_MEASURE_T;
+            s.diffuse_incidence = 1;
+            s.albedo = w.omega.g;
+            s.phase = w.phase;
+            s.tau = (w.sigma_s.g + w.sigma_a.g) * p->thickness_mm;
+            s.paths = 100000;
+            soak_measure_result r;
+            if (!check_status(what, soak_measure_run(&s, &r), SOAK_OK)) continue;
+            printf("  %s w=%d: traced T = %.5f +- %.5f, two-flux T = %.5f\n", p->name, k, r.transmittance,
+                   r.transmittance_err, T.g);
+            check_rel(what, T.g, r.transmittance, 0.15);
+        }
+    }
+}
+
 int main(void)
 {
     soak_preset_db *db = NULL;
@@ -259,6 +294,7 @@ int main(void)
     }
     test_base_errors(soak_presets_at(db, 0), soak_presets_liquid_at(db, 0));
     test_sheet();
+    test_sheet_preset(db);
     soak_presets_free(db);
     return check_finish();
 }

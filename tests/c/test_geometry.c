@@ -22,8 +22,7 @@ static void test_sphere(void)
 {
     soak_geometry *g = NULL;
     char err[256] = "";
-    check_status("create", soak_geometry_create(&g, err, sizeof err), SOAK_OK);
-    if (!g) return;
+    if (!check_status("create", soak_geometry_create(&g, err, sizeof err), SOAK_OK) || !g) return;
     unsigned id = 99;
     check_status("add sphere", soak_geometry_add_sphere(g, soak_v3(0, 0, 0), 1.0, &id), SOAK_OK);
     check_true("sphere id 0", id == 0);
@@ -177,8 +176,7 @@ static void test_quad_box(void)
 {
     soak_geometry *g = NULL;
     char err[256];
-    soak_geometry_create(&g, err, sizeof err);
-    if (!g) return;
+    if (!check_status("create", soak_geometry_create(&g, err, sizeof err), SOAK_OK) || !g) return;
     unsigned q, b;
     /* Ground quad z = 0 over [-2,2]^2, normal +z. */
     check_status("add quad", soak_geometry_add_quad(g, soak_v3(-2, -2, 0), soak_v3(4, 0, 0), soak_v3(0, 4, 0), &q), SOAK_OK);

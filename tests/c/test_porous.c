@@ -310,6 +310,7 @@ static void test_bp_energy(void)
     /* Paper examples (seed 001): porosity 0..0.3 with Sp 1.3, and 0.35 with Sp 2. */
     const double por[] = {0.0, 0.1, 0.2, 0.3, 0.35};
     const double sps[] = {1.3, 1.3, 1.3, 1.3, 2.0};
+    double worst_of[2] = {0.0, 0.0};
     for (int norm = 0; norm < 2; ++norm) {
         double worst = 0.0, at_t = 0.0;
         for (int a = 0; a < 5; ++a)
@@ -328,13 +329,15 @@ static void test_bp_energy(void)
         printf("info: Blinn-Phong wet porous, paper parameters, %s normalisation: max directional albedo "
                "%.6f (theta_i %.0f deg)\n",
                norm ? "seed-001 (n+2)/(2pi)" : "energy (n+8)/(8pi)", worst, at_t * 180.0 / SOAK_PI);
-        if (norm == 0)
-            check_true("Blinn-Phong, paper parameters, energy normalisation: albedo <= 1", worst <= 1.0);
-        else if (worst > 1.0)
-            printf("info: seed-001 normalisation EXCEEDS 1 (not energy conserving; reported, not asserted)\n");
-        else
-            check_true("Blinn-Phong, paper parameters, seed-001 normalisation: albedo <= 1", worst <= 1.0);
+        worst_of[norm] = worst;
     }
+    check_true("Blinn-Phong, paper parameters, energy normalisation: albedo <= 1", worst_of[0] <= 1.0);
+    /* The seed-001 lobe exceeds 1 alone for large n (closed form above), but
+     * with the paper's small Ks the whole model stays below 1: asserted in
+     * every case, not only where it holds. */
+    check_true("Blinn-Phong, paper parameters, seed-001 normalisation: albedo <= 1", worst_of[1] <= 1.0);
+    /* (n+2)/(2pi) >= (n+8)/(8pi) for n >= 0: the seed-001 lobe is the brighter. */
+    check_true("seed-001 normalisation brighter than the energy one", worst_of[1] > worst_of[0]);
 }
 
 static void test_bp_identities(tu_rng *rng)

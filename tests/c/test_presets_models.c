@@ -22,7 +22,8 @@ static double albedo(const soak_model *m, const soak_model_ctx *ctx, soak_vec3 w
         double dmu = u1 * u1 - u0 * u0, s = sqrt(fmax(0, 1 - mu * mu));
         for (int b = 0; b < NP; ++b) {
             double phi = 2 * SOAK_PI * (b + 0.5) / NP, f = 0;
-            soak_model_eval(m, ctx, wi, soak_v3(s * cos(phi), s * sin(phi), mu), &f);
+            /* a failed evaluation makes the albedo NaN, which fails "<= 1" */
+            if (soak_model_eval(m, ctx, wi, soak_v3(s * cos(phi), s * sin(phi), mu), &f) != SOAK_OK) return NAN;
             sum += f * mu * dmu * (2 * SOAK_PI / NP);
         }
     }
@@ -46,13 +47,14 @@ int main(void)
         const soak_preset *p = soak_presets_at(db, i);
         int conductor = p->kind == SOAK_KIND_CONDUCTOR;
         const char *names[] = {"film-ctx", "ww", "porous-ggx", conductor ? "ggx-conductor" : "ggx-dielectric"};
-        double worst_rec = 0, worst_albedo = 0;
-        int mapping_ok = 1, setups = 0, n_models = conductor ? 2 : 4;
+        double worst_rec = 0, worst_albedo = 0, model_max[4] = {0, 0, 0, 0};
+        int mapping_ok = 1, setups = 0, setup_fail = 0, eval_fail = 0, n_models = conductor ? 2 : 4;
         for (int k = 0; k < 6; ++k) {
             soak_wet_input in = soak_wet_input_steady(p, ws[k]);
             soak_wet_params wp;
             if (soak_wetness_eval(p, water, &in, &wp) != SOAK_OK) {
                 mapping_ok = 0;
+                setup_fail += 3 * n_models;
                 continue;
             }
             mapping_ok &= in01(wp.albedo) && in01(wp.albedo_total) && wp.ggx_alpha >= 1e-4 && wp.ggx_alpha <= 1 &&
@@ -73,30 +75,46 @@ int main(void)
                 for (int m = conductor ? 1 : 0; m < 4; m += (conductor && m == 1) ? 2 : 1) {
                     const soak_model *model = soak_model_find(names[m]);
                     soak_model_ctx ctx;
-                    if (model->setup(&mp, &ctx) != SOAK_OK) continue; /* e.g. ww without a film */
+                    if (model->setup(&mp, &ctx) != SOAK_OK) {
+                        ++setup_fail;
+                        continue;
+                    }
                     ++setups;
                     for (int r = 0; r < 200; ++r) {
                         soak_vec3 a = tu_upper_dir(&rng, 0.0), b = tu_upper_dir(&rng, 0.0);
-                        double f1 = 0, f2 = 0;
-                        soak_model_eval(model, &ctx, a, b, &f1);
-                        soak_model_eval(model, &ctx, b, a, &f2);
+                        double f1 = NAN, f2 = NAN;
+                        eval_fail += soak_model_eval(model, &ctx, a, b, &f1) != SOAK_OK;
+                        eval_fail += soak_model_eval(model, &ctx, b, a, &f2) != SOAK_OK;
                         worst_rec = fmax(worst_rec, fabs(f1 - f2) / fmax(fmax(f1, f2), 1e-3));
                     }
                     const double th[] = {0, 60, 88};
                     for (int t = 0; t < 3; ++t)
-                        worst_albedo = fmax(worst_albedo, albedo(model, &ctx, soak_v3_polar(th[t] * SOAK_PI / 180, 0)));
+                        {
+                        double e = albedo(model, &ctx, soak_v3_polar(th[t] * SOAK_PI / 180, 0));
+                        worst_albedo = e == e ? fmax(worst_albedo, e) : INFINITY;
+                        model_max[m] = fmax(model_max[m], e);
+                    }
                 }
             }
         }
         char what[160];
         snprintf(what, sizeof what, "%s: wetness mapping in range at w = 0..1", p->name);
         check_true(what, mapping_ok);
-        snprintf(what, sizeof what, "%s: models set up for every wetness and channel (%d)", p->name, setups);
-        check_true(what, setups >= 6 * 3 * (n_models - 1));
+        snprintf(what, sizeof what, "%s: every model sets up at every wetness and channel (%d of %d)", p->name,
+                 setups, 6 * 3 * n_models);
+        check_true(what, setup_fail == 0 && setups == 6 * 3 * n_models);
+        snprintf(what, sizeof what, "%s: model evaluations that failed", p->name);
+        check_close(what, eval_fail, 0, 0);
         snprintf(what, sizeof what, "%s: reciprocity over all wetness (max rel diff)", p->name);
         check_close(what, worst_rec, 0.0, 1e-6);
         snprintf(what, sizeof what, "%s: directional albedo <= 1 over all wetness (max %.5f)", p->name, worst_albedo);
         check_true(what, worst_albedo <= 1.0 + 3e-3);
+        /* an all-zero model passes the two checks above: each must reflect */
+        for (int m = conductor ? 1 : 0; m < 4; m += (conductor && m == 1) ? 2 : 1) {
+            snprintf(what, sizeof what, "%s / %s: reflects something (max directional albedo %.4f > 0.01)", p->name,
+                     names[m], model_max[m]);
+            check_true(what, model_max[m] > 0.01);
+        }
     }
     soak_presets_free(db);
     return check_finish();

@@ -4,10 +4,17 @@
  *  1. A flat film over a Lambertian base under a uniform sky of radiance 1:
  *     by reciprocity the radiance toward the camera equals the directional-
  *     hemispherical reflectance for light arriving from the camera, given in
- *     closed form by Lekner & Dorf (soak_film_albedo_dir).
+ *     closed form by Lekner & Dorf (soak_film_albedo_dir). The renderer uses
+ *     that same closed form (film.c) for a film over Lambert, so this checks
+ *     only its sampling (mirror lobe, diffuse part, MIS weights), not the
+ *     film physics; the traced film path is checked against it in
+ *     test_render_film_traced.c.
  *  2. A deep scattering half-space under the same sky against the virtual
- *     gonio-reflectometer (soak_measure: a separate random-walk code on an
- *     infinite slab, no geometry, no camera).
+ *     gonio-reflectometer (soak_measure). Both run the same random walk
+ *     (medium.c, checked on its own against analytic and published results
+ *     in test_measure_*.c and test_medium.c); what this compares is the
+ *     renderer's use of it -- geometry, the camera, the boundary crossing
+ *     and the index factors -- against the walk on an infinite slab.
  *  3. Seed 000's observations (Jensen, Legakis, Dorsey 1999, sec. 4):
  *     wet paper darker than dry lit from the viewer's side and brighter lit
  *     from behind (4.1); wet sand darker than dry (4.2, Twomey et al.); a
@@ -70,7 +77,7 @@ static void test_film_vs_lekner_dorf(void)
         double ref = 0;
         soak_film_albedo_dir(&film, 0.5, cosv[i], &ref);
         printf("  film over Lambert 0.5, cos_view %.2f: traced %.5f +- %.5f, Lekner-Dorf %.5f\n", cosv[i], m, se, ref);
-        check_close("traced film radiance = closed-form directional albedo", m, ref, 4 * se + 1e-3);
+        check_close("closed-form film as sampled by the renderer = directional albedo", m, ref, 4 * se + 1e-3);
     }
 }
 
@@ -80,7 +87,7 @@ static void test_film_vs_lekner_dorf(void)
 static void test_volume_grid(const char *homogeneous_text, double ref, double ref_se)
 {
     char dir[] = "/tmp/soak_rvol_XXXXXX";
-    if (!mkdtemp(dir)) return;
+    if (!check_true("temporary folder", mkdtemp(dir) != NULL)) return;
     soak_volume v;
     double size[3] = {800, 800, 200};
     if (!check_status("volume alloc", soak_volume_alloc(&v, 4, 4, 4, size), SOAK_OK)) return;
@@ -97,7 +104,7 @@ static void test_volume_grid(const char *homogeneous_text, double ref, double re
     char text[4096];
     const char *cut = strstr(homogeneous_text, "\"base\"");
     const char *end = cut ? strstr(cut, "}}},") : NULL;
-    if (!cut || !end) return;
+    if (!check_true("scene text has a base to replace", cut && end)) return;
     snprintf(text, sizeof text, "%.*s\"base\": {\"type\": \"medium\", \"sigma_s\": 5, \"sigma_a\": 0, \"ior\": 1.3,"
              " \"volume\": {\"file\": \"grid.json\", \"origin\": [-400, -400, -200]}}}},%s",
              (int)(cut - homogeneous_text), homogeneous_text, end + 4);

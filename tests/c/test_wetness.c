@@ -140,6 +140,7 @@ static void check_subsurface_reference(const soak_preset_db *db)
      * wet albedo must be van de Hulst at the wet g of the omega that
      * reproduces the dry albedo at the dry g (bisection here). */
     const soak_preset *sand = soak_presets_find(db, "sand");
+    if (!check_true("sand preset present", sand != NULL)) return;
     soak_liquid clear = {"clear", "clear", 1.333, {0, 0, 0}, {0, 0, 0}, "test"};
     soak_wet_input in = soak_wet_input_steady(sand, sand->porosity); /* exactly saturated, no film */
     soak_wet_params o;
@@ -152,9 +153,11 @@ static void check_subsurface_reference(const soak_preset_db *db)
     double n = clear.ior, r_ext = 0.0;
     soak_fresnel_dielectric_avg(n, &r_ext);
     double r_int = 1.0 - (1.0 - r_ext) / (n * n);
-    double g_wet = soak_hg2_mean_cosine(&sand->phase_wet);
+    /* mean cosines w g1 + (1 - w) g2 of the preset's phases (calibration may move them) */
+    const soak_hg2 pd = sand->phase_dry, pw = sand->phase_wet;
+    double g_dry = pd.w * pd.g1 + (1 - pd.w) * pd.g2, g_wet = pw.w * pw.g1 + (1 - pw.w) * pw.g2;
     for (int c = 0; c < 3; ++c) {
-        double omega = vdh_invert_bisect(soak_rgb_at(sand->albedo, c), 0.2);
+        double omega = vdh_invert_bisect(soak_rgb_at(sand->albedo, c), g_dry);
         double sub = vdh_albedo(omega, g_wet);
         double ld = sub * (1 - r_ext) * (1 - r_int) / (1 - sub * r_int);
         char what[120];
@@ -185,6 +188,7 @@ static void check_subsurface_reference(const soak_preset_db *db)
 static void check_marble_metals(const soak_preset_db *db, const soak_liquid *water)
 {
     const soak_preset *marble = soak_presets_find(db, "marble");
+    if (!check_true("marble preset present", marble != NULL)) return;
     double n = water->ior, r_ext = 0;
     soak_fresnel_dielectric_avg(n, &r_ext);
     double r_int = 1.0 - (1.0 - r_ext) / (n * n); /* Lekner & Dorf 1988 */
@@ -195,7 +199,7 @@ static void check_marble_metals(const soak_preset_db *db, const soak_liquid *wat
         soak_wet_input in = soak_wet_input_steady(marble, w);
         in.film_thickness_m = 0.0; /* no absorption: Lekner & Dorf's closed form holds */
         soak_wet_params o;
-        if (soak_wetness_eval(marble, water, &in, &o) != SOAK_OK) return;
+        if (!check_status("marble wetness eval", soak_wetness_eval(marble, water, &in, &o), SOAK_OK)) return;
         sub_unchanged = sub_unchanged && rgb_eq(o.albedo_subsurface, marble->albedo);
         for (int c = 0; c < 3; ++c) {
             double A = soak_rgb_at(marble->albedo, c);
@@ -211,6 +215,7 @@ static void check_marble_metals(const soak_preset_db *db, const soak_liquid *wat
     const char *metals[] = {"copper", "aluminium"};
     for (int m = 0; m < 2; ++m) {
         const soak_preset *p = soak_presets_find(db, metals[m]);
+        if (!check_true(metals[m], p != NULL)) continue;
         soak_wet_input in = soak_wet_input_steady(p, 1.0);
         in.film_thickness_m = 0.0;
         soak_wet_params o;
@@ -233,6 +238,7 @@ static void check_marble_metals(const soak_preset_db *db, const soak_liquid *wat
 static void check_schedule(const soak_preset_db *db, const soak_liquid *water)
 {
     const soak_preset *sand = soak_presets_find(db, "sand");
+    if (!check_true("sand preset present", sand != NULL)) return;
     soak_wet_input in = soak_wet_input_steady(sand, 0.1);
     in.t0 = 0.5;
     in.t_fill = 0.0;
@@ -246,7 +252,7 @@ static void check_schedule(const soak_preset_db *db, const soak_liquid *water)
     check_close("t_fill = 0: just before t0 nothing has arrived", before.liquid, 0.0, 0.0);
     check_true("t_fill = 0: just before t0 dry albedo", rgb_eq(before.albedo, sand->albedo));
     check_close("t_fill = 0: at t0 the step is complete", at.progress, 1.0, 0.0);
-    check_close("t_fill = 0: fill = w / porosity at t0", at.fill, 0.1 / 0.25, 1e-15);
+    check_close("t_fill = 0: fill = w / porosity at t0", at.fill, fmin(1.0, 0.1 / sand->porosity), 1e-15);
     check_true("t_fill = 0: later equals at t0", rgb_eq(at.albedo, after.albedo) && at.fill == after.fill);
     in.t_fill = 0.2;
     in.time = 0.6;
@@ -259,20 +265,23 @@ static void check_schedule(const soak_preset_db *db, const soak_liquid *water)
 static void check_paper(const soak_preset_db *db, const soak_liquid *water)
 {
     const soak_preset *paper = soak_presets_find(db, "paper");
+    if (!check_true("paper preset present", paper != NULL)) return;
     soak_wet_input in = soak_wet_input_steady(paper, 0.0);
     soak_wet_params dry, wet;
     soak_wetness_eval(paper, water, &in, &dry);
     in.wetness = 1.0;
     soak_wetness_eval(paper, water, &in, &wet);
-    /* seed 000 numbers: dry 0.8*0.05 + 0.2*(-0.05); wet by the transport-ratio
-     * rule of materials.json, 1 - 0.575 (1 - 0.03) = 0.44 */
-    check_close("paper dry mean cosine 0.03", dry.mean_cosine, 0.03, 1e-12);
-    check_close("paper wet mean cosine 0.44 (transport-ratio rule)", wet.mean_cosine, 0.44, 1e-12);
+    /* mean cosine of two HG lobes = w g1 + (1 - w) g2 (seed 000 Eq. 5) of the
+     * preset's phases (0.03 dry; wet 0.44 by the transport-ratio rule of
+     * materials.json when written; calibration may move them) */
+    const soak_hg2 pd = paper->phase_dry, pw = paper->phase_wet;
+    check_close("paper dry mean cosine = w g1 + (1-w) g2", dry.mean_cosine, pd.w * pd.g1 + (1 - pd.w) * pd.g2, 1e-12);
+    check_close("paper wet mean cosine = w g1 + (1-w) g2", wet.mean_cosine, pw.w * pw.g1 + (1 - pw.w) * pw.g2, 1e-12);
     check_true("wet paper darker in every channel (front lit)",
                wet.albedo.r < dry.albedo.r && wet.albedo.g < dry.albedo.g && wet.albedo.b < dry.albedo.b);
 
     const soak_liquid *coffee = soak_presets_find_liquid(db, "coffee");
-    if (!coffee) return;
+    if (!check_true("coffee liquid present", coffee != NULL)) return;
     in = soak_wet_input_steady(paper, paper->porosity);
     soak_wet_params cw, ww;
     soak_wetness_eval(paper, coffee, &in, &cw);
@@ -366,6 +375,10 @@ int main(void)
         return check_finish();
     }
     const soak_liquid *water = soak_presets_find_liquid(db, "water");
+    if (!check_true("water liquid present", water != NULL)) {
+        soak_presets_free(db);
+        return check_finish();
+    }
     check_dry(db, water);
     check_monotone(db, water, 1.0, "steady state");
     check_monotone(db, water, 0.05, "half way through t_fill");
@@ -375,7 +388,7 @@ int main(void)
     const char *clear[] = {"cola", "red_wine"};
     for (int i = 0; i < 2; ++i) {
         const soak_liquid *l = soak_presets_find_liquid(db, clear[i]);
-        if (l) check_monotone(db, l, 1.0, "steady state");
+        if (check_true(clear[i], l != NULL)) check_monotone(db, l, 1.0, "steady state");
     }
     check_subsurface_reference(db);
     check_marble_metals(db, water);

@@ -491,6 +491,26 @@ static void test_triace_eval(void)
     int finite = 1;
     for (int k = 0; k < 5; ++k) finite &= soak_is_finite(e_full[k]) && soak_is_finite(e_fb[k]);
     check_true("fast-path error table finite", finite);
+    /* Bounds on the table. The fast path's exit transmission is the constant
+     * 1 - F0(1.33) where the exact model has 1 - F(theta_o): at the grid's
+     * 85 degrees that alone is a relative error of (1 - F0)/(1 - F(85)) - 1
+     * (ww.h: the dominant error); the refraction polynomial, Schlick's T12 and
+     * F_bottom's normal-incidence F23 may add at most 0.1 on top. Up to
+     * 60 degrees the fast path is within 25 % (largest: the kd = 0 dielectric
+     * base, whose F23 at n3/n2 = 1.13 varies most with angle). */
+    double F85 = 0, r0w = (0.33 / 2.33) * (0.33 / 2.33);
+    soak_fresnel_dielectric(cos(85.0 * DEG), 1.33, &F85, NULL);
+    double exit_bound = (1.0 - r0w) / (1.0 - F85) - 1.0;
+    printf("       exit-transmission bound at 85 deg: %.4f\n", exit_bound);
+    for (int k = 0; k < 5; ++k) {
+        char what[128];
+        snprintf(what, sizeof what, "Tri-Ace %s: error to 85 deg <= exit-transmission bound %.3f + 0.1", names[k],
+                 exit_bound);
+        check_true(what, e_full[k] <= exit_bound + 0.1 && e_full_abs[k] <= exit_bound + 0.1);
+        snprintf(what, sizeof what, "Tri-Ace %s: error to 60 deg <= 0.25", names[k]);
+        check_true(what, e_full60[k] <= 0.25);
+    }
+    check_true("Schlick T12 within 1 % to 60 deg, 15 % to 85 deg", e_schlick60 <= 0.01 && e_schlick <= 0.15);
     /* The linear form's relative error is e^x (x - 1 + e^-x) <= x^2/2 e^x with
      * x <= alpha' * 2 / cos_c' (cos of the critical angle in water, the
      * largest refracted angle): checks the table against its analytic bound. */

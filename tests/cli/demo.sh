@@ -37,7 +37,11 @@ for r in rows:
         print("ratio", r["material"], float(r["wet_over_dry"]))
 PY
 read -r _ nrows npresets < <(grep '^rows' "$SOAK_TMP/demo_check.txt")
-[ "$nrows" = "$npresets" ] && ok "table has one row per preset ($nrows)" || bad "table has $nrows rows for $npresets presets"
+# (a failed python leaves both empty: that is no match)
+[ -n "$nrows" ] && [ "$nrows" -gt 0 ] && [ "$nrows" = "$npresets" ] && ok "table has one row per preset ($nrows)" \
+  || bad "table has '$nrows' rows for '$npresets' presets"
+ndry=$(grep -c '^dry' "$SOAK_TMP/demo_check.txt")
+[ "$ndry" -gt 0 ] && ok "$ndry dielectric presets compared" || bad "no dry albedo compared"
 while read -r _ name diff; do close "$diff" 0 1e-6 "dry albedo of $name equals the preset file"; done < <(grep '^dry' "$SOAK_TMP/demo_check.txt")
 while read -r _ name ratio; do
   awk -v r="$ratio" 'BEGIN { exit !(r < 1) }' && ok "wet $name darker than dry ($ratio)" || bad "wet $name not darker ($ratio)"

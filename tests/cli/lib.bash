@@ -1,12 +1,17 @@
 # Shared helpers for tests/cli/*.sh (sourced, not a test itself).
-# Each check prints ok/FAIL; finish prints the plain "N passed, N failed" line.
+# Each check prints ok/FAIL/SKIPPED; finish prints "N passed, N failed, N skipped"
+# and exits 1 on a failure or when no check ran, 77 (ctest's SKIP_RETURN_CODE)
+# when every check was skipped.
 : "${SOAK:?SOAK must point at the soak binary}"
 : "${SOAK_TMP:=$(mktemp -d)}"
 mkdir -p "$SOAK_TMP"
 pass=0
 fail=0
+skipped=0
 ok() { pass=$((pass + 1)); echo "ok   $*"; }
 bad() { fail=$((fail + 1)); echo "FAIL $*"; }
+# skip REASON [WHAT]: a missing tool reads "<tool> not on PATH"
+skip() { skipped=$((skipped + 1)); echo "SKIPPED: $1${2:+ ($2)}"; }
 # expect_exit CODE DESCRIPTION -- command...   (stderr kept in $SOAK_TMP/last.err)
 expect_exit() {
   local want=$1 what=$2; shift 3
@@ -20,11 +25,20 @@ expect_stderr() {
 }
 # close A B TOL DESCRIPTION: |A - B| <= TOL
 close() {
+  if ! number "$1" || ! number "$2"; then bad "$4: not numbers: '$1' vs '$2'"; return; fi
   if awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= t) }'; then
     ok "$4: $1 vs $2 (tol $3)"
   else bad "$4: $1 vs $2 (tol $3)"; fi
 }
+# number STRING: STRING is a finite decimal number (an empty or crashed
+# command's output is not)
+number() { [[ $1 =~ ^[-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?$ ]]; }
 finish() {
-  echo "$pass passed, $fail failed"
-  [ "$fail" -eq 0 ]
+  echo "$pass passed, $fail failed, $skipped skipped"
+  [ "$fail" -eq 0 ] || exit 1
+  if [ "$pass" -eq 0 ]; then
+    [ "$skipped" -gt 0 ] && exit 77
+    echo "FAIL no check ran"; exit 1
+  fi
+  exit 0
 }

@@ -1,12 +1,355 @@
-/* soak export --target povray: not written yet (front-end issue). */
+/* soak export --target povray: povray/soak_materials.inc, the data the
+ * macros of povray/soak.inc interpolate and assemble.
+ *
+ * Everything POV-Ray needs is computed here, for POV-Ray 3.7's own shading
+ * model (checked by rendering, see povray/README.md "POV-Ray's conventions"):
+ *   - pigment: the diffuse albedo under the film (soak_wet_params.albedo),
+ *     the film's darkening included, since POV-Ray's finish does not darken
+ *     the base under a reflection block;
+ *   - film: reflection { 0, R fresnel on } gives R times the Fresnel
+ *     reflectance of interior { ior n_liquid }; R = coverage (the film) plus
+ *     the uncovered share of the liquid-filled pores (water_specular_weight);
+ *   - the material's own rough surface: specular albedo S roughness r, with
+ *     S = specular_weight * (1 - c) * F0(n) (POV-Ray's "albedo" normalises
+ *     the Blinn lobe to hemispherical albedo S at normal view) and
+ *     r = 1 / n_Blinn, n_Blinn = 2 / alpha^2 - 2 (Walter et al. 2007, GGX
+ *     vs. Blinn-Phong width), clamped to POV-Ray's [5e-4, 1];
+ *   - the liquid's sun glint: phong albedo R * F0(n_liquid);
+ *   - conductors: reflection { rgb albedo_total } (the metal seen through the
+ *     film, plus the film's own specular, normal incidence);
+ *   - thin sheets: Kubelka-Munk transmittance (soak/sheet.h) and the
+ *     backside diffuse amount of POV-Ray's "diffuse front, back", luminance
+ *     matched: back = Y(T) / Y(pigment) (POV-Ray tints it by the pigment);
+ *   - the wetness function for any base colour (soak_wet_params_for_base)
+ *     on the nodes of soak_export_base_nodes, as <r,g,b> per (wetness, dry
+ *     albedo) node.
+ * Layout: flat arrays indexed by table t = preset * Soak_N_Liquids + liquid
+ * (POV-Ray 3.7 has no dictionaries), with start/count arrays. Numbers are
+ * printed with 7 significant digits: the same preset file gives the same
+ * bytes on every machine. */
+#include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "soak/export.h"
+#include "soak/fresnel.h"
+#include "soak/sheet.h"
 
-soak_status soak_export_write_povray(const soak_preset_db *db, FILE *out, char *err, size_t errlen)
+#define POV_ROUGH_MIN 5e-4
+#define POV_ROUGH_MAX 1.0
+#define POV_FORMAT_VERSION 1
+
+enum { V_PIGMENT, V_REFLECT_METAL, V_SHEET_T, V_COUNT };
+enum { S_W, S_COVERAGE, S_FILL, S_FILM_R, S_SPEC, S_ROUGH, S_PHONG, S_BACK, S_COUNT };
+
+static const char *const vec_names[V_COUNT] = {"Soak_K_Pigment", "Soak_K_Metal_Reflect", "Soak_K_Sheet_T"};
+static const char *const scal_names[S_COUNT] = {"Soak_K_W",    "Soak_K_Coverage", "Soak_K_Fill",  "Soak_K_Film_Reflect",
+                                                "Soak_K_Spec", "Soak_K_Rough",    "Soak_K_Phong", "Soak_K_Sheet_Back"};
+static const char *const vec_docs[V_COUNT] = {
+    "diffuse albedo under the film, film darkening included (pigment, finish diffuse 1)",
+    "conductors: mirror reflectance of the metal under the film incl. the film's specular (reflection rgb)",
+    "thin sheets: Kubelka-Munk diffuse transmittance"};
+static const char *const scal_docs[S_COUNT] = {
+    "wetness knot",
+    "film coverage c",
+    "pore fill f",
+    "R of reflection { 0, R fresnel on } with interior { ior n_liquid }",
+    "specular albedo of the material's own rough surface",
+    "POV-Ray roughness of that highlight (1 / Blinn exponent)",
+    "phong albedo of the liquid's sun glint",
+    "thin sheets: backside amount of diffuse 1, B (0 otherwise)"};
+
+typedef struct pov_table {
+    int n; /* knots */
+    double s[S_COUNT][SOAK_EXPORT_KNOTS_MAX];
+    soak_rgb v[V_COUNT][SOAK_EXPORT_KNOTS_MAX];
+    int na, nw; /* base-colour nodes */
+    double a[SOAK_EXPORT_KNOTS_MAX], w[SOAK_EXPORT_KNOTS_MAX];
+    soak_rgb *base; /* nw * na, row-major in wetness */
+} pov_table;
+
+typedef struct pov_out {
+    FILE *f;
+    int bad;
+} pov_out;
+
+static void out(pov_out *o, const char *fmt, ...)
 {
-    (void)db;
-    (void)out;
-    snprintf(err, errlen, "target 'povray' is not implemented yet");
-    return SOAK_ERR_UNSUPPORTED;
+    va_list ap;
+    va_start(ap, fmt);
+    if (vfprintf(o->f, fmt, ap) < 0) o->bad = 1;
+    va_end(ap);
+}
+
+static double clamp(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
+
+static double luminance(soak_rgb c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+/* GGX alpha -> POV-Ray roughness (1 / Blinn exponent). */
+static double pov_roughness(double alpha)
+{
+    double a2 = alpha * alpha;
+    double n = a2 >= 1.0 ? 0.0 : 2.0 / a2 - 2.0;
+    return n <= 1.0 ? POV_ROUGH_MAX : clamp(1.0 / n, POV_ROUGH_MIN, POV_ROUGH_MAX);
+}
+
+static soak_status fill_knot(const soak_preset *p, const soak_liquid *l, double wet, pov_table *t, int i)
+{
+    soak_wet_input in = soak_wet_input_steady(p, wet);
+    soak_wet_params w;
+    soak_status st = soak_wetness_eval(p, l, &in, &w);
+    double f0_liq = 0.0, f0_mat = 0.0;
+    if (st == SOAK_OK) st = soak_fresnel_r0(l->ior, 0.0, &f0_liq);
+    if (st == SOAK_OK && p->kind != SOAK_KIND_CONDUCTOR) st = soak_fresnel_r0(p->ior, 0.0, &f0_mat);
+    soak_rgb sheet_t = {0, 0, 0};
+    if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, &sheet_t);
+    if (st != SOAK_OK) return st;
+    const double c = w.film ? w.film_coverage : 0.0;
+    const int metal = p->kind == SOAK_KIND_CONDUCTOR;
+    const double film_r = clamp(c + (1.0 - c) * w.water_specular_weight, 0.0, 1.0);
+    t->s[S_W][i] = wet;
+    t->s[S_COVERAGE][i] = c;
+    t->s[S_FILL][i] = w.fill;
+    t->s[S_FILM_R][i] = metal ? 0.0 : film_r;
+    t->s[S_SPEC][i] = metal ? 0.0 : w.specular_weight * (1.0 - c) * f0_mat;
+    t->s[S_ROUGH][i] = pov_roughness(w.ggx_alpha);
+    t->s[S_PHONG][i] = film_r * f0_liq;
+    for (int k = 0; k < 3; ++k) soak_rgb_set(&t->v[V_PIGMENT][i], k, clamp(soak_rgb_at(w.albedo, k), 0.0, 1.0));
+    t->v[V_REFLECT_METAL][i] = metal ? w.albedo_total : (soak_rgb){0, 0, 0};
+    t->v[V_SHEET_T][i] = sheet_t;
+    double yp = luminance(t->v[V_PIGMENT][i]);
+    t->s[S_BACK][i] = p->kind == SOAK_KIND_THIN_SHEET && yp > 1e-6 ? luminance(sheet_t) / yp : 0.0;
+    return SOAK_OK;
+}
+
+static soak_status fill_table(const soak_preset *p, const soak_liquid *l, pov_table *t)
+{
+    double knots[SOAK_EXPORT_KNOTS_MAX];
+    soak_status st = soak_export_knots(p, l, -1.0, knots, SOAK_EXPORT_KNOTS_MAX, &t->n);
+    for (int i = 0; st == SOAK_OK && i < t->n; ++i) st = fill_knot(p, l, knots[i], t, i);
+    if (st == SOAK_OK)
+        st = soak_export_base_nodes(p, l, t->a, SOAK_EXPORT_KNOTS_MAX, &t->na, t->w, SOAK_EXPORT_KNOTS_MAX, &t->nw);
+    if (st != SOAK_OK) return st;
+    t->base = malloc((size_t)t->na * (size_t)t->nw * sizeof *t->base);
+    if (!t->base) return SOAK_ERR_NOMEM;
+    for (int iw = 0; st == SOAK_OK && iw < t->nw; ++iw) {
+        soak_wet_input in = soak_wet_input_steady(p, t->w[iw]);
+        for (int ia = 0; st == SOAK_OK && ia < t->na; ++ia) {
+            soak_wet_params o;
+            st = soak_wet_params_for_base(p, l, &in, (soak_rgb){t->a[ia], t->a[ia], t->a[ia]}, &o);
+            if (st == SOAK_OK) t->base[iw * t->na + ia] = o.albedo;
+        }
+    }
+    return st;
+}
+
+/* ---- writing ---------------------------------------------------------------- */
+
+static void num(pov_out *o, double x) { out(o, "%.7g", x == 0.0 ? 0.0 : x); }
+
+static void vec(pov_out *o, soak_rgb c)
+{
+    out(o, "<");
+    num(o, c.r);
+    out(o, ",");
+    num(o, c.g);
+    out(o, ",");
+    num(o, c.b);
+    out(o, ">");
+}
+
+/* Items per line so that the file stays readable and diffable. */
+static void sep(pov_out *o, int i, int n, int per_line)
+{
+    if (i + 1 < n) out(o, (i + 1) % per_line ? ", " : ",\n  ");
+}
+
+static void write_header(pov_out *o, const soak_export_header *h)
+{
+    out(o, "// soak_materials.inc: wet-material tables for povray/soak.inc.\n");
+    out(o, "// GENERATED by `soak export --target povray -o povray/soak_materials.inc`: do not edit;\n");
+    out(o, "// tests/povray checks that this copy matches the preset file.\n");
+    out(o, "// generator: %s; format: %s %d, povray layout %d\n", h->generator, SOAK_EXPORT_FORMAT, h->format_version,
+        POV_FORMAT_VERSION);
+    out(o, "// materials: %s, FNV-1a 64 %s\n", h->materials_file, h->materials_hash);
+    out(o, "// Physics: c_core/include/soak/wetness.h; export contract: soak/export.h;\n");
+    out(o, "// the mapping to POV-Ray's finish: c_core/src/export_povray.c.\n");
+    out(o, "#ifndef(Soak_Materials_Inc_Temp)\n#declare Soak_Materials_Inc_Temp = version;\n#version 3.7;\n");
+    out(o, "#ifdef(View_POV_Include_Stack)\n  #debug \"including soak_materials.inc\\n\"\n#end\n\n");
+    out(o, "#declare Soak_Data_Generator = \"%s\";\n", h->generator);
+    out(o, "#declare Soak_Data_Format_Version = %d;\n", POV_FORMAT_VERSION);
+    out(o, "#declare Soak_Data_Materials_File = \"%s\";\n", h->materials_file);
+    out(o, "#declare Soak_Data_Materials_Hash = \"%s\";\n", h->materials_hash);
+    out(o, "#declare Soak_Data_Knot_Tolerance = ");
+    num(o, SOAK_EXPORT_KNOT_TOL);
+    out(o, ";\n#declare Soak_Data_Base_Tolerance = ");
+    num(o, SOAK_EXPORT_BASE_TOL);
+    out(o, ";\n\n");
+}
+
+typedef double (*preset_num)(const soak_preset *p);
+static double p_kind(const soak_preset *p) { return (double)p->kind; }
+static double p_tfill(const soak_preset *p) { return p->t_fill; }
+static double p_sat(const soak_preset *p) { return soak_material_kind_porous(p->kind) ? p->porosity : 0.0; }
+static double p_film(const soak_preset *p) { return p->film_thickness_mm; }
+static double p_sheet(const soak_preset *p) { return p->thickness_mm; }
+static double p_ior(const soak_preset *p) { return p->ior; }
+
+static void write_presets(pov_out *o, const soak_preset_db *db)
+{
+    int np = soak_presets_count(db), nl = soak_presets_liquid_count(db);
+    out(o, "#declare Soak_N_Presets = %d;\n#declare Soak_N_Liquids = %d;\n", np, nl);
+    out(o, "// kinds: 0 porous dielectric, 1 non-porous dielectric, 2 conductor, 3 thin sheet\n");
+    out(o, "#declare Soak_Preset_Names = array[%d] {\n  ", np);
+    for (int i = 0; i < np; ++i) {
+        out(o, "\"%s\"", soak_presets_at(db, i)->name);
+        sep(o, i, np, 6);
+    }
+    out(o, "\n}\n");
+    const char *names[] = {"Soak_Preset_Kind", "Soak_Preset_T_Fill", "Soak_Preset_Saturation",
+                           "Soak_Preset_Film_Thickness_mm", "Soak_Preset_Sheet_Thickness_mm", "Soak_Preset_Ior"};
+    preset_num fns[] = {p_kind, p_tfill, p_sat, p_film, p_sheet, p_ior};
+    for (size_t k = 0; k < sizeof fns / sizeof fns[0]; ++k) {
+        out(o, "#declare %s = array[%d] {", names[k], np);
+        for (int i = 0; i < np; ++i) {
+            num(o, fns[k](soak_presets_at(db, i)));
+            if (i + 1 < np) out(o, ", ");
+        }
+        out(o, "}\n");
+    }
+    out(o, "#declare Soak_Liquid_Names = array[%d] {", nl);
+    for (int i = 0; i < nl; ++i) out(o, "\"%s\"%s", soak_presets_liquid_at(db, i)->name, i + 1 < nl ? ", " : "");
+    out(o, "}\n#declare Soak_Liquid_Ior = array[%d] {", nl);
+    for (int i = 0; i < nl; ++i) {
+        num(o, soak_presets_liquid_at(db, i)->ior);
+        if (i + 1 < nl) out(o, ", ");
+    }
+    out(o, "}\n\n");
+}
+
+static void write_index(pov_out *o, const char *name, const int *v, int n)
+{
+    out(o, "#declare %s = array[%d] {\n  ", name, n);
+    for (int i = 0; i < n; ++i) {
+        out(o, "%d", v[i]);
+        sep(o, i, n, 16);
+    }
+    out(o, "\n}\n");
+}
+
+static void write_tables(pov_out *o, pov_table *tabs, int nt)
+{
+    int *start = malloc((size_t)nt * 4 * sizeof *start);
+    if (!start) {
+        o->bad = 1;
+        return;
+    }
+    int *count = start + nt, *bstart = start + 2 * nt, *ws = start + 3 * nt;
+    int total = 0, btotal = 0, wtotal = 0;
+    for (int t = 0; t < nt; ++t) {
+        start[t] = total;
+        count[t] = tabs[t].n;
+        total += tabs[t].n;
+        bstart[t] = btotal;
+        btotal += tabs[t].na * tabs[t].nw;
+        ws[t] = wtotal;
+        wtotal += tabs[t].na + tabs[t].nw;
+    }
+    out(o, "// Knot tables: table t = preset * Soak_N_Liquids + liquid; knots\n");
+    out(o, "// Soak_K_Start[t] .. Soak_K_Start[t] + Soak_K_Count[t] - 1; interpolate linearly in wetness.\n");
+    write_index(o, "Soak_K_Start", start, nt);
+    write_index(o, "Soak_K_Count", count, nt);
+    for (int s = 0; s < S_COUNT; ++s) {
+        out(o, "// %s\n#declare %s = array[%d] {\n  ", scal_docs[s], scal_names[s], total);
+        for (int t = 0, i = 0; t < nt; ++t)
+            for (int k = 0; k < tabs[t].n; ++k, ++i) {
+                num(o, tabs[t].s[s][k]);
+                sep(o, i, total, 8);
+            }
+        out(o, "\n}\n");
+    }
+    for (int v = 0; v < V_COUNT; ++v) {
+        out(o, "// %s\n#declare %s = array[%d] {\n  ", vec_docs[v], vec_names[v], total);
+        for (int t = 0, i = 0; t < nt; ++t)
+            for (int k = 0; k < tabs[t].n; ++k, ++i) {
+                vec(o, tabs[t].v[v][k]);
+                sep(o, i, total, 3);
+            }
+        out(o, "\n}\n");
+    }
+    out(o, "\n// The wetness function for any base colour: per table t, dry-albedo nodes\n");
+    out(o, "// Soak_B_Nodes[Soak_B_Node_Start[t] + j], j < Soak_B_N_Albedo[t], then wetness nodes\n");
+    out(o, "// Soak_B_Nodes[Soak_B_Node_Start[t] + Soak_B_N_Albedo[t] + i], i < Soak_B_N_Wet[t];\n");
+    out(o, "// value <r,g,b> = wet diffuse albedo of a grey dry albedo a_j at w_i (channel k: dry\n");
+    out(o, "// albedo a_j in channel k) at Soak_B_Value[Soak_B_Value_Start[t] + i * Soak_B_N_Albedo[t] + j].\n");
+    write_index(o, "Soak_B_Node_Start", ws, nt);
+    int *na = malloc((size_t)nt * 2 * sizeof *na);
+    if (!na) {
+        free(start);
+        o->bad = 1;
+        return;
+    }
+    for (int t = 0; t < nt; ++t) {
+        na[t] = tabs[t].na;
+        na[nt + t] = tabs[t].nw;
+    }
+    write_index(o, "Soak_B_N_Albedo", na, nt);
+    write_index(o, "Soak_B_N_Wet", na + nt, nt);
+    write_index(o, "Soak_B_Value_Start", bstart, nt);
+    free(na);
+    out(o, "#declare Soak_B_Nodes = array[%d] {\n  ", wtotal);
+    for (int t = 0, i = 0; t < nt; ++t) {
+        for (int j = 0; j < tabs[t].na; ++j, ++i) {
+            num(o, tabs[t].a[j]);
+            sep(o, i, wtotal, 10);
+        }
+        for (int j = 0; j < tabs[t].nw; ++j, ++i) {
+            num(o, tabs[t].w[j]);
+            sep(o, i, wtotal, 10);
+        }
+    }
+    out(o, "\n}\n#declare Soak_B_Value = array[%d] {\n  ", btotal);
+    for (int t = 0, i = 0; t < nt; ++t)
+        for (int k = 0; k < tabs[t].na * tabs[t].nw; ++k, ++i) {
+            vec(o, tabs[t].base[k]);
+            sep(o, i, btotal, 3);
+        }
+    out(o, "\n}\n");
+    free(start);
+}
+
+soak_status soak_export_write_povray(const soak_preset_db *db, FILE *f, char *err, size_t errlen)
+{
+    if (!db || !f || !err) return SOAK_ERR_NULL;
+    soak_export_header h;
+    soak_status st = soak_export_header_make(db, &h);
+    if (st != SOAK_OK) {
+        snprintf(err, errlen, "%s: cannot read the preset file to hash it", soak_presets_path(db));
+        return st;
+    }
+    int np = soak_presets_count(db), nl = soak_presets_liquid_count(db), nt = np * nl;
+    pov_table *tabs = calloc((size_t)(nt > 0 ? nt : 1), sizeof *tabs);
+    if (!tabs) return SOAK_ERR_NOMEM;
+    for (int t = 0; st == SOAK_OK && t < nt; ++t) {
+        const soak_preset *p = soak_presets_at(db, t / nl);
+        const soak_liquid *l = soak_presets_liquid_at(db, t % nl);
+        st = fill_table(p, l, &tabs[t]);
+        if (st != SOAK_OK) snprintf(err, errlen, "preset '%s', liquid '%s': %s", p->name, l->name, soak_status_str(st));
+    }
+    if (st == SOAK_OK) {
+        pov_out o = {f, 0};
+        write_header(&o, &h);
+        write_presets(&o, db);
+        write_tables(&o, tabs, nt);
+        out(&o, "\n#version Soak_Materials_Inc_Temp;\n#end // Soak_Materials_Inc_Temp\n");
+        if (o.bad) {
+            snprintf(err, errlen, "write failed");
+            st = SOAK_ERR_IO;
+        }
+    }
+    for (int t = 0; t < nt; ++t) free(tabs[t].base);
+    free(tabs);
+    return st;
 }

@@ -67,6 +67,7 @@ static soak_rgb radiance(rt_thread *t, soak_vec3 org, soak_vec3 dir)
     rt_path path;
     memset(&path, 0, sizeof path);
     path.beta = soak_rgb3(1, 1, 1);
+    path.eta_scale = 1.0;
     path.org = org;
     path.dir = dir;
     path.prev_delta = 1;
@@ -80,7 +81,10 @@ static soak_rgb radiance(rt_thread *t, soak_vec3 org, soak_vec3 dir)
         soak_hit hit;
         int found = 0;
         t->n.rays++;
-        if (soak_geometry_intersect(s->geometry, &ray, &hit, &found) != SOAK_OK) break;
+        if (soak_geometry_intersect(s->geometry, &ray, &hit, &found) != SOAK_OK) {
+            t->n.geom_errors++;
+            break;
+        }
         if (!found) {
             if (s->env.type != SOAK_ENV_NONE) {
                 double w = path.prev_delta ? 1.0 : rt_power(path.prev_pdf, rt_env_pdf(c, path.dir));
@@ -104,12 +108,15 @@ static soak_rgb radiance(rt_thread *t, soak_vec3 org, soak_vec3 dir)
         if (depth >= 3) {
             /* Roulette with survival min(1, max beta): unbiased, and it never
              * fires while the throughput stays at 1 (albedo 1). */
-            double q = fmin(1.0, rgb_max(path.beta));
+            double q = fmin(1.0, rt_rr_weight(&path));
             if (!(q > 0) || rt_rand(t) >= q) break;
             path.beta = rgb_scale(path.beta, 1.0 / q);
         }
     }
-    if (!(soak_is_finite(path.L.r) && soak_is_finite(path.L.g) && soak_is_finite(path.L.b))) return soak_rgb3(0, 0, 0);
+    if (!(soak_is_finite(path.L.r) && soak_is_finite(path.L.g) && soak_is_finite(path.L.b))) {
+        t->n.nan_paths++;
+        return soak_rgb3(0, 0, 0);
+    }
     return path.L;
 }
 
@@ -233,7 +240,7 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
         free(j);
         return SOAK_ERR_NOMEM;
     }
-    rt_films_setup(scene, films);
+    if (!opt->trace_films) rt_films_setup(scene, films); /* else every film is traced */
     j->ctx.films = films;
     soak_status st = rt_env_build(&j->ctx.env, &scene->env);
     if (st == SOAK_OK && scene->caustic_photons > 0) {
@@ -340,6 +347,8 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
         sst.rays += args[i].n.rays;
         sst.capped += args[i].n.capped;
         sst.leaked += args[i].n.leaked;
+        sst.nan_paths += args[i].n.nan_paths;
+        sst.geometry_errors += args[i].n.geom_errors;
         sst.paths += args[i].paths;
     }
     for (size_t i = 0; i < (size_t)W * H; ++i) {

@@ -67,6 +67,8 @@ typedef struct rt_ctx {
 
 typedef struct rt_counters {
     long long rays, capped, leaked;
+    long long nan_paths;  /* camera paths whose radiance was NaN/Inf (dropped to 0) */
+    long long geom_errors; /* geometry queries that failed (the path or ray ended) */
 } rt_counters;
 
 /* Does the object's wetness read texture coordinates (a wet map)? */
@@ -162,15 +164,22 @@ typedef struct rt_light_sample {
  * the light cannot illuminate p (inside a sphere light, zero value). */
 int rt_light_sample_at(rt_thread *t, int light, soak_vec3 p, rt_light_sample *s);
 int rt_light_count(const rt_ctx *c); /* lights + the environment if it is a map */
-int rt_light_is_delta(const rt_ctx *c, int light);
 /* Solid-angle pdf of sampling direction wi toward sphere light l from p. */
 double rt_sphere_light_pdf(const soak_light *l, soak_vec3 p);
 /* 1 when the segment from p (offset already applied) along wi up to dist is free. */
 int rt_visible(rt_thread *t, soak_vec3 p, soak_vec3 wi, double dist);
 
 /* ---- surfaces (render_surface.c) ---- */
+/* Radiance convention: a refraction into index ratio eta multiplies the
+ * radiance by 1/eta^2, and beta carries that factor; eta_scale carries its
+ * inverse (pbrt's etaScale), so beta * eta_scale, the weight Russian roulette
+ * plays on (rt_rr_weight), does not count a factor that the path's exit
+ * undoes. Films and media over a base never put their 1/n^2 into beta:
+ * estimates gathered inside carry it explicitly (render_surface.c,
+ * render_medium.c). */
 typedef struct rt_path {
-    soak_rgb beta;    /* throughput */
+    soak_rgb beta;    /* throughput, radiance factors of refractions included */
+    double eta_scale; /* product of eta^2 over the refractions so far */
     soak_rgb L;       /* radiance gathered */
     soak_vec3 org, dir;
     double prev_pdf;  /* solid-angle pdf of the last BSDF-sampled direction */
@@ -180,6 +189,9 @@ typedef struct rt_path {
     int inside;       /* inside a dielectric: absorb applies per unit length */
     soak_rgb absorb;
 } rt_path;
+
+/* The weight Russian roulette plays on: max_c beta_c * eta_scale. */
+static inline double rt_rr_weight(const rt_path *p) { return rgb_max(p->beta) * p->eta_scale; }
 
 /* Handles the surface interaction at hit: gathers next-event estimates into
  * path->L, updates beta and sets the next ray (or alive = 0). */
@@ -253,6 +265,8 @@ typedef struct rt_photon_map {
 soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed,
                              const volatile sig_atomic_t *cancel, double deadline, rt_photon_map *map);
 void rt_photons_free(rt_photon_map *map);
+/* Stores n photons (copied) into map's hash grid; map->radius already set. */
+soak_status rt_photon_map_store(rt_photon_map *map, const rt_photon *photons, size_t n);
 /* sigma_s L_s estimate: sum over photons of object obj within the radius of
  * p(cos) * power / (4/3 pi r^3), cos between the photon's propagation and the
  * reverse of the camera path direction d_in. */

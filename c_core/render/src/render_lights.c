@@ -133,13 +133,6 @@ static int env_sample(rt_thread *t, rt_light_sample *s)
 
 int rt_light_count(const rt_ctx *c) { return c->scene->n_lights + (c->scene->env.type == SOAK_ENV_MAP); }
 
-int rt_light_is_delta(const rt_ctx *c, int light)
-{
-    if (light >= c->scene->n_lights) return 0;
-    soak_light_type ty = c->scene->lights[light].type;
-    return ty == SOAK_LIGHT_DIRECTIONAL || ty == SOAK_LIGHT_POINT;
-}
-
 double rt_sphere_light_pdf(const soak_light *l, soak_vec3 p)
 {
     double d2 = soak_v3_dot(soak_v3_sub(l->position, p), soak_v3_sub(l->position, p));
@@ -203,6 +196,9 @@ int rt_visible(rt_thread *t, soak_vec3 p, soak_vec3 wi, double dist)
     if (!(r.tfar > 0)) return 1;
     int occ = 1;
     t->n.rays++;
-    if (soak_geometry_occluded(t->ctx->scene->geometry, &r, &occ) != SOAK_OK) return 0;
+    if (soak_geometry_occluded(t->ctx->scene->geometry, &r, &occ) != SOAK_OK) {
+        t->n.geom_errors++;
+        return 0;
+    }
     return !occ;
 }

@@ -61,7 +61,6 @@ static double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
 /* F^k of seed 000 Eq. 2; k = 1 (smooth) skips the libm call on the walk's
  * boundary path. */
-static double pow_k(double F, double k) { return k == 1.0 ? F : pow(F, k); }
 
 void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, soak_medium_point *out)
 {
@@ -133,72 +132,6 @@ soak_walk_options rt_walk_options(soak_rgb beta)
     o.max_events = RT_MEDIUM_MAX_EVENTS;
     o.weight = beta;
     return o;
-}
-
-/* Crosses the layer stack. p = n sin(theta), the Snell invariant. start_low:
- * the path starts in the material going up (else in air going down).
- * Returns 1 if it ends in the material (going down), 0 in air (going up).
- * Multiplies *beta by the film absorption. The radiance factors of the
- * crossings multiply to 1/n3^2 (air -> material), n3^2 (material -> air) or
- * 1 (back to the starting side) whatever happens in the film, so they are
- * not applied here: the walk carries beta without the 1/n3^2 and the
- * estimates gathered inside multiply by it instead (see medium_nee). That
- * keeps the roulette from killing paths for a factor that is undone when
- * they leave. */
-int rt_cross_stack(rt_thread *t, const rt_stack *s, double p, int start_low, soak_rgb *beta)
-{
-    int film = s->n2 != 1.0;
-    double cos_film = film ? sqrt(fmax(0.0, 1 - (p / s->n2) * (p / s->n2))) : 0;
-    int absorbing = film && s->h > 0 && rgb_max(s->alpha) > 0;
-    /* state: 0 at the top interface going down (from air) or up (from film);
-     * we track layer (0 air, 1 film, 2 material) and direction up/down. */
-    int layer = start_low ? 2 : 0, up = start_low;
-    for (int i = 0; i < RT_FILM_MAX_BOUNCES; ++i) {
-        if (layer == 0) { /* in air going down onto the film top (or the material if no film) */
-            if (film) {
-                double cos1 = sqrt(fmax(0.0, 1 - p * p));
-                if (rt_rand(t) < rt_fresnel(cos1, s->n2, NULL)) return 0;
-                if (absorbing) *beta = rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
-                layer = 1;
-                up = 0;
-            } else {
-                double cos1 = sqrt(fmax(0.0, 1 - p * p));
-                if (rt_rand(t) < pow_k(rt_fresnel(cos1, s->n3, NULL), s->k)) return 0;
-                return 1;
-            }
-        } else if (layer == 2) { /* in the material going up */
-            double cos3 = sqrt(fmax(0.0, 1 - (p / s->n3) * (p / s->n3)));
-            double nt = film ? s->n2 : 1.0;
-            double F = p >= nt ? 1.0 : rt_fresnel(cos3, nt / s->n3, NULL);
-            F = pow_k(F, s->k);
-            if (rt_rand(t) < F) return 1;
-            if (!film) return 0;
-            if (absorbing) *beta = rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
-            layer = 1;
-            up = 1;
-        } else if (up) { /* in the film going up to the air */
-            double F = p >= 1.0 ? 1.0 : rt_fresnel(cos_film, 1.0 / s->n2, NULL);
-            if (rt_rand(t) >= F) return 0;
-            if (absorbing) *beta = rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
-            up = 0;
-        } else { /* in the film going down to the material */
-            double F = pow_k(rt_fresnel(cos_film, s->n3 / s->n2, NULL), s->k);
-            if (rt_rand(t) >= F) return 1;
-            if (absorbing) *beta = rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
-            up = 1;
-        }
-    }
-    t->n.capped++;
-    *beta = soak_rgb3(0, 0, 0);
-    return 1;
-}
-
-/* Direction after crossing: tangential unit tdir, Snell invariant p, in
- * medium of index n, along +n_out (up) or -n_out (down). */
-soak_vec3 rt_snell_dir(soak_vec3 tdir, soak_vec3 n_out, double p, double n, int up)
-{
-    double s = p / n, c = sqrt(fmax(0.0, 1 - s * s));
-    return soak_v3_norm(soak_v3_add(soak_v3_scale(tdir, s), soak_v3_scale(n_out, up ? c : -c)));
 }
 
 static double film_shadow(const soak_material *m, double cover, double cos1)
@@ -296,8 +229,9 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
             }
             soak_ray r = {x, d3, 0.0, INFINITY};
             t->n.rays++;
-            if (soak_geometry_intersect_local(s->geometry, c->obj->object_id, &r, rt_object_uses_uv(c->obj), &h, &found) != SOAK_OK ||
-                !found) {
+            soak_status gst = soak_geometry_intersect_local(s->geometry, c->obj->object_id, &r, rt_object_uses_uv(c->obj), &h, &found);
+            if (gst != SOAK_OK) t->n.geom_errors++;
+            if (gst != SOAK_OK || !found) {
                 found = 0;
                 break;
             }
@@ -353,7 +287,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
         if (!rt_visible(t, soak_geometry_offset(h.p, n, wl), wl, dist_light)) continue;
         soak_rgb L = rgb_mul(rgb_mul(beta, Tm), E);
         /* 1/n3^2: the radiance factor of entering, left out of beta (cross_stack). */
-        L = rgb_scale(L, inv_q * ph * Tf * cos1 / (cos3 * n3 * n3));
+        L = rgb_scale(L, inv_q * ph * Tf * cos1 / (cos3 * n3 * n3 * c->path->eta_scale)); /* walk weights: see rt_wet_medium */
         if (cover > 0 && m->film_thickness > 0) {
             /* Beer-Lambert in the film, weighted by the wet share of Tf. */
             double cos2 = sqrt(fmax(0.0, 1 - (1 - cos1 * cos1) / (m->film_ior * m->film_ior)));
@@ -371,7 +305,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
         soak_rgb g = rt_photons_gather(t->ctx->caustics, x, d_in, &local->phase, c->object_id);
         soak_rgb ss = local->sigma_s;
         soak_rgb ls = soak_rgb3(ss.r > 0 ? g.r / ss.r : 0, ss.g > 0 ? g.g / ss.g : 0, ss.b > 0 ? g.b / ss.b : 0);
-        c->path->L = rgb_add(c->path->L, rgb_scale(rgb_mul(beta, ls), 1.0 / (n3 * n3)));
+        c->path->L = rgb_add(c->path->L, rgb_scale(rgb_mul(beta, ls), 1.0 / (n3 * n3 * c->path->eta_scale)));
     }
     return 1;
 }
@@ -383,10 +317,10 @@ static double med_distance(const void *ctx, soak_vec3 pos, soak_vec3 dir)
     int found = 0;
     b->t->n.rays++;
     soak_hit *h = &b->surf->hit;
-    b->surf->lost =
-        soak_geometry_intersect_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, rt_object_uses_uv(b->obj), h, &found) !=
-            SOAK_OK ||
-        !found;
+    soak_status st =
+        soak_geometry_intersect_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, rt_object_uses_uv(b->obj), h, &found);
+    if (st != SOAK_OK) b->t->n.geom_errors++;
+    b->surf->lost = st != SOAK_OK || !found;
     if (b->surf->lost) return 0.0; /* interact ends the walk at once */
     if (soak_v3_dot(dir, h->ng) < 0) h->ng = soak_v3_scale(h->ng, -1.0); /* outward: the ray leaves the medium */
     return h->t;
@@ -402,7 +336,10 @@ static int med_within(const void *ctx, soak_vec3 pos, soak_vec3 dir, double dist
     soak_ray r = {pos, dir, 0.0, dist * (1.0 + 1e-5) + 1e-5 * (1.0 + m)};
     int occluded = 1;
     b->t->n.rays++;
-    if (soak_geometry_occluded_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, &occluded) != SOAK_OK) return 1;
+    if (soak_geometry_occluded_local(b->t->ctx->scene->geometry, b->obj->object_id, &r, &occluded) != SOAK_OK) {
+        b->t->n.geom_errors++;
+        return 1;
+    }
     return occluded;
 }
 
@@ -476,7 +413,9 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     nc.surf = &surf;
     nc.object_id = hit->object_id;
     nc.path = path;
-    soak_walk_options opt = rt_walk_options(path->beta);
+    /* The walk's roulette plays on its weight: start it at beta * eta_scale
+     * (rt_rr_weight's convention) and undo the scale on what it returns. */
+    soak_walk_options opt = rt_walk_options(rgb_scale(path->beta, path->eta_scale));
     opt.on_vertex = medium_vertex;
     opt.vertex_ctx = &nc;
     soak_walk_result_rgb w;
@@ -491,7 +430,7 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     if (w.end == SOAK_WALK_CAPPED) t->n.capped++;
     if (w.end != SOAK_WALK_EXITED) return;
     path->alive = 1;
-    path->beta = w.weight;
+    path->beta = rgb_scale(w.weight, 1.0 / path->eta_scale);
     path->dir = w.dir;
     path->org = soak_geometry_offset(surf.hit.p, surf.n_ref, w.dir);
     path->prev_delta = 1;

@@ -17,6 +17,7 @@
  * environment emit no photons (their caustics into media are missing). */
 #define _POSIX_C_SOURCE 200809L
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #include "render_internal.h"
@@ -137,20 +138,6 @@ static int trace_photon(rt_thread *t, soak_vec3 org, soak_vec3 dir, soak_rgb pow
 
 static double luminance(soak_rgb c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
-static uint32_t cell_hash(int64_t x, int64_t y, int64_t z, size_t mask)
-{
-    uint64_t h = (uint64_t)x * 73856093ull ^ (uint64_t)y * 19349663ull ^ (uint64_t)z * 83492791ull;
-    h ^= h >> 29;
-    return (uint32_t)(h & mask);
-}
-
-static void cell_of(const rt_photon_map *m, soak_vec3 x, int64_t c[3])
-{
-    c[0] = (int64_t)floor(x.x / m->radius);
-    c[1] = (int64_t)floor(x.y / m->radius);
-    c[2] = (int64_t)floor(x.z / m->radius);
-}
-
 static int should_stop(const volatile sig_atomic_t *cancel, double deadline)
 {
     if (cancel && *cancel) return 1;
@@ -258,78 +245,8 @@ soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64
         free(list.p);
         return SOAK_OK;
     }
-    /* Hash grid with cells of the gather radius, photons sorted by cell. */
-    size_t cells = 1;
-    while (cells < 2 * list.n) cells *= 2;
-    map->n_cells = cells;
-    map->cell_start = calloc(cells + 1, sizeof(uint32_t));
-    map->photons = malloc(list.n * sizeof(rt_photon));
-    uint32_t *slot = malloc(list.n * sizeof(uint32_t));
-    if (!map->cell_start || !map->photons || !slot || list.n >= 0xFFFFFFFFu) {
-        free(slot);
-        free(list.p);
-        rt_photons_free(map);
-        return SOAK_ERR_NOMEM;
-    }
-    for (size_t i = 0; i < list.n; ++i) {
-        int64_t cc[3];
-        cell_of(map, soak_v3(list.p[i].pos[0], list.p[i].pos[1], list.p[i].pos[2]), cc);
-        slot[i] = cell_hash(cc[0], cc[1], cc[2], cells - 1);
-        map->cell_start[slot[i] + 1]++;
-    }
-    for (size_t k = 0; k < cells; ++k) map->cell_start[k + 1] += map->cell_start[k];
-    uint32_t *fill = calloc(cells, sizeof(uint32_t));
-    if (!fill) {
-        free(slot);
-        free(list.p);
-        rt_photons_free(map);
-        return SOAK_ERR_NOMEM;
-    }
-    for (size_t i = 0; i < list.n; ++i) map->photons[map->cell_start[slot[i]] + fill[slot[i]]++] = list.p[i];
-    map->n = list.n;
-    free(fill);
-    free(slot);
+    soak_status st = rt_photon_map_store(map, list.p, list.n);
     free(list.p);
-    return SOAK_OK;
+    return st;
 }
 
-void rt_photons_free(rt_photon_map *map)
-{
-    free(map->photons);
-    free(map->cell_start);
-    memset(map, 0, sizeof *map);
-}
-
-soak_rgb rt_photons_gather(const rt_photon_map *map, soak_vec3 x, soak_vec3 d_in, const soak_hg2 *phase, unsigned obj)
-{
-    soak_rgb sum = soak_rgb3(0, 0, 0);
-    if (!map || map->n == 0) return sum;
-    int64_t c[3];
-    cell_of(map, x, c);
-    uint32_t seen[27];
-    int n_seen = 0;
-    double r2 = map->radius * map->radius;
-    for (int dz = -1; dz <= 1; ++dz)
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-                uint32_t h = cell_hash(c[0] + dx, c[1] + dy, c[2] + dz, map->n_cells - 1);
-                int dup = 0;
-                for (int k = 0; k < n_seen && !dup; ++k) dup = seen[k] == h;
-                if (dup) continue; /* two neighbour cells hashed to one bucket */
-                seen[n_seen++] = h;
-                for (uint32_t i = map->cell_start[h]; i < map->cell_start[h + 1]; ++i) {
-                    const rt_photon *p = &map->photons[i];
-                    if (p->object_id != obj) continue;
-                    double ex = p->pos[0] - x.x, ey = p->pos[1] - x.y, ez = p->pos[2] - x.z;
-                    if (ex * ex + ey * ey + ez * ez > r2) continue;
-                    /* Light propagating along w_p scattered into -d_in (toward the camera). */
-                    double cosang = -(p->dir[0] * d_in.x + p->dir[1] * d_in.y + p->dir[2] * d_in.z);
-                    double ph = rt_hg2(phase, cosang);
-                    sum.r += ph * p->power[0];
-                    sum.g += ph * p->power[1];
-                    sum.b += ph * p->power[2];
-                }
-            }
-    double vol = 4.0 / 3.0 * SOAK_PI * r2 * map->radius;
-    return rgb_scale(sum, 1.0 / vol);
-}

@@ -32,18 +32,6 @@
 #include "soak/fresnel.h"
 #include "soak/ggx.h"
 
-double rt_fresnel(double cos_i, double eta, double *cos_t)
-{
-    double ct = 0;
-    if (eta == 1.0) {
-        if (cos_t) *cos_t = cos_i;
-        return 0.0;
-    }
-    double F = soak_fresnel_dielectric_raw(fmin(1.0, fmax(0.0, cos_i)), eta, &ct);
-    if (cos_t) *cos_t = ct;
-    return F;
-}
-
 typedef struct base_model {
     soak_base_type type;
     soak_rgb albedo;
@@ -193,7 +181,7 @@ static void opaque(rt_thread *t, const soak_hit *hit, const base_model *base, do
                 d = soak_v3(wi.x, wi.y, -wi.z);
                 if (absorbing) path->beta = rgb_mul(path->beta, rgb_exp(film_alpha, film_h / wi.z));
                 /* Roulette inside the film keeps absorbing bases from looping. */
-                double q = fmin(1.0, rgb_max(path->beta));
+                double q = fmin(1.0, rt_rr_weight(path));
                 if (q < 1.0) {
                     if (rt_rand(t) >= q) {
                         path->alive = 0;
@@ -332,6 +320,7 @@ static void dielectric(rt_thread *t, const soak_hit *hit, const soak_material *m
     } else {
         path->dir = soak_v3_norm(soak_v3_add(soak_v3_scale(wo, -1.0 / eta), soak_v3_scale(n, cos_i / eta - cos_t)));
         path->beta = rgb_scale(path->beta, 1.0 / (eta * eta));
+        path->eta_scale *= eta * eta; /* kept out of roulette (rt_rr_weight) */
         path->inside = entering;
         path->absorb = m->absorption;
     }

@@ -11,11 +11,10 @@
 #include "soak/preset.h"
 #include "soak/wetness.h"
 
-static double rgb_max(soak_rgb c) { return fmax(c.r, fmax(c.g, c.b)); }
 
 static void medium_majorant(soak_scene_medium *m)
 {
-    double mj = rgb_max(soak_rgb3(m->sigma_s.r + m->sigma_a.r, m->sigma_s.g + m->sigma_a.g, m->sigma_s.b + m->sigma_a.b));
+    double mj = soak_rgb_max(soak_rgb3(m->sigma_s.r + m->sigma_a.r, m->sigma_s.g + m->sigma_a.g, m->sigma_s.b + m->sigma_a.b));
     if (m->volume) {
         size_t n = soak_volume_count(m->volume);
         for (int ch = 0; ch < 3; ++ch) {
@@ -183,15 +182,22 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     soak_wet_params w;
     st = soak_wetness_eval(p, liq, &in, &w);
     soak_material_kind kind = p->kind;
-    double ior = p->ior;
+    double porosity = p->porosity, ior = p->ior;
     soak_rgb n = p->ior_n, k = p->ior_k;
     soak_presets_free(db);
     if (st != SOAK_OK) return sj_fail(c, st, path, "wetness evaluation failed (%s)", soak_status_str(st));
+    /* The chain's liquid-air interface (wetness.h step 5): the film over
+     * the coverage c and the pore water's surface (zero thickness) over
+     * porosity * fill of the rest. One film of the chain's area; its
+     * thickness only where a film lies (the pore part differs by the
+     * absorption of a film thickness, < 1e-3 for clear liquids). */
+    double pores = kind == SOAK_KIND_POROUS_DIELECTRIC || kind == SOAK_KIND_THIN_SHEET ? porosity * w.fill : 0.0;
+    double interface = w.film_coverage + (1.0 - w.film_coverage) * pores;
     m->type = SOAK_MAT_WET;
     m->film_ior = w.film_ior;
     m->film_k = 1;
-    m->film_coverage = w.film ? w.film_coverage : 0;
-    m->film_thickness = w.film_thickness_m * 1000.0 / unit_mm;
+    m->film_coverage = kind == SOAK_KIND_CONDUCTOR ? w.film_coverage : interface;
+    m->film_thickness = w.film_coverage > 0 ? w.film_thickness_m * 1000.0 / unit_mm : 0.0;
     m->film_absorption = soak_rgb3(w.film_absorption_per_m.r * unit_mm / 1000.0, w.film_absorption_per_m.g * unit_mm / 1000.0,
                                    w.film_absorption_per_m.b * unit_mm / 1000.0);
     if (kind == SOAK_KIND_CONDUCTOR) {
@@ -199,7 +205,21 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
         m->eta = n;
         m->k = k;
         m->alpha = w.ggx_alpha;
+    } else if (kind != SOAK_KIND_THIN_SHEET) {
+        /* Opaque dielectrics: the chain's base is a Lambertian surface of the
+         * subsurface albedo (van de Hulst, index matched) under the liquid
+         * interface; tracing the same medium under a smooth n = 1.5 boundary
+         * would be a different model (1.5-2.7x darker dry, see
+         * scenes/README.md). */
+        m->base = SOAK_BASE_LAMBERT;
+        m->albedo = w.albedo_subsurface;
     } else {
+        /* Thin sheets keep their traced medium (translucency) under a smooth
+         * boundary of the fibres' index: an index-matched boundary would match
+         * the chain's front-lit albedo, but the tracer's in-medium light
+         * sampling finds no delta light through a boundary of index 1 (back-lit
+         * sheets render black), so the sheet stays the slab it was; its
+         * front-lit albedo is darker than the chain's (scenes/README.md). */
         m->base = SOAK_BASE_MEDIUM;
         m->medium.sigma_s = soak_rgb3(w.sigma_s.r * unit_mm, w.sigma_s.g * unit_mm, w.sigma_s.b * unit_mm);
         m->medium.sigma_a = soak_rgb3(w.sigma_a.r * unit_mm, w.sigma_a.g * unit_mm, w.sigma_a.b * unit_mm);

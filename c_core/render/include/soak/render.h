@@ -43,6 +43,11 @@ typedef struct soak_render_options {
      * fraction of samples done; may be NULL. */
     void (*progress)(void *ctx, double fraction);
     void *progress_ctx;
+    /* 1: trace a film over a Lambert base bounce by bounce (light sampling
+     * through the film, total internal reflection) instead of using its
+     * closed-form expectation; for validation, the image's expectation is
+     * the same. */
+    int trace_films;
 } soak_render_options;
 
 typedef struct soak_render_stats {
@@ -51,6 +56,8 @@ typedef struct soak_render_stats {
     long long capped;       /* paths stopped by max_depth or the medium event cap while
                                still carrying throughput (their remainder is the only bias) */
     long long leaked;       /* medium paths that found no boundary (open mesh): dropped */
+    long long nan_paths;    /* camera paths whose radiance came out NaN/Inf: counted as black */
+    long long geometry_errors; /* failed geometry queries: the path (or shadow ray) ended there */
     double seconds;
     int min_spp, max_spp;   /* samples actually taken per pixel */
     int stopped_early;      /* cancel or time limit */

@@ -1,0 +1,36 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Soak: physically based wet materials for Blender (Cycles and EEVEE).
+
+Every number the node groups use comes from the Soak C core through
+`soak export --target blender` (soak_data.json next to this file)."""
+
+bl_info = {
+    "name": "Soak wet materials",
+    "author": "Soak project",
+    "version": (1, 0, 0),
+    "blender": (3, 4, 0),
+    "location": "Properties > Material > Wetness",
+    "description": "Make any Principled BSDF material wet (presets from the Soak core), bake wet maps",
+    "category": "Material",
+}
+
+if "bpy" in locals():
+    import importlib
+    for _m in (compat, data, nodes, properties, preferences, operators, ui):  # noqa: F821
+        importlib.reload(_m)
+else:
+    from . import compat, data, nodes, properties, preferences, operators, ui
+
+import bpy  # noqa: E402
+
+_modules = (preferences, properties, operators, ui)
+
+
+def register():
+    for m in _modules:
+        m.register()
+
+
+def unregister():
+    for m in reversed(_modules):
+        m.unregister()

@@ -1,0 +1,41 @@
+#!/bin/bash
+# POV-Ray render time of each seed scene with the wet macros vs the same scene
+# with plain dry textures (soak.inc's macros replaced by a grey pigment with
+# diffuse 1), same settings, interleaved, wall time (best of REPEAT): povray's
+# CPU time is not reported to /usr/bin/time on this build.
+# usage: c_core/bench/bench_povray.sh [REPEAT] > c_core/bench/results/YYYY-MM-DD-povray.md
+set -eu
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+REPEAT=${1:-1}
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+# plain variant: every Soak material/texture macro call becomes a plain texture
+cat > "$TMP/plain.inc" <<'INC'
+#include "soak.inc"
+#macro Plain() texture { pigment { rgb 0.4 } finish { diffuse 1 } } #end
+#undef Soak_Wet_Material #macro Soak_Wet_Material(P, L, W) Plain() #end
+#undef Soak_Wet_Material_Fn #macro Soak_Wet_Material_Fn(P, L, W) Plain() #end
+#undef Soak_Wet_Material_Bumped #macro Soak_Wet_Material_Bumped(P, L, W, N) Plain() #end
+#undef Soak_Wet_User_Material #macro Soak_Wet_User_Material(P, L, W, U) Plain() #end
+#undef Soak_Puddle_Material #macro Soak_Puddle_Material(P, L, W, Lv, N) Plain() #end
+INC
+cp "$ROOT"/scenes/povray/*.pov "$TMP/"
+for f in "$TMP"/*.pov; do sed 's|#include "soak.inc"|#include "plain.inc"|' "$f" > "${f%.pov}_plain.pov"; done
+W=640 H=480
+cpu() {
+  /usr/bin/time -o "$TMP/t" -f "%e" povray "+I$1" "+O$TMP/o.png" +W$W +H$H -D -V +WT1 "+L$ROOT/povray" "+L$TMP" \
+    +A0.3 Declare=Use_Map=0 >"$TMP/log" 2>&1 || { echo "povray $1 failed" >&2; tail -5 "$TMP/log" >&2; exit 1; }
+  awk '{print $1}' "$TMP/t"
+}
+echo "# POV-Ray: wet macros vs plain textures ($(date -u +%Y-%m-%d), ${W}x${H}, +A0.3, 1 thread, wall s (CPU time of povray is not reported to /usr/bin/time), best of $REPEAT, interleaved)"
+echo
+echo "| scene | plain (s) | wet (s) | overhead ratio |"
+echo "|---|---|---|---|"
+for s in wet_paper beach_rock bricks_drying flowerpot_porosity film_copper; do
+  bp=1e9 bw=1e9
+  for r in $(seq "$REPEAT"); do
+    p=$(cpu "$TMP/${s}_plain.pov"); w=$(cpu "$TMP/$s.pov")
+    bp=$(awk -v a="$p" -v b="$bp" 'BEGIN{print (a < b ? a : b)}'); bw=$(awk -v a="$w" -v b="$bw" 'BEGIN{print (a < b ? a : b)}')
+  done
+  awk -v s="$s" -v p="$bp" -v w="$bw" 'BEGIN{printf "| %s | %.2f | %.2f | %.2f |\n", s, p, w, w / p}'
+done

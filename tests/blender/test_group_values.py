@@ -1,0 +1,169 @@
+"""The Soak Wet group, evaluated by Cycles, against the core.
+
+For every preset and liquid a plane is rendered with an Emission shader fed
+by the group's Base Color (and Coat Weight, Roughness) outputs, one test
+point per pixel: the dry colour and wetness come from Closest-interpolated
+input images, so pixel (i, j) evaluates the group at exactly one point. The
+expected values come from `soak export --target json` (an independent
+writer): its base_colour table at its own nodes (exact core values,
+7 digits), its knot table for coverage and roughness. Tolerance: the core's
+SOAK_EXPORT_BASE_TOL 0.005 for the colour (the Blender table's bilinear error
+is below it) plus 2e-4 for float32 texture coordinates; 0.005 for coverage
+and roughness (piecewise linear tables at different knots)."""
+import json
+import os
+import subprocess
+import sys
+
+import bpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+
+A = common.args()
+ENGINE = A.get("engine", "CYCLES")
+TOL = float(A.get("tol", 0.005 + 2e-4))
+N = int(A.get("n", 16))  # N x N test points per render
+ROUNDS = int(A.get("rounds", 1))  # renders per preset and liquid (different points)
+ONLY = A.get("presets", "").split(",") if A.get("presets") else None
+LIQUIDS = A.get("liquids", "").split(",") if A.get("liquids") else None
+
+
+def image(name, px):
+    img = bpy.data.images.new(name, N, N, alpha=False, float_buffer=True)
+    img.colorspace_settings.name = "Non-Color"
+    img.pixels.foreach_set([v for p in px for v in (p[0], p[1], p[2], 1.0)])
+    img.pack()
+    return img
+
+
+def setup():
+    sc = bpy.context.scene
+    sc.render.engine = ENGINE
+    sc.cycles.samples = 1
+    if ENGINE == "BLENDER_EEVEE":
+        sc.eevee.taa_render_samples = 1
+        sc.render.filter_size = 0.0
+    sc.cycles.use_denoising = False
+    sc.cycles.pixel_filter_type = "BOX"
+    sc.cycles.filter_width = 0.01
+    sc.render.resolution_x = sc.render.resolution_y = max(N, 4)
+    sc.render.resolution_percentage = 100
+    sc.render.image_settings.file_format = "OPEN_EXR"
+    sc.render.image_settings.color_depth = "32"
+    sc.view_settings.view_transform = "Standard"
+    for o in list(bpy.data.objects):
+        bpy.data.objects.remove(o)
+    cd = bpy.data.cameras.new("C")
+    cd.type = "ORTHO"
+    cd.ortho_scale = 2.0
+    co = bpy.data.objects.new("C", cd)
+    sc.collection.objects.link(co)
+    co.location = (0, 0, 1)
+    sc.camera = co
+    bpy.ops.mesh.primitive_plane_add(size=2)
+    return sc, bpy.context.object
+
+
+def points(table, first=0):
+    """(dry rgb, wetness, expected rgb) at the json export's nodes."""
+    a, w = table["dry_albedo"], table["wetness"]
+    alb = table["albedo"]
+    out = []
+    k = first * 37
+    while len(out) < N * N:
+        iw = k % len(w)
+        ia = [(k // len(w) + 7 * c) % len(a) for c in range(3)]
+        dry = [a[i] for i in ia]
+        want = [alb[c][iw][ia[c]] for c in range(3)]
+        out.append((dry, w[iw], want))
+        k += 1
+    return out
+
+
+def interp(xs, ys, x):
+    for i in range(len(xs) - 1):
+        if xs[i] <= x <= xs[i + 1]:
+            t = (x - xs[i]) / (xs[i + 1] - xs[i]) if xs[i + 1] > xs[i] else 0.0
+            return ys[i] + (ys[i + 1] - ys[i]) * t
+    return ys[-1]
+
+
+def main():
+    common.install_addon(A["addon"])
+    ref_path = os.path.join(A["tmp"], "export.json")
+    os.makedirs(A["tmp"], exist_ok=True)
+    r = subprocess.run([A["soak"], "export", "--target", "json", "-o", ref_path], capture_output=True, text=True)
+    if r.returncode != 0:
+        common.fail(f"soak export --target json: {r.stderr}")
+    ref = json.load(open(ref_path))
+    sc, plane = setup()
+    worst = {"colour": 0.0, "coat": 0.0, "rough": 0.0}
+    failures = []
+    combos = [(m, liquid, t, k) for m in ref["materials"] for liquid, t in m["liquids"].items()
+              for k in range(ROUNDS)
+              if (ONLY is None or m["name"] in ONLY) and (LIQUIDS is None or liquid in LIQUIDS)]
+    for m, liquid, t, k in combos:
+        if True:
+            pts = points(t["base_colour"], k)
+            mat = bpy.data.materials.new(f"{m['name']}_{liquid}")
+            mat.use_nodes = True
+            plane.data.materials.clear()
+            plane.data.materials.append(mat)
+            mat.soak.preset, mat.soak.liquid = m["name"], liquid
+            mat.soak.colour_source = "MATERIAL"
+            mat.soak.exact_lookups = bool(int(A.get("exact", "0")))
+            bpy.context.view_layer.objects.active = plane
+            if bpy.ops.soak.make_wet() != {"FINISHED"}:
+                common.fail(f"make_wet {m['name']} {liquid}")
+            tree = mat.node_tree
+            gn = tree.nodes["Soak Wet"]
+            col = tree.nodes.new("ShaderNodeTexImage")
+            col.image = image("dry", [p[0] for p in pts])
+            col.interpolation = "Closest"
+            wet = tree.nodes.new("ShaderNodeTexImage")
+            wet.image = image("wet", [(p[1], 0, 0) for p in pts])
+            wet.interpolation = "Closest"
+            sep = tree.nodes.new("ShaderNodeSeparateColor")
+            tree.links.new(col.outputs["Color"], gn.inputs["Base Color"])
+            tree.links.new(wet.outputs["Color"], sep.inputs[0])
+            tree.links.new(sep.outputs[0], gn.inputs["Wetness"])
+            gn.inputs["Roughness"].default_value = t["knots"]["roughness"][0]
+            em = tree.nodes.new("ShaderNodeEmission")
+            out = tree.nodes["Material Output"]
+            for what, sock in (("colour", gn.outputs["Base Color"]), ("coat", gn.outputs["Coat Weight"]),
+                               ("rough", gn.outputs["Roughness"])):
+                tree.links.new(sock, em.inputs["Color"])
+                tree.links.new(em.outputs[0], out.inputs["Surface"])
+                path = os.path.join(A["tmp"], f"{m['name']}_{liquid}_{k}_{what}.exr")
+                sc.render.filepath = path
+                bpy.ops.render.render(write_still=True)
+                img = bpy.data.images.load(path, check_existing=False)
+                px = list(img.pixels)
+                bpy.data.images.remove(img)
+                kn = t["knots"]
+                npx = len(px) // 4
+                for i, (dry, w, want) in enumerate(pts):
+                    # N = 1: the whole (constant) image is the point: its mean
+                    got = px[4 * i: 4 * i + 3] if N > 1 else [sum(px[c::4]) / npx for c in range(3)]
+                    if what == "colour":
+                        exp = want
+                    elif what == "coat":
+                        exp = [interp(kn["wetness"], kn["film_coverage"], w)] * 3
+                    else:
+                        exp = [interp(kn["wetness"], kn["roughness"], w)] * 3
+                    e = max(abs(g - x) for g, x in zip(got, exp))
+                    worst[what] = max(worst[what], e)
+                    if e > TOL:
+                        failures.append(f"{m['name']}/{liquid} {what} dry={dry} w={w}: {got} vs {exp}")
+            bpy.data.materials.remove(mat)
+            for n in ("dry", "wet"):
+                bpy.data.images.remove(bpy.data.images[n])
+    print(f"worst |Blender - core|: colour {worst['colour']:.5f}, coat {worst['coat']:.5f}, "
+          f"roughness {worst['rough']:.5f} (tolerance {TOL})")
+    if failures:
+        common.fail(f"{len(failures)} points off, e.g. " + "; ".join(failures[:5]))
+    print("PASS")
+
+
+main()

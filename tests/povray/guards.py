@@ -1,0 +1,136 @@
+"""soak.inc input guards: every bad argument stops POV-Ray with #error naming
+it (exit 1, never POV-Ray's assertion 134 or segfault 139); doubtful input
+warns; wetness functions outside [0, 1] are clamped, not wrapped; every preset
+and liquid renders at the wetness edges.
+
+usage: guards.py SOAK ROOT TMPDIR"""
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from soakpov import fail, need_tool, povray, read_image  # noqa: E402
+
+HEAD = """#version 3.7;
+global_settings { assumed_gamma 1.0 ambient_light 1 }
+#declare Soak_Ambient = 0.2;
+#include "soak.inc"
+camera { orthographic location <0.5,0.5,5> look_at <0.5,0.5,0> up y right -x sky y }
+light_source { <0.3,0.2,1>*1e4 rgb 1 parallel point_at 0 }
+sky_sphere { pigment { rgb 0.2 } }
+"""
+
+BAD = [  # (snippet, the argument the message must name)
+    ('box { <0,0,-1>, <1,1,0> Soak_Wet_Material("sandd", "water", 0.5) }', 'Preset = "sandd"'),
+    ('box { <0,0,-1>, <1,1,0> Soak_Wet_Material("sand", "watr", 0.5) }', 'Liquid = "watr"'),
+    ('box { <0,0,-1>, <1,1,0> Soak_Wet_Material("sand", "water", -0.1) }', "Wetness = -0.1"),
+    ('box { <0,0,-1>, <1,1,0> Soak_Wet_Material("sand", "water", 1.5) }', "Wetness = 1.5"),
+    ('box { <0,0,-1>, <1,1,0> Soak_Wet_User_Material("clay", "water", 2, pigment { rgb 0.5 }) }', "Wetness = 2"),
+    ('#declare W = function { x }\n#declare T0 = function { 0 }\n'
+     '#declare S = Soak_Schedule_Fn(W, T0, -1, clock)', "T_Fill = -1"),
+    ('#declare W = function { x }\nbox { <0,0,-1>, <1,1,0> Soak_Puddle_Material("sand", "water", W, 0, '
+     'normal { bumps 0.1 }) }', "Level = 0"),
+    ('#declare W = function { x }\nbox { <0,0,-1>, <1,1,0> Soak_Puddle_Material("sand", "water", W, 1.2, '
+     'normal { bumps 0.1 }) }', "Level = 1.2"),
+    ('#declare W = function { x }\nbox { <0,0,-1>, <1,1,0> texture { pigment { rgb 0.5 } '
+     'Soak_Spill_Normal(W, -1) } }', "Amount = -1"),
+    ('#declare C = Soak_Wet_Colour("sand", "water", 0.5, <1.2, 0.5, 0.5>);', "Colour = <1.2"),
+    ('#declare C = Soak_Wet_Colour("sand", "water", 0.5, <0.5, -0.1, 0.5>);', "Colour = <0.5"),
+]
+
+WARN = [
+    ('#declare W = function { x }\nbox { <0,0,-1>, <1,1,0> texture { pigment { rgb 0.5 } '
+     'Soak_Spill_Normal(W, 3) } }', "very strong bump"),
+]
+
+
+def write(tmp, name, body):
+    path = os.path.join(tmp, name + ".pov")
+    with open(path, "w") as f:
+        f.write(HEAD + body + "\n")
+    return path
+
+
+def render(tmp, lib, name, body, size=4):
+    pov = write(tmp, name, body)
+    out = os.path.join(tmp, name + ".exr")
+    rc, log = povray(pov, out, size, size, lib)
+    if rc in (134, 139):
+        fail(f"{name}: POV-Ray crashed (exit {rc})\n{log[-1500:]}")
+    return rc, log, out
+
+
+def main():
+    soak, root, tmp = (os.path.abspath(a) for a in sys.argv[1:4])
+    need_tool("povray")
+    need_tool("oiiotool")
+    os.makedirs(tmp, exist_ok=True)
+    lib = os.path.join(root, "povray")
+    bad = 0
+    for i, (body, arg) in enumerate(BAD):
+        rc, log, _ = render(tmp, lib, f"bad{i}", body)
+        flat = " ".join(log.split())
+        ok = rc == 1 and arg in flat
+        bad += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} bad input -> exit {rc}, names '{arg}'")
+        if not ok:
+            print(log[-800:])
+    for i, (body, text) in enumerate(WARN):
+        rc, log, _ = render(tmp, lib, f"warn{i}", body)
+        ok = rc == 0 and text in " ".join(log.split())
+        bad += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} doubtful input -> exit {rc}, warns '{text}'")
+
+    # Every preset x liquid at the wetness edges renders to finite, non-negative pixels.
+    body = """#declare P = 0;
+#while (P < Soak_N_Presets)
+  #declare L = 0;
+  #while (L < Soak_N_Liquids)
+    #declare Ws = array[5] {0, 1e-9, Soak_Preset_Saturation[P], 1 - 1e-9, 1}
+    #declare K = 0;
+    #while (K < 5)
+      box { <(P + K / 5) / Soak_N_Presets, L / Soak_N_Liquids, -1>, <(P + (K + 1) / 5) / Soak_N_Presets,
+            (L + 1) / Soak_N_Liquids, 0> Soak_Wet_Material(Soak_Preset_Names[P], Soak_Liquid_Names[L], Ws[K]) }
+      #declare K = K + 1;
+    #end
+    #declare L = L + 1;
+  #end
+  #declare P = P + 1;
+#end
+"""
+    rc, log, out = render(tmp, lib, "all_presets", body, size=60)
+    img = read_image(out) if rc == 0 else None
+    ok = rc == 0 and np.all(np.isfinite(img)) and img.min() >= 0
+    bad += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} all presets x liquids x wetness edges render (exit {rc})")
+
+    # Wetness functions outside [0, 1] are clamped, not wrapped (POV-Ray wraps pattern values >= 1).
+    pairs = [("function { 5 }", "1"), ("function { 1 }", "1"), ("function { -3 }", "0"), ("function { 0.5 }", "0.5")]
+    for i, (fn, w) in enumerate(pairs):
+        a = render(tmp, lib, f"clampfn{i}", f'#declare W = {fn}\nbox {{ <0,0,-1>, <1,1,0> '
+                   f'Soak_Wet_Material_Fn("brick", "water", W) }}')
+        b = render(tmp, lib, f"clampc{i}", f'box {{ <0,0,-1>, <1,1,0> Soak_Wet_Material("brick", "water", {w}) }}')
+        if a[0] != 0 or b[0] != 0:
+            bad += 1
+            print(f"FAIL clamp {fn}: exit {a[0]}, {b[0]}")
+            continue
+        pa, pb = read_image(a[2]).mean((0, 1)), read_image(b[2]).mean((0, 1))
+        ok = np.allclose(pa, pb, rtol=2e-3, atol=2e-4)
+        bad += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} wetness {fn} renders as the constant {w}: {pa} vs {pb}")
+
+    # No macro emits POV-Ray's crash-prone subsurface block (see povray/README.md).
+    with open(os.path.join(lib, "soak.inc")) as f:
+        src = f.read()
+    code = "\n".join(l.split("//")[0] for l in src.splitlines())
+    ok = "subsurface" not in code and "translucency" not in code
+    bad += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} soak.inc never emits subsurface/translucency")
+    if bad:
+        fail(f"{bad} guard checks failed")
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,51 @@
+"""What the seed scenes must show (rendered small by povray/render_scenes.sh):
+wet paper darker than dry when lit from the front, brighter from behind
+(seed 000 sec. 4.1); the porosity sweep's wet pots darker as porosity grows;
+the drying bricks lighter frame by frame.
+
+usage: scenes_check.py SOAK ROOT TMPDIR"""
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from soakpov import fail, need_tool, read_image  # noqa: E402
+
+
+def lum(a):
+    return float((a[..., :3] * [0.2126, 0.7152, 0.0722]).sum(-1).mean())
+
+
+def main():
+    soak, root, tmp = (os.path.abspath(a) for a in sys.argv[1:4])
+    need_tool("povray")
+    need_tool("oiiotool")
+    r = subprocess.run(["bash", os.path.join(root, "povray", "render_scenes.sh"), soak, tmp, "small"])
+    if r.returncode != 0:
+        fail("render_scenes.sh failed")
+    bad = 0
+
+    def check(what, ok):
+        nonlocal bad
+        bad += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} {what}")
+
+    for name, sign in (("paper_front", -1), ("paper_back", +1)):
+        img = read_image(os.path.join(tmp, name + ".exr"))
+        h, w = img.shape[:2]
+        spot = lum(img[h * 2 // 5:h * 3 // 5, w * 2 // 5:w * 3 // 5])
+        dry = lum(img[:h // 8, :w // 8])
+        check(f"{name}: wet spot {spot:.4f} vs dry {dry:.4f} ({'darker' if sign < 0 else 'brighter'})",
+              (spot - dry) * sign > 0)
+    frames = [lum(read_image(os.path.join(tmp, f"bricks_{k}.exr"))) for k in range(4)]
+    check(f"bricks dry over time: {[round(f, 4) for f in frames]} increasing",
+          all(b > a for a, b in zip(frames, frames[1:])))
+    if bad:
+        fail(f"{bad} scene checks failed")
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
