@@ -36,7 +36,7 @@ demo: build addon
 
 # Each pass lists the skipped tests with their reasons and fails when a test
 # failed, was skipped for want of povray or blender (the set-up installs
-# them), or is registered without SKIP_RETURN_CODE 77 (scripts/test_skips.py).
+# them), or exited 77 without a reason (scripts/test_skips.py).
 CTEST_ARGS = --output-on-failure -j $(JOBS) --output-junit ctest-junit.xml \
   --test-output-size-passed 1000000 --test-output-size-failed 1000000
 

@@ -6,8 +6,9 @@
  * core computed (soak/export.h) and apply the pore-filling schedule.
  *
  * Subset rules: float and int only, no pointers in OSL (SOAK_ARR), no
- * library calls, loops with "i += 1", ternaries allowed. Define SOAK_OSL
- * before including it in a shader. */
+ * library calls but sqrt (C includers include <math.h> first), loops with
+ * "i += 1", ternaries allowed. Define SOAK_OSL before including it in a
+ * shader. */
 #ifndef SOAK_WET_MATH_H
 #define SOAK_WET_MATH_H
 
@@ -42,6 +43,24 @@ SOAK_FN soak_delivered(float wetness, float time, float t0, float t_fill)
 SOAK_FN soak_remaining(float wetness, float time, float t0, float t_fill)
 {
     return soak_clamp01(wetness) - soak_delivered(wetness, time, t0, t_fill);
+}
+
+/* Unpolarised Fresnel reflectance of a smooth dielectric interface, cos_i
+ * the cosine of incidence, eta = n_transmitted / n_incident (Born & Wolf,
+ * sec. 1.5; the core's soak_fresnel_dielectric). The shaders weight the
+ * liquid's mirror with it: Cycles' reflection() closure is a perfect mirror
+ * with no Fresnel term of its own (kernel/osl/closures_setup.h), in 3.x and
+ * 4.x alike. */
+SOAK_FN soak_fresnel(float cos_i, float eta)
+{
+    if (eta == 1.0) return 0.0;
+    float c = soak_clamp01(cos_i);
+    float s2 = (1.0 - c * c) / (eta * eta);
+    if (s2 >= 1.0) return 1.0;
+    float ct = sqrt(1.0 - s2);
+    float rs = (c - eta * ct) / (c + eta * ct);
+    float rp = (eta * c - ct) / (eta * c + ct);
+    return 0.5 * (rs * rs + rp * rp);
 }
 
 /* Index i of the cell [x[off+i], x[off+i+1]] holding v among n >= 2

@@ -5,12 +5,15 @@
  *    transmittance = soak_wetness_eval / soak_sheet_transmittance within the
  *    export's knot tolerance (plus float rounding);
  *  - the base-colour lookup = soak_wet_params_for_base within the base
- *    tolerance, at points between the nodes. */
+ *    tolerance, at points between the nodes;
+ *  - the Fresnel weight of the liquid's mirror = soak_fresnel_dielectric
+ *    (both directions, total internal reflection, no interface). */
 #include <math.h>
 #include <stdio.h>
 
 #include "check.h"
 #include "export_osl_tables.h"
+#include "soak/fresnel.h"
 #include "soak/sheet.h"
 #include "soak_wet_math.h"
 
@@ -34,6 +37,24 @@ static void test_schedule(const soak_preset *p, const soak_liquid *l)
         worst = fmax(worst, fabs(dry - (in.wetness - w.liquid)));
     }
     check_close("soak_delivered / soak_remaining = the core's delivered liquid", worst, 0.0, FLOAT_EPS);
+}
+
+static void test_fresnel(void)
+{
+    const double etas[] = {1.0 / 1.5, 1.0 / 1.333, 1.0, 1.333, 1.34, 1.5, 2.5};
+    double worst = 0.0;
+    soak_status st = SOAK_OK;
+    for (size_t e = 0; e < sizeof etas / sizeof etas[0]; ++e) {
+        for (int i = 0; i <= 400; ++i) {
+            double c = i / 400.0, R;
+            if ((st = soak_fresnel_dielectric(c, etas[e], &R, NULL)) != SOAK_OK) break;
+            worst = fmax(worst, fabs(soak_fresnel((float)c, (float)etas[e]) - R));
+        }
+    }
+    check_status("core Fresnel", st, SOAK_OK);
+    check_close("soak_fresnel = soak_fresnel_dielectric (401 angles x 7 indices)", worst, 0.0, FLOAT_EPS);
+    /* Identity: water's normal reflectance ((n-1)/(n+1))^2 = 0.0203732 */
+    check_close("soak_fresnel at normal incidence, water", soak_fresnel(1.0f, 1.333f), 0.0203732, 1e-6);
 }
 
 static void test_tables(const soak_preset_db *db, const soak_osl_tables *t)
@@ -101,6 +122,7 @@ int main(void)
         check_true("one table per preset and liquid",
                    t.k_off.n == soak_presets_count(db) * soak_presets_liquid_count(db) && t.bg_off.n == 3 * t.k_off.n);
         test_schedule(soak_presets_at(db, 0), soak_presets_liquid_at(db, 0));
+        test_fresnel();
         test_tables(db, &t);
         soak_osl_tables_free(&t);
     }

@@ -72,7 +72,7 @@ if unshare -rm true 2>/dev/null; then
     grep -q "No space left" "$SOAK_TMP/tmpfs.err" && ok "tmpfs: error says No space left" || bad "tmpfs: $(cat "$SOAK_TMP/tmpfs.err")"
     [ "$(cat "$SOAK_TMP/tmpfs.ls")" = "small.png" ] && ok "tmpfs: no temporary left" || bad "tmpfs holds: $(cat "$SOAK_TMP/tmpfs.ls")"
 else
-    echo "skip real tmpfs check: no mount namespace here (the file size limit above covers it)"
+    skip "no mount namespace here (the file size limit above covers it)" "real tmpfs check"
 fi
 
 # Without /proc (no anonymous temporaries) the named-temporary fallback
@@ -148,7 +148,7 @@ if "$SOAK" "${VOL[@]}" --seed 1 --format vdb,grid -o "$D/v" >/dev/null 2>&1; the
     same "$D/v.json" "$SOAK_TMP/good.json" "volume: previous v.json kept"
     only v.json v.vdb
 else
-    echo "skip volume vdb,grid: no OpenVDB in this build"
+    skip "no OpenVDB in this build" "volume vdb,grid"
 fi
 
 # ---- 3. results lost on stdout fail the command ----
