@@ -20,13 +20,15 @@ CONST='{"type": "constant", "radiance": 1}'
 
 # reproducer name -> the specific reason expected on stderr
 declare -A WHY=(
-    [off_8byte_triangulate_abort]="crashed on this file \(signal 6"
-    [off_face_count_abort]="crashed on this file \(signal 6"
+    [off_8byte_triangulate_abort]="crashed on this file \((signal 6|exit status)"
+    [off_face_count_abort]="crashed on this file \((signal 6|exit status)"
     [ply_no_end_header_hang]="did not finish within 2 s"
     [obj_nan_vertex]="vertex 3 of mesh 1 has a non-finite coordinate \(nan"
     [obj_inf_vertex]="non-finite coordinate \(inf"
     [stl_truncated_facet]="cannot read mesh"
     [stl_binary_short]="cannot read mesh"
+    [off_fuzz_segv]="crashed on this file \((signal 11|exit status)"
+    [stl_fuzz_segv]="cannot read mesh \(Mesh with invalid primitive type"
 )
 exts=(obj ply stl off gltf glb)
 for f in "$R"/mesh/*; do

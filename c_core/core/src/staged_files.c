@@ -165,7 +165,7 @@ soak_status soak_staged_add(soak_staged *s, const char *dst, const char **tmp_ou
     soak_staged_file *f = &s->files[s->count];
     memset(f, 0, sizeof *f);
     f->dst = real;
-    f->fd = anonymous_file(real, f->path, sizeof f->path);
+    f->fd = anonymous_file(real, f->proc, sizeof f->proc);
     if (f->fd < 0) {
         f->named = named_temp(real, s->count);
         if (!f->named) {
@@ -173,17 +173,15 @@ soak_status soak_staged_add(soak_staged *s, const char *dst, const char **tmp_ou
             return SOAK_ERR_NOMEM;
         }
         f->fd = open(f->named, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (f->fd < 0 || strlen(f->named) >= sizeof f->path) {
-            set_err(err, errlen, "%s: cannot create a temporary file: %s", dst, strerror(f->fd < 0 ? errno : ENAMETOOLONG));
-            if (f->fd >= 0) close(f->fd), unlink(f->named);
+        if (f->fd < 0) {
+            set_err(err, errlen, "%s: cannot create a temporary file: %s", dst, strerror(errno));
             free(f->named);
             free(real);
             return SOAK_ERR_IO;
         }
-        snprintf(f->path, sizeof f->path, "%s", f->named);
     }
     s->count++;
-    *tmp_out = f->path;
+    *tmp_out = f->named ? f->named : f->proc;
     return SOAK_OK;
 }
 
@@ -244,7 +242,7 @@ static soak_status publish(soak_staged_file *f, int index, char *err, size_t err
     if (!f->named) {
         char *name = named_temp(f->dst, index);
         if (!name) return SOAK_ERR_NOMEM;
-        if (linkat(AT_FDCWD, f->path, AT_FDCWD, name, AT_SYMLINK_FOLLOW) != 0) {
+        if (linkat(AT_FDCWD, f->proc, AT_FDCWD, name, AT_SYMLINK_FOLLOW) != 0) {
             set_err(err, errlen, "%s: cannot name the finished file: %s", f->dst, strerror(errno));
             free(name);
             return SOAK_ERR_IO;

@@ -16,7 +16,10 @@ static const soak_export_target targets[] = {
      soak_export_write_povray},
     {"blender", "data shipped inside the Blender add-on (blender_addon/soak/)", "soak_data.json",
      soak_export_write_blender},
-    {"osl", "OSL shader math for Cycles (osl/)", "soak_wet.osl", soak_export_write_osl},
+    {"osl", "OSL wet-surface shader for Cycles 3.x/4.x (osl/soak_wet_surface.osl)", "soak_wet_surface.osl",
+     soak_export_write_osl},
+    {"osl-wetmap", "OSL wet-map / drying shader (osl/soak_wetmap.osl)", "soak_wetmap.osl",
+     soak_export_write_osl_wetmap},
 };
 
 const soak_export_target *soak_export_targets(int *count)

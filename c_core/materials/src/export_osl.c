@@ -1,12 +1,318 @@
-/* soak export --target osl: not written yet (front-end issue). */
-#include <stdio.h>
+/* soak export --target osl | osl-wetmap: self-contained OSL shaders for
+ * Cycles (osl/README.md). The shaders carry the core's tables as constant
+ * arrays and evaluate them with osl/soak_wet_math.h, inlined from the one
+ * copy the C tests compile (soak_wet_math_text.h is generated from it). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
 
-#include "soak/export.h"
+#include "export_osl_tables.h"
+#include "soak/sheet.h"
+#include "soak_wet_math_text.h"
+
+/* ---- growable lists ------------------------------------------------------ */
+
+static int fl_push(soak_float_list *l, double x)
+{
+    if (l->n == l->cap) {
+        int cap = l->cap ? 2 * l->cap : 256;
+        float *v = realloc(l->v, (size_t)cap * sizeof *v);
+        if (!v) return 0;
+        l->v = v;
+        l->cap = cap;
+    }
+    l->v[l->n++] = (float)x;
+    return 1;
+}
+
+static int il_push(soak_int_list *l, int x)
+{
+    if (l->n == l->cap) {
+        int cap = l->cap ? 2 * l->cap : 64;
+        int *v = realloc(l->v, (size_t)cap * sizeof *v);
+        if (!v) return 0;
+        l->v = v;
+        l->cap = cap;
+    }
+    l->v[l->n++] = x;
+    return 1;
+}
+
+static int fl_rgb(soak_float_list *l, soak_rgb c) { return fl_push(l, c.r) && fl_push(l, c.g) && fl_push(l, c.b); }
+
+void soak_osl_tables_free(soak_osl_tables *t)
+{
+    if (!t) return;
+    soak_float_list *f[] = {&t->kw, &t->ka, &t->kc, &t->kr, &t->kt, &t->ba, &t->bw, &t->bg};
+    soak_int_list *i[] = {&t->kind, &t->k_off, &t->k_n, &t->ba_off, &t->ba_n, &t->bw_off, &t->bw_n, &t->bg_off};
+    for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k) free(f[k]->v);
+    for (size_t k = 0; k < sizeof i / sizeof i[0]; ++k) free(i[k]->v);
+    memset(t, 0, sizeof *t);
+}
+
+/* ---- tables ---------------------------------------------------------------- */
+
+static soak_status add_knots(soak_osl_tables *t, const soak_preset *p, const soak_liquid *l)
+{
+    double knots[SOAK_EXPORT_KNOTS_MAX];
+    int n = 0;
+    soak_status st = soak_export_knots(p, l, -1.0, knots, SOAK_EXPORT_KNOTS_MAX, &n);
+    if (st != SOAK_OK) return st;
+    if (!il_push(&t->k_off, t->kw.n) || !il_push(&t->k_n, n)) return SOAK_ERR_NOMEM;
+    for (int i = 0; i < n; ++i) {
+        soak_wet_input in = soak_wet_input_steady(p, knots[i]);
+        soak_wet_params w;
+        soak_rgb sheet = {0, 0, 0};
+        st = soak_wetness_eval(p, l, &in, &w);
+        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, &sheet);
+        if (st != SOAK_OK) return st;
+        double interface = p->kind == SOAK_KIND_CONDUCTOR
+                               ? w.film_coverage
+                               : w.film_coverage + (1.0 - w.film_coverage) * w.water_specular_weight;
+        if (!fl_push(&t->kw, knots[i]) || !fl_rgb(&t->ka, w.albedo) || !fl_push(&t->kc, interface) ||
+            !fl_push(&t->kr, sqrt(w.ggx_alpha)) || !fl_rgb(&t->kt, sheet))
+            return SOAK_ERR_NOMEM;
+    }
+    return SOAK_OK;
+}
+
+static soak_status add_base(soak_osl_tables *t, const soak_preset *p, const soak_liquid *l)
+{
+    double a[SOAK_EXPORT_KNOTS_MAX], w[SOAK_EXPORT_KNOTS_MAX];
+    int na = 0, nw = 0;
+    soak_status st = soak_export_base_nodes(p, l, a, SOAK_EXPORT_KNOTS_MAX, &na, w, SOAK_EXPORT_KNOTS_MAX, &nw);
+    if (st != SOAK_OK) return st;
+    if (!il_push(&t->ba_off, t->ba.n) || !il_push(&t->ba_n, na) || !il_push(&t->bw_off, t->bw.n) ||
+        !il_push(&t->bw_n, nw))
+        return SOAK_ERR_NOMEM;
+    for (int i = 0; i < na; ++i)
+        if (!fl_push(&t->ba, a[i])) return SOAK_ERR_NOMEM;
+    for (int i = 0; i < nw; ++i)
+        if (!fl_push(&t->bw, w[i])) return SOAK_ERR_NOMEM;
+    double *grid = malloc((size_t)na * (size_t)nw * 3 * sizeof *grid);
+    if (!grid) return SOAK_ERR_NOMEM;
+    for (int iw = 0; st == SOAK_OK && iw < nw; ++iw) {
+        soak_wet_input in = soak_wet_input_steady(p, w[iw]);
+        for (int ia = 0; st == SOAK_OK && ia < na; ++ia) {
+            soak_wet_params o;
+            st = soak_wet_params_for_base(p, l, &in, (soak_rgb){a[ia], a[ia], a[ia]}, &o);
+            for (int c = 0; st == SOAK_OK && c < 3; ++c) grid[((size_t)c * nw + iw) * na + ia] = soak_rgb_at(o.albedo, c);
+        }
+    }
+    for (int c = 0; st == SOAK_OK && c < 3; ++c) {
+        if (!il_push(&t->bg_off, t->bg.n)) st = SOAK_ERR_NOMEM;
+        for (int i = 0; st == SOAK_OK && i < na * nw; ++i)
+            if (!fl_push(&t->bg, grid[(size_t)c * nw * na + i])) st = SOAK_ERR_NOMEM;
+    }
+    free(grid);
+    return st;
+}
+
+soak_status soak_osl_tables_build(const soak_preset_db *db, soak_osl_tables *t)
+{
+    if (!db || !t) return SOAK_ERR_NULL;
+    memset(t, 0, sizeof *t);
+    t->n_presets = soak_presets_count(db);
+    t->n_liquids = soak_presets_liquid_count(db);
+    soak_status st = SOAK_OK;
+    for (int i = 0; st == SOAK_OK && i < t->n_presets; ++i) {
+        const soak_preset *p = soak_presets_at(db, i);
+        int kind = p->kind == SOAK_KIND_CONDUCTOR ? 1 : (p->kind == SOAK_KIND_THIN_SHEET ? 2 : 0);
+        if (!il_push(&t->kind, kind)) st = SOAK_ERR_NOMEM;
+        for (int j = 0; st == SOAK_OK && j < t->n_liquids; ++j) {
+            const soak_liquid *l = soak_presets_liquid_at(db, j);
+            st = add_knots(t, p, l);
+            if (st == SOAK_OK) st = add_base(t, p, l);
+        }
+    }
+    if (st != SOAK_OK) soak_osl_tables_free(t);
+    return st;
+}
+
+/* ---- writing ---------------------------------------------------------------- */
+
+static void put_floats(FILE *out, const char *name, const soak_float_list *l)
+{
+    fprintf(out, "    float %s[%d] = {", name, l->n);
+    for (int i = 0; i < l->n; ++i) fprintf(out, "%s%.7g", i % 8 ? ", " : (i ? ",\n        " : "\n        "), l->v[i]);
+    fprintf(out, "};\n");
+}
+
+static void put_ints(FILE *out, const char *name, const soak_int_list *l)
+{
+    fprintf(out, "    int %s[%d] = {", name, l->n);
+    for (int i = 0; i < l->n; ++i) fprintf(out, "%s%d", i ? ", " : "", l->v[i]);
+    fprintf(out, "};\n");
+}
+
+static void put_header(FILE *out, const soak_export_header *h, const char *what)
+{
+    fprintf(out,
+            "// %s\n"
+            "// GENERATED by `soak export` (%s, format %d) from %s (FNV-1a %s): do not edit;\n"
+            "// regenerate with the command in osl/README.md. Self-contained (no #include):\n"
+            "// Blender compiles Internal text blocks from a temporary folder.\n\n"
+            "#define SOAK_OSL 1\n",
+            what, h->generator, h->format_version, h->materials_file, h->materials_hash);
+    fputs(SOAK_WET_MATH_TEXT, out);
+    fputc('\n', out);
+}
+
+static void put_name_options(FILE *out, const soak_preset_db *db, int liquids)
+{
+    int n = liquids ? soak_presets_liquid_count(db) : soak_presets_count(db);
+    for (int i = 0; i < n; ++i)
+        fprintf(out, "%s%s", i ? "|" : "", liquids ? soak_presets_liquid_at(db, i)->name : soak_presets_at(db, i)->name);
+}
+
+static void put_name_lookup(FILE *out, const soak_preset_db *db, int liquids, const char *param, const char *var)
+{
+    int n = liquids ? soak_presets_liquid_count(db) : soak_presets_count(db);
+    fprintf(out, "    int %s = -1;\n", var);
+    for (int i = 0; i < n; ++i)
+        fprintf(out, "    if (%s == \"%s\") %s = %d;\n", param,
+                liquids ? soak_presets_liquid_at(db, i)->name : soak_presets_at(db, i)->name, var, i);
+    fprintf(out, "    if (%s < 0) {\n        warning(\"soak_wet_surface: unknown %s \\\"%%s\\\", using the first\", %s);\n"
+                 "        %s = 0;\n    }\n",
+            var, param, param, var);
+}
+
+static void put_liquid_iors(FILE *out, const soak_preset_db *db)
+{
+    soak_float_list l = {0};
+    for (int i = 0; i < soak_presets_liquid_count(db); ++i) fl_push(&l, soak_presets_liquid_at(db, i)->ior);
+    put_floats(out, "LIQUID_IOR", &l);
+    free(l.v);
+}
 
 soak_status soak_export_write_osl(const soak_preset_db *db, FILE *out, char *err, size_t errlen)
 {
-    (void)db;
-    (void)out;
-    snprintf(err, errlen, "target 'osl' is not implemented yet");
-    return SOAK_ERR_UNSUPPORTED;
+    soak_export_header h;
+    soak_status st = soak_export_header_make(db, &h);
+    soak_osl_tables t;
+    if (st == SOAK_OK) st = soak_osl_tables_build(db, &t);
+    if (st != SOAK_OK) {
+        snprintf(err, errlen, "building the OSL tables failed: %s", soak_status_str(st));
+        return st;
+    }
+    put_header(out, &h, "soak_wet_surface.osl: a wet surface for Cycles (Blender 3.x and 4.x).");
+    fprintf(out,
+            "// Inputs: a preset (its class: porosity, phase change, film) and liquid,\n"
+            "// the wetness and the pore-filling schedule (Time, T0, FillTime: see\n"
+            "// soak_delivered), an optional base colour of the user's own texture\n"
+            "// (UseBaseColor 1: the core's wetness function for any colour), a puddle\n"
+            "// level that floods the surface with a film. Outputs: the closure and the\n"
+            "// parameters it used. Closures used: diffuse, translucent, reflection and\n"
+            "// microfacet from stdosl.h, which Cycles implements in 3.x and 4.x alike\n"
+            "// (reflection() without a Fresnel term: soak_fresnel weights it).\n\n"
+            "shader soak_wet_surface(\n"
+            "    string Preset = \"%s\" [[ string widget = \"popup\", string options = \"",
+            soak_presets_at(db, 0)->name);
+    put_name_options(out, db, 0);
+    fprintf(out, "\" ]],\n    string Liquid = \"water\" [[ string widget = \"popup\", string options = \"");
+    put_name_options(out, db, 1);
+    fprintf(out,
+            "\" ]],\n"
+            "    float Wetness = 1.0 [[ float min = 0, float max = 1 ]],\n"
+            "    float Time = 1.0,\n"
+            "    float T0 = 0.0,\n"
+            "    float FillTime = 0.0 [[ float min = 0 ]],\n"
+            "    int UseBaseColor = 0 [[ string widget = \"checkBox\" ]],\n"
+            "    color BaseColor = color(0.5),\n"
+            "    float Puddle = 0.0 [[ float min = 0, float max = 1 ]],\n"
+            "    normal Normal = N,\n"
+            "    output closure color BSDF = 0,\n"
+            "    output color WetColor = 0,\n"
+            "    output float Coverage = 0,\n"
+            "    output float Roughness = 0)\n"
+            "{\n");
+    put_ints(out, "KIND", &t.kind);
+    put_floats(out, "KW", &t.kw);
+    put_floats(out, "KA", &t.ka);
+    put_floats(out, "KC", &t.kc);
+    put_floats(out, "KR", &t.kr);
+    put_floats(out, "KT", &t.kt);
+    put_ints(out, "K_OFF", &t.k_off);
+    put_ints(out, "K_N", &t.k_n);
+    put_floats(out, "BA", &t.ba);
+    put_floats(out, "BW", &t.bw);
+    put_floats(out, "BG", &t.bg);
+    put_ints(out, "BA_OFF", &t.ba_off);
+    put_ints(out, "BA_N", &t.ba_n);
+    put_ints(out, "BW_OFF", &t.bw_off);
+    put_ints(out, "BW_N", &t.bw_n);
+    put_ints(out, "BG_OFF", &t.bg_off);
+    put_liquid_iors(out, db);
+    put_name_lookup(out, db, 0, "Preset", "pi");
+    put_name_lookup(out, db, 1, "Liquid", "li");
+    fprintf(out,
+            "    int k = pi * %d + li;\n"
+            "    // a puddle floods the surface: at least that much liquid, up to a full film\n"
+            "    float L = max(soak_delivered(Wetness, Time, T0, FillTime), soak_clamp01(Puddle));\n"
+            "    for (int c = 0; c < 3; c += 1) {\n"
+            "        if (UseBaseColor)\n"
+            "            WetColor[c] = soak_base_lookup(BA, BA_OFF[k], BA_N[k], BW, BW_OFF[k], BW_N[k], BG, BG_OFF[3 * k + c],\n"
+            "                                           soak_clamp01(BaseColor[c]), L);\n"
+            "        else\n"
+            "            WetColor[c] = soak_interp(KW, K_OFF[k], K_N[k], L, KA, 3 * K_OFF[k] + c, 3);\n"
+            "    }\n"
+            "    Coverage = soak_interp(KW, K_OFF[k], K_N[k], L, KC, K_OFF[k], 1);\n"
+            "    Roughness = soak_interp(KW, K_OFF[k], K_N[k], L, KR, K_OFF[k], 1);\n"
+            "    float alpha = max(Roughness * Roughness, 1e-4);\n"
+            "    // Cycles' reflection() is a perfect mirror without Fresnel: weight it here\n"
+            "    float mirror = Coverage * soak_fresnel(abs(dot(normalize(I), normalize(Normal))), LIQUID_IOR[li]);\n"
+            "    if (KIND[pi] == 1) {\n"
+            "        // metal under the film: WetColor is its normal reflectance through the liquid\n"
+            "        BSDF = WetColor * microfacet(\"ggx\", Normal, alpha, 0.0, 0) + mirror * reflection(Normal);\n"
+            "    } else {\n"
+            "        // the diffuse albedo under the liquid interface (porous darkening and the\n"
+            "        // interface's total internal reflection are in WetColor), the interface's\n"
+            "        // Fresnel mirror over its area\n"
+            "        BSDF = WetColor * diffuse(Normal) + mirror * reflection(Normal);\n"
+            "        if (KIND[pi] == 2) {\n"
+            "            color T = 0;\n"
+            "            for (int c = 0; c < 3; c += 1) T[c] = soak_interp(KW, K_OFF[k], K_N[k], L, KT, 3 * K_OFF[k] + c, 3);\n"
+            "            BSDF += T * translucent(Normal);\n"
+            "        }\n"
+            "    }\n"
+            "}\n",
+            t.n_liquids);
+    soak_osl_tables_free(&t);
+    return ferror(out) ? SOAK_ERR_IO : SOAK_OK;
+}
+
+soak_status soak_export_write_osl_wetmap(const soak_preset_db *db, FILE *out, char *err, size_t errlen)
+{
+    soak_export_header h;
+    soak_status st = soak_export_header_make(db, &h);
+    if (st != SOAK_OK) {
+        snprintf(err, errlen, "%s: cannot read the preset file to hash it", soak_presets_path(db));
+        return st;
+    }
+    put_header(out, &h, "soak_wetmap.osl: wetness from a wet map and the pore schedule (Blender 3.x and 4.x).");
+    fputs("// WetMap: a start-time map from `soak bake drying --start-map` (value 1 - t0 on\n"
+          "// wet texels, 0 where dry), converted to .tx by maketx (or written as .tx by\n"
+          "// soak bake). Drying 1: the liquid leaves over FillTime from t0 (the baker's\n"
+          "// --mode schedule); Drying 0: it arrives over FillTime from t0. Plug Wetness\n"
+          "// into soak_wet_surface's Wetness (with its Time = 1, FillTime = 0).\n\n"
+          "shader soak_wetmap(\n"
+          "    string WetMap = \"\",\n"
+          "    int Drying = 1 [[ string widget = \"checkBox\" ]],\n"
+          "    float Time = 0.0,\n"
+          "    float FillTime = 0.2 [[ float min = 0 ]],\n"
+          "    float Amount = 1.0 [[ float min = 0, float max = 1 ]],\n"
+          "    point UV = point(u, v, 0),\n"
+          "    output float Wetness = 0)\n"
+          "{\n"
+          "    float start = 1.0;\n"
+          "    if (WetMap != \"\") start = texture(WetMap, UV[0], 1.0 - UV[1]);\n"
+          "    if (start <= 0.0) {\n"
+          "        Wetness = 0.0;\n"
+          "    } else {\n"
+          "        float t0 = 1.0 - soak_clamp01(start);\n"
+          "        Wetness = Drying ? soak_remaining(Amount, Time, t0, FillTime) : soak_delivered(Amount, Time, t0, FillTime);\n"
+          "    }\n"
+          "}\n",
+          out);
+    return ferror(out) ? SOAK_ERR_IO : SOAK_OK;
 }

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "soak/fresnel.h"
+#include "soak/sheet.h"
 
 #define PROBES 7            /* interior test points per knot interval */
 #define BASE_PROBES 3       /* per base-table interval (its checks run on a grid) */
@@ -21,9 +22,16 @@ enum { MAX_Q = 40 };
 
 /* Quantities in [0, ~1] compared absolutely; coefficients (1/m, thousands)
  * relative to their magnitude, as export.h states. */
-static int quantities(const soak_wet_params *p, double *q)
+static int quantities(const soak_wet_params *p, double sheet_mm, double *q)
 {
     int n = 0;
+    if (sheet_mm > 0.0) {
+        /* thin-sheet transmittance spans decades (1e-3 .. 1): followed in
+         * log, 0.1 ln T, so the absolute tolerance is ~2 % relative */
+        soak_rgb T;
+        if (soak_sheet_transmittance(p, sheet_mm, &T) == SOAK_OK)
+            for (int c = 0; c < 3; ++c) q[n++] = 0.1 * log(fmax(soak_rgb_at(T, c), 1e-6));
+    }
     const soak_rgb *rgb[] = {&p->albedo, &p->albedo_total, &p->albedo_subsurface, &p->albedo_film, &p->omega};
     for (size_t k = 0; k < sizeof rgb / sizeof rgb[0]; ++k)
         for (int c = 0; c < 3; ++c) q[n++] = soak_rgb_at(*rgb[k], c);
@@ -59,7 +67,7 @@ static soak_status eval_at(const knot_ctx *k, double w, double *q, int *nq)
     soak_wet_params p;
     soak_status st = soak_wetness_eval(k->preset, k->liquid, &in, &p);
     if (st != SOAK_OK) return st;
-    *nq = quantities(&p, q);
+    *nq = quantities(&p, k->preset->kind == SOAK_KIND_THIN_SHEET ? k->preset->thickness_mm : 0.0, q);
     return SOAK_OK;
 }
 

@@ -276,9 +276,8 @@ soak_status soak_porous_sample(const soak_porous_params *p, double fill, soak_ve
         lobe_probs(p, fill, prob);
         double phi = 2.0 * SOAK_PI * u2;
         if (u_lobe < prob[0]) {
-            double r = sqrt(u1), z = sqrt(fmax(0.0, 1.0 - u1));
-            b = soak_v3(r * cos(phi), r * sin(phi), z);
-            ok = z > 0.0;
+            b = soak_cosine_hemisphere(u1, u2);
+            ok = b.z > 0.0;
         } else {
             double n = u_lobe < prob[0] + prob[1] ? p->spec_power : p->water_power;
             double ch = pow(u1, 1.0 / (n + 1.0)), sh = sqrt(fmax(0.0, 1.0 - ch * ch));

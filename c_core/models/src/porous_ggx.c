@@ -317,9 +317,8 @@ soak_status soak_porous_ggx_sample(const soak_porous_ggx *c, double fill, soak_v
                 ok = ch > 0.0 && b.z > 0.0;
             }
         } else {
-            double r = sqrt(u1), phi = 2.0 * SOAK_PI * u2, z = sqrt(fmax(0.0, 1.0 - u1));
-            b = soak_v3(r * cos(phi), r * sin(phi), z);
-            ok = z > 0.0;
+            b = soak_cosine_hemisphere(u1, u2);
+            ok = b.z > 0.0;
         }
     }
     double fv = ok ? eval_raw(c, fill, a, b) : 0.0, pv = ok ? pdf_raw(c, fill, a, b) : 0.0;

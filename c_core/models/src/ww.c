@@ -194,8 +194,7 @@ soak_status soak_ww_sample(const soak_ww *m, soak_vec3 wo, double u0, double u1,
         if (s != SOAK_OK) return s;
         wi_w = soak_v3_sub(soak_v3_scale(h, 2.0 * soak_v3_dot(wo_w, h)), wo_w);
     } else { /* cosine-weighted hemisphere */
-        double r = sqrt(u1), phi = 2.0 * SOAK_PI * u2;
-        wi_w = soak_v3(r * cos(phi), r * sin(phi), sqrt(fmax(0.0, 1.0 - u1)));
+        wi_w = soak_cosine_hemisphere(u1, u2);
     }
 
     *is_delta = 0;

@@ -131,7 +131,9 @@ static void child_fate(pid_t pid, int timed_out, double limit, const char *path,
         snprintf(err, errlen, "%s: the mesh reader crashed on this file (signal %d, %s): malformed file", path,
                  WTERMSIG(ws), strsignal(WTERMSIG(ws)));
     else
-        snprintf(err, errlen, "%s: the mesh reader failed (exit status %d)", path, WIFEXITED(ws) ? WEXITSTATUS(ws) : -1);
+        /* A sanitizer build turns the crash into an exit status. */
+        snprintf(err, errlen, "%s: the mesh reader crashed on this file (exit status %d): malformed file", path,
+                 WIFEXITED(ws) ? WEXITSTATUS(ws) : -1);
 }
 
 static soak_status receive(int fd, pid_t pid, double deadline, double limit, const char *path, soak_mesh *out,

@@ -131,17 +131,18 @@ static int raw_vertices_finite(const struct aiScene *sc, const char *path, char 
 soak_status soak_mesh_import(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen)
 {
     if (!path || !mesh) return SOAK_ERR_NULL;
-    /* Coordinates are checked before post-processing: joining identical
-     * vertices merges a NaN vertex into another one (NaN compares equal in
-     * its spatial sort), leaving a silently degenerate triangle. */
+    /* Coordinates are checked on a first import without post-processing:
+     * joining identical vertices merges a NaN vertex into another one (NaN
+     * compares equal in its spatial sort), leaving a silently degenerate
+     * triangle. The file is then read again with post-processing in one call
+     * (aiApplyPostProcessing on the first import crashes Assimp 5.2 when a
+     * step fails: found by tests/fuzz, reproducers/mesh/stl_fuzz_segv). */
     const struct aiScene *sc = aiImportFile(path, 0);
-    if (sc && sc->mRootNode && !raw_vertices_finite(sc, path, err, errlen)) {
-        aiReleaseImport(sc);
-        return SOAK_ERR_PARSE;
-    }
-    if (sc && sc->mRootNode)
-        sc = aiApplyPostProcessing(sc, aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                                           aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
+    int finite = !sc || !sc->mRootNode || raw_vertices_finite(sc, path, err, errlen);
+    if (sc) aiReleaseImport(sc);
+    if (!finite) return SOAK_ERR_PARSE;
+    sc = aiImportFile(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
+                                aiProcess_SortByPType);
     if (!sc || !sc->mRootNode) {
         set_err(err, errlen, "%s: cannot read mesh (%s)", path, aiGetErrorString());
         if (sc) aiReleaseImport(sc);

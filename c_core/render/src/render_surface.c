@@ -66,8 +66,7 @@ static int base_sample(rt_thread *t, const base_model *b, soak_vec3 wo, soak_vec
     if (b->type == SOAK_BASE_LAMBERT) {
         double u1, u2;
         rt_rand2(t, &u1, &u2);
-        double r = sqrt(u1), phi = 2 * SOAK_PI * u2;
-        *wi = soak_v3(r * cos(phi), r * sin(phi), sqrt(fmax(0.0, 1 - u1)));
+        *wi = soak_cosine_hemisphere(u1, u2);
         *pdf = wi->z * SOAK_INV_PI;
         *weight = b->albedo;
         return *pdf > 0;
@@ -292,8 +291,7 @@ static void film_lambert(rt_thread *t, const soak_hit *hit, const rt_film *fm, s
     }
     double u1, u2;
     rt_rand2(t, &u1, &u2);
-    double r = sqrt(u1), phi = 2 * SOAK_PI * u2;
-    soak_vec3 wi = soak_v3(r * cos(phi), r * sin(phi), sqrt(fmax(0.0, 1 - u1)));
+    soak_vec3 wi = soak_cosine_hemisphere(u1, u2);
     double pdf = p_diffuse * wi.z * SOAK_INV_PI;
     soak_rgb fd = film_lambert_eval(fm, albedo, wi, wl);
     if (!(pdf > 0) || !(rgb_max(fd) > 0)) {

@@ -457,9 +457,7 @@ int soak_slab_refract_out(soak_vec3 dir, double ior, soak_vec3 *out)
 static soak_vec3 cosine_up(soak_rng *rng)
 {
     double u1 = soak_rng_uniform(rng), u2 = soak_rng_uniform(rng);
-    double r = sqrt(u1), phi = 2.0 * SOAK_PI * u2;
-    double z = sqrt(1.0 - u1); /* u1 < 1, so z > 0 */
-    return soak_v3(r * cos(phi), r * sin(phi), z);
+    return soak_cosine_hemisphere(u1, u2);
 }
 
 static soak_boundary_event slab_interact(const void *ctx, soak_vec3 *pos, soak_vec3 *dir, soak_rgb *weight,

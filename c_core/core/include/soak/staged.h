@@ -26,7 +26,7 @@ typedef struct soak_staged_file {
     char *dst;   /* final path (a symlink resolved to its target) */
     char *named; /* hidden temporary name, or NULL for an anonymous file */
     int fd;      /* open on the temporary */
-    char path[4096]; /* where writers open the temporary: /proc/self/fd/N or named (PATH_MAX) */
+    char proc[32]; /* /proc/self/fd/N of an anonymous temporary */
 } soak_staged_file;
 
 typedef struct soak_staged {

@@ -70,4 +70,13 @@ static inline void soak_rgb_set(soak_rgb *c, int i, double v)
 #define SOAK_INV_PI 0.31830988618379067154
 #define SOAK_INV_4PI 0.07957747154594766788
 
+/* Cosine-weighted direction about +z from two uniforms in [0,1) (Malley's
+ * method: a uniform disk point lifted to the hemisphere); pdf = z / pi. */
+static inline soak_vec3 soak_cosine_hemisphere(double u1, double u2)
+{
+    double r = sqrt(u1), phi = 2.0 * SOAK_PI * u2;
+    double z = sqrt(1.0 - u1 > 0.0 ? 1.0 - u1 : 0.0);
+    return soak_v3(r * cos(phi), r * sin(phi), z);
+}
+
 #endif

@@ -105,5 +105,6 @@ soak_status soak_export_write_json(const soak_preset_db *db, FILE *out, char *er
 soak_status soak_export_write_povray(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 soak_status soak_export_write_blender(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 soak_status soak_export_write_osl(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
+soak_status soak_export_write_osl_wetmap(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 
 #endif

@@ -1,0 +1,131 @@
+/* The OSL shaders' math (osl/soak_wet_math.h, compiled here as C) on the
+ * tables the shaders carry (export_osl.c) against the core itself:
+ *  - the pore-filling schedule = soak_wetness_eval's delivered liquid;
+ *  - knot lookups of albedo, interface coverage, roughness and sheet
+ *    transmittance = soak_wetness_eval / soak_sheet_transmittance within the
+ *    export's knot tolerance (plus float rounding);
+ *  - the base-colour lookup = soak_wet_params_for_base within the base
+ *    tolerance, at points between the nodes;
+ *  - the Fresnel weight of the liquid's mirror = soak_fresnel_dielectric
+ *    (both directions, total internal reflection, no interface). */
+#include <math.h>
+#include <stdio.h>
+
+#include "check.h"
+#include "export_osl_tables.h"
+#include "soak/fresnel.h"
+#include "soak/sheet.h"
+#include "soak_wet_math.h"
+
+#define FLOAT_EPS 1e-5 /* the shader's tables are single precision */
+
+static void test_schedule(const soak_preset *p, const soak_liquid *l)
+{
+    const double cases[][4] = {{1.0, 0.5, 0.2, 0.4}, {0.7, 0.1, 0.2, 0.4}, {0.7, 0.9, 0.2, 0.4}, {0.3, 0.2, 0.2, 0.0},
+                               {0.3, 0.19, 0.2, 0.0}, {1.0, -3.0, -5.0, 1.5}, {0.0, 1.0, 0.0, 0.1}};
+    double worst = 0.0;
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        soak_wet_input in = soak_wet_input_steady(p, cases[i][0]);
+        in.time = cases[i][1];
+        in.t0 = cases[i][2];
+        in.t_fill = cases[i][3];
+        soak_wet_params w;
+        if (!check_status("core schedule", soak_wetness_eval(p, l, &in, &w), SOAK_OK)) return;
+        float got = soak_delivered((float)in.wetness, (float)in.time, (float)in.t0, (float)in.t_fill);
+        worst = fmax(worst, fabs(got - w.liquid));
+        float dry = soak_remaining((float)in.wetness, (float)in.time, (float)in.t0, (float)in.t_fill);
+        worst = fmax(worst, fabs(dry - (in.wetness - w.liquid)));
+    }
+    check_close("soak_delivered / soak_remaining = the core's delivered liquid", worst, 0.0, FLOAT_EPS);
+}
+
+static void test_fresnel(void)
+{
+    const double etas[] = {1.0 / 1.5, 1.0 / 1.333, 1.0, 1.333, 1.34, 1.5, 2.5};
+    double worst = 0.0;
+    soak_status st = SOAK_OK;
+    for (size_t e = 0; e < sizeof etas / sizeof etas[0]; ++e) {
+        for (int i = 0; i <= 400; ++i) {
+            double c = i / 400.0, R;
+            if ((st = soak_fresnel_dielectric(c, etas[e], &R, NULL)) != SOAK_OK) break;
+            worst = fmax(worst, fabs(soak_fresnel((float)c, (float)etas[e]) - R));
+        }
+    }
+    check_status("core Fresnel", st, SOAK_OK);
+    check_close("soak_fresnel = soak_fresnel_dielectric (401 angles x 7 indices)", worst, 0.0, FLOAT_EPS);
+    /* Identity: water's normal reflectance ((n-1)/(n+1))^2 = 0.0203732 */
+    check_close("soak_fresnel at normal incidence, water", soak_fresnel(1.0f, 1.333f), 0.0203732, 1e-6);
+}
+
+static void test_tables(const soak_preset_db *db, const soak_osl_tables *t)
+{
+    double worst_knot = 0.0, worst_base = 0.0, worst_sheet = 0.0;
+    soak_status st = SOAK_OK;
+    for (int pi = 0; pi < t->n_presets; ++pi) {
+        const soak_preset *p = soak_presets_at(db, pi);
+        for (int li = 0; li < t->n_liquids; ++li) {
+            const soak_liquid *l = soak_presets_liquid_at(db, li);
+            int k = pi * t->n_liquids + li;
+            for (int s = 0; s <= 60; ++s) {
+                double L = (s + 0.29) / 60.29;
+                soak_wet_input in = soak_wet_input_steady(p, L);
+                soak_wet_params w;
+                if ((st = soak_wetness_eval(p, l, &in, &w)) != SOAK_OK) break;
+                int off = t->k_off.v[k], n = t->k_n.v[k];
+                for (int c = 0; c < 3; ++c) {
+                    float got = soak_interp(t->kw.v, off, n, (float)L, t->ka.v, 3 * off + c, 3);
+                    worst_knot = fmax(worst_knot, fabs(got - soak_rgb_at(w.albedo, c)));
+                }
+                double iface = p->kind == SOAK_KIND_CONDUCTOR
+                                   ? w.film_coverage
+                                   : w.film_coverage + (1 - w.film_coverage) * w.water_specular_weight;
+                worst_knot = fmax(worst_knot, fabs(soak_interp(t->kw.v, off, n, (float)L, t->kc.v, off, 1) - iface));
+                worst_knot = fmax(worst_knot,
+                                  fabs(soak_interp(t->kw.v, off, n, (float)L, t->kr.v, off, 1) - sqrt(w.ggx_alpha)));
+                if (p->kind == SOAK_KIND_THIN_SHEET) {
+                    soak_rgb T;
+                    if ((st = soak_sheet_transmittance(&w, p->thickness_mm, &T)) != SOAK_OK) break;
+                    for (int c = 0; c < 3; ++c) {
+                        float got = soak_interp(t->kw.v, off, n, (float)L, t->kt.v, 3 * off + c, 3);
+                        worst_sheet = fmax(worst_sheet, fabs(got - soak_rgb_at(T, c)) / fmax(soak_rgb_at(T, c), 1e-3));
+                    }
+                }
+                for (int j = 0; j <= 12; ++j) {
+                    double a = (j + 0.43) / 12.43;
+                    soak_wet_params o;
+                    if ((st = soak_wet_params_for_base(p, l, &in, (soak_rgb){a, a, a}, &o)) != SOAK_OK) break;
+                    for (int c = 0; c < 3; ++c) {
+                        float got = soak_base_lookup(t->ba.v, t->ba_off.v[k], t->ba_n.v[k], t->bw.v, t->bw_off.v[k],
+                                                     t->bw_n.v[k], t->bg.v, t->bg_off.v[3 * k + c], (float)a, (float)L);
+                        worst_base = fmax(worst_base, fabs(got - soak_rgb_at(o.albedo, c)));
+                    }
+                }
+            }
+        }
+    }
+    check_status("core evaluations", st, SOAK_OK);
+    check_close("shader knot lookups (albedo, coverage, roughness) vs the core", worst_knot, 0.0,
+                SOAK_EXPORT_KNOT_TOL + FLOAT_EPS);
+    check_close("shader base-colour lookup vs soak_wet_params_for_base", worst_base, 0.0,
+                SOAK_EXPORT_BASE_TOL + FLOAT_EPS);
+    /* sheet transmittance spans decades (1e-3..1): relative, 5 % */
+    check_close("shader sheet transmittance vs the core (relative)", worst_sheet, 0.0, 0.05);
+}
+
+int main(void)
+{
+    soak_preset_db *db = NULL;
+    char err[512];
+    if (!check_status("load presets", soak_presets_load(NULL, &db, err, sizeof err), SOAK_OK)) return check_finish();
+    soak_osl_tables t;
+    if (check_status("build the shader tables", soak_osl_tables_build(db, &t), SOAK_OK)) {
+        check_true("one table per preset and liquid",
+                   t.k_off.n == soak_presets_count(db) * soak_presets_liquid_count(db) && t.bg_off.n == 3 * t.k_off.n);
+        test_schedule(soak_presets_at(db, 0), soak_presets_liquid_at(db, 0));
+        test_fresnel();
+        test_tables(db, &t);
+        soak_osl_tables_free(&t);
+    }
+    soak_presets_free(db);
+    return check_finish();
+}
