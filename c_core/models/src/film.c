@@ -40,7 +40,6 @@
 #define FILM_N_MAX 3.0
 #define FILM_ALPHA_MAX 1e6
 #define FILM_THICKNESS_MAX 1e3
-#define UNIT_TOL 1e-5
 #define GRADE_LEVELS 10
 
 /* 12-point Gauss-Legendre on [-1,1], positive half. */
@@ -207,11 +206,7 @@ soak_status soak_film_ctx_albedo_diffuse(const soak_film_ctx *ctx, double base_a
     return SOAK_OK;
 }
 
-static int unit_ok(soak_vec3 v)
-{
-    return soak_in_range(v.x, -1.0 - UNIT_TOL, 1.0 + UNIT_TOL) && soak_in_range(v.y, -1.0 - UNIT_TOL, 1.0 + UNIT_TOL) &&
-           soak_in_range(v.z, -1.0 - UNIT_TOL, 1.0 + UNIT_TOL) && fabs(soak_v3_dot(v, v) - 1.0) <= UNIT_TOL;
-}
+static int unit_ok(soak_vec3 v) { return soak_v3_is_unit(v); }
 
 soak_status soak_film_ctx_brdf(const soak_film_ctx *ctx, double base_albedo, soak_vec3 wi, soak_vec3 wo, double *f)
 {

@@ -14,10 +14,8 @@
  * NaN and Inf before the length test); on success *out is renormalised. */
 static inline int model_unit_ok(soak_vec3 v, soak_vec3 *out)
 {
-    if (!soak_in_range(v.x, -2.0, 2.0) || !soak_in_range(v.y, -2.0, 2.0) || !soak_in_range(v.z, -2.0, 2.0))
-        return 0;
+    if (!soak_v3_is_unit(v)) return 0;
     double l2 = soak_v3_dot(v, v);
-    if (!(fabs(l2 - 1.0) <= 2.0 * SOAK_GGX_UNIT_TOL)) return 0;
     *out = soak_v3_scale(v, 1.0 / sqrt(l2));
     return 1;
 }

@@ -27,7 +27,7 @@ void soak_model_params_default(soak_model_params *p)
     p->ks_water = 0.02;
 }
 
-static int unit(soak_vec3 v) { return soak_in_range(soak_v3_dot(v, v), 1.0 - 1e-5, 1.0 + 1e-5); }
+static int unit(soak_vec3 v) { return soak_v3_is_unit(v); }
 
 soak_status soak_model_eval(const soak_model *m, const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo, double *f)
 {

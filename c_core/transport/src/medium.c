@@ -38,11 +38,7 @@ void soak_walk_options_default(soak_walk_options *opt)
     opt->vertex_ctx = NULL;
 }
 
-static int unit_vector(soak_vec3 v)
-{
-    double l2 = soak_v3_dot(v, v);
-    return soak_in_range(l2, 1.0 - 1e-6, 1.0 + 1e-6);
-}
+static int unit_vector(soak_vec3 v) { return soak_v3_is_unit(v); }
 
 static int finite_point(soak_vec3 p) { return soak_is_finite(p.x) && soak_is_finite(p.y) && soak_is_finite(p.z); }
 

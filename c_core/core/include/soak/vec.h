@@ -28,6 +28,17 @@ static inline soak_vec3 soak_v3_cross(soak_vec3 a, soak_vec3 b)
     return soak_v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 static inline double soak_v3_len(soak_vec3 a) { return sqrt(soak_v3_dot(a, a)); }
+/* The one tolerance of every unit-vector check in the library:
+ * | |v|^2 - 1 | <= SOAK_UNIT_TOL (|v| within 5e-6 of 1). Directions computed
+ * in single precision or renormalised after many walk steps pass; a typo or a
+ * NaN/Inf component (caught by the [-2, 2] range first) does not. */
+#define SOAK_UNIT_TOL 1e-5
+static inline int soak_v3_is_unit(soak_vec3 v)
+{
+    if (!(v.x >= -2.0 && v.x <= 2.0 && v.y >= -2.0 && v.y <= 2.0 && v.z >= -2.0 && v.z <= 2.0)) return 0;
+    double l2 = v.x * v.x + v.y * v.y + v.z * v.z;
+    return l2 >= 1.0 - SOAK_UNIT_TOL && l2 <= 1.0 + SOAK_UNIT_TOL;
+}
 static inline soak_vec3 soak_v3_norm(soak_vec3 a)
 {
     double l = soak_v3_len(a);

@@ -32,7 +32,7 @@
 
 #define SOAK_GGX_ALPHA_MIN 1e-4
 #define SOAK_GGX_ALPHA_MAX 1.0
-#define SOAK_GGX_UNIT_TOL 1e-6
+#define SOAK_GGX_UNIT_TOL 5e-6 /* on |v|: soak/vec.h's SOAK_UNIT_TOL on |v|^2 */
 #define SOAK_GGX_K_MAX 1e3
 
 /* Normal distribution D(h), 1/sr, normalised so that the integral of
