@@ -18,7 +18,7 @@ static void usage(FILE *out)
             "--csv prints theta_i,theta_o,phi,f over theta in [0, 89] with --step (default 5).\n\n"
             "parameters (defaults in brackets):\n"
             "  --albedo A [0.5]  --ior N [1.5]  --k K [0, >0 = conductor]  --roughness ALPHA [0.3]\n"
-            "  --film-ior N [1.33]  --absorption 1/m [0.35]  --thickness m [1e-3]\n"
+            "  --film-ior N [1.333]  --absorption 1/m [0.35]  --thickness m [1e-3]\n"
             "  --porosity P [0.3]  --sp S [2]  --fill F [1]  --ks KS [0.05]  --ks-water KW [0.02]\n\n"
             "models:\n");
     for (size_t i = 0; i < n; ++i)

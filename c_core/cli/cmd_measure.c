@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "soak/fresnel.h"
 #include "soak/measure.h"
 #include "soak/preset.h"
 #include "soak/wetness.h"
@@ -27,7 +28,7 @@ static void usage(FILE *out)
             "  --incidence I        normal (default), diffuse, or an angle in degrees [0, 90)\n"
             "  --quantity R|T       reflectance (default) or transmittance (slab only)\n"
             "  --ior N              film / medium index relative to air, [1, 3]\n"
-            "                       (default 1.33 for film, 1 = index-matched otherwise)\n"
+            "                       (default 1.333 for film, 1 = index-matched otherwise)\n"
             "film:\n"
             "  --base-albedo A      albedo of the Lambertian base, [0, 1] (required)\n"
             "  --film-alpha A       absorption coefficient of the liquid, 1/m (default 0)\n"
@@ -268,7 +269,7 @@ static int check_combination(measure_args *a)
             cli_error(CMD, "--base-albedo is required for --config film");
             return 0;
         }
-        if (!a->have_ior) s->ior = 1.33;
+        if (!a->have_ior) s->ior = SOAK_WATER_IOR;
         if (a->have_albedo || a->have_tau || a->have_g || a->have_g1) {
             cli_error(CMD, "--albedo/--tau/--g*: not used by --config film (it has no scattering medium)");
             return 0;

@@ -100,12 +100,12 @@ static soak_status parse_wet(scene_ctx *c, const cJSON *j, const char *path, soa
     if (st != SOAK_OK) return st;
     m->type = SOAK_MAT_WET;
     const cJSON *film = cJSON_GetObjectItemCaseSensitive(j, "film");
-    m->film_ior = 1.33;
+    m->film_ior = SOAK_WATER_IOR;
     m->film_k = 1;
     m->film_coverage = 1;
     if (film) {
         st = sj_keys(c, film, fp, fkeys);
-        if (st == SOAK_OK) st = sj_num(c, film, "ior", fp, 1, 3, 0, 1.33, &m->film_ior);
+        if (st == SOAK_OK) st = sj_num(c, film, "ior", fp, 1, 3, 0, SOAK_WATER_IOR, &m->film_ior);
         if (st == SOAK_OK) st = sj_num(c, film, "k", fp, 0.01, 100, 0, 1, &m->film_k);
         if (st == SOAK_OK) st = sj_num(c, film, "thickness", fp, 0, 1e3, 0, 0, &m->film_thickness);
         if (st == SOAK_OK) st = sj_rgb(c, film, "absorption", fp, 0, 1e9, 0, soak_rgb3(0, 0, 0), &m->film_absorption);
