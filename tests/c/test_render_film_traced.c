@@ -30,6 +30,7 @@
 #include <stdlib.h>
 
 #include "check.h"
+#include "testutil.h"
 #include "render_harness.h"
 #include "soak/film.h"
 #include "soak/ggx.h"
@@ -147,27 +148,6 @@ static double fresnel(double n1, double n2, double ci)
     return 0.5 * (rs * rs + rp * rp);
 }
 
-static void gauss_legendre(int n, double a, double b, double *x, double *w)
-{
-    for (int i = 0; i < n; ++i) {
-        double z = cos(SOAK_PI * (i + 0.75) / (n + 0.5)), dp = 1;
-        for (int it = 0; it < 100; ++it) {
-            double p0 = 1, p1 = z;
-            for (int k = 2; k <= n; ++k) {
-                double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = n * (z * p1 - p0) / (z * z - 1);
-            double dz = p1 / dp;
-            z -= dz;
-            if (fabs(dz) < 1e-15) break;
-        }
-        x[i] = 0.5 * (a + b) + 0.5 * (b - a) * z;
-        w[i] = (b - a) / ((1 - z * z) * dp * dp);
-    }
-}
-
 typedef struct base_ref {
     double alpha, eta, k; /* relative to the film */
 } base_ref;
@@ -191,8 +171,8 @@ static double ggx_film_albedo(const base_ref *b, double cos_view)
 {
     double x[2 * NQ], w[2 * NQ], F[2 * NQ], E[2 * NQ];
     double mc = sqrt(1 - 1 / (N2 * N2)); /* critical cosine in the film */
-    gauss_legendre(NQ, 0, mc, x, w);
-    gauss_legendre(NQ, mc, 1, x + NQ, w + NQ);
+    tu_gauss_legendre(NQ, 0, mc, x, w);
+    tu_gauss_legendre(NQ, mc, 1, x + NQ, w + NQ);
     for (int j = 0; j < 2 * NQ; ++j) F[j] = fresnel(N2, 1, x[j]);
     /* (I - K diag F) E = K (1 - F), by fixed-point iteration (K F has norm < 1) */
     static double K[2 * NQ][2 * NQ];
