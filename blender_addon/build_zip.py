@@ -22,7 +22,7 @@ def main(out):
                     with open(full, "rb") as fh:
                         z.writestr(info, fh.read(), zipfile.ZIP_DEFLATED)
         # the generated OSL shaders, shipped beside the add-on (one copy in osl/)
-        for f in ("soak_wet_surface.osl", "soak_wetmap.osl"):
+        for f in ("soak_wet_surface.osl", "soak_wet_surface_legacy.osl", "soak_wet_sheet.osl", "soak_wetmap.osl"):
             full = os.path.join(HERE, "..", "osl", f)
             info = zipfile.ZipInfo("soak/osl/" + f, date_time=(2024, 1, 1, 0, 0, 0))
             info.external_attr = 0o644 << 16

@@ -6,7 +6,7 @@
  * core computed (soak/export.h) and apply the pore-filling schedule.
  *
  * Subset rules: float and int only, no pointers in OSL (SOAK_ARR), no
- * library calls but sqrt (C includers include <math.h> first), loops with
+ * library calls but sqrt and exp (C includers include <math.h> first), loops with
  * "i += 1", ternaries allowed. Define SOAK_OSL before including it in a
  * shader. */
 #ifndef SOAK_WET_MATH_H
@@ -87,6 +87,13 @@ SOAK_FN soak_interp(SOAK_ARR(x), int xoff, int n, float v, SOAK_ARR(y), int yoff
     float t = soak_cell_t(x, xoff, i, v);
     float y0 = y[yoff + i * stride], y1 = y[yoff + (i + 1) * stride];
     return y0 + (y1 - y0) * t;
+}
+
+/* The same over values stored as logarithms (thin-sheet transmittance spans
+ * decades; the export places its knots for log-linear interpolation). */
+SOAK_FN soak_interp_log(SOAK_ARR(x), int xoff, int n, float v, SOAK_ARR(y), int yoff, int stride)
+{
+    return exp(soak_interp(x, xoff, n, v, y, yoff, stride));
 }
 
 /* Bilinear lookup of the wetness function for any base colour

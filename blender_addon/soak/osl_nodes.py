@@ -1,6 +1,8 @@
 """The OSL variant of Make Wet: a Script node running the shipped, generated
-shader osl/soak_wet_surface.osl (`soak export --target osl`; osl/README.md)
-in place of the native Soak Wet group's output.
+shader osl/soak_wet_surface.osl (`soak export --target osl`; osl/README.md;
+Blender 2.80-3.3 get soak_wet_surface_legacy.osl, whose metals use the
+microfacet_ggx closure that those versions register instead of the generic
+microfacet) in place of the native Soak Wet group's output.
 
 apply_osl_variant(material, settings) reads settings.preset, .liquid,
 .wetness and .colour_source. The shader's source is loaded as an Internal
@@ -15,18 +17,25 @@ import os
 import bpy
 
 SHADER = "soak_wet_surface.osl"
+SHADER_LEGACY = "soak_wet_surface_legacy.osl"
 TAG = "soak_node"
 
 
+def shader_name(version=None):
+    """The shipped surface shader whose closures this Blender registers."""
+    return SHADER if (version or bpy.app.version) >= (3, 4, 0) else SHADER_LEGACY
+
+
 def shader_path():
-    return os.path.join(os.path.dirname(os.path.abspath(__file__)), "osl", SHADER)
+    return os.path.join(os.path.dirname(os.path.abspath(__file__)), "osl", shader_name())
 
 
 def _text():
     path = shader_path()
     with open(path, encoding="utf-8") as f:
         source = f.read()
-    text = bpy.data.texts.get(SHADER) or bpy.data.texts.new(SHADER)
+    name = shader_name()
+    text = bpy.data.texts.get(name) or bpy.data.texts.new(name)
     if text.as_string() != source:
         text.clear()
         text.write(source)

@@ -126,3 +126,34 @@ void cli_progress_finish(cli_progress *p)
     cli_progress_update(p, p->total);
     fputc('\n', stderr);
 }
+
+int cli_split_commas(const char *text, char *buf, size_t len, char **parts, int max)
+{
+    snprintf(buf, len, "%s", text);
+    int n = 0;
+    for (char *p = buf;;) {
+        if (n == max) return max + 1;
+        parts[n++] = p;
+        char *comma = strchr(p, ',');
+        if (!comma) break;
+        *comma = '\0';
+        p = comma + 1;
+    }
+    return n;
+}
+
+int cli_parse_rgb(const char *cmd, const char *opt, const char *text, double lo, double hi, soak_rgb *out)
+{
+    char buf[256], *parts[3];
+    int n = cli_split_commas(text, buf, sizeof buf, parts, 3);
+    if (n != 1 && n != 3) {
+        cli_error(cmd, "%s: expected V or R,G,B, got '%s'", opt, text);
+        return 0;
+    }
+    double v[3];
+    for (int i = 0; i < n; ++i)
+        if (!cli_parse_double(cmd, opt, parts[i], lo, hi, &v[i])) return 0;
+    if (n == 1) v[1] = v[2] = v[0];
+    *out = soak_rgb3(v[0], v[1], v[2]);
+    return 1;
+}

@@ -67,40 +67,6 @@ typedef struct vol_args {
     int wet_phase_set[3];
 } vol_args;
 
-/* Splits text at commas into at most max parts of buf; returns the count,
- * or max + 1 when there are more. */
-static int split_commas(const char *text, char *buf, size_t len, char **parts, int max)
-{
-    snprintf(buf, len, "%s", text);
-    int n = 0;
-    for (char *p = buf;;) {
-        if (n == max) return max + 1;
-        parts[n++] = p;
-        char *comma = strchr(p, ',');
-        if (!comma) break;
-        *comma = '\0';
-        p = comma + 1;
-    }
-    return n;
-}
-
-/* "V" or "R,G,B", each in [lo, hi]. */
-static int parse_rgb(const char *opt, const char *text, double lo, double hi, soak_rgb *out)
-{
-    char buf[256], *parts[3];
-    int n = split_commas(text, buf, sizeof buf, parts, 3);
-    if (n != 1 && n != 3) {
-        cli_error(CMD, "%s: expected V or R,G,B, got '%s'", opt, text);
-        return 0;
-    }
-    double v[3];
-    for (int i = 0; i < n; ++i)
-        if (!cli_parse_double(CMD, opt, parts[i], lo, hi, &v[i])) return 0;
-    if (n == 1) v[1] = v[2] = v[0];
-    *out = soak_rgb3(v[0], v[1], v[2]);
-    return 1;
-}
-
 static int parse_triple(const char *opt, const char *text, double lo, double hi, double out[3])
 {
     soak_rgb c;
@@ -109,7 +75,7 @@ static int parse_triple(const char *opt, const char *text, double lo, double hi,
         cli_error(CMD, "%s: expected three comma-separated values, got '%s'", opt, text);
         return 0;
     }
-    if (!parse_rgb(opt, text, lo, hi, &c)) return 0;
+    if (!cli_parse_rgb(CMD, opt, text, lo, hi, &c)) return 0;
     out[0] = c.r, out[1] = c.g, out[2] = c.b;
     return 1;
 }
@@ -117,7 +83,7 @@ static int parse_triple(const char *opt, const char *text, double lo, double hi,
 static int parse_formats(vol_args *a, const char *text)
 {
     char buf[256], *parts[4];
-    int n = split_commas(text, buf, sizeof buf, parts, 3);
+    int n = cli_split_commas(text, buf, sizeof buf, parts, 3);
     a->fmt_vdb = a->fmt_grid = a->fmt_df3 = 0;
     for (int k = 0; k < n && k < 3; ++k) {
         if (strcmp(parts[k], "vdb") == 0) a->fmt_vdb = 1;
@@ -217,7 +183,7 @@ static int parse_valued(vol_args *a, int argc, char **argv, int *i)
         a->have_raw = 1;
         if (!strcmp(field, "sigma-s") || !strcmp(field, "sigma-a")) {
             int s = field[6] == 's';
-            if (!parse_rgb(name, v, 0, SOAK_VOL_SIGMA_MAX, s ? &m->sigma_s : &m->sigma_a)) return -1;
+            if (!cli_parse_rgb(CMD, name, v, 0, SOAK_VOL_SIGMA_MAX, s ? &m->sigma_s : &m->sigma_a)) return -1;
             if (wet) *(s ? &a->have_wet_s : &a->have_wet_a) = 1;
             else *(s ? &a->have_dry_s : &a->have_dry_a) = 1;
         } else {

@@ -10,6 +10,8 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "soak/vec.h"
+
 typedef struct soak_cli_command {
     const char *name;
     const char *summary;
@@ -36,6 +38,14 @@ void cli_error(const char *cmd, const char *fmt, ...) __attribute__((format(prin
  * option and the accepted range, returns 0. */
 int cli_parse_double(const char *cmd, const char *opt, const char *text, double lo, double hi, double *out);
 int cli_parse_int(const char *cmd, const char *opt, const char *text, long lo, long hi, long *out);
+
+/* Splits text at commas into at most max parts of buf; returns the count,
+ * or max + 1 when there are more. */
+int cli_split_commas(const char *text, char *buf, size_t len, char **parts, int max);
+
+/* "V" or "R,G,B", each in [lo, hi]; on failure prints an error naming the
+ * option and returns 0. */
+int cli_parse_rgb(const char *cmd, const char *opt, const char *text, double lo, double hi, soak_rgb *out);
 
 /* Returns the value following option argv[*i] (advancing *i), or NULL after
  * printing "option X needs a value". Accepts "--opt=value" too. */

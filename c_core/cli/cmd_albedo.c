@@ -6,7 +6,9 @@
 
 #include "cli.h"
 #include "soak/film.h"
+#include "soak/export.h"
 #include "soak/preset.h"
+#include "soak/sheet.h"
 #include "soak/wetness.h"
 
 static const char *CMD = "albedo";
@@ -16,14 +18,18 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: soak albedo --material NAME --wetness W [--time T] [--t0 T0]\n"
             "                   [--fill-time TF] [--film-thickness M] [--liquid NAME]\n"
-            "                   [--materials FILE]\n"
+            "                   [--base-colour R,G,B] [--materials FILE]\n"
             "       soak albedo --model film --base-albedo A --ior N\n"
             "                   --incidence normal|diffuse|DEG [--thickness M] [--absorption ALPHA]\n\n"
             "Preset mode prints the dry albedo and the wet albedo (linear RGB) of a\n"
             "material preset: W in [0,1] is the wetness; T, T0 and TF are the time, the\n"
             "wet-map start time and the pore fill time (Hnat et al. 2006; defaults 1, 0\n"
             "and the preset's; TF = 0 fills instantly); M is the film thickness in metres\n"
-            "(default: the preset's). The chain is documented in soak/wetness.h.\n\n"
+            "(default: the preset's). The chain is documented in soak/wetness.h.\n"
+            "--base-colour wets your own dry colour (a texture's linear RGB, or V for\n"
+            "grey) with the preset's class instead of its own colour (soak/export.h).\n"
+            "Also printed: the liquid-air interface's share of the surface (it weights\n"
+            "the liquid's Fresnel mirror), the GGX alpha, a thin sheet's transmittance.\n\n"
             "Film mode prints the total reflectance of a smooth liquid film of index N\n"
             "(1..3) over a Lambertian base of albedo A (Lekner & Dorf 1988), for light at\n"
             "normal incidence, uniform diffuse light, or DEG degrees (0..90) from the\n"
@@ -32,6 +38,7 @@ static void usage(FILE *out)
             "examples:\n"
             "  soak albedo --material sand --wetness 1\n"
             "  soak albedo --material paper --wetness 0.3 --time 0.2 --t0 0.1 --fill-time 0.3\n"
+            "  soak albedo --material brick --wetness 0.6 --base-colour 0.45,0.2,0.12\n"
             "  soak albedo --model film --base-albedo 0.5 --ior 1.33 --incidence diffuse\n");
 }
 
@@ -56,7 +63,7 @@ static void list_liquids(const soak_preset_db *db)
 }
 
 typedef struct opts {
-    const char *model, *material, *liquid, *file, *incidence;
+    const char *model, *material, *liquid, *file, *incidence, *base_colour;
     int has_wetness, has_time, has_t0, has_fill, has_film, has_base, has_ior, has_thick, has_abs;
     double wetness, time, t0, fill, film, base, ior, thickness, absorption;
 } opts;
@@ -84,7 +91,7 @@ static int parse(int argc, char **argv, opts *o)
         const char *name;
         const char **val;
     } strs[] = {{"--model", &o->model},   {"--material", &o->material},   {"--liquid", &o->liquid},
-                {"--materials", &o->file}, {"--incidence", &o->incidence}};
+                {"--materials", &o->file}, {"--incidence", &o->incidence}, {"--base-colour", &o->base_colour}};
     for (int i = 1; i < argc; ++i) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
@@ -116,7 +123,7 @@ static int parse(int argc, char **argv, opts *o)
 static int run_film(const opts *o)
 {
     if (o->material || o->liquid || o->file || o->has_wetness || o->has_time || o->has_t0 || o->has_fill ||
-        o->has_film)
+        o->has_film || o->base_colour)
         return usage_error("--model film takes --base-albedo, --ior, --incidence, --thickness and --absorption only");
     if (!o->has_base) return usage_error("--base-albedo is required with --model film");
     if (!o->has_ior) return usage_error("--ior is required with --model film");
@@ -180,7 +187,14 @@ static int run_preset(const opts *o)
         if (o->has_fill) in.t_fill = o->fill;
         if (o->has_film) in.film_thickness_m = o->film;
         soak_wet_params w;
-        st = soak_wetness_eval(p, l, &in, &w);
+        soak_rgb base = p->albedo;
+        if (o->base_colour && !cli_parse_rgb(CMD, "--base-colour", o->base_colour, 0.0, 1.0, &base)) {
+            soak_presets_free(db);
+            return SOAK_EXIT_USAGE;
+        }
+        st = o->base_colour ? soak_wet_params_for_base(p, l, &in, base, &w) : soak_wetness_eval(p, l, &in, &w);
+        soak_rgb sheet = {0, 0, 0};
+        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, &sheet);
         if (st != SOAK_OK) {
             cli_error(CMD, "material %s, wetness %g: wetness mapping failed: %s", p->name, o->wetness,
                       soak_status_str(st));
@@ -191,9 +205,14 @@ static int run_preset(const opts *o)
             printf("wetness %g, time %g, t0 %g, fill time %g, film thickness %g m\n", in.wetness, in.time, in.t0,
                    in.t_fill, in.film_thickness_m);
             printf("pore fill %.4f, film coverage %.4f\n", w.fill, w.film_coverage);
-            printf("dry albedo        %.6f %.6f %.6f\n", p->albedo.r, p->albedo.g, p->albedo.b);
+            printf("dry albedo        %.6f %.6f %.6f%s\n", base.r, base.g, base.b,
+                   o->base_colour ? " (--base-colour)" : "");
             printf("wet albedo        %.6f %.6f %.6f\n", w.albedo.r, w.albedo.g, w.albedo.b);
             printf("wet albedo total  %.6f %.6f %.6f\n", w.albedo_total.r, w.albedo_total.g, w.albedo_total.b);
+            printf("interface area    %.6f\n", soak_wet_interface_area(&w));
+            printf("ggx alpha         %.6f\n", w.ggx_alpha);
+            if (p->kind == SOAK_KIND_THIN_SHEET)
+                printf("sheet transmit.   %.6f %.6f %.6f\n", sheet.r, sheet.g, sheet.b);
         }
     }
     soak_presets_free(db);

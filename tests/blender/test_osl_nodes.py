@@ -25,6 +25,17 @@ def main():
         installed = f.read()
     if installed != shipped:
         common.fail("the add-on's OSL shader differs from osl/soak_wet_surface.osl")
+    # Blender 2.80-3.3 register microfacet_ggx, not the generic microfacet
+    # (tests/osl/osl_check.py holds the registries): they get the legacy file.
+    picks = {v: osl.shader_name(v) for v in ((2, 93, 0), (3, 3, 9), (3, 4, 0), (4, 2, 0))}
+    want = {(2, 93, 0): "soak_wet_surface_legacy.osl", (3, 3, 9): "soak_wet_surface_legacy.osl",
+            (3, 4, 0): "soak_wet_surface.osl", (4, 2, 0): "soak_wet_surface.osl"}
+    if picks != want:
+        common.fail("shader per Blender version: %s, want %s" % (picks, want))
+    legacy = os.path.join(os.path.dirname(osl.shader_path()), "soak_wet_surface_legacy.osl")
+    with open(os.path.join(ROOT, "osl", "soak_wet_surface_legacy.osl"), encoding="utf-8") as f:
+        if not os.path.isfile(legacy) or open(legacy, encoding="utf-8").read() != f.read():
+            common.fail("the add-on does not ship osl/soak_wet_surface_legacy.osl")
     bpy.ops.mesh.primitive_plane_add()
     ob = bpy.context.object
     mat = bpy.data.materials.new("O")

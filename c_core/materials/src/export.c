@@ -16,8 +16,12 @@ static const soak_export_target targets[] = {
      soak_export_write_povray},
     {"blender", "data shipped inside the Blender add-on (blender_addon/soak/)", "soak_data.json",
      soak_export_write_blender},
-    {"osl", "OSL wet-surface shader for Cycles 3.x/4.x (osl/soak_wet_surface.osl)", "soak_wet_surface.osl",
+    {"osl", "OSL wet-surface shader for Cycles, Blender 3.4-4.x (osl/soak_wet_surface.osl)", "soak_wet_surface.osl",
      soak_export_write_osl},
+    {"osl-legacy", "OSL wet-surface shader for Cycles, Blender 2.80-3.4 (osl/soak_wet_surface_legacy.osl)",
+     "soak_wet_surface_legacy.osl", soak_export_write_osl_legacy},
+    {"osl-sheet", "OSL wet thin-sheet shader for Cycles, Blender 2.80-4.x (osl/soak_wet_sheet.osl)",
+     "soak_wet_sheet.osl", soak_export_write_osl_sheet},
     {"osl-wetmap", "OSL wet-map / drying shader (osl/soak_wetmap.osl)", "soak_wetmap.osl",
      soak_export_write_osl_wetmap},
 };

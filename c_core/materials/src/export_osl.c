@@ -44,13 +44,16 @@ void soak_osl_tables_free(soak_osl_tables *t)
 {
     if (!t) return;
     soak_float_list *f[] = {&t->kw, &t->ka, &t->kc, &t->kr, &t->kt, &t->ba, &t->bw, &t->bg};
-    soak_int_list *i[] = {&t->kind, &t->k_off, &t->k_n, &t->ba_off, &t->ba_n, &t->bw_off, &t->bw_n, &t->bg_off};
+    soak_int_list *i[] = {&t->preset, &t->kind, &t->k_off, &t->k_n, &t->ba_off, &t->ba_n, &t->bw_off, &t->bw_n, &t->bg_off};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k) free(f[k]->v);
     for (size_t k = 0; k < sizeof i / sizeof i[0]; ++k) free(i[k]->v);
     memset(t, 0, sizeof *t);
 }
 
 /* ---- tables ---------------------------------------------------------------- */
+
+/* Floor of the tabulated sheet transmittance (its logarithm is stored). */
+#define SHEET_T_MIN 1e-6
 
 static soak_status add_knots(soak_osl_tables *t, const soak_preset *p, const soak_liquid *l)
 {
@@ -66,11 +69,11 @@ static soak_status add_knots(soak_osl_tables *t, const soak_preset *p, const soa
         st = soak_wetness_eval(p, l, &in, &w);
         if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, &sheet);
         if (st != SOAK_OK) return st;
-        double interface = p->kind == SOAK_KIND_CONDUCTOR
-                               ? w.film_coverage
-                               : w.film_coverage + (1.0 - w.film_coverage) * w.water_specular_weight;
+        double interface = soak_wet_interface_area(&w);
+        soak_rgb log_sheet = {log(fmax(sheet.r, SHEET_T_MIN)), log(fmax(sheet.g, SHEET_T_MIN)),
+                              log(fmax(sheet.b, SHEET_T_MIN))};
         if (!fl_push(&t->kw, knots[i]) || !fl_rgb(&t->ka, w.albedo) || !fl_push(&t->kc, interface) ||
-            !fl_push(&t->kr, sqrt(w.ggx_alpha)) || !fl_rgb(&t->kt, sheet))
+            !fl_push(&t->kr, sqrt(w.ggx_alpha)) || !fl_rgb(&t->kt, log_sheet))
             return SOAK_ERR_NOMEM;
     }
     return SOAK_OK;
@@ -108,17 +111,18 @@ static soak_status add_base(soak_osl_tables *t, const soak_preset *p, const soak
     return st;
 }
 
-soak_status soak_osl_tables_build(const soak_preset_db *db, soak_osl_tables *t)
+soak_status soak_osl_tables_build(const soak_preset_db *db, int sheets_only, soak_osl_tables *t)
 {
     if (!db || !t) return SOAK_ERR_NULL;
     memset(t, 0, sizeof *t);
-    t->n_presets = soak_presets_count(db);
     t->n_liquids = soak_presets_liquid_count(db);
     soak_status st = SOAK_OK;
-    for (int i = 0; st == SOAK_OK && i < t->n_presets; ++i) {
+    for (int i = 0; st == SOAK_OK && i < soak_presets_count(db); ++i) {
         const soak_preset *p = soak_presets_at(db, i);
+        if (sheets_only && p->kind != SOAK_KIND_THIN_SHEET) continue;
         int kind = p->kind == SOAK_KIND_CONDUCTOR ? 1 : (p->kind == SOAK_KIND_THIN_SHEET ? 2 : 0);
-        if (!il_push(&t->kind, kind)) st = SOAK_ERR_NOMEM;
+        t->n_presets++;
+        if (!il_push(&t->kind, kind) || !il_push(&t->preset, i)) st = SOAK_ERR_NOMEM;
         for (int j = 0; st == SOAK_OK && j < t->n_liquids; ++j) {
             const soak_liquid *l = soak_presets_liquid_at(db, j);
             st = add_knots(t, p, l);
@@ -158,23 +162,30 @@ static void put_header(FILE *out, const soak_export_header *h, const char *what)
     fputc('\n', out);
 }
 
-static void put_name_options(FILE *out, const soak_preset_db *db, int liquids)
+static const char *preset_name(const soak_preset_db *db, const soak_osl_tables *t, int i)
 {
-    int n = liquids ? soak_presets_liquid_count(db) : soak_presets_count(db);
-    for (int i = 0; i < n; ++i)
-        fprintf(out, "%s%s", i ? "|" : "", liquids ? soak_presets_liquid_at(db, i)->name : soak_presets_at(db, i)->name);
+    return soak_presets_at(db, t->preset.v[i])->name;
 }
 
-static void put_name_lookup(FILE *out, const soak_preset_db *db, int liquids, const char *param, const char *var)
+static void put_name_options(FILE *out, const soak_preset_db *db, const soak_osl_tables *t, int liquids)
 {
-    int n = liquids ? soak_presets_liquid_count(db) : soak_presets_count(db);
+    int n = liquids ? t->n_liquids : t->n_presets;
+    for (int i = 0; i < n; ++i)
+        fprintf(out, "%s%s", i ? "|" : "", liquids ? soak_presets_liquid_at(db, i)->name : preset_name(db, t, i));
+}
+
+static void put_name_lookup(FILE *out, const soak_preset_db *db, const soak_osl_tables *t, int liquids,
+                            const char *shader)
+{
+    const char *param = liquids ? "Liquid" : "Preset", *var = liquids ? "li" : "pi";
+    int n = liquids ? t->n_liquids : t->n_presets;
     fprintf(out, "    int %s = -1;\n", var);
     for (int i = 0; i < n; ++i)
         fprintf(out, "    if (%s == \"%s\") %s = %d;\n", param,
-                liquids ? soak_presets_liquid_at(db, i)->name : soak_presets_at(db, i)->name, var, i);
-    fprintf(out, "    if (%s < 0) {\n        warning(\"soak_wet_surface: unknown %s \\\"%%s\\\", using the first\", %s);\n"
+                liquids ? soak_presets_liquid_at(db, i)->name : preset_name(db, t, i), var, i);
+    fprintf(out, "    if (%s < 0) {\n        warning(\"%s: unknown %s \\\"%%s\\\", using the first\", %s);\n"
                  "        %s = 0;\n    }\n",
-            var, param, param, var);
+            var, shader, param, param, var);
 }
 
 static void put_liquid_iors(FILE *out, const soak_preset_db *db)
@@ -185,100 +196,190 @@ static void put_liquid_iors(FILE *out, const soak_preset_db *db)
     free(l.v);
 }
 
-soak_status soak_export_write_osl(const soak_preset_db *db, FILE *out, char *err, size_t errlen)
+/* The three wet-surface shaders differ in their presets, sockets and the
+ * closure of metals; the tables and the lookups are shared. */
+typedef enum { OSL_SURFACE, OSL_SURFACE_LEGACY, OSL_SHEET } osl_variant;
+
+static const char *shader_name(osl_variant v)
+{
+    return v == OSL_SHEET ? "soak_wet_sheet" : (v == OSL_SURFACE ? "soak_wet_surface" : "soak_wet_surface_legacy");
+}
+
+static void put_signature(FILE *out, const soak_preset_db *db, const soak_osl_tables *t, osl_variant v)
+{
+    fprintf(out, "shader %s(\n    string Preset = \"%s\" [[ string widget = \"popup\", string options = \"",
+            shader_name(v), preset_name(db, t, 0));
+    put_name_options(out, db, t, 0);
+    fprintf(out, "\" ]],\n    string Liquid = \"%s\" [[ string widget = \"popup\", string options = \"",
+            soak_presets_liquid_at(db, 0)->name);
+    put_name_options(out, db, t, 1);
+    fputs("\" ]],\n"
+          "    float Wetness = 1.0 [[ float min = 0, float max = 1 ]],\n"
+          "    float Time = 1.0,\n"
+          "    float T0 = 0.0,\n"
+          "    float FillTime = 0.0 [[ float min = 0 ]],\n"
+          "    int UseBaseColor = 0 [[ string widget = \"checkBox\" ]],\n"
+          "    color BaseColor = color(0.5),\n",
+          out);
+    if (v != OSL_SHEET) fputs("    float Puddle = 0.0 [[ float min = 0, float max = 1 ]],\n", out);
+    fputs("    normal Normal = N,\n"
+          "    output closure color BSDF = 0,\n"
+          "    output color WetColor = 0,\n",
+          out);
+    if (v == OSL_SHEET) fputs("    output color Transmittance = 0,\n", out);
+    fputs("    output float Coverage = 0,\n"
+          "    output float Roughness = 0)\n"
+          "{\n",
+          out);
+}
+
+static void put_tables(FILE *out, const soak_preset_db *db, const soak_osl_tables *t)
+{
+    put_ints(out, "KIND", &t->kind);
+    put_floats(out, "KW", &t->kw);
+    put_floats(out, "KA", &t->ka);
+    put_floats(out, "KC", &t->kc);
+    put_floats(out, "KR", &t->kr);
+    put_floats(out, "KT", &t->kt);
+    put_ints(out, "K_OFF", &t->k_off);
+    put_ints(out, "K_N", &t->k_n);
+    put_floats(out, "BA", &t->ba);
+    put_floats(out, "BW", &t->bw);
+    put_floats(out, "BG", &t->bg);
+    put_ints(out, "BA_OFF", &t->ba_off);
+    put_ints(out, "BA_N", &t->ba_n);
+    put_ints(out, "BW_OFF", &t->bw_off);
+    put_ints(out, "BW_N", &t->bw_n);
+    put_ints(out, "BG_OFF", &t->bg_off);
+    put_liquid_iors(out, db);
+}
+
+/* The liquid L, the wet colour, the interface area and the roughness. */
+static void put_lookup(FILE *out, const soak_osl_tables *t, osl_variant v)
+{
+    fprintf(out, "    int k = pi * %d + li;\n", t->n_liquids);
+    if (v == OSL_SHEET)
+        fputs("    float L = soak_delivered(Wetness, Time, T0, FillTime);\n", out);
+    else
+        fputs("    // a puddle floods the surface: at least that much liquid, up to a full film\n"
+              "    float L = max(soak_delivered(Wetness, Time, T0, FillTime), soak_clamp01(Puddle));\n",
+              out);
+    fputs("    for (int c = 0; c < 3; c += 1) {\n"
+          "        if (UseBaseColor)\n"
+          "            WetColor[c] = soak_base_lookup(BA, BA_OFF[k], BA_N[k], BW, BW_OFF[k], BW_N[k], BG, BG_OFF[3 * k + c],\n"
+          "                                           soak_clamp01(BaseColor[c]), L);\n"
+          "        else\n"
+          "            WetColor[c] = soak_interp(KW, K_OFF[k], K_N[k], L, KA, 3 * K_OFF[k] + c, 3);\n"
+          "    }\n"
+          "    Coverage = soak_interp(KW, K_OFF[k], K_N[k], L, KC, K_OFF[k], 1);\n"
+          "    Roughness = soak_interp(KW, K_OFF[k], K_N[k], L, KR, K_OFF[k], 1);\n"
+          "    // Cycles' reflection() is a perfect mirror without Fresnel: weight it here\n"
+          "    float mirror = Coverage * soak_fresnel(abs(dot(normalize(I), normalize(Normal))), LIQUID_IOR[li]);\n",
+          out);
+}
+
+static void put_closure(FILE *out, osl_variant v)
+{
+    if (v == OSL_SHEET) {
+        fputs("    for (int c = 0; c < 3; c += 1) Transmittance[c] = soak_interp_log(KW, K_OFF[k], K_N[k], L, KT, 3 * K_OFF[k] + c, 3);\n"
+              "    BSDF = WetColor * diffuse(Normal) + Transmittance * translucent(Normal) + mirror * reflection(Normal);\n"
+              "}\n",
+              out);
+        return;
+    }
+    fputs("    float alpha = max(Roughness * Roughness, 1e-4);\n"
+          "    if (KIND[pi] == 1) {\n"
+          "        // metal under the film: WetColor is its normal reflectance through the liquid\n",
+          out);
+    if (v == OSL_SURFACE)
+        fputs("        BSDF = WetColor * microfacet(\"ggx\", Normal, alpha, 0.0, 0) + mirror * reflection(Normal);\n", out);
+    else
+        fputs("        BSDF = WetColor * microfacet_ggx(Normal, alpha) + mirror * reflection(Normal);\n", out);
+    fputs("    } else {\n"
+          "        // the diffuse albedo under the liquid interface (porous darkening and the\n"
+          "        // interface's total internal reflection are in WetColor), the interface's\n"
+          "        // Fresnel mirror over its area\n"
+          "        BSDF = WetColor * diffuse(Normal) + mirror * reflection(Normal);\n"
+          "        if (KIND[pi] == 2) {\n"
+          "            color T = 0;\n"
+          "            for (int c = 0; c < 3; c += 1) T[c] = soak_interp_log(KW, K_OFF[k], K_N[k], L, KT, 3 * K_OFF[k] + c, 3);\n"
+          "            BSDF += T * translucent(Normal);\n"
+          "        }\n"
+          "    }\n"
+          "}\n",
+          out);
+}
+
+static const char *const osl_titles[] = {
+    "soak_wet_surface.osl: a wet surface for Cycles, Blender 3.4 to 4.x.",
+    "soak_wet_surface_legacy.osl: a wet surface for Cycles, Blender 2.80 to 3.4.",
+    "soak_wet_sheet.osl: a wet thin sheet (paper, cloth) for Cycles, Blender 2.80 to 4.x.",
+};
+
+static const char *const osl_closure_notes[] = {
+    "// Closures: diffuse, translucent, reflection and the generic microfacet of\n"
+    "// stdosl.h, all registered by Cycles from 3.4 (kernel/osl/closures.cpp) to\n"
+    "// 4.x (kernel/osl/closures_template.h). Blender 2.80-3.3: use\n"
+    "// soak_wet_surface_legacy.osl. reflection() has no Fresnel term in Cycles:\n"
+    "// soak_fresnel weights it.\n\n",
+    "// Closures: diffuse, translucent, reflection and Cycles' microfacet_ggx\n"
+    "// (declared here as stdcycles.h of Blender 2.80-3.4 does; registered in\n"
+    "// kernel/osl/osl_closures.cpp and, from 3.2, closures.cpp). Blender 4.x no\n"
+    "// longer has microfacet_ggx: use soak_wet_surface.osl there.\n\n"
+    "closure color microfacet_ggx(normal N, float ag) [[ int builtin = 1 ]];\n\n",
+    "// Translucent when wet: the front is the core's wet albedo (diffuse), the\n"
+    "// back lets the core's Kubelka-Munk transmittance through (translucent).\n"
+    "// Closures: diffuse, translucent, reflection (every Cycles 2.80-4.x).\n"
+    "// With UseBaseColor the front colour is yours; the transmittance stays the\n"
+    "// preset's.\n\n",
+};
+
+static soak_status write_surface(const soak_preset_db *db, FILE *out, char *err, size_t errlen, osl_variant v)
 {
     soak_export_header h;
     soak_status st = soak_export_header_make(db, &h);
     soak_osl_tables t;
-    if (st == SOAK_OK) st = soak_osl_tables_build(db, &t);
+    if (st == SOAK_OK) st = soak_osl_tables_build(db, v == OSL_SHEET, &t);
+    if (st == SOAK_OK && t.n_presets == 0) {
+        soak_osl_tables_free(&t);
+        st = SOAK_ERR_ARG;
+    }
     if (st != SOAK_OK) {
         snprintf(err, errlen, "building the OSL tables failed: %s", soak_status_str(st));
         return st;
     }
-    put_header(out, &h, "soak_wet_surface.osl: a wet surface for Cycles (Blender 3.x and 4.x).");
-    fprintf(out,
-            "// Inputs: a preset (its class: porosity, phase change, film) and liquid,\n"
-            "// the wetness and the pore-filling schedule (Time, T0, FillTime: see\n"
-            "// soak_delivered), an optional base colour of the user's own texture\n"
-            "// (UseBaseColor 1: the core's wetness function for any colour), a puddle\n"
-            "// level that floods the surface with a film. Outputs: the closure and the\n"
-            "// parameters it used. Closures used: diffuse, translucent, reflection and\n"
-            "// microfacet from stdosl.h, which Cycles implements in 3.x and 4.x alike\n"
-            "// (reflection() without a Fresnel term: soak_fresnel weights it).\n\n"
-            "shader soak_wet_surface(\n"
-            "    string Preset = \"%s\" [[ string widget = \"popup\", string options = \"",
-            soak_presets_at(db, 0)->name);
-    put_name_options(out, db, 0);
-    fprintf(out, "\" ]],\n    string Liquid = \"water\" [[ string widget = \"popup\", string options = \"");
-    put_name_options(out, db, 1);
-    fprintf(out,
-            "\" ]],\n"
-            "    float Wetness = 1.0 [[ float min = 0, float max = 1 ]],\n"
-            "    float Time = 1.0,\n"
-            "    float T0 = 0.0,\n"
-            "    float FillTime = 0.0 [[ float min = 0 ]],\n"
-            "    int UseBaseColor = 0 [[ string widget = \"checkBox\" ]],\n"
-            "    color BaseColor = color(0.5),\n"
-            "    float Puddle = 0.0 [[ float min = 0, float max = 1 ]],\n"
-            "    normal Normal = N,\n"
-            "    output closure color BSDF = 0,\n"
-            "    output color WetColor = 0,\n"
-            "    output float Coverage = 0,\n"
-            "    output float Roughness = 0)\n"
-            "{\n");
-    put_ints(out, "KIND", &t.kind);
-    put_floats(out, "KW", &t.kw);
-    put_floats(out, "KA", &t.ka);
-    put_floats(out, "KC", &t.kc);
-    put_floats(out, "KR", &t.kr);
-    put_floats(out, "KT", &t.kt);
-    put_ints(out, "K_OFF", &t.k_off);
-    put_ints(out, "K_N", &t.k_n);
-    put_floats(out, "BA", &t.ba);
-    put_floats(out, "BW", &t.bw);
-    put_floats(out, "BG", &t.bg);
-    put_ints(out, "BA_OFF", &t.ba_off);
-    put_ints(out, "BA_N", &t.ba_n);
-    put_ints(out, "BW_OFF", &t.bw_off);
-    put_ints(out, "BW_N", &t.bw_n);
-    put_ints(out, "BG_OFF", &t.bg_off);
-    put_liquid_iors(out, db);
-    put_name_lookup(out, db, 0, "Preset", "pi");
-    put_name_lookup(out, db, 1, "Liquid", "li");
-    fprintf(out,
-            "    int k = pi * %d + li;\n"
-            "    // a puddle floods the surface: at least that much liquid, up to a full film\n"
-            "    float L = max(soak_delivered(Wetness, Time, T0, FillTime), soak_clamp01(Puddle));\n"
-            "    for (int c = 0; c < 3; c += 1) {\n"
-            "        if (UseBaseColor)\n"
-            "            WetColor[c] = soak_base_lookup(BA, BA_OFF[k], BA_N[k], BW, BW_OFF[k], BW_N[k], BG, BG_OFF[3 * k + c],\n"
-            "                                           soak_clamp01(BaseColor[c]), L);\n"
-            "        else\n"
-            "            WetColor[c] = soak_interp(KW, K_OFF[k], K_N[k], L, KA, 3 * K_OFF[k] + c, 3);\n"
-            "    }\n"
-            "    Coverage = soak_interp(KW, K_OFF[k], K_N[k], L, KC, K_OFF[k], 1);\n"
-            "    Roughness = soak_interp(KW, K_OFF[k], K_N[k], L, KR, K_OFF[k], 1);\n"
-            "    float alpha = max(Roughness * Roughness, 1e-4);\n"
-            "    // Cycles' reflection() is a perfect mirror without Fresnel: weight it here\n"
-            "    float mirror = Coverage * soak_fresnel(abs(dot(normalize(I), normalize(Normal))), LIQUID_IOR[li]);\n"
-            "    if (KIND[pi] == 1) {\n"
-            "        // metal under the film: WetColor is its normal reflectance through the liquid\n"
-            "        BSDF = WetColor * microfacet(\"ggx\", Normal, alpha, 0.0, 0) + mirror * reflection(Normal);\n"
-            "    } else {\n"
-            "        // the diffuse albedo under the liquid interface (porous darkening and the\n"
-            "        // interface's total internal reflection are in WetColor), the interface's\n"
-            "        // Fresnel mirror over its area\n"
-            "        BSDF = WetColor * diffuse(Normal) + mirror * reflection(Normal);\n"
-            "        if (KIND[pi] == 2) {\n"
-            "            color T = 0;\n"
-            "            for (int c = 0; c < 3; c += 1) T[c] = soak_interp(KW, K_OFF[k], K_N[k], L, KT, 3 * K_OFF[k] + c, 3);\n"
-            "            BSDF += T * translucent(Normal);\n"
-            "        }\n"
-            "    }\n"
-            "}\n",
-            t.n_liquids);
+    put_header(out, &h, osl_titles[v]);
+    fputs("// Inputs: a preset (its class: porosity, phase change, film) and liquid,\n"
+          "// the wetness and the pore-filling schedule (Time, T0, FillTime: see\n"
+          "// soak_delivered), an optional base colour of the user's own texture\n"
+          "// (UseBaseColor 1: the core's wetness function for any colour)",
+          out);
+    fputs(v == OSL_SHEET ? ".\n" : ", a puddle\n// level that floods the surface with a film.\n", out);
+    fputs("// Outputs: the closure and the parameters it used.\n", out);
+    fputs(osl_closure_notes[v], out);
+    put_signature(out, db, &t, v);
+    put_tables(out, db, &t);
+    put_name_lookup(out, db, &t, 0, shader_name(v));
+    put_name_lookup(out, db, &t, 1, shader_name(v));
+    put_lookup(out, &t, v);
+    put_closure(out, v);
     soak_osl_tables_free(&t);
     return ferror(out) ? SOAK_ERR_IO : SOAK_OK;
+}
+
+soak_status soak_export_write_osl(const soak_preset_db *db, FILE *out, char *err, size_t errlen)
+{
+    return write_surface(db, out, err, errlen, OSL_SURFACE);
+}
+
+soak_status soak_export_write_osl_legacy(const soak_preset_db *db, FILE *out, char *err, size_t errlen)
+{
+    return write_surface(db, out, err, errlen, OSL_SURFACE_LEGACY);
+}
+
+soak_status soak_export_write_osl_sheet(const soak_preset_db *db, FILE *out, char *err, size_t errlen)
+{
+    return write_surface(db, out, err, errlen, OSL_SHEET);
 }
 
 soak_status soak_export_write_osl_wetmap(const soak_preset_db *db, FILE *out, char *err, size_t errlen)
@@ -289,7 +390,7 @@ soak_status soak_export_write_osl_wetmap(const soak_preset_db *db, FILE *out, ch
         snprintf(err, errlen, "%s: cannot read the preset file to hash it", soak_presets_path(db));
         return st;
     }
-    put_header(out, &h, "soak_wetmap.osl: wetness from a wet map and the pore schedule (Blender 3.x and 4.x).");
+    put_header(out, &h, "soak_wetmap.osl: wetness from a wet map and the pore schedule (Blender 2.80 to 4.x).");
     fputs("// WetMap: a start-time map from `soak bake drying --start-map` (value 1 - t0 on\n"
           "// wet texels, 0 where dry), converted to .tx by maketx (or written as .tx by\n"
           "// soak bake). Drying 1: the liquid leaves over FillTime from t0 (the baker's\n"

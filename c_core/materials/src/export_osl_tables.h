@@ -1,6 +1,6 @@
 /* The flat tables the OSL shaders carry (export_osl.c), shared with the C
  * test that evaluates them through osl/soak_wet_math.h against the core.
- * Index k = preset * n_liquids + liquid. */
+ * Index k = kept preset * n_liquids + liquid. */
 #ifndef SOAK_EXPORT_OSL_TABLES_H
 #define SOAK_EXPORT_OSL_TABLES_H
 
@@ -17,10 +17,11 @@ typedef struct soak_int_list {
 } soak_int_list;
 
 typedef struct soak_osl_tables {
-    int n_presets, n_liquids;
+    int n_presets, n_liquids; /* presets kept (all, or the thin sheets) */
+    soak_int_list preset;    /* per kept preset: its index in the preset file */
     soak_int_list kind;      /* per preset: 0 dielectric, 1 conductor, 2 thin sheet */
     /* knot tables: wetness, albedo (rgb, stride 3), interface coverage
-     * (film + pore water), roughness sqrt(alpha), sheet transmittance (rgb) */
+     * (film + pore water), roughness sqrt(alpha), ln of the sheet transmittance (rgb, floored at 1e-6) */
     soak_float_list kw, ka, kc, kr, kt;
     soak_int_list k_off, k_n;
     /* base-colour tables: nodes and values [channel][wetness][albedo] */
@@ -28,7 +29,8 @@ typedef struct soak_osl_tables {
     soak_int_list ba_off, ba_n, bw_off, bw_n, bg_off; /* bg_off: per k and channel (3 k + c) */
 } soak_osl_tables;
 
-soak_status soak_osl_tables_build(const soak_preset_db *db, soak_osl_tables *t);
+/* sheets_only: keep the thin-sheet presets only (soak_wet_sheet.osl). */
+soak_status soak_osl_tables_build(const soak_preset_db *db, int sheets_only, soak_osl_tables *t);
 void soak_osl_tables_free(soak_osl_tables *t);
 
 #endif

@@ -191,6 +191,13 @@ soak_status soak_wetness_eval(const soak_preset *p, const soak_liquid *l, const 
     return SOAK_OK;
 }
 
+double soak_wet_interface_area(const soak_wet_params *w)
+{
+    if (!w) return 0.0;
+    double c = w->film_coverage, a = c + (1.0 - c) * w->water_specular_weight;
+    return soak_in_range(a, 0.0, 1.0) ? a : (a > 1.0 ? 1.0 : 0.0);
+}
+
 soak_status soak_wetness_table(const soak_preset *p, const soak_liquid *l, int n, double film_thickness_m,
                                soak_wet_params *rows)
 {

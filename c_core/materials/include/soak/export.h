@@ -105,6 +105,8 @@ soak_status soak_export_write_json(const soak_preset_db *db, FILE *out, char *er
 soak_status soak_export_write_povray(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 soak_status soak_export_write_blender(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 soak_status soak_export_write_osl(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
+soak_status soak_export_write_osl_legacy(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
+soak_status soak_export_write_osl_sheet(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 soak_status soak_export_write_osl_wetmap(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 
 #endif

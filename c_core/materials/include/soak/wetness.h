@@ -140,6 +140,12 @@ soak_wet_input soak_wet_input_steady(const soak_preset *preset, double wetness);
 soak_status soak_wetness_eval(const soak_preset *preset, const soak_liquid *liquid, const soak_wet_input *in,
                               soak_wet_params *out);
 
+/* Share of the surface where the liquid meets the air: the film's coverage c
+ * plus the uncovered liquid-filled pores, c + (1 - c) porosity f (zero pore
+ * share for conductors). Front ends weight the liquid's Fresnel mirror with
+ * it; in [0, 1], 0 for a NULL argument. */
+double soak_wet_interface_area(const soak_wet_params *w);
+
 /* n >= 2 rows at w_i = i / (n - 1), steady state, film thickness
  * film_thickness_m (< 0: the preset's default). Row i equals
  * soak_wetness_eval at that w exactly. */
