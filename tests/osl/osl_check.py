@@ -5,7 +5,8 @@
 2. Every closure a compiled shader calls is registered by the Cycles versions
    the shader says it serves (Blender's registries, read from its sources:
    see CYCLES_CLOSURES), with at least the registered number of arguments.
-3. testshade runs each wet shader over a grid (wetness along u, a base colour
+3. testshade runs soak_wetmap on .tx maps made by maketx (schedule and map
+   orientation), and each wet shader over a grid (wetness along u, a base colour
    along v; every preset x liquid, with and without UseBaseColor) and
    osl_core_check compares every output with the core itself.
 
@@ -168,12 +169,57 @@ def testshade_rows(root, tmp, failures):
     return rows
 
 
+def check_wetmap(tmp, failures):
+    """soak_wetmap.osl on .tx maps made by maketx: a constant start value 0.7
+    (t0 = 0.3) and a map whose top half is 1 and bottom half 0 (the image's
+    top row must be v = 1, as in Blender's UVs). Time is swept along u; the
+    expected wetness is the schedule's definition (Hnat et al. 2006; osl/README):
+    drying Amount * (1 - P), wetting Amount * P, P = clamp((Time - t0) / FillTime),
+    0 where the map is 0."""
+    maps = {"const": ["--pattern", "constant:color=0.7", "32x32", "1"],
+            "split": ["--pattern", "constant:color=1", "32x16", "1", "--pattern", "constant:color=0", "32x16", "1",
+                      "--mosaic", "1x2"]}
+    for name, pattern in maps.items():
+        exr, tx = os.path.join(tmp, name + ".exr"), os.path.join(tmp, name + ".tx")
+        for cmd in (["oiiotool", *pattern, "-d", "float", "-o", exr], ["maketx", exr, "-o", tx]):
+            r = run(cmd)
+            if r.returncode != 0:
+                failures.append(" ".join(cmd) + ": " + r.stderr.strip())
+                return
+    nx, ny, fill, amount = 21, 16, 0.2, 0.8
+    worst, count = 0.0, 0
+    for name, drying in (("const", 1), ("const", 0), ("split", 1)):
+        r = run(["testshade", "-g", str(nx), str(ny), "--center", "--layer", "g", "--shader", "soak_test_grid", "g",
+                 "--layer", "w", "--param", "WetMap", name + ".tx", "--param", "Drying", str(drying),
+                 "--param", "FillTime", str(fill), "--param", "Amount", str(amount), "--shader", "soak_wetmap", "w",
+                 "--connect", "g", "Wetness", "w", "Time", "-o", "Wetness", "null", "--print"], cwd=tmp)
+        got = parse_print(r.stdout, {"Wetness"})
+        if r.returncode != 0 or len(got) != nx * ny:
+            failures.append("testshade soak_wetmap %s: %s" % (name, r.stderr.strip()[:300]))
+            return
+        for i, g in enumerate(got):
+            x, y = i % nx, i // nx
+            u, v = (x + 0.5) / nx, (y + 0.5) / ny
+            if name == "split" and abs(v - 0.5) < 0.15:
+                continue  # texture filtering across the step
+            start = 0.7 if name == "const" else (1.0 if v > 0.5 else 0.0)
+            p = min(max((u - (1.0 - start)) / fill, 0.0), 1.0)
+            want = 0.0 if start <= 0 else amount * ((1.0 - p) if drying else p)
+            worst = max(worst, abs(g["Wetness"][0] - want))
+            count += 1
+    ok = worst <= 1e-4 and count > 0
+    print(("ok  " if ok else "FAIL") + " soak_wetmap on maketx maps (constant, top/bottom split; drying and "
+          "wetting): %d points, worst %.2g (<= 1e-4)" % (count, worst))
+    if not ok:
+        failures.append("soak_wetmap differs from the schedule")
+
+
 def main():
     if len(sys.argv) != 4:
         print(__doc__)
         return 2
     root, checker, tmp = sys.argv[1:]
-    missing = [t for t in ("oslc", "testshade") if not shutil.which(t)]
+    missing = [t for t in ("oslc", "testshade", "maketx", "oiiotool") if not shutil.which(t)]
     if missing:
         skip("%s not on PATH (OSL has no Debian package); test_osl_math checks the shaders' math in C"
              % " and ".join(missing))
@@ -183,6 +229,7 @@ def main():
     if not failures:
         check_closures(tmp, names, failures)
         check_variants_agree(root, failures)
+        check_wetmap(tmp, failures)
         rows = testshade_rows(root, tmp, failures)
         csv = os.path.join(tmp, "testshade_rows.csv")
         with open(csv, "w") as f:
