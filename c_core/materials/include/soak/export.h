@@ -13,7 +13,8 @@
  *    every curve) and 1, refined by bisection until linear interpolation
  *    between neighbouring knots stays within SOAK_EXPORT_KNOT_TOL of
  *    soak_wetness_eval on every exported quantity (colours, weights,
- *    roughness, phase; coefficients in 1/m within that tolerance relative).
+ *    roughness, phase; coefficients in 1/m within that tolerance relative;
+ *    thin-sheet transmittance as 0.1 ln T: interpolate ln T).
  *
  * 2. The wetness function for ANY base colour (soak_wet_params_for_base):
  *    the preset's class (porosity, phase change, extinction, film, liquid)
