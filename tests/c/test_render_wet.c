@@ -22,6 +22,9 @@
  *     (< 10 %) but brighter at grazing angles (4.2, Fig. 6c). Each
  *     difference must exceed 4 combined standard errors.
  *  4. Determinism: same seed -> identical pixels for 1 and 2 threads.
+ *  6. A thin, weakly scattering index-matched slab lit from behind: the
+ *     radiance toward a viewer in front is single scattering in closed form
+ *     (next-event estimation must find the face the light enters through).
  *  5. A heterogeneous parameter grid (soak grid format) holding the same
  *     half-space parameters, plus one far-away dense voxel that raises the
  *     majorant (so null collisions happen everywhere), gives the same
@@ -213,6 +216,30 @@ static void test_paper(void)
     }
 }
 
+/* Index-matched slab of thickness d, sun of beam irradiance E behind it at
+ * cos mu_i, viewer in front along the normal (mu_o = 1), isotropic phase:
+ * single scattering L1 = sigma_s E / (4 pi mu_o) * int_0^d exp(-sigma_t ((d - z)/mu_i + z/mu_o)) dz.
+ * Multiple scattering adds about albedo * tau (here 0.1 * 0.1 = 1 %). */
+static void test_backlit_single_scattering(void)
+{
+    const double ss = 0.01, sa = 0.09, d = 1.0, mu_i = cos(SOAK_PI / 6), st = ss + sa;
+    const double a = st / 1.0 - st / mu_i;
+    const double L1 = ss / (4 * SOAK_PI) * exp(-st * d / mu_i) * (1 - exp(-a * d)) / a;
+    char text[2048];
+    snprintf(text, sizeof text,
+             "{\"render\": {\"width\": 1, \"height\": 1, \"max_depth\": 1000},"
+             " \"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0], \"up\": [0, 1, 0], \"fov\": 0.5},"
+             " \"lights\": [{\"type\": \"sun\", \"direction\": [0.5, 0, %.17g], \"irradiance\": 1}],"
+             " \"materials\": {\"m\": {\"type\": \"wet\", \"film\": {\"coverage\": 0},"
+             "   \"base\": {\"type\": \"medium\", \"sigma_s\": %g, \"sigma_a\": %g, \"g1\": 0, \"g2\": 0, \"w\": 1, \"ior\": 1}}},"
+             " \"objects\": [{\"type\": \"box\", \"min\": [-60, -60, %g], \"max\": [60, 60, 0], \"material\": \"m\"}]}",
+             -mu_i, ss, sa, -d);
+    double m, se;
+    if (!render_mean("back-lit slab", text, 131072, &m, &se)) return;
+    printf("  back-lit thin slab: traced %.6f +- %.6f, single scattering %.6f\n", m, se, L1);
+    check_close("back-lit slab radiance = single scattering (+ <= 2 % multiple)", m, L1 * 1.01, 4 * se + 0.02 * L1);
+}
+
 static void test_sand(void)
 {
     /* Sand: dry grains scatter nearly isotropically; water in the pores makes
@@ -299,6 +326,7 @@ int main(void)
     test_film_vs_lekner_dorf();
     test_halfspace_vs_measure();
     test_paper();
+    test_backlit_single_scattering();
     test_sand();
     test_rock();
     return check_finish();

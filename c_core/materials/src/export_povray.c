@@ -20,6 +20,12 @@
  *   - thin sheets: Kubelka-Munk transmittance (soak/sheet.h) and the
  *     backside diffuse amount of POV-Ray's "diffuse front, back", luminance
  *     matched: back = Y(T) / Y(pigment) (POV-Ray tints it by the pigment);
+ *   - the scattering medium for participating media and subsurface: sigma_s,
+ *     sigma_a (1/mm, per channel), the two-term Henyey-Greenstein phase
+ *     (g1, g2, weight w of g1) and the reduced mean free path
+ *     1 / (sigma_a + (1 - g) sigma_s) in mm, g = w g1 + (1 - w) g2 (0 where
+ *     there is no medium: conductors), which is what POV-Ray's subsurface
+ *     translucency takes (povray/README.md);
  *   - the wetness function for any base colour (soak_wet_params_for_base)
  *     on the nodes of soak_export_base_nodes, as <r,g,b> per (wetness, dry
  *     albedo) node.
@@ -39,18 +45,23 @@
 
 #define POV_ROUGH_MIN 5e-4
 #define POV_ROUGH_MAX 1.0
-#define POV_FORMAT_VERSION 1
+#define POV_FORMAT_VERSION 2
 
-enum { V_PIGMENT, V_REFLECT_METAL, V_SHEET_T, V_COUNT };
-enum { S_W, S_COVERAGE, S_FILL, S_FILM_R, S_SPEC, S_ROUGH, S_PHONG, S_BACK, S_COUNT };
+enum { V_PIGMENT, V_REFLECT_METAL, V_SHEET_T, V_SIGMA_S, V_SIGMA_A, V_MFP, V_COUNT };
+enum { S_W, S_COVERAGE, S_FILL, S_FILM_R, S_SPEC, S_ROUGH, S_PHONG, S_BACK, S_G1, S_G2, S_LOBE_W, S_COUNT };
 
-static const char *const vec_names[V_COUNT] = {"Soak_K_Pigment", "Soak_K_Metal_Reflect", "Soak_K_Sheet_T"};
+static const char *const vec_names[V_COUNT] = {"Soak_K_Pigment", "Soak_K_Metal_Reflect", "Soak_K_Sheet_T",
+                                               "Soak_K_Sigma_S", "Soak_K_Sigma_A",       "Soak_K_Mfp"};
 static const char *const scal_names[S_COUNT] = {"Soak_K_W",    "Soak_K_Coverage", "Soak_K_Fill",  "Soak_K_Film_Reflect",
-                                                "Soak_K_Spec", "Soak_K_Rough",    "Soak_K_Phong", "Soak_K_Sheet_Back"};
+                                                "Soak_K_Spec", "Soak_K_Rough",    "Soak_K_Phong", "Soak_K_Sheet_Back",
+                                                "Soak_K_G1",   "Soak_K_G2",       "Soak_K_Lobe_W"};
 static const char *const vec_docs[V_COUNT] = {
     "diffuse albedo under the film, film darkening included (pigment, finish diffuse 1)",
     "conductors: mirror reflectance of the metal under the film incl. the film's specular (reflection rgb)",
-    "thin sheets: Kubelka-Munk diffuse transmittance"};
+    "thin sheets: Kubelka-Munk diffuse transmittance",
+    "scattering coefficient sigma_s, 1/mm (0: no medium)",
+    "absorption coefficient sigma_a, 1/mm",
+    "reduced mean free path 1 / (sigma_a + (1 - g) sigma_s), mm (0: no medium)"};
 static const char *const scal_docs[S_COUNT] = {
     "wetness knot",
     "film coverage c",
@@ -59,7 +70,10 @@ static const char *const scal_docs[S_COUNT] = {
     "specular albedo of the material's own rough surface",
     "POV-Ray roughness of that highlight (1 / Blinn exponent)",
     "phong albedo of the liquid's sun glint",
-    "thin sheets: backside amount of diffuse 1, B (0 otherwise)"};
+    "thin sheets: backside amount of diffuse 1, B (0 otherwise)",
+    "Henyey-Greenstein asymmetry g1 (forward lobe)",
+    "Henyey-Greenstein asymmetry g2",
+    "weight w of the g1 lobe"};
 
 typedef struct pov_table {
     int n; /* knots */
@@ -95,6 +109,21 @@ static double pov_roughness(double alpha)
     return n <= 1.0 ? POV_ROUGH_MAX : clamp(1.0 / n, POV_ROUGH_MIN, POV_ROUGH_MAX);
 }
 
+/* The medium; metals have none (all zero). */
+static void fill_medium(const soak_wet_params *w, pov_table *t, int i)
+{
+    const double g = w->phase.w * w->phase.g1 + (1.0 - w->phase.w) * w->phase.g2;
+    t->v[V_SIGMA_S][i] = w->sigma_s;
+    t->v[V_SIGMA_A][i] = w->sigma_a;
+    for (int k = 0; k < 3; ++k) {
+        double reduced = soak_rgb_at(w->sigma_a, k) + (1.0 - g) * soak_rgb_at(w->sigma_s, k);
+        soak_rgb_set(&t->v[V_MFP][i], k, reduced > 0.0 ? 1.0 / reduced : 0.0);
+    }
+    t->s[S_G1][i] = w->phase.g1;
+    t->s[S_G2][i] = w->phase.g2;
+    t->s[S_LOBE_W][i] = w->phase.w;
+}
+
 static soak_status fill_knot(const soak_preset *p, const soak_liquid *l, double wet, pov_table *t, int i)
 {
     soak_wet_input in = soak_wet_input_steady(p, wet);
@@ -121,6 +150,7 @@ static soak_status fill_knot(const soak_preset *p, const soak_liquid *l, double 
     t->v[V_SHEET_T][i] = sheet_t;
     double yp = luminance(t->v[V_PIGMENT][i]);
     t->s[S_BACK][i] = p->kind == SOAK_KIND_THIN_SHEET && yp > 1e-6 ? luminance(sheet_t) / yp : 0.0;
+    fill_medium(&w, t, i);
     return SOAK_OK;
 }
 

@@ -36,7 +36,8 @@
  * Next-event estimation inside the medium (seed 000 sec. 3.1: "for the shadow
  * rays ... we use Equation 4"): for each delta light (sun, point) the light
  * direction wl in air is refracted through the flat film at the surface
- * normal into the material (n2 cancels for parallel layers), the exit point
+ * normal (of the face last crossed, or the opposite one for a light behind
+ * it: a sheet lit from behind) into the material (n2 cancels for parallel layers), the exit point
  * is found by tracing that direction, and the estimate is
  *   beta / n3^2 * p(d_in . d3) * T_medium(x -> y) * T_film(cos1) * (cos1 / cos3) * E
  * (1/n3^2: the entry radiance factor, kept out of beta, see rt_cross_stack) where T_film = (1-F12)(1-F23^k) (soak_jensen_shadow, averaged over film /
@@ -193,6 +194,10 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
         const soak_light *l = &s->lights[li];
         if (l->type != SOAK_LIGHT_DIRECTIONAL && l->type != SOAK_LIGHT_POINT) continue;
         soak_vec3 n = c->surf->n_ref, wl = l->type == SOAK_LIGHT_DIRECTIONAL ? l->direction : soak_v3_norm(soak_v3_sub(l->position, x));
+        /* A light behind the face the path came in through (a thin sheet
+         * lit from behind) reaches x through another face: start from the
+         * opposite normal, the exit search below finds the real face. */
+        if (!(soak_v3_dot(wl, n) > 0)) n = soak_v3_scale(n, -1.0);
         soak_hit h;
         int found = 0;
         soak_vec3 d3 = wl;
