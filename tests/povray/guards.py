@@ -37,11 +37,26 @@ BAD = [  # (snippet, the argument the message must name)
      'Soak_Spill_Normal(W, -1) } }', "Amount = -1"),
     ('#declare C = Soak_Wet_Colour("sand", "water", 0.5, <1.2, 0.5, 0.5>);', "Colour = <1.2"),
     ('#declare C = Soak_Wet_Colour("sand", "water", 0.5, <0.5, -0.1, 0.5>);', "Colour = <0.5"),
+    # media (thin sheets)
+    ('box { 0, 1 hollow Soak_Clear_Texture() interior { Soak_Media_Raw(-1, 0, 0, 0, 1) } }', "Sigma_S = <-1"),
+    ('box { 0, 1 hollow Soak_Clear_Texture() interior { Soak_Media_Raw(1, <0, 0, -0.5>, 0, 0, 1) } }', "Sigma_A = <0"),
+    ('box { 0, 1 hollow Soak_Clear_Texture() interior { Soak_Media_Raw(1, 0, 1, 0, 1) } }', "G1 = 1"),
+    ('box { 0, 1 hollow Soak_Clear_Texture() interior { Soak_Media_Raw(1, 0, 0, -1, 1) } }', "G2 = -1"),
+    ('box { 0, 1 hollow Soak_Clear_Texture() interior { Soak_Media_Raw(1, 0, 0.5, 0, 1.5) } }', "W = 1.5"),
+    ('box { 0, 1 hollow Soak_Sheet_Material("copper", "water", 0.5) }', 'Preset = "copper" is a metal'),
+    ('box { 0, 1 hollow Soak_Sheet_Material("cotton", "water", -0.5) }', "Wetness = -0.5"),
+    ('#declare W = function { x }\nbox { 0, 1 hollow Soak_Sheet_Material_Fn("cotton", "water", W, 2) }',
+     "Phase_Wetness = 2"),
+    ('object { Soak_Sheet_Object("cotton", "water", 0.5, 0) }', "Thickness_mm = 0"),
+    ('#declare F = Soak_Df3_Fn("x.df3", <0, 4, 4>, 1)', "Dims = <0"),
+    ('#declare Soak_Media_Lobes_Max = 1;\n'
+     'box { 0, 1 hollow Soak_Clear_Texture() interior { Soak_Media_Raw(1, 0, 0, 0, 1) } }', "Soak_Media_Lobes_Max = 1"),
 ]
 
 WARN = [
     ('#declare W = function { x }\nbox { <0,0,-1>, <1,1,0> texture { pigment { rgb 0.5 } '
      'Soak_Spill_Normal(W, 3) } }', "very strong bump"),
+    ('object { Soak_Sheet_Object("paper", "water", 1, 0.8) }', "media scatter once"),
 ]
 
 
@@ -104,6 +119,16 @@ def main():
     ok = rc == 0 and np.all(np.isfinite(img)) and img.min() >= 0
     bad += not ok
     print(f"{'ok  ' if ok else 'FAIL'} all presets x liquids x wetness edges render (exit {rc})")
+
+    # ... and as media sheets (every preset with a medium; the weights w = 0 and 1 included).
+    rc, log, out = render(tmp, lib, "all_media", body.replace(
+        "Soak_Wet_Material(Soak_Preset_Names[P], Soak_Liquid_Names[L], Ws[K]) }",
+        "#if (Soak_Preset_Kind[P] != 2) hollow Soak_Sheet_Material(Soak_Preset_Names[P], Soak_Liquid_Names[L], Ws[K])"
+        " scale <1, 1, 0.001> #end }"), size=30)
+    img = read_image(out) if rc == 0 else None
+    ok = rc == 0 and np.all(np.isfinite(img)) and img.min() >= 0
+    bad += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} all presets with a medium x liquids x wetness edges render as media sheets (exit {rc})")
 
     # Wetness functions outside [0, 1] are clamped, not wrapped (POV-Ray wraps pattern values >= 1).
     pairs = [("function { 5 }", "1"), ("function { 1 }", "1"), ("function { -3 }", "0"), ("function { 0.5 }", "0.5")]
