@@ -30,4 +30,10 @@ for k in 0 1 2 3; do
   frames+=("$OUT/bricks_$k.png")
 done
 oiiotool "${frames[@]}" --mosaic 4x1 -o "$OUT/bricks_drying.png"
+# gauze lit from behind (media): a coffee spill as a df3 wetness volume from soak bake
+"$SOAK" bake turbulence --width 256 --height 256 --frequency 3 --threshold 0.05 --softness 0.08 --seed 5 --threads 2 \
+  -o "$OUT/gauze_wet.png" >/dev/null
+"$SOAK" bake volume --material cotton --liquid coffee --map "$OUT/gauze_wet.png" --unit mm --size 100,100,0.03 \
+  --depth 1 --dims 128,128,2 --format df3 --threads 2 -o "$OUT/gauze_vol" >/dev/null
+pov gauze_media.pov gauze_media.exr "$W" "$((W * 3 / 8))" Declare=Use_Map=1
 echo "rendered into $OUT"

@@ -1,7 +1,8 @@
 """What the seed scenes must show (rendered small by povray/render_scenes.sh):
 wet paper darker than dry when lit from the front, brighter from behind
 (seed 000 sec. 4.1); the porosity sweep's wet pots darker as porosity grows;
-the drying bricks lighter frame by frame.
+the drying bricks lighter frame by frame; the gauze brighter from behind when
+wet (media, forward scattering) and the coffee spill of its df3 volume visible.
 
 usage: scenes_check.py SOAK ROOT TMPDIR"""
 import os
@@ -42,6 +43,17 @@ def main():
     frames = [lum(read_image(os.path.join(tmp, f"bricks_{k}.exr"))) for k in range(4)]
     check(f"bricks dry over time: {[round(f, 4) for f in frames]} increasing",
           all(b > a for a, b in zip(frames, frames[1:])))
+    # gauze (media) lit from behind: three panels at x in [0.06, 0.35], [0.35, 0.65], [0.65, 0.94] of the width
+    img = read_image(os.path.join(tmp, "gauze_media.exr"))
+    h, w = img.shape[:2]
+    rows = slice(h // 4, h * 3 // 4)
+    y = (img[rows] * [0.2126, 0.7152, 0.0722]).sum(-1)
+    dry, wet = y[:, int(w * 0.1):int(w * 0.3)].mean(), y[:, int(w * 0.4):int(w * 0.6)].mean()
+    spill = np.sort(y[:, int(w * 0.7):int(w * 0.9)].ravel())
+    lo, hi = spill[len(spill) // 10], spill[len(spill) * 9 // 10]
+    check(f"gauze from behind: wet {wet:.4f} brighter than dry {dry:.4f} by > 20 %", wet > 1.2 * dry)
+    check(f"gauze coffee spill from the df3 volume: darkest tenth {lo:.4f} < 0.95 x brightest tenth {hi:.4f}",
+          lo < 0.95 * hi)
     if bad:
         fail(f"{bad} scene checks failed")
     print("PASS")
