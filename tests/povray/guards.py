@@ -130,6 +130,19 @@ def main():
     bad += not ok
     print(f"{'ok  ' if ok else 'FAIL'} all presets with a medium x liquids x wetness edges render as media sheets (exit {rc})")
 
+    # A soak_materials.inc of another layout (stale copy next to the scene) stops the parse.
+    old = os.path.join(tmp, "old_layout")
+    os.makedirs(old, exist_ok=True)
+    with open(os.path.join(lib, "soak_materials.inc")) as f:
+        data = f.read().replace("#declare Soak_Data_Format_Version = 2;", "#declare Soak_Data_Format_Version = 1;")
+    with open(os.path.join(old, "soak_materials.inc"), "w") as f:
+        f.write(data)
+    pov = write(old, "stale", 'box { 0, 1 Soak_Wet_Material("sand", "water", 0.5) }')
+    rc, log = povray(pov, os.path.join(old, "stale.exr"), 4, 4, lib, cwd=old)
+    ok = rc == 1 and "regenerate it" in " ".join(log.split())
+    bad += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} soak_materials.inc of layout 1 -> exit {rc}, asks to regenerate it")
+
     # Wetness functions outside [0, 1] are clamped, not wrapped (POV-Ray wraps pattern values >= 1).
     pairs = [("function { 5 }", "1"), ("function { 1 }", "1"), ("function { -3 }", "0"), ("function { 0.5 }", "0.5")]
     for i, (fn, w) in enumerate(pairs):
