@@ -27,7 +27,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "povray"))
 import flat_ground as fg  # noqa: E402
-from soakpov import read_image  # noqa: E402
+from soakpov import export_json, read_image  # noqa: E402
 
 SUN_SIN = 0.01      # the sun: a sphere light subtending sin(alpha) = 0.01 (0.57 deg)
 SUN_DIST = 1.0e4
@@ -120,12 +120,7 @@ def main():
         fail("oiiotool missing (installed by the README's set-up)")
     os.makedirs(tmp, exist_ok=True)
     compile_shaders(root, tmp)
-    ej = os.path.join(tmp, "export.json")
-    r = subprocess.run([soak, "export", "--target", "json", "-o", ej], capture_output=True, text=True)
-    if r.returncode != 0:
-        fail(f"soak export --target json: {r.stderr}")
-    with open(ej) as f:
-        exp = json.load(f)
+    exp = export_json(soak, tmp)
     n_water = next(l for l in exp["liquids"] if l["name"] == "water")["ior"]
     patches = fg.wetness_levels(exp, fg.PATCHES)
 

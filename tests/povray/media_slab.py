@@ -47,7 +47,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from soakpov import fail, need_tool, povray, read_image  # noqa: E402
+from soakpov import export_json, fail, need_tool, povray, read_image  # noqa: E402
 
 MU = math.cos(math.pi / 6)
 E = math.pi  # sun irradiance: POV-Ray light colour E / pi = 1
@@ -240,12 +240,7 @@ def main():
     os.makedirs(tmp, exist_ok=True)
     lib = os.path.join(root, "povray")
     raw_slabs(tmp, lib)
-    ej = os.path.join(tmp, "export.json")
-    r = subprocess.run([soak, "export", "--target", "json", "-o", ej], capture_output=True, text=True)
-    if r.returncode != 0:
-        fail(f"soak export --target json: exit {r.returncode}: {r.stderr}")
-    with open(ej) as f:
-        exp = json.load(f)
+    exp = export_json(soak, tmp)
     sheets(soak, tmp, lib, exp)
     df3_sheets(soak, tmp, lib)
     print("PASS")

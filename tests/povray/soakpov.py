@@ -1,4 +1,5 @@
 """Shared helpers of the POV-Ray front-end tests (run with /usr/bin/python3)."""
+import json
 import os
 import re
 import subprocess
@@ -44,3 +45,13 @@ def need_tool(name):
     from shutil import which
     if which(name) is None:
         fail(f"{name} not found on PATH (installed by the README's set-up; a front-end test never passes without it)")
+
+
+def export_json(soak, tmp):
+    """`soak export --target json` into tmp, parsed (the core's tables: the references' data)."""
+    path = os.path.join(tmp, "export.json")
+    r = subprocess.run([soak, "export", "--target", "json", "-o", path], capture_output=True, text=True)
+    if r.returncode != 0:
+        fail(f"soak export --target json: exit {r.returncode}: {r.stderr}")
+    with open(path) as f:
+        return json.load(f)
