@@ -20,6 +20,9 @@ cat > "$TMP/plain.inc" <<'INC'
 #undef Soak_Puddle_Material #macro Soak_Puddle_Material(P, L, W, Lv, N) Plain() #end
 #undef Soak_Sheet_Material #macro Soak_Sheet_Material(P, L, W) material { Plain() } #end
 #undef Soak_Sheet_Material_Fn #macro Soak_Sheet_Material_Fn(P, L, W, Pw) material { Plain() } #end
+#undef Soak_Wet_Subsurface_Material #macro Soak_Wet_Subsurface_Material(P, L, W) Plain() #end
+#undef Soak_Wet_User_Subsurface_Material #macro Soak_Wet_User_Subsurface_Material(P, L, W, U) Plain() #end
+#undef Soak_Subsurface_Settings #macro Soak_Subsurface_Settings() #end
 INC
 cp "$ROOT"/scenes/povray/*.pov "$TMP/"
 for f in "$TMP"/*.pov; do sed 's|#include "soak.inc"|#include "plain.inc"|' "$f" > "${f%.pov}_plain.pov"; done
@@ -33,7 +36,7 @@ echo "# POV-Ray: wet macros vs plain textures ($(date -u +%Y-%m-%d), ${W}x${H}, 
 echo
 echo "| scene | plain (s) | wet (s) | overhead ratio |"
 echo "|---|---|---|---|"
-for s in wet_paper beach_rock bricks_drying flowerpot_porosity film_copper gauze_media; do
+for s in wet_paper beach_rock bricks_drying flowerpot_porosity film_copper gauze_media marble_subsurface; do
   bp=1e9 bw=1e9
   for r in $(seq "$REPEAT"); do
     p=$(cpu "$TMP/${s}_plain.pov"); w=$(cpu "$TMP/$s.pov")

@@ -1,7 +1,11 @@
 """soak.inc input guards: every bad argument stops POV-Ray with #error naming
 it (exit 1, never POV-Ray's assertion 134 or segfault 139); doubtful input
 warns; wetness functions outside [0, 1] are clamped, not wrapped; every preset
-and liquid renders at the wetness edges.
+and liquid renders at the wetness edges. Subsurface: POV-Ray 3.7's crash paths
+(an object with subsurface parsed before global_settings: segfault 139; a zero
+pigment or translucency channel, diffuse 0: assertion 134, shown here on raw
+scenes) are unreachable through the macros: #error before the settings, clamped
+tables render finite, metals #error.
 
 usage: guards.py SOAK ROOT TMPDIR"""
 import os
@@ -53,6 +57,36 @@ BAD = [  # (snippet, the argument the message must name)
      'box { 0, 1 hollow Soak_Clear_Texture() interior { Soak_Media_Raw(1, 0, 0, 0, 1) } }', "Soak_Media_Lobes_Max = 1"),
 ]
 
+SSS_HEAD = """#version 3.7;
+#declare Soak_Subsurface_Samples = <10, 4>;
+#include "soak.inc"
+camera { location <0, -5, 3> look_at 0 }
+light_source { <3, -2, 10> rgb 1 }
+"""
+SSS_SET = "global_settings { assumed_gamma 1.0 Soak_Subsurface_Settings() }\n"
+SSS_BAD = [  # (scene after SSS_HEAD, what the message must name)
+    ('sphere { 0, 1 Soak_Wet_Subsurface_Material("marble", "water", 0) }\n' + SSS_SET,
+     "subsurface material before global_settings"),
+    ('sphere { 0, 1 Soak_Wet_Subsurface_Material("marble", "water", 0) }\n', "before global_settings"),
+    (SSS_SET + 'sphere { 0, 1 Soak_Wet_Subsurface_Material("copper", "water", 0.5) }', 'Preset = "copper"'),
+    (SSS_SET + 'sphere { 0, 1 Soak_Wet_User_Subsurface_Material("aluminium", "water", 0.5, pigment { rgb 0.5 }) }',
+     'Preset = "aluminium"'),
+    (SSS_SET + 'sphere { 0, 1 Soak_Wet_Subsurface_Material("marble", "water", 1.2) }', "Wetness = 1.2"),
+    (SSS_SET + 'sphere { 0, 1 Soak_Wet_Subsurface_Material("marble", "wat", 1) }', 'Liquid = "wat"'),
+    ('#declare Soak_Mm_Per_Unit = 0;\n' + SSS_SET, "Soak_Mm_Per_Unit = 0"),
+    ('#declare Soak_Subsurface_Samples = <0, 5>;\n' + SSS_SET, "Soak_Subsurface_Samples = <0"),
+]
+# POV-Ray's own crash paths, written raw (no macros): they must still crash for the guards above to mean anything
+# (exit codes as Python sees them: -11 = SIGSEGV, the shell's 139; -6 = SIGABRT, the assertion, 134)
+SSS_RAW = [
+    ("before global_settings", 'sphere { 0, 1 pigment { rgb 0.5 } finish { diffuse 1 subsurface { translucency 0.3 } } '
+     'interior { ior 1.33 } }\nglobal_settings { subsurface { samples 10, 4 } }', -11),
+    ("zero pigment channel", 'global_settings { subsurface { samples 10, 4 } }\nsphere { 0, 1 pigment { rgb <0.5, 0, 0.5> } '
+     'finish { diffuse 1 subsurface { translucency 0.3 } } interior { ior 1.33 } }', -6),
+    ("zero translucency channel", 'global_settings { subsurface { samples 10, 4 } }\nsphere { 0, 1 pigment { rgb 0.5 } '
+     'finish { diffuse 1 subsurface { translucency <0.3, 0, 0.3> } } interior { ior 1.33 } }', -6),
+]
+
 WARN = [
     ('#declare W = function { x }\nbox { <0,0,-1>, <1,1,0> texture { pigment { rgb 0.5 } '
      'Soak_Spill_Normal(W, 3) } }', "very strong bump"),
@@ -67,11 +101,18 @@ def write(tmp, name, body):
     return path
 
 
+def write_raw(tmp, name, text):
+    path = os.path.join(tmp, name + ".pov")
+    with open(path, "w") as f:
+        f.write(text + "\n")
+    return path
+
+
 def render(tmp, lib, name, body, size=4):
     pov = write(tmp, name, body)
     out = os.path.join(tmp, name + ".exr")
     rc, log = povray(pov, out, size, size, lib)
-    if rc in (134, 139):
+    if rc in (134, 139) or rc < 0:  # Python reports a signal as -N (the shell's 128 + N)
         fail(f"{name}: POV-Ray crashed (exit {rc})\n{log[-1500:]}")
     return rc, log, out
 
@@ -158,13 +199,71 @@ def main():
         bad += not ok
         print(f"{'ok  ' if ok else 'FAIL'} wetness {fn} renders as the constant {w}: {pa} vs {pb}")
 
-    # No macro emits POV-Ray's crash-prone subsurface block (see povray/README.md).
-    with open(os.path.join(lib, "soak.inc")) as f:
-        src = f.read()
-    code = "\n".join(l.split("//")[0] for l in src.splitlines())
-    ok = "subsurface" not in code and "translucency" not in code
+    # Subsurface: POV-Ray's crash paths, raw (they must crash, else the guards below prove nothing) ...
+    for i, (what, body, want) in enumerate(SSS_RAW):
+        pov = os.path.join(tmp, f"sss_raw{i}.pov")
+        with open(pov, "w") as f:
+            f.write("#version 3.7;\ncamera { location <0, -5, 3> look_at 0 }\nlight_source { <3, -2, 10> rgb 1 }\n" + body)
+        rc, _ = povray(pov, os.path.join(tmp, f"sss_raw{i}.exr"), 16, 16, lib)
+        ok = rc == want
+        bad += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} raw POV-Ray, subsurface {what}: exit {rc} (expected {want}: the crash the macros guard)")
+    # ... and through the macros: #error naming the cause (exit 1), never 134/139
+    for i, (body, arg) in enumerate(SSS_BAD):
+        pov = os.path.join(tmp, f"sss_bad{i}.pov")
+        with open(pov, "w") as f:
+            f.write(SSS_HEAD + body + "\n")
+        rc, log = povray(pov, os.path.join(tmp, f"sss_bad{i}.exr"), 16, 16, lib)
+        ok = rc == 1 and arg in " ".join(log.split())
+        bad += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} subsurface bad input -> exit {rc}, names '{arg}'")
+        if not ok:
+            print(log[-800:])
+    rc, log = povray(write_raw(tmp, "sss_warn", SSS_HEAD.replace("<10, 4>", "<5, 4>") + SSS_SET),
+                     os.path.join(tmp, "sss_warn.exr"), 8, 8, lib)
+    ok = rc == 0 and "a noisy BSSRDF" in " ".join(log.split())
     bad += not ok
-    print(f"{'ok  ' if ok else 'FAIL'} soak.inc never emits subsurface/translucency")
+    print(f"{'ok  ' if ok else 'FAIL'} subsurface, 5 diffuse samples -> exit {rc}, warns 'a noisy BSSRDF'")
+    # zero, tiny and > 1 table values (written into the marble table's knots) are clamped: finite, no abort
+    body = SSS_SET + """#declare T = Soak_Table("marble", "water");
+#declare I = Soak_K_Start[T];
+#while (I < Soak_K_Start[T] + Soak_K_Count[T])
+  #declare Soak_K_Mfp[I] = <0, 1e-12, 0.3>;
+  #declare Soak_K_Pigment[I] = <0, 1e-12, 1.5>;
+  #declare I = I + 1;
+#end
+sphere { 0, 1 Soak_Wet_Subsurface_Material("marble", "water", 0.5) }
+sphere { <1.5, 1, 0>, 0.6 Soak_Wet_User_Subsurface_Material("marble", "water", 1, pigment { rgb <0, 1, 2> }) }
+"""
+    rc, log = povray(write_raw(tmp, "sss_zero", SSS_HEAD + body), os.path.join(tmp, "sss_zero.exr"), 16, 16, lib)
+    img = read_image(os.path.join(tmp, "sss_zero.exr")) if rc == 0 else None
+    ok = rc == 0 and np.all(np.isfinite(img)) and img.max() > 0
+    bad += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} subsurface with zero/tiny/>1 pigment and translucency channels renders finite (exit {rc})")
+    # every preset with a medium x liquid at the wetness edges renders finite through the subsurface macro
+    body = SSS_SET + """#declare P = 0;
+#while (P < Soak_N_Presets)
+  #if (Soak_Preset_Kind[P] != 2)
+    #declare L = 0;
+    #while (L < Soak_N_Liquids)
+      #declare Ws = array[5] {0, 1e-9, Soak_Preset_Saturation[P], 1 - 1e-9, 1}
+      #declare K = 0;
+      #while (K < 5)
+        sphere { <P - 5, L * 2, K * 2 - 4>, 0.8 Soak_Wet_Subsurface_Material(Soak_Preset_Names[P], Soak_Liquid_Names[L], Ws[K]) }
+        #declare K = K + 1;
+      #end
+      #declare L = L + 1;
+    #end
+  #end
+  #declare P = P + 1;
+#end
+"""
+    rc, log = povray(write_raw(tmp, "sss_all", SSS_HEAD.replace("<0, -5, 3>", "<0, -30, 8>") + body),
+                     os.path.join(tmp, "sss_all.exr"), 48, 48, lib)
+    img = read_image(os.path.join(tmp, "sss_all.exr")) if rc == 0 else None
+    ok = rc == 0 and np.all(np.isfinite(img)) and img.min() >= 0
+    bad += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} subsurface: every preset with a medium x liquid x wetness edge renders finite (exit {rc})")
     if bad:
         fail(f"{bad} guard checks failed")
     print("PASS")

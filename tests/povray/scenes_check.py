@@ -2,7 +2,9 @@
 wet paper darker than dry when lit from the front, brighter from behind
 (seed 000 sec. 4.1); the porosity sweep's wet pots darker as porosity grows;
 the drying bricks lighter frame by frame; the gauze brighter from behind when
-wet (media, forward scattering) and the coffee spill of its df3 volume visible.
+wet (media, forward scattering) and the coffee spill of its df3 volume visible;
+the marble fins (subsurface) glow with the light crossing them from behind, the
+dry fin brighter than the wet one.
 
 usage: scenes_check.py SOAK ROOT TMPDIR"""
 import os
@@ -54,6 +56,17 @@ def main():
     check(f"gauze from behind: wet {wet:.4f} brighter than dry {dry:.4f} by > 20 %", wet > 1.2 * dry)
     check(f"gauze coffee spill from the df3 volume: darkest tenth {lo:.4f} < 0.95 x brightest tenth {hi:.4f}",
           lo < 0.95 * hi)
+
+    img = read_image(os.path.join(tmp, "marble_subsurface.exr"))
+    h, w = img.shape[:2]
+
+    def at(fx, fy):  # mean luminance of a 3x3 window at a fraction of the frame
+        x, y = int(fx * w), int(fy * h)
+        return lum(img[y - 1:y + 2, x - 1:x + 2])
+    fin_dry, fin_wet, front = at(130 / 480, 105 / 360), at(340 / 480, 105 / 360), at(130 / 480, 220 / 360)
+    # without light through them the fins' front faces would be at the ambient level of the blocks' (same pigment)
+    check(f"marble: fins lit through from behind {fin_dry:.4f} (dry), {fin_wet:.4f} (wet) > 1.3 x a block's "
+          f"front face {front:.4f} (ambient only); dry fin brighter", min(fin_dry, fin_wet) > 1.3 * front and fin_dry > fin_wet)
     if bad:
         fail(f"{bad} scene checks failed")
     print("PASS")

@@ -24,8 +24,10 @@
  *     sigma_a (1/mm, per channel), the two-term Henyey-Greenstein phase
  *     (g1, g2, weight w of g1) and the reduced mean free path
  *     1 / (sigma_a + (1 - g) sigma_s) in mm, g = w g1 + (1 - w) g2 (0 where
- *     there is no medium: conductors), which is what POV-Ray's subsurface
- *     translucency takes (povray/README.md);
+ *     there is no medium: conductors); soak.inc passes it as POV-Ray's
+ *     subsurface translucency, which POV-Ray reads as 1 / sigma'_s with the
+ *     reduced albedo from the pigment (the mismatch of diffusion lengths
+ *     this leaves: povray/README.md, "Known limits");
  *   - the wetness function for any base colour (soak_wet_params_for_base)
  *     on the nodes of soak_export_base_nodes, as <r,g,b> per (wetness, dry
  *     albedo) node.
