@@ -1,8 +1,9 @@
 // Marble with POV-Ray's subsurface scattering (Soak_Wet_Subsurface_Material):
-// a dry block (left) and a wet one (right: the water film darkens it and
-// shortens POV-Ray's diffusion length), lit from behind: a thin marble fin on
-// each block glows with the light that crosses its 3 mm, and the fin's shadow
-// on the block's top has a soft edge (light diffuses a few mm past it).
+// a dry block (left) and a wet one (right: the water film darkens it; the
+// diffusion length is the core's, the same wet and dry), lit from behind: a
+// thin marble fin on each block glows with the light that crosses its 3 mm,
+// and the fin's shadow on the block's top has a soft edge (light diffuses a
+// few mm past it).
 // Scene units are mm (Soak_Mm_Per_Unit = 1). Needs +Q9 (POV-Ray's default).
 // povray +Imarble_subsurface.pov +Lpovray
 #version 3.7;

@@ -9,6 +9,7 @@ tables render finite, metals #error.
 
 usage: guards.py SOAK ROOT TMPDIR"""
 import os
+import re
 import sys
 
 import numpy as np
@@ -175,14 +176,17 @@ def main():
     old = os.path.join(tmp, "old_layout")
     os.makedirs(old, exist_ok=True)
     with open(os.path.join(lib, "soak_materials.inc")) as f:
-        data = f.read().replace("#declare Soak_Data_Format_Version = 2;", "#declare Soak_Data_Format_Version = 1;")
+        data = f.read()
+    current = int(re.search(r"#declare Soak_Data_Format_Version = (\d+);", data).group(1))
+    data = data.replace(f"#declare Soak_Data_Format_Version = {current};",
+                        f"#declare Soak_Data_Format_Version = {current - 1};")
     with open(os.path.join(old, "soak_materials.inc"), "w") as f:
         f.write(data)
     pov = write(old, "stale", 'box { 0, 1 Soak_Wet_Material("sand", "water", 0.5) }')
     rc, log = povray(pov, os.path.join(old, "stale.exr"), 4, 4, lib, cwd=old)
     ok = rc == 1 and "regenerate it" in " ".join(log.split())
     bad += not ok
-    print(f"{'ok  ' if ok else 'FAIL'} soak_materials.inc of layout 1 -> exit {rc}, asks to regenerate it")
+    print(f"{'ok  ' if ok else 'FAIL'} soak_materials.inc of layout {current - 1} -> exit {rc}, asks to regenerate it")
 
     # Wetness functions outside [0, 1] are clamped, not wrapped (POV-Ray wraps pattern values >= 1).
     pairs = [("function { 5 }", "1"), ("function { 1 }", "1"), ("function { -3 }", "0"), ("function { 0.5 }", "0.5")]
@@ -228,7 +232,7 @@ def main():
     body = SSS_SET + """#declare T = Soak_Table("marble", "water");
 #declare I = Soak_K_Start[T];
 #while (I < Soak_K_Start[T] + Soak_K_Count[T])
-  #declare Soak_K_Mfp[I] = <0, 1e-12, 0.3>;
+  #declare Soak_K_Translucency[I] = <0, 1e-12, 0.3>;
   #declare Soak_K_Pigment[I] = <0, 1e-12, 1.5>;
   #declare I = I + 1;
 #end

@@ -39,10 +39,17 @@ background. Checks:
     lit part the same plus alpha'/24 Ft(0)^2. Marble dry at mm_per_unit 1
     (1 unit = 1 mm) and limestone wet with mm_per_unit 0.01 (its diffusion
     length is 0.06 mm: the same geometry in units of 10 um): the light
-    bleeds into the shadow over a distance set by the table's Mfp;
+    bleeds into the shadow over a distance set by the table's translucency;
 (d) at +Q8 the same block renders as plain diffuse (lit = pigment, no light
     past the shadow edge); there Soak_Wet_User_Subsurface_Material shows the
-    same wet pigment as Soak_Wet_User_Material (an identity: 1e-3).
+    same wet pigment as Soak_Wet_User_Material (an identity: 1e-3);
+(e) the diffusion length: for every preset with a medium, liquid and knot,
+    POV-Ray's 1/sigma_tr from the table's pigment and Soak_K_Translucency
+    (through the conventions above, replicated here) equals the core's
+    1/sqrt(3 sigma_a (sigma_a + (1 - g) sigma_s)) from the table's medium
+    (g = w g1 + (1 - w) g2) within 1e-4 relative (7-digit numbers), unless
+    the translucency sits at a clamp (counted, printed). This is what (c)'s
+    rendered profiles then carry into the picture.
 
 Tolerance per compared value: 4 standard errors of the rendered mean (the
 BSSRDF is Monte Carlo; the error is estimated from the spread of 8 row
@@ -94,17 +101,18 @@ def read_inc(root):
 
     names = re.findall(r'"(\w+)"', re.search(r"Soak_Preset_Names = array\[\d+\] \{(.*?)\}", src, re.S).group(1))
     return {"names": names, "n_liq": int(re.search(r"Soak_N_Liquids = (\d+)", src).group(1)),
-            **{k: arr("Soak_" + k) for k in ("K_Start", "K_Count", "K_W", "K_Pigment", "K_Mfp", "Liquid_Ior")}}
+            **{k: arr("Soak_" + k) for k in ("K_Start", "K_Count", "K_W", "K_Pigment", "K_Translucency", "K_Sigma_S", "K_Sigma_A",
+                                                 "K_G1", "K_G2", "K_Lobe_W", "Liquid_Ior")}}
 
 
 def knot(tab, preset, wet):
-    """Pigment and Mfp of the table at a knot (the test uses wetness knots: no interpolation)."""
+    """Pigment and translucency of the table at a knot (the test uses wetness knots: no interpolation)."""
     t = tab["names"].index(preset) * tab["n_liq"]  # water = liquid 0
     s, c = int(tab["K_Start"][t]), int(tab["K_Count"][t])
     i = s + int(np.argmin(abs(tab["K_W"][s:s + c] - wet)))
     if abs(tab["K_W"][i] - wet) > 1e-9:
         raise RuntimeError(f"{preset}: {wet} is not a knot")
-    return tab["K_Pigment"][i], tab["K_Mfp"][i]
+    return tab["K_Pigment"][i], tab["K_Translucency"][i]
 
 
 # ---- the reference (Jensen 2001 in POV-Ray's conventions; see the docstring) ----
@@ -178,6 +186,37 @@ def reference(pig, T, eta, d_mm):
     return res, lit, ap, A
 
 
+def pov_sigma_tr(pig, T, eta):
+    """POV-Ray's sigma_tr (1/mm) for a pigment (Rd) and translucency T (mm)."""
+    A = (1 + fdr(eta)) / (1 - fdr(eta))
+    ap = alpha_prime(np.clip(pig, 1e-3, 1), A)
+    sps = 1 / T
+    spt = sps / ap
+    return np.sqrt(3 * (spt - sps) * spt)
+
+
+def diffusion_lengths(tab):
+    """(e): worst relative error of POV-Ray's sigma_tr vs the core's over every medium knot; clamped count."""
+    worst, clamped, n = 0.0, 0, 0
+    for p in range(len(tab["names"])):
+        for liq in range(tab["n_liq"]):
+            t = p * tab["n_liq"] + liq
+            s0, c = int(tab["K_Start"][t]), int(tab["K_Count"][t])
+            for i in range(s0, s0 + c):
+                ss, sa, T = tab["K_Sigma_S"][i], tab["K_Sigma_A"][i], tab["K_Translucency"][i]
+                if not ss.any():
+                    continue
+                g = tab["K_Lobe_W"][i] * tab["K_G1"][i] + (1 - tab["K_Lobe_W"][i]) * tab["K_G2"][i]
+                core = np.sqrt(3 * sa * (sa + (1 - g) * ss))
+                free = (T > 1e-3 * 1.0001) & (T < 1e3 * 0.9999) & (core > 0)
+                clamped += int((~free).sum())
+                n += 3
+                if free.any():
+                    pov = pov_sigma_tr(tab["K_Pigment"][i][free], T[free], float(tab["Liquid_Ior"][liq]))
+                    worst = max(worst, float(np.max(abs(pov / core[free] - 1))))
+    return worst, clamped, n
+
+
 def self_check(pig, T, eta):
     """The reference's numerical plane integral against Jensen's closed form (an identity)."""
     A = (1 + fdr(eta)) / (1 - fdr(eta))
@@ -232,6 +271,11 @@ def main():
     e_int, e_inv = self_check(pig_d, T_d, eta)
     check(f"reference: plane integral of the dipole vs Jensen's closed form {e_int:.1e} (< 2e-3); "
           f"Rd(POV-Ray's interpolated alpha') vs pigment {e_inv:.1e}", e_int < 2e-3)
+
+    # (e) diffusion lengths of the whole table (no rendering)
+    worst, clamped, n = diffusion_lengths(tab)
+    check(f"(e) POV-Ray's diffusion length from pigment + Soak_K_Translucency vs the core's sigma_tr: worst "
+          f"{worst:.1e} relative over {n - clamped} channel knots (< 1e-4); {clamped} at a clamp", worst < 1e-4)
 
     # (a), (b): lit level, marble dry and wet
     lit = {}

@@ -24,10 +24,9 @@
  *     sigma_a (1/mm, per channel), the two-term Henyey-Greenstein phase
  *     (g1, g2, weight w of g1) and the reduced mean free path
  *     1 / (sigma_a + (1 - g) sigma_s) in mm, g = w g1 + (1 - w) g2 (0 where
- *     there is no medium: conductors); soak.inc passes it as POV-Ray's
- *     subsurface translucency, which POV-Ray reads as 1 / sigma'_s with the
- *     reduced albedo from the pigment (the mismatch of diffusion lengths
- *     this leaves: povray/README.md, "Known limits");
+ *     there is no medium: conductors); and POV-Ray's subsurface
+ *     translucency giving its BSSRDF, which takes the reduced albedo from
+ *     the pigment, the core's diffusion length (soak/povray_subsurface.h);
  *   - the wetness function for any base colour (soak_wet_params_for_base)
  *     on the nodes of soak_export_base_nodes, as <r,g,b> per (wetness, dry
  *     albedo) node.
@@ -43,17 +42,20 @@
 
 #include "soak/export.h"
 #include "soak/fresnel.h"
+#include "soak/povray_subsurface.h"
 #include "soak/sheet.h"
 
 #define POV_ROUGH_MIN 5e-4
 #define POV_ROUGH_MAX 1.0
-#define POV_FORMAT_VERSION 2
+#define POV_FORMAT_VERSION 3
+#define POV_SUBSURFACE_PIGMENT_MIN 1e-3 /* soak.inc's clamp of a subsurface pigment */
 
-enum { V_PIGMENT, V_REFLECT_METAL, V_SHEET_T, V_SIGMA_S, V_SIGMA_A, V_MFP, V_COUNT };
+enum { V_PIGMENT, V_REFLECT_METAL, V_SHEET_T, V_SIGMA_S, V_SIGMA_A, V_MFP, V_TRANSLUCENCY, V_COUNT };
 enum { S_W, S_COVERAGE, S_FILL, S_FILM_R, S_SPEC, S_ROUGH, S_PHONG, S_BACK, S_G1, S_G2, S_LOBE_W, S_COUNT };
 
 static const char *const vec_names[V_COUNT] = {"Soak_K_Pigment", "Soak_K_Metal_Reflect", "Soak_K_Sheet_T",
-                                               "Soak_K_Sigma_S", "Soak_K_Sigma_A",       "Soak_K_Mfp"};
+                                               "Soak_K_Sigma_S", "Soak_K_Sigma_A",       "Soak_K_Mfp",
+                                               "Soak_K_Translucency"};
 static const char *const scal_names[S_COUNT] = {"Soak_K_W",    "Soak_K_Coverage", "Soak_K_Fill",  "Soak_K_Film_Reflect",
                                                 "Soak_K_Spec", "Soak_K_Rough",    "Soak_K_Phong", "Soak_K_Sheet_Back",
                                                 "Soak_K_G1",   "Soak_K_G2",       "Soak_K_Lobe_W"};
@@ -63,7 +65,8 @@ static const char *const vec_docs[V_COUNT] = {
     "thin sheets: Kubelka-Munk diffuse transmittance",
     "scattering coefficient sigma_s, 1/mm (0: no medium)",
     "absorption coefficient sigma_a, 1/mm",
-    "reduced mean free path 1 / (sigma_a + (1 - g) sigma_s), mm (0: no medium)"};
+    "reduced mean free path 1 / (sigma_a + (1 - g) sigma_s), mm (0: no medium)",
+    "POV-Ray subsurface translucency, mm: the core's diffusion length under this pigment (0: no medium)"};
 static const char *const scal_docs[S_COUNT] = {
     "wetness knot",
     "film coverage c",
@@ -111,19 +114,30 @@ static double pov_roughness(double alpha)
     return n <= 1.0 ? POV_ROUGH_MAX : clamp(1.0 / n, POV_ROUGH_MIN, POV_ROUGH_MAX);
 }
 
-/* The medium; metals have none (all zero). */
-static void fill_medium(const soak_wet_params *w, pov_table *t, int i)
+/* The medium; metals have none (all zero). The translucency is computed for
+ * the pigment soak.inc hands POV-Ray (clamped as there) and the liquid's ior
+ * (the interior's). */
+static soak_status fill_medium(const soak_wet_params *w, double eta, pov_table *t, int i)
 {
     const double g = w->phase.w * w->phase.g1 + (1.0 - w->phase.w) * w->phase.g2;
     t->v[V_SIGMA_S][i] = w->sigma_s;
     t->v[V_SIGMA_A][i] = w->sigma_a;
     for (int k = 0; k < 3; ++k) {
-        double reduced = soak_rgb_at(w->sigma_a, k) + (1.0 - g) * soak_rgb_at(w->sigma_s, k);
+        double sa = soak_rgb_at(w->sigma_a, k);
+        double reduced = sa + (1.0 - g) * soak_rgb_at(w->sigma_s, k);
+        double translucency = 0.0;
+        if (reduced > 0.0) {
+            double rd = clamp(soak_rgb_at(t->v[V_PIGMENT][i], k), POV_SUBSURFACE_PIGMENT_MIN, 1.0);
+            soak_status st = soak_povray_translucency(rd, eta, sqrt(3.0 * sa * reduced), &translucency);
+            if (st != SOAK_OK) return st;
+        }
         soak_rgb_set(&t->v[V_MFP][i], k, reduced > 0.0 ? 1.0 / reduced : 0.0);
+        soak_rgb_set(&t->v[V_TRANSLUCENCY][i], k, translucency);
     }
     t->s[S_G1][i] = w->phase.g1;
     t->s[S_G2][i] = w->phase.g2;
     t->s[S_LOBE_W][i] = w->phase.w;
+    return SOAK_OK;
 }
 
 static soak_status fill_knot(const soak_preset *p, const soak_liquid *l, double wet, pov_table *t, int i)
@@ -152,8 +166,7 @@ static soak_status fill_knot(const soak_preset *p, const soak_liquid *l, double 
     t->v[V_SHEET_T][i] = sheet_t;
     double yp = luminance(t->v[V_PIGMENT][i]);
     t->s[S_BACK][i] = p->kind == SOAK_KIND_THIN_SHEET && yp > 1e-6 ? luminance(sheet_t) / yp : 0.0;
-    fill_medium(&w, t, i);
-    return SOAK_OK;
+    return fill_medium(&w, l->ior, t, i);
 }
 
 static soak_status fill_table(const soak_preset *p, const soak_liquid *l, pov_table *t)
