@@ -1,7 +1,7 @@
 #!/bin/bash
 # POV-Ray render time of each seed scene with the wet macros vs the same scene
 # with plain dry textures (soak.inc's macros replaced by a grey pigment with
-# diffuse 1), same settings, interleaved, wall time (best of REPEAT): povray's
+# diffuse 1), same settings, interleaved, wall time (min and median of REPEAT): povray's
 # CPU time is not reported to /usr/bin/time on this build.
 # usage: c_core/bench/bench_povray.sh [REPEAT] > c_core/bench/results/YYYY-MM-DD-povray.md
 set -eu
@@ -32,15 +32,17 @@ cpu() {
     +A0.3 Declare=Use_Map=0 >"$TMP/log" 2>&1 || { echo "povray $1 failed" >&2; tail -5 "$TMP/log" >&2; exit 1; }
   awk '{print $1}' "$TMP/t"
 }
-echo "# POV-Ray: wet macros vs plain textures ($(date -u +%Y-%m-%d), ${W}x${H}, +A0.3, 1 thread, wall s (CPU time of povray is not reported to /usr/bin/time), best of $REPEAT, interleaved)"
+echo "# POV-Ray: wet macros vs plain textures ($(date -u +%Y-%m-%d), ${W}x${H}, +A0.3, 1 thread, wall s (CPU time of povray is not reported to /usr/bin/time), min and median of $REPEAT, interleaved)"
 echo
-echo "| scene | plain (s) | wet (s) | overhead ratio |"
-echo "|---|---|---|---|"
+echo "| scene | plain min (s) | wet min (s) | overhead (min) | plain median (s) | wet median (s) | overhead (median) |"
+echo "|---|---|---|---|---|---|---|"
+stats() { sort -g | awk '{v[NR] = $1} END {m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2; print v[1], m}'; }
 for s in wet_paper beach_rock bricks_drying flowerpot_porosity film_copper gauze_media marble_subsurface; do
-  bp=1e9 bw=1e9
+  : > "$TMP/plain.t"; : > "$TMP/wet.t"
   for r in $(seq "$REPEAT"); do
-    p=$(cpu "$TMP/${s}_plain.pov"); w=$(cpu "$TMP/$s.pov")
-    bp=$(awk -v a="$p" -v b="$bp" 'BEGIN{print (a < b ? a : b)}'); bw=$(awk -v a="$w" -v b="$bw" 'BEGIN{print (a < b ? a : b)}')
+    cpu "$TMP/${s}_plain.pov" >> "$TMP/plain.t"; cpu "$TMP/$s.pov" >> "$TMP/wet.t"
   done
-  awk -v s="$s" -v p="$bp" -v w="$bw" 'BEGIN{printf "| %s | %.2f | %.2f | %.2f |\n", s, p, w, w / p}'
+  read -r pmin pmed < <(stats < "$TMP/plain.t"); read -r wmin wmed < <(stats < "$TMP/wet.t")
+  awk -v s="$s" -v a="$pmin" -v b="$wmin" -v c="$pmed" -v d="$wmed" \
+    'BEGIN{printf "| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", s, a, b, b / a, c, d, d / c}'
 done

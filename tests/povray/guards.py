@@ -205,18 +205,15 @@ def main():
 
     # Subsurface: POV-Ray's crash paths, raw (they must crash, else the guards below prove nothing) ...
     for i, (what, body, want) in enumerate(SSS_RAW):
-        pov = os.path.join(tmp, f"sss_raw{i}.pov")
-        with open(pov, "w") as f:
-            f.write("#version 3.7;\ncamera { location <0, -5, 3> look_at 0 }\nlight_source { <3, -2, 10> rgb 1 }\n" + body)
+        pov = write_raw(tmp, f"sss_raw{i}",
+                        "#version 3.7;\ncamera { location <0, -5, 3> look_at 0 }\nlight_source { <3, -2, 10> rgb 1 }\n" + body)
         rc, _ = povray(pov, os.path.join(tmp, f"sss_raw{i}.exr"), 16, 16, lib)
         ok = rc == want
         bad += not ok
         print(f"{'ok  ' if ok else 'FAIL'} raw POV-Ray, subsurface {what}: exit {rc} (expected {want}: the crash the macros guard)")
     # ... and through the macros: #error naming the cause (exit 1), never 134/139
     for i, (body, arg) in enumerate(SSS_BAD):
-        pov = os.path.join(tmp, f"sss_bad{i}.pov")
-        with open(pov, "w") as f:
-            f.write(SSS_HEAD + body + "\n")
+        pov = write_raw(tmp, f"sss_bad{i}", SSS_HEAD + body)
         rc, log = povray(pov, os.path.join(tmp, f"sss_bad{i}.exr"), 16, 16, lib)
         ok = rc == 1 and arg in " ".join(log.split())
         bad += not ok
