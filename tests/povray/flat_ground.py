@@ -18,7 +18,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from soakpov import export_json, fail, need_tool, povray, read_image  # noqa: E402
+from soakpov import export_json, fail, povray, read_image, setup_args  # noqa: E402
 
 # (preset, wetness): four porous presets at three wetness levels, copper under water.
 PRESETS = ["sand", "brick", "concrete", "limestone"]
@@ -197,14 +197,9 @@ def film_angle_bound(n, cos_sun):
 
 
 def main():
-    if len(sys.argv) < 4:
-        fail(__doc__)
-    soak, root, tmp = (os.path.abspath(a) for a in sys.argv[1:4])
+    soak, root, tmp, _ = setup_args(__doc__)
     spp = int(sys.argv[sys.argv.index("--spp") + 1]) if "--spp" in sys.argv else 16
     report = "--report" in sys.argv
-    need_tool("povray")
-    need_tool("oiiotool")
-    os.makedirs(tmp, exist_ok=True)
     exp = export_json(soak, tmp)
     n_water = next(l for l in exp["liquids"] if l["name"] == "water")["ior"]
     patches = wetness_levels(exp, PATCHES)

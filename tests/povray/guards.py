@@ -15,7 +15,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from soakpov import fail, need_tool, povray, read_image  # noqa: E402
+from soakpov import fail, povray, read_image, setup_args  # noqa: E402
 
 HEAD = """#version 3.7;
 global_settings { assumed_gamma 1.0 ambient_light 1 }
@@ -119,11 +119,7 @@ def render(tmp, lib, name, body, size=4):
 
 
 def main():
-    soak, root, tmp = (os.path.abspath(a) for a in sys.argv[1:4])
-    need_tool("povray")
-    need_tool("oiiotool")
-    os.makedirs(tmp, exist_ok=True)
-    lib = os.path.join(root, "povray")
+    soak, root, tmp, lib = setup_args(__doc__)
     bad = 0
     for i, (body, arg) in enumerate(BAD):
         rc, log, _ = render(tmp, lib, f"bad{i}", body)

@@ -47,7 +47,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from soakpov import export_json, fail, need_tool, povray, read_image  # noqa: E402
+from soakpov import export_json, fail, povray, read_image, setup_args  # noqa: E402
 
 MU = math.cos(math.pi / 6)
 E = math.pi  # sun irradiance: POV-Ray light colour E / pi = 1
@@ -234,11 +234,7 @@ def sheets(soak, tmp, lib, exp):
 def main():
     if len(sys.argv) < 4:
         fail(__doc__)
-    soak, root, tmp = (os.path.abspath(a) for a in sys.argv[1:4])
-    need_tool("povray")
-    need_tool("oiiotool")
-    os.makedirs(tmp, exist_ok=True)
-    lib = os.path.join(root, "povray")
+    soak, root, tmp, lib = setup_args(__doc__)
     raw_slabs(tmp, lib)
     exp = export_json(soak, tmp)
     sheets(soak, tmp, lib, exp)

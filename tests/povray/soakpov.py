@@ -47,6 +47,18 @@ def need_tool(name):
         fail(f"{name} not found on PATH (installed by the README's set-up; a front-end test never passes without it)")
 
 
+def setup_args(usage):
+    """The arguments SOAK ROOT TMPDIR (absolute), povray and oiiotool checked, TMPDIR made; also the
+    folder of soak.inc. Returns (soak, root, tmp, lib)."""
+    if len(sys.argv) < 4:
+        fail(usage)
+    soak, root, tmp = (os.path.abspath(a) for a in sys.argv[1:4])
+    need_tool("povray")
+    need_tool("oiiotool")
+    os.makedirs(tmp, exist_ok=True)
+    return soak, root, tmp, os.path.join(root, "povray")
+
+
 def export_json(soak, tmp):
     """`soak export --target json` into tmp, parsed (the core's tables: the references' data)."""
     path = os.path.join(tmp, "export.json")

@@ -26,7 +26,7 @@ backend/render/trace.cpp and backend/lighting/subsurface.cpp, v3.7.0.10):
   ignored (the object is plain diffuse: the pigment).
 
 Scenes: a 400 x 400 x 100 mm block (far from edges: the longest diffusion
-length 1/sigma_tr here is 3.7 mm), lit straight down by a parallel light of
+length 1/sigma_tr here is 3.3 mm), lit straight down by a parallel light of
 colour 1, seen from straight above (orthographic), highlights off, black
 background. Checks:
 (a) lit level, marble dry and wet: Ft(0)^2 (Rd(alpha') + alpha'/24) per
@@ -38,7 +38,7 @@ background. Checks:
     half-plane of Rd(r) (numerical, 2-D, here), no single scattering; in the
     lit part the same plus alpha'/24 Ft(0)^2. Marble dry at mm_per_unit 1
     (1 unit = 1 mm) and limestone wet with mm_per_unit 0.01 (its diffusion
-    length is 0.06 mm: the same geometry in units of 10 um): the light
+    length is 0.05 mm: the same geometry in units of 10 um): the light
     bleeds into the shadow over a distance set by the table's translucency;
 (d) at +Q8 the same block renders as plain diffuse (lit = pigment, no light
     past the shadow edge); there Soak_Wet_User_Subsurface_Material shows the
@@ -66,7 +66,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from soakpov import fail, need_tool, povray, read_image  # noqa: E402
+from soakpov import fail, povray, read_image, setup_args  # noqa: E402
 
 W_EDGE, H_EDGE = 64, 32  # pixels across / along the edge
 
@@ -249,11 +249,7 @@ def block_stats(img):
 
 
 def main():
-    soak, root, tmp = (os.path.abspath(a) for a in sys.argv[1:4])
-    need_tool("povray")
-    need_tool("oiiotool")
-    os.makedirs(tmp, exist_ok=True)
-    lib = os.path.join(root, "povray")
+    soak, root, tmp, lib = setup_args(__doc__)
     tab = read_inc(root)
     eta = float(tab["Liquid_Ior"][0])
     bad = 0

@@ -6,16 +6,14 @@ base_colour table (`soak export --target json`, another writer of the same core
 function).
 
 usage: user_colour.py SOAK ROOT TMPDIR"""
-import json
 import os
 import re
-import subprocess
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from soakpov import fail, need_tool, povray, read_image  # noqa: E402
+from soakpov import export_json, fail, povray, read_image, setup_args  # noqa: E402
 
 CASES = [("sand", 0.0, (0.5, 0.3, 0.2)), ("sand", 0.6, (0.5, 0.3, 0.2)), ("clay", 0.37, (0.9, 0.05, 0.61)),
          ("brick", 1.0, (1.0, 0.0, 0.333)), ("oak", 0.81, (0.12, 0.77, 0.45)), ("copper", 0.5, (0.95, 0.64, 0.54)),
@@ -42,15 +40,8 @@ def bilinear(exp, name, w, rgb):
 
 
 def main():
-    soak, root, tmp = (os.path.abspath(a) for a in sys.argv[1:4])
-    need_tool("povray")
-    need_tool("oiiotool")
-    os.makedirs(tmp, exist_ok=True)
-    lib = os.path.join(root, "povray")
-    ej = os.path.join(tmp, "export.json")
-    subprocess.run([soak, "export", "--target", "json", "-o", ej], check=True, capture_output=True)
-    with open(ej) as f:
-        exp = json.load(f)
+    soak, root, tmp, lib = setup_args(__doc__)
+    exp = export_json(soak, tmp)
     bad = 0
     # parse time
     body = ""
