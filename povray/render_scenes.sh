@@ -22,6 +22,7 @@ pov beach_rock.pov beach_rock.exr "$W" "$((W * 3 / 8))"
 pov flowerpot_porosity.pov flowerpot_porosity.exr "$W" "$((W * 3 / 8))"
 pov film_copper.pov film_copper.exr "$W" "$H"
 pov marble_subsurface.pov marble_subsurface.exr "$W" "$H"  # subsurface: needs +Q9 (the default)
+pov macro_gallery.pov macro_gallery.exr "$W" "$H"
 # drying bricks: a 16-bit wet map from soak bake, 4 frames of the animation
 "$SOAK" bake turbulence --width 256 --height 256 --threshold -0.2 --softness 0.3 --seed 3 --threads 2 \
   -o "$OUT/brick_wet.png" >/dev/null

@@ -3,7 +3,9 @@ wet paper darker than dry when lit from the front, brighter from behind
 (seed 000 sec. 4.1); the porosity sweep's wet pots darker as porosity grows;
 the drying bricks lighter frame by frame; the gauze brighter from behind when
 wet (media, forward scattering) and the coffee spill of its df3 volume visible;
-the marble fins (subsurface) glow with the light crossing them from behind.
+the marble fins (subsurface) glow with the light crossing them from behind;
+the macro gallery's Soak_Wet_Colour stripes darken with the wetness and its
+Soak_Schedule_Fn tile shows a wet front (wet left of it, dry right).
 
 usage: scenes_check.py SOAK ROOT TMPDIR"""
 import os
@@ -69,6 +71,15 @@ def main():
     # not asserted: the core's marble medium is the same wet and dry; POV-Ray's dipole (semi-infinite) puts the
     # wet fin's sources deeper (the film's darkening read as absorption at the core's diffusion length)
     print(f"     marble fins wet/dry from behind: {fin_wet / fin_dry:.2f}")
+
+    img = read_image(os.path.join(tmp, "macro_gallery.exr"))
+    h, w = img.shape[:2]
+    stripes = [at(fx / 480, 230 / 360) for fx in (45, 90, 135)]  # wetness 0, 0.5, 1 of one dry colour
+    check(f"gallery: Soak_Wet_Colour stripes {[round(v, 4) for v in stripes]} darker as the wetness grows",
+          stripes[0] > stripes[1] > stripes[2] > 0)
+    wet_side, dry_side = at(318 / 480, 95 / 360), at(400 / 480, 95 / 360)
+    check(f"gallery: Soak_Schedule_Fn wet front: wet side {wet_side:.4f} < 0.8 x dry side {dry_side:.4f}",
+          wet_side < 0.8 * dry_side)
     if bad:
         fail(f"{bad} scene checks failed")
     print("PASS")
