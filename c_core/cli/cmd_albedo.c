@@ -194,7 +194,7 @@ static int run_preset(const opts *o)
         }
         st = o->base_colour ? soak_wet_params_for_base(p, l, &in, base, &w) : soak_wetness_eval(p, l, &in, &w);
         soak_rgb sheet = {0, 0, 0};
-        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, &sheet);
+        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &sheet);
         if (st != SOAK_OK) {
             cli_error(CMD, "material %s, wetness %g: wetness mapping failed: %s", p->name, o->wetness,
                       soak_status_str(st));

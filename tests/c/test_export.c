@@ -214,6 +214,12 @@ static void test_sheet(void)
     soak_km_transmittance(K, S, d, &t);
     check_close("KM: textbook form b / (a sinh(bSd) + b cosh(bSd))", t, b / (a * sinh(b * S * d) + b * cosh(b * S * d)),
                 1e-12);
+    double r_km = 0.0;
+    soak_km_slab(K, S, d, &r_km, &t);
+    check_close("KM: textbook reflectance sinh(bSd) / (a sinh(bSd) + b cosh(bSd))", r_km,
+                sinh(b * S * d) / (a * sinh(b * S * d) + b * cosh(b * S * d)), 1e-12);
+    soak_km_slab(K, S, 1e6, &r_km, &t);
+    check_close("KM: thick slab R = a - b (semi-infinite)", r_km, a - b, 1e-12);
 
     /* A traced index-matched slab (soak_measure, the volumetric walk) vs the
      * two-flux sheet, diffuse incidence, paper-like optical thickness. The
@@ -236,14 +242,39 @@ static void test_sheet(void)
     w.sigma_s = (soak_rgb){omega * tau, omega * tau, omega * tau};
     w.sigma_a = (soak_rgb){(1 - omega) * tau, (1 - omega) * tau, (1 - omega) * tau};
     soak_rgb T;
-    check_status("sheet transmittance", soak_sheet_transmittance(&w, 1.0, &T), SOAK_OK);
+    check_status("sheet transmittance", soak_sheet_transmittance(&w, 1.0, 1.0, &T), SOAK_OK);
     printf("  traced slab T = %.4f +- %.4f, two-flux T = %.4f\n", r.transmittance, r.transmittance_err, T.g);
     check_close("sheet: two-flux vs traced slab (omega 0.99, g 0.6, tau 4)", T.g, r.transmittance, 0.03);
+
+    /* the same slab with faces of index 1.53 (paper's fibres): Saunderson's
+     * correction against the traced slab with Fresnel faces (TIR included).
+     * The faces trap light that the two-flux slab treats as diffuse; measured
+     * -0.046 here (the traced T hardly moves with the faces at this depth,
+     * the corrected two-flux drops by 15 %), bounded at 0.06. */
+    s.ior = 1.53;
+    if (!check_status("traced slab, n = 1.53", soak_measure_run(&s, &r), SOAK_OK)) return;
+    check_status("sheet transmittance, n = 1.53", soak_sheet_transmittance(&w, 1.0, 1.53, &T), SOAK_OK);
+    printf("  n = 1.53: traced slab T = %.4f +- %.4f, two-flux with faces T = %.4f\n", r.transmittance,
+           r.transmittance_err, T.g);
+    check_close("sheet: two-flux with faces vs traced slab, n = 1.53", T.g, r.transmittance, 0.06);
+
+    /* limits: no faces at n = 1; a sheet of no thickness has no faces either */
+    soak_rgb T1;
+    double t_km = 0.0;
+    soak_km_transmittance(2.0 * (1 - omega) * tau, 0.75 * omega * tau * (1 - g) - 0.25 * (1 - omega) * tau, 1.0, &t_km);
+    soak_sheet_transmittance(&w, 1.0, 1.0, &T1);
+    check_close("sheet: n = 1 is the plain two-flux slab", T1.g, t_km, 1e-15);
+    soak_sheet_transmittance(&w, 0.0, 1.53, &T1);
+    check_close("sheet: zero thickness, T = 1", T1.g, 1.0, 0.0);
+    check_status("sheet: ior 0.9 rejected", soak_sheet_transmittance(&w, 1.0, 0.9, &T1), SOAK_ERR_ARG);
+    check_status("sheet: ior NaN rejected", soak_sheet_transmittance(&w, 1.0, NAN, &T1), SOAK_ERR_ARG);
 }
 
-/* The thin-sheet preset itself, dry and wet: two-flux T against the traced
- * index-matched slab of the same medium (optical thickness ~40, T ~ 1e-3:
- * the regime of paper, far from the case above). Relative bound 0.15. */
+/* The thin-sheet preset itself, dry and wet: two-flux T with faces against
+ * the traced slab of the same medium and faces of the preset's index
+ * (optical thickness ~40, T ~ 1e-3: the regime of paper, far from the case
+ * above). Measured -2 % to -13 % (without the faces' correction the
+ * two-flux slab was 22 % to 40 % low); relative bound 0.2. */
 static void test_sheet_preset(const soak_preset_db *db)
 {
     const soak_liquid *l = soak_presets_find_liquid(db, "water");
@@ -257,7 +288,7 @@ static void test_sheet_preset(const soak_preset_db *db)
             char what[160];
             snprintf(what, sizeof what, "%s wetness %d: two-flux T vs traced slab (green)", p->name, k);
             if (!check_status(what, soak_wetness_eval(p, l, &in, &w), SOAK_OK)) continue;
-            if (!check_status(what, soak_sheet_transmittance(&w, p->thickness_mm, &T), SOAK_OK)) continue;
+            if (!check_status(what, soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &T), SOAK_OK)) continue;
             soak_measure_setup s;
             soak_measure_setup_default(&s);
             s.config = SOAK_MEASURE_SLAB;
@@ -266,12 +297,13 @@ static void test_sheet_preset(const soak_preset_db *db)
             s.albedo = w.omega.g;
             s.phase = w.phase;
             s.tau = (w.sigma_s.g + w.sigma_a.g) * p->thickness_mm;
+            s.ior = p->ior;
             s.paths = 100000;
             soak_measure_result r;
             if (!check_status(what, soak_measure_run(&s, &r), SOAK_OK)) continue;
             printf("  %s w=%d: traced T = %.5f +- %.5f, two-flux T = %.5f\n", p->name, k, r.transmittance,
                    r.transmittance_err, T.g);
-            check_rel(what, T.g, r.transmittance, 0.15);
+            check_rel(what, T.g, r.transmittance, 0.2);
         }
     }
 }

@@ -76,7 +76,7 @@ def layered_material(exp, name, w):
     if m["kind"] != "thin_sheet":
         return None  # soak render's "preset" material is this model (scene_material.c)
     if m["kind"] == "thin_sheet":
-        # the medium of the tables (Kubelka-Munk assumes an index-matched, unbacked sheet)
+        # the medium of the tables, index matched here (the sheet's transmittance in the tables has faces)
         sig_s = [v * unit_m for v in k["sigma_s_per_m"][i]]
         sig_a = [v * unit_m for v in k["sigma_a_per_m"][i]]
         base = {"type": "medium", "sigma_s": sig_s, "sigma_a": sig_a, "g1": k["phase_g1"][i], "g2": k["phase_g2"][i],
@@ -234,9 +234,9 @@ def main():
     #   tables: linear interpolation 0.002 (absolute) and half-float EXR output 1e-3 relative;
     #   film: c * 1.5 * film_angle_bound (POV-Ray's pigment cannot vary with the light's angle);
     #   metals: 0.03 (POV-Ray mirror at F0 under the film vs GGX alpha 0.05 directional albedo);
-    #   back-lit paper: reported, not asserted. Backside diffuse with the Kubelka-Munk
+    #   back-lit paper: reported, not asserted. Backside diffuse with the two-flux
     #           transmittance (0.8 mm paper, optical depth 42: neither POV-Ray's media nor its
-    #           subsurface fit) is 40-60 % below the traced slab; the asserted back-lit sheet is
+    #           subsurface fit) is 20-35 % below the traced slab; the asserted back-lit sheet is
     #           tests/povray/media_slab.py (a sheet thin enough for POV-Ray's media).
     def budget(tag, ref, err, cov, name="", w=0.0):
         b = 4 * err / max(ref, 1e-9) + 0.002 / max(ref, 1e-9) + 1e-3

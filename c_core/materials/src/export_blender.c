@@ -76,7 +76,7 @@ static soak_status param_pixel(const bl_grid *g, double L, double px[BL_PARAM_CO
     soak_wet_params w;
     soak_status st = soak_wetness_eval(g->p, g->l, &in, &w);
     soak_rgb T = {0.0, 0.0, 0.0};
-    if (st == SOAK_OK && g->p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, g->p->thickness_mm, &T);
+    if (st == SOAK_OK && g->p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, g->p->thickness_mm, g->p->ior, &T);
     if (st != SOAK_OK) return st;
     double v[BL_PARAM_COLS * 3] = {sqrt(w.ggx_alpha), w.film_coverage, w.water_specular_weight,
                                    w.fill, w.specular_weight, 0.0, T.r, T.g, T.b};

@@ -148,7 +148,7 @@ static soak_status add_knot_table(json_ctx *j, cJSON *o, const soak_preset *p, c
         soak_wet_params w;
         soak_rgb sheet_t = {0, 0, 0};
         st = soak_wetness_eval(p, l, &in, &w);
-        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, &sheet_t);
+        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &sheet_t);
         if (st == SOAK_OK) push_row(j, cols, &w, &sheet_t);
     }
     return st;

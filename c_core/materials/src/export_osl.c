@@ -67,7 +67,7 @@ static soak_status add_knots(soak_osl_tables *t, const soak_preset *p, const soa
         soak_wet_params w;
         soak_rgb sheet = {0, 0, 0};
         st = soak_wetness_eval(p, l, &in, &w);
-        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, &sheet);
+        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &sheet);
         if (st != SOAK_OK) return st;
         double interface = soak_wet_interface_area(&w);
         soak_rgb log_sheet = {log(fmax(sheet.r, SHEET_T_MIN)), log(fmax(sheet.g, SHEET_T_MIN)),
@@ -328,7 +328,7 @@ static const char *const osl_closure_notes[] = {
     "// longer has microfacet_ggx: use soak_wet_surface.osl there.\n\n"
     "closure color microfacet_ggx(normal N, float ag) [[ int builtin = 1 ]];\n\n",
     "// Translucent when wet: the front is the core's wet albedo (diffuse), the\n"
-    "// back lets the core's Kubelka-Munk transmittance through (translucent).\n"
+    "// back lets the core's two-flux transmittance (faces included) through.\n"
     "// Closures: diffuse, translucent, reflection (every Cycles 2.80-4.x).\n"
     "// With UseBaseColor the front colour is yours; the transmittance stays the\n"
     "// preset's.\n\n",

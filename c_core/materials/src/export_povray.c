@@ -17,7 +17,7 @@
  *   - the liquid's sun glint: phong albedo R * F0(n_liquid);
  *   - conductors: reflection { rgb albedo_total } (the metal seen through the
  *     film, plus the film's own specular, normal incidence);
- *   - thin sheets: Kubelka-Munk transmittance (soak/sheet.h) and the
+ *   - thin sheets: two-flux transmittance with the faces (soak/sheet.h) and the
  *     backside diffuse amount of POV-Ray's "diffuse front, back", luminance
  *     matched: back = Y(T) / Y(pigment) (POV-Ray tints it by the pigment);
  *   - the scattering medium for participating media and subsurface: sigma_s,
@@ -62,7 +62,7 @@ static const char *const scal_names[S_COUNT] = {"Soak_K_W",    "Soak_K_Coverage"
 static const char *const vec_docs[V_COUNT] = {
     "diffuse albedo under the film, film darkening included (pigment, finish diffuse 1)",
     "conductors: mirror reflectance of the metal under the film incl. the film's specular (reflection rgb)",
-    "thin sheets: Kubelka-Munk diffuse transmittance",
+    "thin sheets: two-flux diffuse transmittance, faces included",
     "scattering coefficient sigma_s, 1/mm (0: no medium)",
     "absorption coefficient sigma_a, 1/mm",
     "reduced mean free path 1 / (sigma_a + (1 - g) sigma_s), mm (0: no medium)",
@@ -149,7 +149,7 @@ static soak_status fill_knot(const soak_preset *p, const soak_liquid *l, double 
     if (st == SOAK_OK) st = soak_fresnel_r0(l->ior, 0.0, &f0_liq);
     if (st == SOAK_OK && p->kind != SOAK_KIND_CONDUCTOR) st = soak_fresnel_r0(p->ior, 0.0, &f0_mat);
     soak_rgb sheet_t = {0, 0, 0};
-    if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, &sheet_t);
+    if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &sheet_t);
     if (st != SOAK_OK) return st;
     const double c = w.film ? w.film_coverage : 0.0;
     const int metal = p->kind == SOAK_KIND_CONDUCTOR;

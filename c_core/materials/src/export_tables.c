@@ -22,14 +22,14 @@ enum { MAX_Q = 40 };
 
 /* Quantities in [0, ~1] compared absolutely; coefficients (1/m, thousands)
  * relative to their magnitude, as export.h states. */
-static int quantities(const soak_wet_params *p, double sheet_mm, double *q)
+static int quantities(const soak_wet_params *p, double sheet_mm, double sheet_ior, double *q)
 {
     int n = 0;
     if (sheet_mm > 0.0) {
         /* thin-sheet transmittance spans decades (1e-3 .. 1): followed in
          * log, 0.1 ln T, so the absolute tolerance is ~2 % relative */
         soak_rgb T;
-        if (soak_sheet_transmittance(p, sheet_mm, &T) == SOAK_OK)
+        if (soak_sheet_transmittance(p, sheet_mm, sheet_ior, &T) == SOAK_OK)
             for (int c = 0; c < 3; ++c) q[n++] = 0.1 * log(fmax(soak_rgb_at(T, c), 1e-6));
     }
     const soak_rgb *rgb[] = {&p->albedo, &p->albedo_total, &p->albedo_subsurface, &p->albedo_film, &p->omega};
@@ -67,7 +67,7 @@ static soak_status eval_at(const knot_ctx *k, double w, double *q, int *nq)
     soak_wet_params p;
     soak_status st = soak_wetness_eval(k->preset, k->liquid, &in, &p);
     if (st != SOAK_OK) return st;
-    *nq = quantities(&p, k->preset->kind == SOAK_KIND_THIN_SHEET ? k->preset->thickness_mm : 0.0, q);
+    *nq = quantities(&p, k->preset->kind == SOAK_KIND_THIN_SHEET ? k->preset->thickness_mm : 0.0, k->preset->ior, q);
     return SOAK_OK;
 }
 
