@@ -22,11 +22,11 @@
  *     matched: back = Y(T) / Y(pigment) (POV-Ray tints it by the pigment);
  *   - the scattering medium for participating media and subsurface: sigma_s,
  *     sigma_a (1/mm, per channel), the two-term Henyey-Greenstein phase
- *     (g1, g2, weight w of g1) and the reduced mean free path
- *     1 / (sigma_a + (1 - g) sigma_s) in mm, g = w g1 + (1 - w) g2 (0 where
- *     there is no medium: conductors); and POV-Ray's subsurface
- *     translucency giving its BSSRDF, which takes the reduced albedo from
- *     the pigment, the core's diffusion length (soak/povray_subsurface.h);
+ *     (g1, g2, weight w of g1; all 0 where there is no medium: conductors);
+ *     and POV-Ray's subsurface translucency giving its BSSRDF, which takes
+ *     the reduced albedo from the pigment, the core's diffusion length
+ *     sqrt(3 sigma_a (sigma_a + (1 - g) sigma_s)), g = w g1 + (1 - w) g2
+ *     (soak/povray_subsurface.h);
  *   - the wetness function for any base colour (soak_wet_params_for_base)
  *     on the nodes of soak_export_base_nodes, as <r,g,b> per (wetness, dry
  *     albedo) node.
@@ -50,12 +50,11 @@
 #define POV_FORMAT_VERSION 3
 #define POV_SUBSURFACE_PIGMENT_MIN 1e-3 /* soak.inc's clamp of a subsurface pigment */
 
-enum { V_PIGMENT, V_REFLECT_METAL, V_SHEET_T, V_SIGMA_S, V_SIGMA_A, V_MFP, V_TRANSLUCENCY, V_COUNT };
+enum { V_PIGMENT, V_REFLECT_METAL, V_SHEET_T, V_SIGMA_S, V_SIGMA_A, V_TRANSLUCENCY, V_COUNT };
 enum { S_W, S_COVERAGE, S_FILL, S_FILM_R, S_SPEC, S_ROUGH, S_PHONG, S_BACK, S_G1, S_G2, S_LOBE_W, S_COUNT };
 
 static const char *const vec_names[V_COUNT] = {"Soak_K_Pigment", "Soak_K_Metal_Reflect", "Soak_K_Sheet_T",
-                                               "Soak_K_Sigma_S", "Soak_K_Sigma_A",       "Soak_K_Mfp",
-                                               "Soak_K_Translucency"};
+                                               "Soak_K_Sigma_S", "Soak_K_Sigma_A",       "Soak_K_Translucency"};
 static const char *const scal_names[S_COUNT] = {"Soak_K_W",    "Soak_K_Coverage", "Soak_K_Fill",  "Soak_K_Film_Reflect",
                                                 "Soak_K_Spec", "Soak_K_Rough",    "Soak_K_Phong", "Soak_K_Sheet_Back",
                                                 "Soak_K_G1",   "Soak_K_G2",       "Soak_K_Lobe_W"};
@@ -65,7 +64,6 @@ static const char *const vec_docs[V_COUNT] = {
     "thin sheets: two-flux diffuse transmittance, faces included",
     "scattering coefficient sigma_s, 1/mm (0: no medium)",
     "absorption coefficient sigma_a, 1/mm",
-    "reduced mean free path 1 / (sigma_a + (1 - g) sigma_s), mm (0: no medium)",
     "POV-Ray subsurface translucency, mm: the core's diffusion length under this pigment (0: no medium)"};
 static const char *const scal_docs[S_COUNT] = {
     "wetness knot",
@@ -131,7 +129,6 @@ static soak_status fill_medium(const soak_wet_params *w, double eta, pov_table *
             soak_status st = soak_povray_translucency(rd, eta, sqrt(3.0 * sa * reduced), &translucency);
             if (st != SOAK_OK) return st;
         }
-        soak_rgb_set(&t->v[V_MFP][i], k, reduced > 0.0 ? 1.0 / reduced : 0.0);
         soak_rgb_set(&t->v[V_TRANSLUCENCY][i], k, translucency);
     }
     t->s[S_G1][i] = w->phase.g1;
