@@ -206,20 +206,56 @@ def build_group(tree, preset, liquid_name, exact=False):
 
 
 # ---- insertion and exact removal --------------------------------------------
+#
+# Every change below is all-or-nothing: everything that can be checked is
+# checked before the tree is touched (check_wettable), and the rest runs under
+# a _Snapshot that puts the material's tree back as it was on any exception.
 
-def find_principled(tree):
+ROLE_KEY = "soak_role"          # on tagged nodes: "source" | "translucency"
+REF_KEY = "soak_ref"            # on the user's nodes a restore record names (survives renames)
+SOURCE_TYPES = ("ShaderNodeTexImage", "ShaderNodeAttribute", "ShaderNodeTexNoise", "ShaderNodeMapRange")
+_REQUIRED_ROLES = ("base_color", "roughness", "coat_weight", "coat_roughness", "normal")
+
+
+def _is_principled(n):
+    return n.type == "BSDF_PRINCIPLED" and not n.get(NODE_TAG)
+
+
+def _active_output(tree):
     out = None
     for n in tree.nodes:
-        if n.type == "OUTPUT_MATERIAL" and n.is_active_output:
+        if n.type == "OUTPUT_MATERIAL" and (out is None or n.is_active_output):
             out = n
-    if out is not None and out.inputs["Surface"].is_linked:
-        n = out.inputs["Surface"].links[0].from_node
-        if n.type == "BSDF_PRINCIPLED":
-            return n
-    for n in tree.nodes:
-        if n.type == "BSDF_PRINCIPLED" and not n.get(NODE_TAG):
-            return n
-    return None
+    return out
+
+
+def principled_nodes(tree):
+    """Every (untagged) Principled BSDF: those feeding the active output first,
+    in depth-first order through Mix/Add shaders and groups' inputs, then the
+    others."""
+    seen, order = set(), []
+
+    def visit(node):
+        if node.name in seen:
+            return
+        seen.add(node.name)
+        if _is_principled(node):
+            order.append(node)
+            return
+        for s in node.inputs:
+            for link in s.links:
+                visit(link.from_node)
+
+    out = _active_output(tree)
+    if out is not None:
+        visit(out)
+    order += [n for n in tree.nodes if _is_principled(n) and n not in order]
+    return order
+
+
+def find_principled(tree):
+    nodes_ = principled_nodes(tree)
+    return nodes_[0] if nodes_ else None
 
 
 def find_group_node(tree):
@@ -243,10 +279,6 @@ def _record(sock):
     return {"links": [[l.from_node.name, l.from_socket.identifier] for l in sock.links], "value": _value(sock)}
 
 
-def _touched_roles():
-    return ("base_color", "roughness", "coat_weight", "coat_roughness", "coat_ior", "normal", "coat_normal")
-
-
 def _out_socket(node, identifier):
     for s in node.outputs:
         if s.identifier == identifier:
@@ -254,55 +286,158 @@ def _out_socket(node, identifier):
     return None
 
 
-def make_wet(mat, settings):
-    """Inserts the group; returns the group node. Raises RuntimeError."""
-    tree = mat.node_tree
-    if tree is None:
+def _in_socket(node, identifier):
+    for s in node.inputs:
+        if s.identifier == identifier:
+            return s
+    return None
+
+
+def check_editable(mat):
+    """Raises RuntimeError for a material whose node tree may not be edited."""
+    if mat.library is not None:
+        raise RuntimeError(f"material '{mat.name}' is linked from the library '{mat.library.filepath}': "
+                           "its changes would be lost on reload; make it local first "
+                           "(Object > Relations > Make Local)")
+    if getattr(mat, "override_library", None) is not None:
+        raise RuntimeError(f"material '{mat.name}' is a library override: its node tree cannot be edited; "
+                           "make it local first (Object > Relations > Make Local)")
+    if mat.node_tree is None or not mat.use_nodes:
         raise RuntimeError(f"material '{mat.name}' does not use nodes")
+
+
+def check_source(settings):
+    src = settings.wetness_source
+    if src == "IMAGE" and settings.wet_map is None:
+        raise RuntimeError("wetness source 'Image' needs an image (choose one or bake a wet map)")
+    if src == "ATTRIBUTE" and not settings.attribute_name.strip():
+        raise RuntimeError("wetness source 'Attribute' needs an attribute name (e.g. dp_wetmap)")
+
+
+def check_data(settings):
+    """The core's data for the settings (raises SoakDataError)."""
+    data.material(settings.preset)
+    data.table(settings.preset, settings.liquid)
+    data.liquid(settings.liquid)
+
+
+def check_wettable(mat, settings):
+    """Everything Make Wet needs, checked before the tree is touched.
+    Returns the Principled BSDF to wet and the other Principled BSDFs."""
+    check_editable(mat)
+    tree = mat.node_tree
     if find_group_node(tree) is not None:
         raise RuntimeError(f"material '{mat.name}' is already wet (Make Dry first)")
-    bsdf = find_principled(tree)
-    if bsdf is None:
+    bsdfs = principled_nodes(tree)
+    if not bsdfs:
         raise RuntimeError(f"material '{mat.name}' has no Principled BSDF")
-    restore = {"bsdf": bsdf.name, "inputs": {}, "bsdf_out": [], "nodes": []}
-    for role in _touched_roles():
-        s = compat.principled_input(bsdf, role)
-        if s is not None:
-            restore["inputs"][s.identifier] = _record(s)
-    restore["bsdf_out"] = [[l.to_node.name, l.to_socket.identifier] for l in bsdf.outputs[0].links]
+    bsdf = bsdfs[0]
+    active = tree.nodes.active
+    if len(bsdfs) > 1 and active is not None and _is_principled(active):
+        bsdf = active          # the user picked one in the Shader Editor
+    missing = [compat.principled_name(r) for r in _REQUIRED_ROLES if compat.principled_input(bsdf, r) is None]
+    if missing:
+        raise RuntimeError(f"'{bsdf.name}' lacks the inputs {', '.join(missing)}")
+    check_data(settings)
+    check_source(settings)
+    return bsdf, [n for n in bsdfs if n != bsdf]
 
-    ng = bpy.data.node_groups.new("Soak Wet", "ShaderNodeTree")
-    build_group(ng, settings.preset, settings.liquid, settings.exact_lookups)
-    gn = tree.nodes.new("ShaderNodeGroup")
-    gn.node_tree = ng
-    gn.name = gn.label = "Soak Wet"
-    gn[NODE_TAG] = True
-    gn.location = (bsdf.location.x - 260, bsdf.location.y)
-    links = tree.links
+
+def _link_key(link):
+    return (link.from_node.name, link.from_socket.identifier, link.to_node.name, link.to_socket.identifier)
+
+
+class _Snapshot:
+    """The state of a material's tree (nodes, links, input values) and of the
+    node-group list, to put back after a failed change."""
+
+    def __init__(self, tree):
+        self.tree = tree
+        self.names = {n.name for n in tree.nodes}
+        self.links = {_link_key(l) for l in tree.links}
+        self.values = {(n.name, s.identifier): _value(s) for n in tree.nodes for s in n.inputs}
+        self.groups = {g.name for g in bpy.data.node_groups}
+        self.refs = {n.name: n.get(REF_KEY) for n in tree.nodes}
+
+    def restore(self):
+        t = self.tree
+        for n in [n for n in t.nodes if n.name not in self.names]:
+            t.nodes.remove(n)
+        for l in [l for l in t.links if _link_key(l) not in self.links]:
+            t.links.remove(l)
+        have = {_link_key(l) for l in t.links}
+        for fn, fs, tn, ts in self.links - have:
+            a, b = t.nodes.get(fn), t.nodes.get(tn)
+            src, dst = a and _out_socket(a, fs), b and _in_socket(b, ts)
+            if src is not None and dst is not None:
+                t.links.new(src, dst)
+        for (name, ident), v in self.values.items():
+            n = t.nodes.get(name)
+            s = n and _in_socket(n, ident)
+            if s is not None and v is not None and _value(s) != v:
+                s.default_value = v
+        for name, ref in self.refs.items():
+            n = t.nodes.get(name)
+            if n is not None and n.get(REF_KEY) != ref:
+                if ref is None:
+                    del n[REF_KEY]
+                else:
+                    n[REF_KEY] = ref
+        for g in [g for g in bpy.data.node_groups if g.name not in self.groups and g.users == 0]:
+            bpy.data.node_groups.remove(g)
+
+
+def _atomic(tree, fn, *args):
+    snap = _Snapshot(tree)
+    try:
+        return fn(*args)
+    except BaseException:
+        snap.restore()
+        raise
+
+
+def _bsdf_state(bsdf):
+    return {s.identifier: _record(s) for s in bsdf.inputs}
+
+
+def _note_changes(restore, before, bsdf):
+    """Adds to the restore record every BSDF input whose links or value the
+    change made differ from `before` (first record wins: the dry state)."""
+    for s in bsdf.inputs:
+        rec = before.get(s.identifier)
+        if rec is not None and s.identifier not in restore["inputs"] and _record(s) != rec:
+            restore["inputs"][s.identifier] = rec
+
+
+def _group_defaults(gn, settings, tree, bsdf):
     m = data.material(settings.preset)
     t = data.table(settings.preset, settings.liquid)
-    bc, rough = compat.principled_input(bsdf, "base_color"), compat.principled_input(bsdf, "roughness")
     if settings.colour_source == "MATERIAL":
-        if bc.is_linked:
-            links.new(bc.links[0].from_socket, gn.inputs["Base Color"])
-        else:
-            gn.inputs["Base Color"].default_value = bc.default_value
-        if rough.is_linked:
-            links.new(rough.links[0].from_socket, gn.inputs["Roughness"])
-        else:
-            gn.inputs["Roughness"].default_value = rough.default_value
+        for role, name in (("base_color", "Base Color"), ("roughness", "Roughness")):
+            s = compat.principled_input(bsdf, role)
+            if s.is_linked:
+                tree.links.new(s.links[0].from_socket, gn.inputs[name])
+            else:
+                gn.inputs[name].default_value = s.default_value
     else:
         gn.inputs["Base Color"].default_value = list(m["dry_albedo"]) + [1.0]
         gn.inputs["Roughness"].default_value = t["params"][0][0]
     nrm = compat.principled_input(bsdf, "normal")
     if nrm.is_linked:
-        links.new(nrm.links[0].from_socket, gn.inputs["Normal"])
+        tree.links.new(nrm.links[0].from_socket, gn.inputs["Normal"])
     gn.inputs["Wetness"].default_value = settings.wetness
     gn.inputs["Fill Time"].default_value = m["t_fill"]
-    links.new(gn.outputs["Base Color"], bc)
-    links.new(gn.outputs["Roughness"], rough)
+
+
+def connect_outputs(tree, gn, bsdf, settings):
+    """Wires the group's outputs into the Principled BSDF and sets the BSDF
+    inputs the wet state fixes. Called by make_wet and rebuild (idempotent);
+    every BSDF input it changes is restored by make_dry."""
+    links = tree.links
+    links.new(gn.outputs["Base Color"], compat.principled_input(bsdf, "base_color"))
+    links.new(gn.outputs["Roughness"], compat.principled_input(bsdf, "roughness"))
     links.new(gn.outputs["Coat Weight"], compat.principled_input(bsdf, "coat_weight"))
-    links.new(gn.outputs["Normal"], nrm)
+    links.new(gn.outputs["Normal"], compat.principled_input(bsdf, "normal"))
     cn = compat.principled_input(bsdf, "coat_normal")
     if cn is not None:
         links.new(gn.outputs["Normal"], cn)
@@ -310,40 +445,90 @@ def make_wet(mat, settings):
     cior = compat.principled_input(bsdf, "coat_ior")
     if cior is not None:
         cior.default_value = data.liquid(settings.liquid)["ior"]
-    extra = _wire_source(tree, gn, settings)
-    if m["kind"] == "thin_sheet" and bsdf.outputs[0].is_linked:
-        extra += _add_translucency(tree, gn, bsdf)
-    restore["nodes"] = [n.name for n in extra]
+
+
+def _set_ref(n, key):
+    n[REF_KEY] = key
+    return key
+
+
+def _refs(tree, restore):
+    """Marks the user's nodes the record names, so Make Dry finds them renamed."""
+    names = {restore["bsdf"]}
+    names.update(fn for rec in restore["inputs"].values() for fn, _ in rec["links"])
+    names.update(tn for tn, _ in restore["bsdf_out"])
+    for name in names:
+        n = tree.nodes.get(name)
+        if n is not None and not n.get(NODE_TAG):
+            _set_ref(n, name)
+
+
+def _insert(mat, bsdf, settings):
+    tree = mat.node_tree
+    before = _bsdf_state(bsdf)
+    restore = {"bsdf": bsdf.name, "inputs": {}, "nodes": [],
+               "bsdf_out": [[l.to_node.name, l.to_socket.identifier] for l in bsdf.outputs[0].links]}
+    ng = bpy.data.node_groups.new("Soak Wet", "ShaderNodeTree")
+    build_group(ng, settings.preset, settings.liquid, settings.exact_lookups)
+    gn = tree.nodes.new("ShaderNodeGroup")
+    gn.node_tree = ng
+    gn.name = gn.label = "Soak Wet"
+    gn[NODE_TAG] = True
+    gn.location = (bsdf.location.x - 260, bsdf.location.y)
+    _group_defaults(gn, settings, tree, bsdf)
+    connect_outputs(tree, gn, bsdf, settings)
+    made = _wire_source(tree, gn, settings)
+    if data.material(settings.preset)["kind"] == "thin_sheet" and bsdf.outputs[0].is_linked:
+        made += _add_translucency(tree, gn, bsdf)
+    _note_changes(restore, before, bsdf)
+    restore["nodes"] = [n.name for n in made]
+    _refs(tree, restore)
     gn[RESTORE_KEY] = json.dumps(restore)
     return gn
 
 
-def _tag(n):
+def make_wet(mat, settings):
+    """Inserts the group in front of one Principled BSDF; returns the group
+    node. All or nothing: raises RuntimeError (or data.SoakDataError) with
+    the material unchanged."""
+    bsdf, _others = check_wettable(mat, settings)
+    gn = _atomic(mat.node_tree, _insert, mat, bsdf, settings)
+    if settings.wetness_source == "IMAGE":
+        settings.wet_map.colorspace_settings.name = "Non-Color"   # a data map, not a colour
+    return gn
+
+
+def _tag(n, role=None):
     n[NODE_TAG] = True
+    if role:
+        n[ROLE_KEY] = role
     return n
+
+
+def _source_nodes(tree):
+    return [n for n in tree.nodes if n.get(NODE_TAG) and n.type != "GROUP"
+            and (n.get(ROLE_KEY) == "source" or (n.get(ROLE_KEY) is None and n.bl_idname in SOURCE_TYPES))]
 
 
 def _wire_source(tree, gn, settings):
     src = settings.wetness_source
+    check_source(settings)
     made = []
     if src == "IMAGE":
-        if settings.wet_map is None:
-            raise RuntimeError("wetness source 'Image' needs an image")
-        n = _tag(tree.nodes.new("ShaderNodeTexImage"))
+        n = _tag(tree.nodes.new("ShaderNodeTexImage"), "source")
         n.image = settings.wet_map
-        n.image.colorspace_settings.name = "Non-Color"
         n.extension = "EXTEND"
         tree.links.new(n.outputs["Color"], gn.inputs["Wet Map"])
         made.append(n)
     elif src == "ATTRIBUTE":
-        n = _tag(tree.nodes.new("ShaderNodeAttribute"))
+        n = _tag(tree.nodes.new("ShaderNodeAttribute"), "source")
         n.attribute_name = settings.attribute_name
         tree.links.new(n.outputs["Fac"], gn.inputs["Wet Map"])
         made.append(n)
     elif src == "NOISE":
-        n = _tag(tree.nodes.new("ShaderNodeTexNoise"))
+        n = _tag(tree.nodes.new("ShaderNodeTexNoise"), "source")
         n.inputs["Scale"].default_value = settings.noise_scale
-        r = _tag(tree.nodes.new("ShaderNodeMapRange"))
+        r = _tag(tree.nodes.new("ShaderNodeMapRange"), "source")
         r.clamp = True
         r.inputs["From Min"].default_value = 0.45
         r.inputs["From Max"].default_value = 0.55
@@ -355,9 +540,36 @@ def _wire_source(tree, gn, settings):
     return made
 
 
+def _replace_source(mat, gn, settings):
+    tree = mat.node_tree
+    for n in _source_nodes(tree):
+        tree.nodes.remove(n)
+    made = _wire_source(tree, gn, settings)
+    if settings.wetness_source == "IMAGE":
+        settings.wet_map.colorspace_settings.name = "Non-Color"
+    restore = json.loads(gn[RESTORE_KEY])
+    restore["nodes"] = [n.name for n in tree.nodes if n.get(NODE_TAG) and n != gn]
+    gn[RESTORE_KEY] = json.dumps(restore)
+
+
+def set_source(mat, settings):
+    """Re-wires the wetness source of a wet material (the panel's Wetness
+    Source, Wet Map, Attribute and Noise Scale after Make Wet; Bake Wet Map).
+    All or nothing; a no-op on a dry material."""
+    tree = mat.node_tree
+    gn = find_group_node(tree) if tree is not None else None
+    if gn is None:
+        return
+    check_editable(mat)
+    check_source(settings)
+    if RESTORE_KEY not in gn:
+        raise RuntimeError(f"material '{mat.name}': the Soak Wet node has no restore record")
+    _atomic(tree, _replace_source, mat, gn, settings)
+
+
 def _add_translucency(tree, gn, bsdf):
-    tr = _tag(tree.nodes.new("ShaderNodeBsdfTranslucent"))
-    add = _tag(tree.nodes.new("ShaderNodeAddShader"))
+    tr = _tag(tree.nodes.new("ShaderNodeBsdfTranslucent"), "translucency")
+    add = _tag(tree.nodes.new("ShaderNodeAddShader"), "translucency")
     tr.location = (bsdf.location.x, bsdf.location.y - 500)
     add.location = (bsdf.location.x + 300, bsdf.location.y - 300)
     tree.links.new(gn.outputs["Translucency"], tr.inputs["Color"])
@@ -372,55 +584,172 @@ def _add_translucency(tree, gn, bsdf):
     return [tr, add]
 
 
-def make_dry(mat):
-    """Removes the group and restores the recorded links and values."""
-    tree = mat.node_tree
-    gn = find_group_node(tree) if tree else None
-    if gn is None:
-        raise RuntimeError(f"material '{mat.name}' is not wet")
-    restore = json.loads(gn[RESTORE_KEY])
-    bsdf = tree.nodes.get(restore["bsdf"])
-    if bsdf is None:
-        raise RuntimeError(f"the Principled BSDF '{restore['bsdf']}' was removed or renamed")
-    ng = gn.node_tree
-    for n in [n for n in tree.nodes if n.get(NODE_TAG)]:
+def _remove_translucency(tree, bsdf):
+    """Takes the Translucent + Add Shader pair out, re-linking what the Add
+    Shader fed to the BSDF itself."""
+    pair = [n for n in tree.nodes if n.get(NODE_TAG) and n.get(ROLE_KEY) == "translucency"]
+    for add in (n for n in pair if n.bl_idname == "ShaderNodeAddShader"):
+        for l in list(add.outputs[0].links):
+            if bsdf is not None:
+                tree.links.new(bsdf.outputs[0], l.to_socket)
+    for n in pair:
         tree.nodes.remove(n)
-    if ng is not None and ng.users == 0:
-        bpy.data.node_groups.remove(ng)
-    by_id = {s.identifier: s for s in bsdf.inputs}
-    for ident, rec in restore["inputs"].items():
-        s = by_id[ident]
+
+
+def _find_ref(tree, name):
+    """A node the restore record names: by its soak_ref mark (renamed), else by name."""
+    for n in tree.nodes:
+        if n.get(REF_KEY) == name and not n.get(NODE_TAG):
+            return n
+    n = tree.nodes.get(name)
+    return n if n is not None and not n.get(NODE_TAG) else None
+
+
+def _clear_refs(tree):
+    for n in tree.nodes:
+        if REF_KEY in n:
+            del n[REF_KEY]
+
+
+def _restore_inputs(tree, bsdf, restore, problems):
+    for ident, rec in restore.get("inputs", {}).items():
+        s = _in_socket(bsdf, ident)
+        if s is None:
+            problems.append(f"'{bsdf.name}' has no input '{ident}' any more")
+            continue
         for l in list(s.links):
             tree.links.remove(l)
         if rec["value"] is not None:
-            s.default_value = rec["value"]
+            try:
+                s.default_value = rec["value"]
+            except (TypeError, ValueError) as e:
+                problems.append(f"{s.name}: value not restored ({e})")
         for from_name, from_id in rec["links"]:
-            src = _out_socket(tree.nodes[from_name], from_id)
-            tree.links.new(src, s)
-    for to_name, to_id in restore["bsdf_out"]:
-        to = tree.nodes[to_name]
-        sock = next(s for s in to.inputs if s.identifier == to_id)
-        if not any(l.from_node == bsdf for l in sock.links):
+            node = _find_ref(tree, from_name)
+            src = node and _out_socket(node, from_id)
+            if src is None:
+                problems.append(f"'{from_name}' (linked to {s.name}) was deleted or lost that output")
+            else:
+                tree.links.new(src, s)
+
+
+def _restore_outputs(tree, bsdf, restore, problems):
+    for to_name, to_id in restore.get("bsdf_out", []):
+        to = _find_ref(tree, to_name)
+        sock = to and _in_socket(to, to_id)
+        if sock is None:
+            problems.append(f"'{to_name}' (fed by the BSDF) was deleted")
+        elif not any(l.from_node == bsdf for l in sock.links):
             tree.links.new(bsdf.outputs[0], sock)
 
 
-def rebuild(mat, settings):
-    gn = find_group_node(mat.node_tree) if mat.node_tree else None
-    if gn is not None and gn.node_tree is not None:
-        keep = {s.name: _value(s) for s in gn.inputs}
-        links = [(l.from_socket, l.to_socket.name) for s in gn.inputs for l in s.links]
-        build_group(gn.node_tree, settings.preset, settings.liquid, settings.exact_lookups)
-        for s in gn.inputs:
-            if keep.get(s.name) is not None:
-                s.default_value = keep[s.name]
-        for src, name in links:
-            mat.node_tree.links.new(src, gn.inputs[name])
-        m, t = data.material(settings.preset), data.table(settings.preset, settings.liquid)
-        if settings.colour_source == "PRESET":
-            gn.inputs["Base Color"].default_value = list(m["dry_albedo"]) + [1.0]
-            gn.inputs["Roughness"].default_value = t["params"][0][0]
+def make_dry(mat):
+    """Removes the group and the nodes it added and restores the recorded
+    links and values. Copes with a user who deleted or renamed nodes since:
+    restores what remains; returns the list of what it could not restore."""
+    check_editable(mat)
+    tree = mat.node_tree
+    gn = find_group_node(tree)
+    tagged = [n for n in tree.nodes if n.get(NODE_TAG)]
+    if gn is None and not tagged:
+        raise RuntimeError(f"material '{mat.name}' is not wet")
+    problems = []
+    try:
+        restore = json.loads(gn[RESTORE_KEY]) if gn is not None else None
+    except (KeyError, ValueError, TypeError):
+        restore = None
+    if restore is None:
+        problems.append("no restore record (Soak nodes removed; the BSDF's links and values not restored)")
+        restore = {}
+    bsdf = _find_ref(tree, restore["bsdf"]) if "bsdf" in restore else None
+    if "bsdf" in restore and bsdf is None:
+        problems.append(f"the Principled BSDF '{restore['bsdf']}' was deleted: its inputs were not restored")
+    ng = gn.node_tree if gn is not None else None
+    for n in tagged:
+        tree.nodes.remove(n)
+    if ng is not None and ng.users == 0:
+        bpy.data.node_groups.remove(ng)
+    if bsdf is not None:
+        _restore_inputs(tree, bsdf, restore, problems)
+        _restore_outputs(tree, bsdf, restore, problems)
+    _clear_refs(tree)
+    return problems
+
+
+def _fill_time_is_default(gn, old_preset):
+    try:
+        old = data.material(old_preset)["t_fill"]
+    except data.SoakDataError:
+        return False
+    return abs(gn.inputs["Fill Time"].default_value - old) <= 1e-6 * max(1.0, abs(old))
+
+
+def _rebuild(mat, gn, settings):
+    tree = mat.node_tree
+    old = gn.node_tree
+    old_info = json.loads(old.get(GROUP_TAG, "{}")) if old is not None else {}
+    restore = json.loads(gn[RESTORE_KEY])
+    bsdf = _find_ref(tree, restore["bsdf"])
+    keep = {s.name: _value(s) for s in gn.inputs}
+    links_in = [(l.from_socket, s.name) for s in gn.inputs for l in s.links]
+    links_out = [(s.name, l.to_socket) for s in gn.outputs for l in s.links]
+    fill_default = _fill_time_is_default(gn, old_info.get("preset", ""))
+    ng = bpy.data.node_groups.new("Soak Wet", "ShaderNodeTree")
+    build_group(ng, settings.preset, settings.liquid, settings.exact_lookups)
+    gn.node_tree = ng
+    for s in gn.inputs:
+        if keep.get(s.name) is not None:
+            s.default_value = keep[s.name]
+    for src, name in links_in:
+        if name in gn.inputs:
+            tree.links.new(src, gn.inputs[name])
+    for name, dst in links_out:
+        if name in gn.outputs:
+            tree.links.new(gn.outputs[name], dst)
+    m, t = data.material(settings.preset), data.table(settings.preset, settings.liquid)
+    if settings.colour_source == "PRESET":
+        gn.inputs["Base Color"].default_value = list(m["dry_albedo"]) + [1.0]
+        gn.inputs["Roughness"].default_value = t["params"][0][0]
+    if fill_default:
         gn.inputs["Fill Time"].default_value = m["t_fill"]
-        bsdf = mat.node_tree.nodes.get(json.loads(gn[RESTORE_KEY])["bsdf"])
-        cior = compat.principled_input(bsdf, "coat_ior") if bsdf is not None else None
-        if cior is not None:
-            cior.default_value = data.liquid(settings.liquid)["ior"]
+    if bsdf is not None:
+        before = _bsdf_state(bsdf)
+        connect_outputs(tree, gn, bsdf, settings)
+        has_sheet = any(n.get(ROLE_KEY) == "translucency" for n in tree.nodes if n.get(NODE_TAG))
+        if m["kind"] == "thin_sheet" and not has_sheet and bsdf.outputs[0].is_linked:
+            _add_translucency(tree, gn, bsdf)
+        elif m["kind"] != "thin_sheet" and has_sheet:
+            _remove_translucency(tree, bsdf)
+        _note_changes(restore, before, bsdf)
+    restore["nodes"] = [n.name for n in tree.nodes if n.get(NODE_TAG) and n != gn]
+    gn[RESTORE_KEY] = json.dumps(restore)
+    if old is not None and old.users == 0:
+        bpy.data.node_groups.remove(old)
+        ng.name = "Soak Wet"
+    return gn
+
+
+def rebuild(mat, settings):
+    """Rebuilds a wet material's group for new settings (Preset, Liquid, Exact
+    lookups) into a new node group, keeping the group node's input values,
+    links and keyframes (the keys address the inputs by index, which the
+    rebuild keeps) and the links from its outputs; a Fill Time still at the
+    old preset's value follows the new preset. Another material sharing the
+    old group keeps it. All or nothing."""
+    tree = mat.node_tree
+    gn = find_group_node(tree) if tree is not None else None
+    if gn is None:
+        return None
+    check_editable(mat)
+    check_data(settings)
+    if RESTORE_KEY not in gn:
+        raise RuntimeError(f"material '{mat.name}': the Soak Wet node has no restore record (Make Dry, then Make Wet)")
+    old = gn.node_tree
+    snap = _Snapshot(tree)
+    try:
+        return _rebuild(mat, gn, settings)
+    except BaseException:
+        if gn.node_tree != old:
+            gn.node_tree = old          # first: the snapshot's values are the old group's sockets'
+        snap.restore()
+        raise

@@ -1,46 +1,156 @@
-"""Per-material settings (Material.soak). The wetness, time and spill values
-live on the group node's inputs, so they are keyframable like any socket."""
+"""Per-material settings (Material.soak).
+
+Two kinds of property:
+- settings stored on the material (preset, liquid, wetness source, ...);
+  after Make Wet, changing one rebuilds the group or re-wires the source in
+  place (all or nothing: a failure leaves the material as it was and shows
+  the reason in the panel through `status`);
+- the group's controls (Wetness ... Spill Edge), which live on the Soak Wet
+  node's inputs so that they can be keyframed like any socket. The panel
+  draws them through the proxies below (get/set on the node's input) for a
+  tooltip, a unit and checkboxes for Schedule and Drying, whose group inputs
+  are floats (the schedule blends with them); the keyframe button beside each
+  keys the node's input itself."""
 
 import bpy
-from bpy.props import EnumProperty, FloatProperty, PointerProperty, StringProperty
+from bpy.props import BoolProperty, EnumProperty, FloatProperty, PointerProperty, StringProperty
 
 from . import data, nodes
 
 
-def _rebuild(self, context):
+def _apply(self, fn):
     mat = self.id_data
-    if mat is not None and mat.node_tree is not None and nodes.find_group_node(mat.node_tree) is not None:
-        nodes.rebuild(mat, self)
+    if mat is None or mat.node_tree is None or nodes.find_group_node(mat.node_tree) is None:
+        return
+    try:
+        fn(mat, self)
+        self.status = ""
+    except (RuntimeError, data.SoakDataError) as e:
+        self.status = str(e)          # shown in the panel; the material is unchanged
+    except Exception as e:            # a bug of ours: the material was rolled back too
+        self.status = f"{type(e).__name__}: {e}"
+        print("soak:", self.status)
+
+
+def _rebuild(self, context):
+    _apply(self, nodes.rebuild)
+
+
+def _source(self, context):
+    _apply(self, nodes.set_source)
+
+
+def _group_input(self, name):
+    mat = self.id_data
+    gn = nodes.find_group_node(mat.node_tree) if mat is not None and mat.node_tree is not None else None
+    return gn.inputs.get(name) if gn is not None else None
+
+
+def _float_proxy(name, label, description, default, lo, hi, subtype="NONE", soft_max=None):
+    def get(self):
+        s = _group_input(self, name)
+        return float(s.default_value) if s is not None else default
+
+    def put(self, value):
+        s = _group_input(self, name)
+        if s is not None:
+            s.default_value = value
+
+    kw = {"soft_max": soft_max} if soft_max is not None else {}
+    return FloatProperty(name=label, description=description, get=get, set=put, min=lo, max=hi,
+                         subtype=subtype, options=set(), **kw)
+
+
+def _bool_proxy(name, label, description):
+    def get(self):
+        s = _group_input(self, name)
+        return s is not None and s.default_value >= 0.5
+
+    def put(self, value):
+        s = _group_input(self, name)
+        if s is not None:
+            s.default_value = 1.0 if value else 0.0
+
+    return BoolProperty(name=label, description=description, get=get, set=put, options=set())
+
+
+# group input -> panel property (the panel's order)
+CONTROLS = (
+    ("Wetness", "group_wetness"),
+    ("Puddle Level", "puddle_level"),
+    ("Schedule", "schedule"),
+    ("Drying", "drying"),
+    ("Time", "time"),
+    ("Start Time", "start_time"),
+    ("Fill Time", "fill_time"),
+    ("Spill Edge", "spill_edge"),
+)
 
 
 class SoakMaterialSettings(bpy.types.PropertyGroup):
-    preset: EnumProperty(name="Preset", description="Material class from the Soak core (porosity, phase "
-                         "change, film)", items=data.preset_items, update=_rebuild)
-    liquid: EnumProperty(name="Liquid", items=data.liquid_items, update=_rebuild)
+    preset: EnumProperty(
+        name="Preset", items=data.preset_items, update=_rebuild,
+        description="Material class from the Soak core (porosity, phase change, extinction, film); "
+                    "after Make Wet the group is rebuilt in place, keeping its values, links and keys")
+    liquid: EnumProperty(
+        name="Liquid", items=data.liquid_items, update=_rebuild,
+        description="The liquid (refractive index and absorption from the core); after Make Wet the group is "
+                    "rebuilt in place")
     colour_source: EnumProperty(
         name="Colours",
+        description="Which dry colour and roughness the group wets",
         items=(("MATERIAL", "Material's own", "Darken the material's own base colour and roughness "
                 "(textures included) through the preset's wetness function"),
                ("PRESET", "Preset", "Use the preset's dry colour and roughness")),
         default="MATERIAL")
-    wetness: FloatProperty(name="Wetness", min=0.0, max=1.0, default=1.0, subtype="FACTOR",
-                           description="Initial wetness (then edit it on the group's input)")
+    wetness: FloatProperty(
+        name="Wetness", min=0.0, max=1.0, default=1.0, subtype="FACTOR",
+        description="Amount of liquid Make Wet starts with, 0 (dry) to 1 (saturated, with a film); "
+                    "afterwards it is the group's Wetness input")
     wetness_source: EnumProperty(
-        name="Wetness Source",
+        name="Wetness Source", update=_source,
+        description="Where the wetness varies over the surface (multiplies Wetness); "
+                    "can be changed after Make Wet",
         items=(("CONSTANT", "Constant", "The same wetness everywhere"),
-               ("IMAGE", "Image", "A wet map image over the UVs (e.g. from soak bake)"),
+               ("IMAGE", "Image", "A wet map image over the UVs (e.g. from Bake Wet Map)"),
                ("ATTRIBUTE", "Attribute", "A mesh attribute, e.g. Dynamic Paint's dp_wetmap"),
                ("NOISE", "Noise", "Procedural patches")),
         default="CONSTANT")
-    wet_map: PointerProperty(name="Wet Map", type=bpy.types.Image)
-    attribute_name: StringProperty(name="Attribute", default="dp_wetmap")
-    noise_scale: FloatProperty(name="Noise Scale", default=5.0, min=0.0)
-    exact_lookups: bpy.props.BoolProperty(
+    wet_map: PointerProperty(
+        name="Wet Map", type=bpy.types.Image, update=_source,
+        description="Wet map over the mesh's UVs, 0 dry to 1 wet, read as non-colour data "
+                    "(Bake Wet Map makes one)")
+    attribute_name: StringProperty(
+        name="Attribute", default="dp_wetmap", update=_source,
+        description="Mesh attribute holding the wetness 0-1 (Dynamic Paint's wet map is dp_wetmap)")
+    noise_scale: FloatProperty(
+        name="Noise Scale", default=5.0, min=0.0, soft_max=100.0, update=_source,
+        description="Scale of the procedural wet patches (patches per object-space unit)")
+    exact_lookups: BoolProperty(
         name="Exact lookups (EEVEE)", default=False, update=_rebuild,
         description="Interpolate the core's tables with four exact texel reads each (EEVEE's image filter "
                     "is not plain bilinear); slower, same result in Cycles")
-    use_osl: bpy.props.BoolProperty(name="Use OSL shader", default=False,
-                                    description="Cycles with Open Shading Language only")
+    use_osl: BoolProperty(name="Use OSL shader", default=False,
+                          description="Also add the core's OSL shader (Cycles with Open Shading Language only)")
+    status: StringProperty(name="Status", default="", options={"SKIP_SAVE"},
+                           description="Why the last change of a setting after Make Wet was refused")
+
+    group_wetness: _float_proxy("Wetness", "Wetness", "Amount of liquid, 0 (dry) to 1 (saturated, with a "
+                                "film); multiplied by the wetness source", 1.0, 0.0, 1.0, "FACTOR")
+    puddle_level: _float_proxy("Puddle Level", "Puddle Level", "Wet-map values at or above this count as "
+                               "fully wet (standing water); 1 leaves the map as it is", 1.0, 0.0, 1.0, "FACTOR")
+    schedule: _bool_proxy("Schedule", "Schedule", "Follow the core's pore-filling schedule over Time "
+                          "(off: the steady state, fully filled)")
+    drying: _bool_proxy("Drying", "Drying", "Run the schedule backwards: wet at Start Time, dry after "
+                        "Fill Time")
+    time: _float_proxy("Time", "Time (s)", "Time of the schedule in seconds (key it, or use Key Drying)",
+                       1.0, -1e9, 1e9)
+    start_time: _float_proxy("Start Time", "Start Time (s)", "When the liquid arrives (or drying starts), "
+                             "in seconds", 0.0, -1e9, 1e9)
+    fill_time: _float_proxy("Fill Time", "Fill Time (s)", "Seconds the pores take to fill (or dry); "
+                            "defaults to the preset's fill time", 1.0, 0.0, 1e9)
+    spill_edge: _float_proxy("Spill Edge", "Spill Edge", "Strength of the bump where the wet map changes "
+                             "(liquid standing at a spill's edge); 0 = off", 0.0, 0.0, 10.0)
 
 
 classes = (SoakMaterialSettings,)

@@ -1,9 +1,36 @@
+"""The Wetness panel (Properties > Material), laid out like Blender's own:
+property split, sub-panels, greyed buttons with their reason (poll
+messages), and the render settings the wet look needs."""
 import bpy
 
 from . import nodes
 from .operators.wet import osl_available
+from .properties import CONTROLS
 
-GROUP_CONTROLS = ("Wetness", "Puddle Level", "Schedule", "Drying", "Time", "Start Time", "Fill Time", "Spill Edge")
+
+def _material(context):
+    ob = context.object
+    return ob.active_material if ob is not None else None
+
+
+def _engine_hints(layout, context, s):
+    """The render settings wet reflections need, with the switch at hand."""
+    scene = context.scene
+    engine = scene.render.engine
+    if engine == "BLENDER_EEVEE" and hasattr(scene.eevee, "use_ssr"):       # EEVEE Legacy (up to 4.1)
+        if not scene.eevee.use_ssr:
+            box = layout.box()
+            box.label(text="EEVEE shows the liquid film's reflections", icon="INFO")
+            box.label(text="only with Screen Space Reflections on:")
+            box.prop(scene.eevee, "use_ssr")
+    elif engine == "BLENDER_EEVEE_NEXT" and hasattr(scene.eevee, "use_raytracing"):   # EEVEE 4.2+
+        if not scene.eevee.use_raytracing:
+            box = layout.box()
+            box.label(text="EEVEE reflects the film sharply only with", icon="INFO")
+            box.label(text="Raytracing on (else light probes only):")
+            box.prop(scene.eevee, "use_raytracing")
+    if engine.startswith("BLENDER_EEVEE") and not s.exact_lookups:
+        layout.label(text="EEVEE: turn on Exact lookups for the core's values", icon="INFO")
 
 
 class SOAK_PT_wetness(bpy.types.Panel):
@@ -15,42 +42,103 @@ class SOAK_PT_wetness(bpy.types.Panel):
 
     @classmethod
     def poll(cls, context):
-        return context.object is not None and context.object.active_material is not None
+        return _material(context) is not None
 
     def draw(self, context):
         layout = self.layout
         layout.use_property_split = True
-        mat = context.object.active_material
+        layout.use_property_decorate = False
+        mat = _material(context)
         s = mat.soak
-        layout.prop(s, "preset")
-        layout.prop(s, "liquid")
-        layout.prop(s, "exact_lookups")
         gn = nodes.find_group_node(mat.node_tree) if mat.node_tree else None
+        if mat.library is not None:
+            layout.label(text="Linked from a library: make it local to wet it", icon="LIBRARY_DATA_DIRECT")
+        col = layout.column()
+        col.prop(s, "preset")
+        col.prop(s, "liquid")
+        col.prop(s, "exact_lookups")
         if gn is None:
-            layout.prop(s, "colour_source")
-            layout.prop(s, "wetness")
-            layout.prop(s, "wetness_source")
-            if s.wetness_source == "IMAGE":
-                layout.template_ID(s, "wet_map", open="image.open")
-            elif s.wetness_source == "ATTRIBUTE":
-                layout.prop(s, "attribute_name")
-            elif s.wetness_source == "NOISE":
-                layout.prop(s, "noise_scale")
+            col.prop(s, "colour_source")
+            col.prop(s, "wetness")
+        if s.status:
+            box = layout.box()
+            box.alert = True
+            box.label(text=s.status, icon="ERROR")
+        _engine_hints(layout, context, s)
+        if gn is None:
             if osl_available(context):
                 layout.prop(s, "use_osl")
             layout.operator("soak.make_wet", icon="MOD_FLUIDSIM")
         else:
-            for name in GROUP_CONTROLS:
-                layout.prop(gn.inputs[name], "default_value", text=name)
-            row = layout.row()
+            row = layout.row(align=True)
             row.operator("soak.key_drying", icon="KEY_HLT")
             row.operator("soak.make_dry", icon="CANCEL")
-        row = layout.row()
+        row = layout.row(align=True)
         row.operator("soak.bake_wetmap", icon="RENDER_STILL")
         row.operator("soak.import_volume", icon="VOLUME_DATA")
 
 
-classes = (SOAK_PT_wetness,)
+class SOAK_PT_wetness_source(bpy.types.Panel):
+    bl_label = "Source"
+    bl_idname = "SOAK_PT_wetness_source"
+    bl_parent_id = "SOAK_PT_wetness"
+    bl_space_type = "PROPERTIES"
+    bl_region_type = "WINDOW"
+    bl_context = "material"
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_split = True
+        layout.use_property_decorate = False
+        s = _material(context).soak
+        layout.prop(s, "wetness_source", text="Wetness Source")
+        if s.wetness_source == "IMAGE":
+            layout.template_ID(s, "wet_map", open="image.open")
+            if s.wet_map is None:
+                layout.label(text="Choose or bake a wet map", icon="ERROR")
+        elif s.wetness_source == "ATTRIBUTE":
+            layout.prop(s, "attribute_name")
+        elif s.wetness_source == "NOISE":
+            layout.prop(s, "noise_scale")
+
+
+class SOAK_PT_wetness_controls(bpy.types.Panel):
+    bl_label = "Controls"
+    bl_idname = "SOAK_PT_wetness_controls"
+    bl_parent_id = "SOAK_PT_wetness"
+    bl_space_type = "PROPERTIES"
+    bl_region_type = "WINDOW"
+    bl_context = "material"
+
+    @classmethod
+    def poll(cls, context):
+        mat = _material(context)
+        return mat is not None and mat.node_tree is not None and nodes.find_group_node(mat.node_tree) is not None
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_split = True
+        layout.use_property_decorate = False
+        mat = _material(context)
+        s = mat.soak
+        gn = nodes.find_group_node(mat.node_tree)
+        col = layout.column()
+        for name, prop in CONTROLS:
+            sock = gn.inputs.get(name)
+            if sock is None:
+                continue
+            row = col.row(align=True)
+            sub = row.row(align=True)
+            sub.active = not sock.is_linked
+            sub.prop(s, prop)
+            row.prop_decorator(sock, "default_value")   # keys the node's input
+            if name == "Drying":
+                col.separator()
+        if s.schedule:
+            col.label(text="Time runs from Start Time to Start + Fill Time", icon="TIME")
+
+
+classes = (SOAK_PT_wetness, SOAK_PT_wetness_source, SOAK_PT_wetness_controls)
 
 
 def register():

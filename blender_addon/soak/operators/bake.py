@@ -1,6 +1,12 @@
 """Bake Wet Map: runs `soak bake rain` on the active mesh in a subprocess
 (modal, cancellable with Esc), then loads the map and selects it as the
-material's wetness source."""
+material's wetness source (wired in at once when the material is already
+wet).
+
+The rain is blocked by the whole visible scene (or a chosen collection, or
+nothing): the occluders go into the same OBJ as the active mesh with every
+UV at OCCLUDER_UV, outside the unit square, so `soak bake rain` traces them
+but rasterises no texel of them (degenerate in UV space)."""
 
 import os
 import shutil
@@ -10,42 +16,116 @@ import tempfile
 import bpy
 
 from ..preferences import find_soak
+from .wet import poll_message
+
+OCCLUDER_UV = (4.5, 4.5)
+OCCLUDER_TYPES = {"MESH", "CURVE", "SURFACE", "META", "FONT"}
 
 
-def _export_obj(context, ob, path):
-    kw = dict(filepath=path, export_selected_objects=True, export_uv=True, export_materials=False,
-              forward_axis="NEGATIVE_Z", up_axis="Y")
-    sel = [o for o in context.view_layer.objects if o.select_get()]
-    for o in sel:
-        o.select_set(False)
-    ob.select_set(True)
+def _write_object(f, ob, depsgraph, base, uv):
+    """Appends the evaluated object's triangles (world space) to an OBJ
+    file; uv: True for the mesh's active UV map, else OCCLUDER_UV.
+    Returns the number of vertices written."""
+    ev = ob.evaluated_get(depsgraph)
+    me = ev.to_mesh()
     try:
-        bpy.ops.wm.obj_export(**kw)
+        me.calc_loop_triangles()
+        mw = ev.matrix_world
+        for v in me.vertices:
+            p = mw @ v.co
+            f.write(f"v {p.x:.9g} {p.y:.9g} {p.z:.9g}\n")
+        uvl = me.uv_layers.active if uv else None
+        if uvl is not None:
+            for d in uvl.data:
+                f.write(f"vt {d.uv[0]:.9g} {d.uv[1]:.9g}\n")
+        else:
+            f.write(f"vt {OCCLUDER_UV[0]} {OCCLUDER_UV[1]}\n")
+        for tri in me.loop_triangles:
+            vs = [base["v"] + i + 1 for i in tri.vertices]
+            ts = [base["vt"] + l + 1 for l in tri.loops] if uvl is not None else [base["vt"] + 1] * 3
+            f.write("f " + " ".join(f"{a}/{b}" for a, b in zip(vs, ts)) + "\n")
+        base["v"] += len(me.vertices)
+        base["vt"] += len(uvl.data) if uvl is not None else 1
+        return len(me.loop_triangles)
     finally:
-        ob.select_set(False)
-        for o in sel:
-            o.select_set(True)
+        ev.to_mesh_clear()
+
+
+def occluder_objects(context, ob, mode, collection_name=""):
+    """The objects that shelter `ob` from the rain."""
+    if mode == "NONE":
+        return []
+    if mode == "COLLECTION":
+        coll = bpy.data.collections.get(collection_name)
+        if coll is None:
+            raise RuntimeError(f"no collection named '{collection_name}' for the occluders")
+        pool = coll.all_objects
+    else:
+        pool = context.view_layer.objects
+    return [o for o in pool if o != ob and o.type in OCCLUDER_TYPES and o.visible_get()
+            and not o.hide_render]
+
+
+def export_scene_obj(context, ob, occluders, path):
+    """The active mesh (with its UVs) and the occluders in one OBJ, world
+    space, Blender's Z up. Returns (triangles of ob, occluder triangles)."""
+    depsgraph = context.evaluated_depsgraph_get()
+    base = {"v": 0, "vt": 0}
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("# soak bake rain: active mesh, then occluders (UVs outside the unit square)\no target\n")
+        n = _write_object(f, ob, depsgraph, base, True)
+        m = 0
+        for o in occluders:
+            f.write(f"o occluder_{m}\n")
+            m += _write_object(f, o, depsgraph, base, False)
+    return n, m
 
 
 def bake_command(exe, mesh_path, out_path, size, rays, duration):
     return [exe, "bake", "rain", mesh_path, "-o", out_path, "--width", str(size), "--height", str(size),
-            "--rays", str(rays), "--duration", str(duration), "--up", "y"]
+            "--rays", str(rays), "--duration", str(duration), "--up", "z"]
 
 
 class SOAK_OT_bake_wetmap(bpy.types.Operator):
-    """Bake a rain wet map for the active mesh with the soak tool"""
+    """Bake a rain wet map over the active mesh's UVs with the soak tool (sheltered by the visible scene), and use it as the material's wetness source"""
     bl_idname = "soak.bake_wetmap"
     bl_label = "Bake Wet Map"
     bl_options = {"REGISTER"}
 
-    size: bpy.props.IntProperty(name="Size", default=256, min=8, max=8192)
-    rays: bpy.props.IntProperty(name="Rays", default=32, min=1, max=4096)
-    duration: bpy.props.FloatProperty(name="Rain (s)", default=600.0, min=0.0)
+    size: bpy.props.IntProperty(name="Size", default=256, min=8, max=8192,
+                                description="Width and height of the wet map, pixels")
+    rays: bpy.props.IntProperty(name="Rays", default=32, min=1, max=4096,
+                                description="Rays per texel for the sky exposure (more: less noise, slower)")
+    duration: bpy.props.FloatProperty(name="Rain (s)", default=600.0, min=0.0, soft_max=86400.0,
+                                      description="Seconds of rain (10 mm/h); 0 bakes the sky exposure only")
+    occluders: bpy.props.EnumProperty(
+        name="Shelter", default="SCENE",
+        description="What blocks the rain besides the mesh itself",
+        items=(("SCENE", "Visible Scene", "Every visible, renderable object of the view layer"),
+               ("COLLECTION", "Collection", "The objects of one collection"),
+               ("NONE", "Nothing", "The active mesh alone")))
+    collection: bpy.props.StringProperty(name="Collection", default="",
+                                         description="Collection whose objects block the rain (Shelter: "
+                                                     "Collection)")
 
     @classmethod
     def poll(cls, context):
         ob = context.object
-        return ob is not None and ob.type == "MESH" and ob.active_material is not None
+        if ob is None or ob.type != "MESH":
+            return poll_message(cls, "Select a mesh object: the wet map is baked over its UVs")
+        if ob.active_material is None:
+            return poll_message(cls, f"'{ob.name}' has no material to receive the wet map")
+        if ob.active_material.library is not None:
+            return poll_message(cls, "The material is linked from a library: make it local first")
+        return True
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_split = True
+        for p in ("size", "rays", "duration", "occluders"):
+            layout.prop(self, p)
+        if self.occluders == "COLLECTION":
+            layout.prop_search(self, "collection", bpy.data, "collections")
 
     def _start(self, context):
         exe = find_soak(context)
@@ -56,14 +136,25 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
         if not ob.data.uv_layers:
             self.report({"ERROR"}, f"mesh '{ob.name}' has no UV map: the wet map is baked over the UVs")
             return False
+        try:
+            occ = occluder_objects(context, ob, self.occluders, self.collection)
+        except RuntimeError as e:
+            self.report({"ERROR"}, str(e))
+            return False
         self._dir = tempfile.mkdtemp(prefix="soak_bake_")
         mesh = os.path.join(self._dir, "mesh.obj")
         self._out = os.path.join(self._dir, f"{bpy.path.clean_name(ob.name)}_wet.exr")
-        _export_obj(context, ob, mesh)
+        try:
+            self._counts = export_scene_obj(context, ob, occ, mesh)
+        except OSError as e:
+            shutil.rmtree(self._dir, ignore_errors=True)
+            self.report({"ERROR"}, f"cannot write the mesh for soak: {e}")
+            return False
         cmd = bake_command(exe, mesh, self._out, self.size, self.rays, self.duration)
         try:
             self._proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         except OSError as e:
+            shutil.rmtree(self._dir, ignore_errors=True)
             self.report({"ERROR"}, f"cannot run {exe}: {e}")
             return False
         self._mat = ob.active_material
@@ -85,9 +176,18 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
         img.colorspace_settings.name = "Non-Color"
         img.pack()
         s = self._mat.soak
+        old = (s.wet_map, s.wetness_source)
+        s.status = ""
         s.wet_map = img
         s.wetness_source = "IMAGE"
-        self.report({"INFO"}, f"wet map baked: {img.name}")
+        if s.status:                       # the wet material refused the new source: keep it as it was
+            msg = s.status
+            s.wet_map, s.wetness_source = old
+            s.status = ""
+            self.report({"ERROR"}, f"wet map baked ({img.name}) but not wired: {msg}")
+            return {"CANCELLED"}
+        n, m = self._counts
+        self.report({"INFO"}, f"wet map baked: {img.name} ({n} triangles, sheltered by {m} occluder triangles)")
         return {"FINISHED"}
 
     def execute(self, context):  # blocking variant (scripts, tests)
@@ -117,12 +217,13 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
             self._proc.wait()
             shutil.rmtree(self._dir, ignore_errors=True)
             self._stop(context)
+            context.workspace.status_text_set(None)
             self.report({"WARNING"}, "wet-map bake cancelled")
             return {"CANCELLED"}
         if event.type == "TIMER":
             self._ticks += 1
             context.window_manager.progress_update(min(99, self._ticks))
-            context.workspace.status_text_set(f"Soak: baking wet map... (Esc cancels)")
+            context.workspace.status_text_set("Soak: baking wet map... (Esc cancels)")
             if self._proc.poll() is not None:
                 self._stop(context)
                 context.workspace.status_text_set(None)
