@@ -78,7 +78,7 @@ class SOAK_OT_make_wet(bpy.types.Operator):
             self._osl(context, mat, settings)
         if others:
             names = ", ".join(f"'{n.name}'" for n in others)
-            self.report({"WARNING"}, f"{mat.name}: wetted '{bsdf.name}' only; {names} stay dry (to wet another, "
+            self.report({"WARNING"}, f"{mat.name}: wetted '{bsdf.name}' only; {names} left dry (to wet another, "
                                      "Make Dry, make it the active node in the Shader Editor and Make Wet)")
         else:
             self.report({"INFO"}, f"{mat.name}: wet ({settings.preset}, {settings.liquid})")

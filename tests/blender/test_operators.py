@@ -1,0 +1,589 @@
+"""The operators are all or nothing, and safe on what users do to a wet
+material (issue 19, sections 4 and 5):
+
+ 1. every failure we can provoke (Image source without an image, a linked
+    material, an error half-way through the insertion, a failing rebuild, an
+    Image source without image after Make Wet) leaves the node tree exactly
+    as before (common.tree_state) and no stray node group;
+ 2. Preset, Liquid and Exact lookups after Make Wet rebuild the group and keep
+    the links to the Principled BSDF, the user's input values, the links into
+    the group and the keys on its inputs; sand -> concrete -> sand renders
+    the same as the first wet sand (identity); a material sharing the group
+    keeps its own preset;
+ 3. Make Dry after the user deleted or renamed nodes restores what remains
+    and names what it could not; Make Dry of a group with no restore record;
+ 4. several Principled BSDFs: the one feeding the output (or the active node)
+    is wetted, the others named and untouched;
+ 5. the wetness source can be changed after Make Wet;
+ 6. Key Drying over the scene's frame range keeps Start/Fill Time, replaces
+    its old keys;
+ 7. Bake Wet Map shelters the ground under a torus with the visible scene
+    (numbers against the same bake without occluders) and wires the map into
+    an already-wet material;
+ 8. every property, operator and operator setting has a tooltip; greyed
+    buttons say why (poll messages, Blender 3.0+)."""
+import os
+import sys
+
+import bpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+
+A = common.args()
+COAT = "Coat Weight" if bpy.app.version >= (4, 0, 0) else "Clearcoat"
+CHECKS = []
+
+
+def check(cond, msg):
+    if not cond:
+        common.fail(msg)
+    CHECKS.append(msg)
+
+
+def groups():
+    return sorted(g.name for g in bpy.data.node_groups)
+
+
+def textured_material(name="Textured"):
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    t = mat.node_tree
+    bsdf = t.nodes["Principled BSDF"]
+    img = bpy.data.images.new(name + " checker", 8, 8)
+    img.generated_type = "COLOR_GRID"
+    tex = t.nodes.new("ShaderNodeTexImage")
+    tex.name = "Checker"
+    tex.image = img
+    t.links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
+    bump = t.nodes.new("ShaderNodeBump")
+    bump.name = "MyBump"
+    t.links.new(tex.outputs["Alpha"], bump.inputs["Height"])
+    t.links.new(bump.outputs["Normal"], bsdf.inputs["Normal"])
+    bsdf.inputs["Roughness"].default_value = 0.37
+    bsdf.inputs[COAT].default_value = 0.25
+    return mat
+
+
+def use(ob, mat):
+    ob.data.materials.clear()
+    ob.data.materials.append(mat)
+    bpy.context.view_layer.objects.active = ob
+    ob.active_material_index = 0
+
+
+def op_error(fn, **kw):
+    """Runs an operator expecting a refusal; returns the message."""
+    try:
+        r = fn(**kw)
+    except RuntimeError as e:
+        return str(e)
+    return f"returned {r}"
+
+
+def bsdf_fed_by_group(mat, bsdf_name="Principled BSDF"):
+    b = mat.node_tree.nodes[bsdf_name]
+    names = ["Base Color", "Roughness", COAT, "Normal"]
+    return {n: (b.inputs[n].is_linked and b.inputs[n].links[0].from_node.name == "Soak Wet") for n in names}
+
+
+# ---- 1. failures leave the material as it was ---------------------------------
+
+def test_failures(ob):
+    soak = sys.modules["soak"]
+    mat = textured_material("Fail")
+    use(ob, mat)
+    before, g0 = common.tree_state(mat.node_tree), groups()
+
+    mat.soak.wetness_source = "IMAGE"
+    mat.soak.wet_map = None
+    msg = op_error(bpy.ops.soak.make_wet)
+    print("Image source, no image:", msg.strip())
+    check("needs an image" in msg, f"no-image refusal message: {msg}")
+    check(common.tree_state(mat.node_tree) == before and groups() == g0,
+          "Make Wet with the Image source and no image changed the material")
+    check(not bpy.ops.soak.make_dry.poll(), "Make Dry is offered after a refused Make Wet")
+
+    # an error half-way through the insertion (after the group and the source
+    # nodes exist): rolled back, for our own errors and for bugs
+    mat.soak.wetness_source = "NOISE"
+    real = soak.nodes._wire_source
+    for exc in (RuntimeError("provoked failure"), TypeError("provoked bug")):
+        def boom(tree, gn, settings, _exc=exc):
+            real(tree, gn, settings)
+            raise _exc
+        soak.nodes._wire_source = boom
+        try:
+            msg = op_error(bpy.ops.soak.make_wet)
+        finally:
+            soak.nodes._wire_source = real
+        print(f"{type(exc).__name__} half-way:", msg.strip())
+        check("provoked" in msg, f"half-way failure not reported: {msg}")
+        check(common.tree_state(mat.node_tree) == before and groups() == g0,
+              f"Make Wet failing half-way ({type(exc).__name__}) left the material changed")
+    # the same material then wets and dries normally
+    check(bpy.ops.soak.make_wet() == {"FINISHED"}, "Make Wet after a failed one")
+    check(bpy.ops.soak.make_dry() == {"FINISHED"}, "Make Dry after a failed Make Wet")
+    check(common.tree_state(mat.node_tree) == before and groups() == g0, "wet/dry after failures: not restored")
+
+    # a failing rebuild (Preset change) leaves the wet material as it was
+    bpy.ops.soak.make_wet()
+    wet, gw = common.tree_state(mat.node_tree), groups()
+    real_build = soak.nodes.build_group
+
+    def bad_build(tree, *a, **k):
+        real_build(tree, *a, **k)
+        raise RuntimeError("provoked rebuild failure")
+    soak.nodes.build_group = bad_build
+    try:
+        mat.soak.preset = "concrete"
+    finally:
+        soak.nodes.build_group = real_build
+    print("failing rebuild: status =", repr(mat.soak.status))
+    check("provoked rebuild failure" in mat.soak.status, "a failed rebuild is not shown in the panel's status")
+    check(common.tree_state(mat.node_tree) == wet and groups() == gw, "a failed rebuild changed the material")
+    check(bsdf_fed_by_group(mat) == dict.fromkeys(bsdf_fed_by_group(mat), True),
+          "a failed rebuild lost the group's links")
+
+    # Image source without an image chosen after Make Wet: refused, unchanged
+    mat.soak.wetness_source = "IMAGE"
+    check("needs an image" in mat.soak.status, f"source change without image not refused: {mat.soak.status!r}")
+    check(common.tree_state(mat.node_tree) == wet, "a refused source change changed the material")
+    bpy.ops.soak.make_dry()
+    check(common.tree_state(mat.node_tree) == before and groups() == g0, "dry after refused changes")
+    mat.soak.wetness_source = "CONSTANT"
+    mat.soak.status = ""
+
+
+def test_linked(ob):
+    path = os.path.join(A["tmp"], "library.blend")
+    lib = bpy.data.materials.new("LibMat")
+    lib.use_nodes = True
+    bpy.data.libraries.write(path, {lib}, fake_user=True)
+    bpy.data.materials.remove(lib)
+    with bpy.data.libraries.load(path, link=True) as (src, dst):
+        dst.materials = ["LibMat"]
+    mat = dst.materials[0]
+    check(mat.library is not None, "the library material is not linked")
+    use(ob, mat)
+    before = common.tree_state(mat.node_tree)
+    msg = op_error(bpy.ops.soak.make_wet)
+    print("linked material:", msg.strip())
+    check("linked from a library" in msg or "library" in msg, f"linked material not refused clearly: {msg}")
+    try:
+        sys.modules["soak"].nodes.make_wet(mat, mat.soak)
+        common.fail("nodes.make_wet accepted a linked material")
+    except RuntimeError as e:
+        check("make it local" in str(e), f"linked refusal does not say what to do: {e}")
+    check(common.tree_state(mat.node_tree) == before, "a linked material was changed")
+
+
+# ---- 2. rebuild keeps links, values and keys ------------------------------------
+
+def setup_render(sc):
+    sc.render.engine = "CYCLES"
+    sc.cycles.samples = 4
+    sc.cycles.use_denoising = False
+    sc.cycles.seed = 1
+    sc.render.resolution_x = sc.render.resolution_y = 12
+    sc.render.image_settings.file_format = "OPEN_EXR"
+    sc.view_settings.view_transform = "Standard"
+    cd = bpy.data.cameras.new("TopCam")
+    cd.type = "ORTHO"
+    cd.ortho_scale = 1.5
+    cam = bpy.data.objects.new("TopCam", cd)
+    sc.collection.objects.link(cam)
+    cam.location = (0, 0, 3)
+    sc.camera = cam
+
+
+def render_lum(name):
+    sc = bpy.context.scene
+    path = os.path.join(A["tmp"], name + ".exr")
+    sc.render.filepath = path
+    bpy.ops.render.render(write_still=True)
+    img = bpy.data.images.load(path, check_existing=False)
+    px = list(img.pixels)
+    bpy.data.images.remove(img)
+    n = len(px) // 4
+    return sum(0.2126 * px[4 * i] + 0.7152 * px[4 * i + 1] + 0.0722 * px[4 * i + 2] for i in range(n)) / n
+
+
+def test_rebuild(ob):
+    mat = textured_material("Rebuild")
+    use(ob, mat)
+    mat.soak.preset, mat.soak.liquid, mat.soak.wetness_source = "sand", "water", "ATTRIBUTE"
+    dry_lum = render_lum("rebuild_dry")
+    check(bpy.ops.soak.make_wet() == {"FINISHED"}, "make_wet sand")
+    t = mat.node_tree
+    gn = t.nodes["Soak Wet"]
+    gn.inputs["Wetness"].default_value = 0.8
+    gn.inputs["Fill Time"].default_value = 123.0
+    gn.inputs["Spill Edge"].default_value = 0.5
+    gn.inputs["Time"].default_value = 0.0
+    gn.inputs["Time"].keyframe_insert("default_value", frame=1)
+    gn.inputs["Time"].default_value = 50.0
+    gn.inputs["Time"].keyframe_insert("default_value", frame=11)
+    bpy.context.scene.frame_set(1)
+    wet_lum = render_lum("rebuild_sand")
+    for attr, value in (("preset", "concrete"), ("liquid", "coffee"), ("exact_lookups", True),
+                        ("exact_lookups", False), ("liquid", "water"), ("preset", "sand")):
+        setattr(mat.soak, attr, value)
+        check(mat.soak.status == "", f"{attr}={value}: refused: {mat.soak.status}")
+        gn = t.nodes["Soak Wet"]
+        fed = bsdf_fed_by_group(mat)
+        check(all(fed.values()), f"{attr}={value}: links to the Principled BSDF lost: {fed}")
+        info = __import__("json").loads(gn.node_tree["soak_group"])
+        check(info["preset"] == mat.soak.preset and info["liquid"] == mat.soak.liquid
+              and info["exact"] == mat.soak.exact_lookups, f"{attr}={value}: group not rebuilt: {info}")
+        vals = (gn.inputs["Wetness"].default_value, gn.inputs["Fill Time"].default_value,
+                gn.inputs["Spill Edge"].default_value)
+        check(abs(vals[0] - 0.8) < 1e-6 and abs(vals[1] - 123.0) < 1e-4 and abs(vals[2] - 0.5) < 1e-6,
+              f"{attr}={value}: user values lost: {vals}")
+        src = gn.inputs["Wet Map"].links
+        check(len(src) == 1 and src[0].from_node.bl_idname == "ShaderNodeAttribute",
+              f"{attr}={value}: the link into Wet Map was lost")
+        check(gn.inputs["Base Color"].is_linked and gn.inputs["Base Color"].links[0].from_node.name == "Checker",
+              f"{attr}={value}: the texture into the group was lost")
+        bpy.context.scene.frame_set(11)
+        check(abs(gn.inputs["Time"].default_value - 50.0) < 1e-4, f"{attr}={value}: Time keys lost")
+        bpy.context.scene.frame_set(1)
+    check(len([g for g in bpy.data.node_groups if g.name.startswith("Soak Wet")]) == 1,
+          f"rebuilds left node groups behind: {groups()}")
+    back_lum = render_lum("rebuild_sand_again")
+    print(f"rebuild: dry {dry_lum:.5f}, wet sand {wet_lum:.5f}, after 6 changes back to sand {back_lum:.5f}")
+    check(wet_lum < 0.9 * dry_lum, f"the wet material is not darker than the dry one: {wet_lum} vs {dry_lum}")
+    check(abs(back_lum - wet_lum) <= 1e-6 + 1e-5 * wet_lum,
+          f"sand -> ... -> sand renders differently: {back_lum} vs {wet_lum}")
+
+    # a Fill Time still at the old preset's value follows the new preset
+    soak = sys.modules["soak"]
+    gn.inputs["Fill Time"].default_value = soak.data.material("sand")["t_fill"]
+    mat.soak.preset = "brick"
+    check(abs(t.nodes["Soak Wet"].inputs["Fill Time"].default_value - soak.data.material("brick")["t_fill"])
+          <= 1e-6 * max(1.0, soak.data.material("brick")["t_fill"]), "default Fill Time did not follow the preset")
+
+    # a copy of the material shares the group; its preset change leaves the original's group alone
+    copy = mat.copy()
+    copy.soak.preset = "oak"
+    g_orig = mat.node_tree.nodes["Soak Wet"].node_tree
+    g_copy = copy.node_tree.nodes["Soak Wet"].node_tree
+    check(__import__("json").loads(g_orig["soak_group"])["preset"] == "brick"
+          and __import__("json").loads(g_copy["soak_group"])["preset"] == "oak",
+          "a preset change on a copy changed the original's group")
+    bpy.data.materials.remove(copy)
+
+    # thin sheet on and off: translucency added and removed with the preset
+    mat.soak.preset = "paper"
+    check(any(n.bl_idname == "ShaderNodeBsdfTranslucent" for n in t.nodes), "paper: no translucency added")
+    mat.soak.preset = "sand"
+    check(not any(n.bl_idname == "ShaderNodeBsdfTranslucent" for n in t.nodes), "sand: translucency left")
+    out = next(n for n in t.nodes if n.type == "OUTPUT_MATERIAL")
+    check(out.inputs["Surface"].links[0].from_node.name == "Principled BSDF", "sand: BSDF not back on the output")
+    before_keys = t.animation_data
+    bpy.ops.soak.make_dry()
+    check(before_keys is not None, "keys")
+
+
+# ---- 3. Make Dry after deletions and renames ------------------------------------
+
+def test_dry_after_edits(ob):
+    soak = sys.modules["soak"]
+    mat = textured_material("Edited")
+    use(ob, mat)
+    t = mat.node_tree
+    before = common.tree_state(t)
+    mat.soak.preset, mat.soak.wetness_source = "sand", "CONSTANT"
+
+    # renamed texture and BSDF: everything restored (names put back to compare)
+    bpy.ops.soak.make_wet()
+    t.nodes["Checker"].name = "Renamed Checker"
+    t.nodes["Principled BSDF"].name = "Renamed BSDF"
+    problems = soak.nodes.make_dry(mat)
+    check(problems == [], f"renamed nodes: problems {problems}")
+    t.nodes["Renamed Checker"].name = "Checker"
+    t.nodes["Renamed BSDF"].name = "Principled BSDF"
+    check(common.tree_state(t) == before, "Make Dry after renames did not restore the tree")
+    check(not any("soak_ref" in n for n in t.nodes), "Make Dry left its marks on the user's nodes")
+
+    # deleted texture: the rest restored, the texture named
+    bpy.ops.soak.make_wet()
+    t.nodes.remove(t.nodes["Checker"])
+    r = bpy.ops.soak.make_dry()
+    check(r == {"FINISHED"}, f"Make Dry after a deletion: {r}")
+    b = t.nodes["Principled BSDF"]
+    check(not any(n.get("soak_node") for n in t.nodes), "Soak nodes left")
+    check(b.inputs["Normal"].is_linked and b.inputs["Normal"].links[0].from_node.name == "MyBump",
+          "the bump link was not restored")
+    check(abs(b.inputs["Roughness"].default_value - 0.37) < 1e-6 and not b.inputs["Roughness"].is_linked,
+          "roughness not restored")
+    check(abs(b.inputs[COAT].default_value - 0.25) < 1e-6 and not b.inputs[COAT].is_linked, "coat not restored")
+    check(not b.inputs["Base Color"].is_linked, "base colour still linked")
+    # the problem list names the deleted node (through the module, for the text)
+    mat2 = textured_material("Edited2")
+    use(ob, mat2)
+    bpy.ops.soak.make_wet()
+    mat2.node_tree.nodes.remove(mat2.node_tree.nodes["Checker"])
+    problems = soak.nodes.make_dry(mat2)
+    print("deleted texture:", problems)
+    check(len(problems) == 1 and "'Checker'" in problems[0], f"the deleted texture is not named: {problems}")
+
+    # deleted BSDF: the Soak nodes go, the BSDF is reported
+    bpy.ops.soak.make_wet()
+    mat2.node_tree.nodes.remove(mat2.node_tree.nodes["Principled BSDF"])
+    problems = soak.nodes.make_dry(mat2)
+    print("deleted BSDF:", problems)
+    check(any("Principled BSDF" in p for p in problems) and not any(
+        n.get("soak_node") for n in mat2.node_tree.nodes), f"deleted BSDF: {problems}")
+
+    # a group node without a restore record (a file from an older add-on)
+    mat3 = textured_material("NoRecord")
+    use(ob, mat3)
+    bpy.ops.soak.make_wet()
+    del mat3.node_tree.nodes["Soak Wet"]["soak_restore"]
+    r = bpy.ops.soak.make_dry()
+    check(r == {"FINISHED"} and not any(n.get("soak_node") for n in mat3.node_tree.nodes),
+          "Make Dry without a restore record")
+
+
+# ---- 4. several Principled BSDFs ------------------------------------------------
+
+def test_two_principled(ob):
+    soak = sys.modules["soak"]
+    mat = bpy.data.materials.new("TwoBSDF")
+    mat.use_nodes = True
+    t = mat.node_tree
+    a = t.nodes["Principled BSDF"]
+    b = t.nodes.new("ShaderNodeBsdfPrincipled")
+    b.name = "Second BSDF"
+    mix = t.nodes.new("ShaderNodeMixShader")
+    out = t.nodes["Material Output"]
+    t.links.new(a.outputs[0], mix.inputs[1])
+    t.links.new(b.outputs[0], mix.inputs[2])
+    t.links.new(mix.outputs[0], out.inputs["Surface"])
+    use(ob, mat)
+    t.nodes.active = mix
+    before = common.tree_state(t)
+    bsdf, others = soak.nodes.check_wettable(mat, mat.soak)
+    check(bsdf.name == "Principled BSDF" and [n.name for n in others] == ["Second BSDF"],
+          f"behind a Mix Shader: wets {bsdf.name}, others {[n.name for n in others]}")
+    second_before = {s.identifier: (s.is_linked, getattr(s, "default_value", None) is not None) for s in b.inputs}
+    check(bpy.ops.soak.make_wet() == {"FINISHED"}, "make_wet two BSDFs")
+    check(all(bsdf_fed_by_group(mat).values()), "the first BSDF is not wet")
+    check(not any(s.is_linked for s in b.inputs) and second_before ==
+          {s.identifier: (s.is_linked, getattr(s, "default_value", None) is not None) for s in b.inputs},
+          "the second BSDF was touched")
+    bpy.ops.soak.make_dry()
+    check(common.tree_state(t) == before, "two BSDFs: not restored")
+    # the active node picks the other one
+    t.nodes.active = b
+    bsdf, others = soak.nodes.check_wettable(mat, mat.soak)
+    check(bsdf.name == "Second BSDF", "the active Principled BSDF is not the one wetted")
+    bpy.ops.soak.make_wet()
+    check(all(bsdf_fed_by_group(mat, "Second BSDF").values()), "the active BSDF is not wet")
+    bpy.ops.soak.make_dry()
+    check(common.tree_state(t) == before, "two BSDFs (active): not restored")
+
+
+# ---- 5. the source after Make Wet -----------------------------------------------
+
+def test_source_after_wet(ob):
+    mat = textured_material("Source")
+    use(ob, mat)
+    t = mat.node_tree
+    before = common.tree_state(t)
+    mat.soak.wetness_source = "CONSTANT"
+    bpy.ops.soak.make_wet()
+    gn = t.nodes["Soak Wet"]
+    check(not gn.inputs["Wet Map"].is_linked, "constant source linked")
+    mat.soak.wetness_source = "NOISE"
+    check(gn.inputs["Wet Map"].is_linked and gn.inputs["Wet Map"].links[0].from_node.bl_idname ==
+          "ShaderNodeMapRange", "Noise source not wired after Make Wet")
+    mat.soak.noise_scale = 11.0
+    noise = next(n for n in t.nodes if n.bl_idname == "ShaderNodeTexNoise")
+    check(abs(noise.inputs["Scale"].default_value - 11.0) < 1e-6, "Noise Scale not applied after Make Wet")
+    img = bpy.data.images.new("wetmap", 4, 4, float_buffer=True)
+    mat.soak.wet_map = img
+    mat.soak.wetness_source = "IMAGE"
+    link = gn.inputs["Wet Map"].links
+    check(link and link[0].from_node.bl_idname == "ShaderNodeTexImage" and link[0].from_node.image == img,
+          "Image source not wired after Make Wet")
+    check(not any(n.bl_idname == "ShaderNodeTexNoise" for n in t.nodes), "old source nodes left")
+    mat.soak.wetness_source = "ATTRIBUTE"
+    mat.soak.attribute_name = "my_wet"
+    link = gn.inputs["Wet Map"].links
+    check(link and link[0].from_node.bl_idname == "ShaderNodeAttribute"
+          and link[0].from_node.attribute_name == "my_wet", "Attribute source not wired after Make Wet")
+    mat.soak.wetness_source = "CONSTANT"
+    check(not gn.inputs["Wet Map"].is_linked, "constant source after others still linked")
+    bpy.ops.soak.make_dry()
+    check(common.tree_state(t) == before, "source changes: not restored")
+
+
+# ---- 6. Key Drying ----------------------------------------------------------------
+
+def test_key_drying(ob):
+    mat = textured_material("Keys")
+    use(ob, mat)
+    sc = bpy.context.scene
+    sc.frame_start, sc.frame_end = 10, 60
+    bpy.ops.soak.make_wet()
+    t = mat.node_tree
+    gn = t.nodes["Soak Wet"]
+    gn.inputs["Fill Time"].default_value = 500.0
+    gn.inputs["Start Time"].default_value = 20.0
+    check(mat.soak.schedule is False and mat.soak.drying is False, "checkbox proxies: off by default")
+    for _ in range(2):   # twice: the second replaces the first's keys
+        check(bpy.ops.soak.key_drying() == {"FINISHED"}, "key_drying")
+    fcs = [fc for fc in t.animation_data.action.fcurves if ".inputs[" in fc.data_path]
+    check(len(fcs) == 1, f"Key Drying made {len(fcs)} curves")
+    keys = [(k.co[0], k.co[1]) for k in fcs[0].keyframe_points]
+    print("Key Drying keys:", keys)
+    check(keys == [(10.0, 20.0), (60.0, 520.0)], f"keys not over the scene range from Start to Start + Fill: {keys}")
+    check(abs(gn.inputs["Fill Time"].default_value - 500.0) < 1e-4
+          and abs(gn.inputs["Start Time"].default_value - 20.0) < 1e-6, "Key Drying overwrote Fill/Start Time")
+    check(mat.soak.schedule and mat.soak.drying, "Key Drying did not turn Schedule and Drying on")
+    sc.frame_set(35)
+    check(abs(gn.inputs["Time"].default_value - 270.0) < 1e-3, f"keys not linear: {gn.inputs['Time'].default_value}")
+    # the checkbox proxies drive the float inputs
+    mat.soak.drying = False
+    check(gn.inputs["Drying"].default_value == 0.0, "Drying checkbox does not drive the input")
+    mat.soak.fill_time = 42.0
+    check(abs(gn.inputs["Fill Time"].default_value - 42.0) < 1e-6, "Fill Time proxy does not drive the input")
+    # explicit frames, and a refusal for an empty range (nothing changed)
+    check(bpy.ops.soak.key_drying(frame_start=5, frame_end=9) == {"FINISHED"}, "key_drying 5..9")
+    keys = [(k.co[0], k.co[1]) for k in t.animation_data.action.fcurves[0].keyframe_points]
+    check(keys == [(5.0, 20.0), (9.0, 62.0)], f"explicit frames: {keys}")
+    state = common.tree_state(t)
+    msg = op_error(bpy.ops.soak.key_drying, frame_start=9, frame_end=9)
+    check("must come after" in msg and common.tree_state(t) == state, f"empty range: {msg}")
+    sc.frame_start, sc.frame_end = 1, 250
+    bpy.ops.soak.make_dry()
+
+
+# ---- 7. Bake Wet Map: shelter and wiring ------------------------------------------
+
+def texel(img, u, v):
+    w, h = img.size
+    x, y = min(int(u * w), w - 1), min(int(v * h), h - 1)
+    return img.pixels[4 * (y * w + x)]
+
+
+def test_bake(scene_objects):
+    ground = scene_objects["ground"]
+    prefs = bpy.context.preferences.addons["soak"].preferences
+    prefs.soak_path = A["soak"]
+    mat = textured_material("Ground")
+    use(ground, mat)
+    vals = {}
+    for mode in ("NONE", "SCENE"):
+        # 60 s of 10 mm/h rain: below the film the bake retains (0.2 mm), so no water flows
+        r = bpy.ops.soak.bake_wetmap("EXEC_DEFAULT", size=32, rays=32, duration=60.0, occluders=mode)
+        check(r == {"FINISHED"}, f"bake {mode}")
+        img = mat.soak.wet_map
+        # under the ring (x = 1, y = 0 on a 4 x 4 plane: u = 0.75, v = 0.5), in the
+        # ring's hole (centre) and in the open corner
+        vals[mode] = {"under ring": texel(img, 0.75, 0.5), "hole": texel(img, 0.5, 0.5),
+                      "open": texel(img, 0.95, 0.95)}
+    print("bake wet map values:", vals)
+    # open ground: w = 1 - exp(-(rainfall - evaporation) t / saturation) with soak bake rain's
+    # defaults (10 mm/h, 0.5 mm/h, 0.2 mm) = 0.547 (+- the Poisson drop noise of 32 x 32 texels)
+    w_open = 1.0 - __import__("math").exp(-(10.0 - 0.5) / 3600.0 * 60.0 / 0.2)
+    n = vals["NONE"]
+    for k in ("under ring", "hole", "open"):
+        check(abs(n[k] - w_open) < 0.08, f"no occluders: {k} {n[k]:.3f}, open-ground value {w_open:.3f}")
+    # the torus's tube (radius 0.25, 0.6 above the ground) covers the ground under its centre line
+    # from the whole 10-degree rain cone (0.6 tan 10 deg = 0.11 < 0.25): no rain reaches it
+    s = vals["SCENE"]
+    check(s["under ring"] < 0.05, f"the torus does not shelter the ground: {s} vs {n}")
+    check(abs(s["open"] - w_open) < 0.08 and abs(s["hole"] - w_open) < 0.2,
+          f"open ground or the ring's hole changed with occluders: {s}")
+    # an already-wet material gets the new map wired in
+    mat.soak.wetness_source = "CONSTANT"
+    bpy.ops.soak.make_wet()
+    r = bpy.ops.soak.bake_wetmap("EXEC_DEFAULT", size=16, rays=4, duration=60.0, occluders="SCENE")
+    gn = mat.node_tree.nodes["Soak Wet"]
+    link = gn.inputs["Wet Map"].links
+    check(r == {"FINISHED"} and link and link[0].from_node.image == mat.soak.wet_map,
+          "Bake Wet Map did not wire its map into the wet material")
+    # a collection of occluders that does not exist: refused, nothing changed
+    state = common.tree_state(mat.node_tree)
+    msg = op_error(bpy.ops.soak.bake_wetmap, size=16, rays=4, duration=60.0, occluders="COLLECTION",
+                   collection="No Such Collection")
+    check("No Such Collection" in msg and common.tree_state(mat.node_tree) == state, f"bad collection: {msg}")
+    bpy.ops.soak.make_dry()
+
+
+# ---- 8. tooltips and poll messages ------------------------------------------------
+
+def test_tooltips():
+    soak = sys.modules["soak"]
+    missing = []
+    for p in bpy.types.Material.bl_rna.properties["soak"].fixed_type.properties:
+        if p.identifier != "rna_type" and not p.description.strip():
+            missing.append("Material.soak." + p.identifier)
+    for cls in soak.operators.classes:
+        rna = getattr(bpy.ops.soak, cls.bl_idname.split(".")[1]).get_rna_type()
+        if not rna.description.strip():
+            missing.append(cls.bl_idname)
+        for p in rna.properties:
+            if p.identifier != "rna_type" and not p.is_hidden and not p.description.strip():
+                missing.append(f"{cls.bl_idname}.{p.identifier}")
+    for p in soak.preferences.SoakPreferences.bl_rna.properties:
+        if p.identifier not in ("rna_type", "bl_idname") and not p.description.strip():
+            missing.append("preferences." + p.identifier)
+    check(not missing, f"no tooltip: {missing}")
+    n = len(bpy.types.Material.bl_rna.properties["soak"].fixed_type.properties)
+    print(f"tooltips: {n - 1} material settings, {len(soak.operators.classes)} operators: all described")
+
+
+def test_poll_messages(ob):
+    mat = textured_material("Poll")
+    use(ob, mat)
+    msg = op_error(bpy.ops.soak.make_dry)
+    print("Make Dry greyed:", msg.strip())
+    msg2 = op_error(bpy.ops.soak.key_drying)
+    if bpy.app.version >= (3, 0, 0):
+        check("not wet" in msg, f"Make Dry's poll message missing: {msg}")
+        check("wet first" in msg2, f"Key Drying's poll message missing: {msg2}")
+    mat.use_nodes = False
+    msg = op_error(bpy.ops.soak.make_wet)
+    if bpy.app.version >= (3, 0, 0):
+        check("Use Nodes" in msg, f"Make Wet's poll message missing: {msg}")
+
+
+def main():
+    common.install_addon(A["addon"])
+    os.makedirs(A["tmp"], exist_ok=True)
+    for o in list(bpy.data.objects):
+        bpy.data.objects.remove(o)
+    bpy.ops.mesh.primitive_plane_add(size=4)
+    ground = bpy.context.object
+    ground.name = "Ground"
+    attr = ground.data.attributes.new("dp_wetmap", "FLOAT", "POINT")   # the Attribute source reads it
+    for d in attr.data:
+        d.value = 0.9
+    bpy.ops.mesh.primitive_torus_add(major_radius=1.0, minor_radius=0.25, location=(0, 0, 0.6))
+    torus = bpy.context.object
+    bpy.ops.object.light_add(type="SUN", location=(0, 0, 5), rotation=(0.5236, 0.0, 0.0))   # 30 deg off normal
+    bpy.context.object.data.energy = 3.0
+    bpy.context.view_layer.objects.active = ground
+    setup_render(bpy.context.scene)
+
+    test_tooltips()
+    test_failures(ground)
+    test_linked(ground)
+    torus.hide_render = True      # the renders show the ground alone; the bake uses the torus
+    test_rebuild(ground)
+    torus.hide_render = False
+    test_dry_after_edits(ground)
+    test_two_principled(ground)
+    test_source_after_wet(ground)
+    test_key_drying(ground)
+    test_poll_messages(ground)
+    test_bake({"ground": ground, "torus": torus})
+    print(f"{len(CHECKS)} checks")
+    print("PASS")
+
+
+main()
