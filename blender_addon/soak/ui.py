@@ -4,7 +4,7 @@ messages), and the render settings the wet look needs."""
 import bpy
 
 from . import nodes
-from .operators.wet import osl_available
+from .operators.wet import key_icon, osl_available
 from .properties import CONTROLS
 
 
@@ -131,7 +131,10 @@ class SOAK_PT_wetness_controls(bpy.types.Panel):
             sub = row.row(align=True)
             sub.active = not sock.is_linked
             sub.prop(s, prop)
-            row.prop_decorator(sock, "default_value")   # keys the node's input
+            # the keyframe button of the node's input (the proxy above is not animatable)
+            op = row.operator("soak.key_control", text="", icon=key_icon(context, mat.node_tree, gn, name),
+                              emboss=False)
+            op.name = name
             if name == "Drying":
                 col.separator()
         if s.schedule:

@@ -1,6 +1,12 @@
-"""Screenshot of the Wetness panel (Blender with a window, under Xvfb):
-xvfb-run -a -s "-screen 0 1280x1024x24" blender --factory-startup --python screenshot_panel.py -- \
-    --addon build/soak_blender.zip --out blender_addon/images/panel.png"""
+"""Screenshot of the Wetness panel (Blender with a window, under Xvfb), after
+Make Wet and Key Drying:
+SOAK_BLENDER_UI=1 [SOAK_BLENDER=4.3] bash tests/blender/run_blender.sh scenes/blender/screenshot_panel.py \
+    --addon build/soak_blender.zip --out blender_addon/images/panel_3.4.png
+(or xvfb-run -a -s "-screen 0 1280x1024x24" blender --factory-startup --python screenshot_panel.py -- ...)
+Blender 4.x under Xvfb reads a black front buffer (screenshot_area gives
+black or 1x1 images): start Xvfb with `-fbdir DIR` and pass
+`--xwd DIR/Xvfb_screen0`: the area is cropped from the X server's frame
+buffer file."""
 import os
 import sys
 
@@ -19,8 +25,10 @@ def setup():
     bpy.context.view_layer.objects.active = ob
     mat = ob.active_material
     mat.soak.preset = "brick"
+    mat.soak.wetness_source = "NOISE"
     with bpy.context.temp_override(object=ob):
         bpy.ops.soak.make_wet()
+        bpy.ops.soak.key_drying()
     # Workbench keeps the material tab short (no Surface node list above the panel)
     bpy.context.scene.render.engine = "BLENDER_WORKBENCH"
     win = bpy.context.window_manager.windows[0]
@@ -34,11 +42,54 @@ def tab():
     bpy.app.timers.register(shoot, first_interval=1.0)
 
 
+def read_xwd(path):
+    """(width, height, rows of (r, g, b) bytes top first) of an Xvfb -fbdir
+    frame buffer file (XWD, 24-bit TrueColor, 32 bits per pixel)."""
+    import struct
+    with open(path, "rb") as f:
+        raw = f.read()
+    h = struct.unpack(">25I", raw[:100])
+    size, width, height, byte_order, bpp, stride, ncolors = h[0], h[4], h[5], h[7], h[11], h[12], h[19]
+    if bpp != 32:
+        raise SystemExit(f"{path}: {bpp} bits per pixel, expected 32 (Xvfb -screen 0 WxHx24)")
+    start = size + 12 * ncolors
+    rows = []
+    for y in range(height):
+        line = raw[start + y * stride:start + y * stride + 4 * width]
+        if byte_order == 0:      # LSBFirst: B G R X
+            rgb = bytes(b for i in range(0, len(line), 4) for b in (line[i + 2], line[i + 1], line[i]))
+        else:
+            rgb = bytes(b for i in range(0, len(line), 4) for b in (line[i + 1], line[i + 2], line[i + 3]))
+        rows.append(rgb)
+    return width, height, rows
+
+
+def save_area_from_xwd(fb, area, win, path):
+    """Blender 4.x under Xvfb/llvmpipe reads a black front buffer: crop the
+    area out of the X server's own frame buffer instead."""
+    width, height, rows = read_xwd(fb)
+    x0, y0 = area.x, win.height - (area.y + area.height)     # X rows from the top
+    img = bpy.data.images.new("panel_shot", area.width, area.height)
+    px = []
+    for y in range(area.height - 1, -1, -1):                   # Blender rows from the bottom
+        line = rows[y0 + y]
+        for x in range(x0, x0 + area.width):
+            px += [line[3 * x] / 255.0, line[3 * x + 1] / 255.0, line[3 * x + 2] / 255.0, 1.0]
+    img.pixels[:] = px
+    img.filepath_raw = path
+    img.file_format = "PNG"
+    img.save()
+
+
 def shoot():
     area = setup.area
     win = bpy.context.window_manager.windows[0]
     with bpy.context.temp_override(window=win, area=area, region=area.regions[-1]):
-        bpy.ops.screen.screenshot_area(filepath=out)
+        bpy.ops.wm.redraw_timer(type="DRAW_WIN_SWAP", iterations=2)
+        if "--xwd" in opts:
+            save_area_from_xwd(opts["--xwd"], area, win, out)
+        else:
+            bpy.ops.screen.screenshot_area(filepath=out)
     print("wrote", out)
     bpy.ops.wm.quit_blender()
 

@@ -450,9 +450,19 @@ def test_key_drying(ob):
     check(gn.inputs["Drying"].default_value == 0.0, "Drying checkbox does not drive the input")
     mat.soak.fill_time = 42.0
     check(abs(gn.inputs["Fill Time"].default_value - 42.0) < 1e-6, "Fill Time proxy does not drive the input")
+    # the panel's keyframe button keys the node's input itself, and takes the key out again
+    sc.frame_set(12)
+    wet_path = f'nodes["Soak Wet"].inputs[{list(gn.inputs).index(gn.inputs["Wetness"])}].default_value'
+    check(bpy.ops.soak.key_control(name="Wetness") == {"FINISHED"}, "key_control")
+    fc = t.animation_data.action.fcurves.find(wet_path)
+    check(fc is not None and [k.co[0] for k in fc.keyframe_points] == [12.0], "the keyframe button did not key")
+    bpy.ops.soak.key_control(name="Wetness")
+    fc = t.animation_data.action.fcurves.find(wet_path)
+    check(fc is None or len(fc.keyframe_points) == 0, "the keyframe button did not delete its key")
     # explicit frames, and a refusal for an empty range (nothing changed)
     check(bpy.ops.soak.key_drying(frame_start=5, frame_end=9) == {"FINISHED"}, "key_drying 5..9")
-    keys = [(k.co[0], k.co[1]) for k in t.animation_data.action.fcurves[0].keyframe_points]
+    time_fc = [fc for fc in t.animation_data.action.fcurves if fc.keyframe_points and fc.data_path == fcs[0].data_path]
+    keys = [(k.co[0], k.co[1]) for k in time_fc[0].keyframe_points]
     check(keys == [(5.0, 20.0), (9.0, 62.0)], f"explicit frames: {keys}")
     state = common.tree_state(t)
     msg = op_error(bpy.ops.soak.key_drying, frame_start=9, frame_end=9)

@@ -199,4 +199,53 @@ class SOAK_OT_key_drying(bpy.types.Operator):
         return {"FINISHED"}
 
 
-classes = (SOAK_OT_make_wet, SOAK_OT_make_dry, SOAK_OT_key_drying)
+def control_fcurve(tree, gn, name):
+    """The F-curve animating the group node's input `name`, or None."""
+    sock = gn.inputs.get(name)
+    ad = tree.animation_data
+    if sock is None or ad is None or ad.action is None:
+        return None
+    index = list(gn.inputs).index(sock)
+    return ad.action.fcurves.find(f'nodes["{gn.name}"].inputs[{index}].default_value')
+
+
+def key_icon(context, tree, gn, name):
+    """The decorator icon Blender draws for a keyable property: key on this
+    frame, animated, or not animated."""
+    fc = control_fcurve(tree, gn, name)
+    if fc is None:
+        return "DECORATE"
+    f = context.scene.frame_current
+    if any(abs(k.co[0] - f) < 0.5 for k in fc.keyframe_points):
+        return "DECORATE_KEYFRAME"
+    return "DECORATE_ANIMATE"
+
+
+class SOAK_OT_key_control(bpy.types.Operator):
+    """Insert a keyframe on this Soak Wet input at the current frame (or delete the one there); the key lives on the group node's input socket"""
+    bl_idname = "soak.key_control"
+    bl_label = "Key Control"
+    bl_options = {"REGISTER", "UNDO", "INTERNAL"}
+
+    name: bpy.props.StringProperty(name="Input", description="Name of the Soak Wet group input to key")
+
+    @classmethod
+    def poll(cls, context):
+        return _wet_poll(cls, context)
+
+    def execute(self, context):
+        tree = _material(context).node_tree
+        gn = nodes.find_group_node(tree)
+        sock = gn.inputs.get(self.name)
+        if sock is None:
+            self.report({"ERROR"}, f"the Soak Wet group has no input '{self.name}'")
+            return {"CANCELLED"}
+        f = context.scene.frame_current
+        if key_icon(context, tree, gn, self.name) == "DECORATE_KEYFRAME":
+            sock.keyframe_delete("default_value", frame=f)
+        else:
+            sock.keyframe_insert("default_value", frame=f)
+        return {"FINISHED"}
+
+
+classes = (SOAK_OT_make_wet, SOAK_OT_make_dry, SOAK_OT_key_drying, SOAK_OT_key_control)
