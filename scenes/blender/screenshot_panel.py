@@ -85,8 +85,8 @@ def shoot():
     area = setup.area
     win = bpy.context.window_manager.windows[0]
     with bpy.context.temp_override(window=win, area=area, region=area.regions[-1]):
-        bpy.ops.wm.redraw_timer(type="DRAW_WIN_SWAP", iterations=2)
         if "--xwd" in opts:
+            bpy.ops.wm.redraw_timer(type="DRAW_WIN_SWAP", iterations=2)   # the X frame buffer up to date
             save_area_from_xwd(opts["--xwd"], area, win, out)
         else:
             bpy.ops.screen.screenshot_area(filepath=out)
