@@ -542,14 +542,28 @@ def _wire_source(tree, gn, settings):
 
 def _replace_source(mat, gn, settings):
     tree = mat.node_tree
-    for n in _source_nodes(tree):
+    old = _source_nodes(tree)
+    _wire_source(tree, gn, settings)      # new nodes first: a snapshot cannot bring back removed ones
+    for n in old:
         tree.nodes.remove(n)
-    made = _wire_source(tree, gn, settings)
     if settings.wetness_source == "IMAGE":
         settings.wet_map.colorspace_settings.name = "Non-Color"
     restore = json.loads(gn[RESTORE_KEY])
     restore["nodes"] = [n.name for n in tree.nodes if n.get(NODE_TAG) and n != gn]
     gn[RESTORE_KEY] = json.dumps(restore)
+
+
+def current_source(tree):
+    """The wetness-source settings a wet material's nodes implement."""
+    kinds = {n.bl_idname: n for n in _source_nodes(tree)}
+    if "ShaderNodeTexImage" in kinds:
+        return {"wetness_source": "IMAGE", "wet_map": kinds["ShaderNodeTexImage"].image}
+    if "ShaderNodeAttribute" in kinds:
+        return {"wetness_source": "ATTRIBUTE", "attribute_name": kinds["ShaderNodeAttribute"].attribute_name}
+    if "ShaderNodeTexNoise" in kinds:
+        return {"wetness_source": "NOISE",
+                "noise_scale": kinds["ShaderNodeTexNoise"].inputs["Scale"].default_value}
+    return {"wetness_source": "CONSTANT"}
 
 
 def set_source(mat, settings):

@@ -12,32 +12,59 @@ Two kinds of property:
   are floats (the schedule blends with them); the keyframe button beside each
   keys the node's input itself."""
 
+import json
+
 import bpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, PointerProperty, StringProperty
 
 from . import data, nodes
 
 
+_reverting = set()     # settings being put back after a refused change (no update then)
+
+
 def _apply(self, fn):
+    """Runs a rebuild/re-wire for a changed setting; True when done or not
+    needed. On failure the material is unchanged and the reason is shown."""
     mat = self.id_data
     if mat is None or mat.node_tree is None or nodes.find_group_node(mat.node_tree) is None:
-        return
+        return True
+    if self.as_pointer() in _reverting:
+        return True
     try:
         fn(mat, self)
         self.status = ""
+        return True
     except (RuntimeError, data.SoakDataError) as e:
         self.status = str(e)          # shown in the panel; the material is unchanged
     except Exception as e:            # a bug of ours: the material was rolled back too
         self.status = f"{type(e).__name__}: {e}"
         print("soak:", self.status)
+    return False
+
+
+def _revert(self, values):
+    """Puts the settings back to what the material still has."""
+    _reverting.add(self.as_pointer())
+    try:
+        for k, v in values.items():
+            if v is not None and getattr(self, k) != v:
+                setattr(self, k, v)
+    finally:
+        _reverting.discard(self.as_pointer())
 
 
 def _rebuild(self, context):
-    _apply(self, nodes.rebuild)
+    if not _apply(self, nodes.rebuild):
+        gn = nodes.find_group_node(self.id_data.node_tree)
+        info = json.loads(gn.node_tree.get(nodes.GROUP_TAG, "{}")) if gn.node_tree is not None else {}
+        _revert(self, {"preset": info.get("preset"), "liquid": info.get("liquid"),
+                       "exact_lookups": info.get("exact")})
 
 
 def _source(self, context):
-    _apply(self, nodes.set_source)
+    if not _apply(self, nodes.set_source):
+        _revert(self, nodes.current_source(self.id_data.node_tree))
 
 
 def _group_input(self, name):

@@ -141,13 +141,48 @@ def test_failures(ob):
         soak.nodes.build_group = real_build
     print("failing rebuild: status =", repr(mat.soak.status))
     check("provoked rebuild failure" in mat.soak.status, "a failed rebuild is not shown in the panel's status")
+    check(mat.soak.preset == "sand", f"the refused preset stays selected: {mat.soak.preset}")
     check(common.tree_state(mat.node_tree) == wet and groups() == gw, "a failed rebuild changed the material")
     check(bsdf_fed_by_group(mat) == dict.fromkeys(bsdf_fed_by_group(mat), True),
           "a failed rebuild lost the group's links")
 
+    # a rebuild failing after the new group is swapped in: the old group is back
+    real_connect = soak.nodes.connect_outputs
+
+    def bad_connect(*a, **k):
+        real_connect(*a, **k)
+        raise RuntimeError("provoked failure after the swap")
+    soak.nodes.connect_outputs = bad_connect
+    try:
+        mat.soak.liquid = "coffee"
+    finally:
+        soak.nodes.connect_outputs = real_connect
+    gn = mat.node_tree.nodes["Soak Wet"]
+    check("after the swap" in mat.soak.status and common.tree_state(mat.node_tree) == wet and groups() == gw
+          and __import__("json").loads(gn.node_tree["soak_group"])["liquid"] == "water",
+          "a rebuild failing after the swap changed the material")
+
+    check(mat.soak.liquid == "water", f"the refused liquid stays selected: {mat.soak.liquid}")
+    # a source change failing half-way: the old source nodes are still there
+    real = soak.nodes._wire_source
+
+    def bad_source(tree, gn, settings):
+        real(tree, gn, settings)
+        raise RuntimeError("provoked source failure")
+    soak.nodes._wire_source = bad_source
+    try:
+        mat.soak.wetness_source = "ATTRIBUTE"
+    finally:
+        soak.nodes._wire_source = real
+    check("provoked source failure" in mat.soak.status and common.tree_state(mat.node_tree) == wet,
+          "a source change failing half-way changed the material")
+    check(mat.soak.wetness_source == "NOISE", f"the refused source stays selected: {mat.soak.wetness_source}")
+    mat.soak.status = ""
+
     # Image source without an image chosen after Make Wet: refused, unchanged
     mat.soak.wetness_source = "IMAGE"
-    check("needs an image" in mat.soak.status, f"source change without image not refused: {mat.soak.status!r}")
+    check("needs an image" in mat.soak.status and mat.soak.wetness_source == "NOISE",
+          f"source change without image not refused: {mat.soak.status!r}, {mat.soak.wetness_source}")
     check(common.tree_state(mat.node_tree) == wet, "a refused source change changed the material")
     bpy.ops.soak.make_dry()
     check(common.tree_state(mat.node_tree) == before and groups() == g0, "dry after refused changes")
@@ -547,6 +582,79 @@ def test_tooltips():
     print(f"tooltips: {n - 1} material settings, {len(soak.operators.classes)} operators: all described")
 
 
+class MockLayout:
+    """Stands in for UILayout in the background: records what a draw()
+    function draws (Blender draws no UI without a window)."""
+
+    def __init__(self, log):
+        self.log = log
+
+    def prop(self, data, name, **kw):
+        self.log.append(("prop", data, name))
+
+    def operator(self, idname, **kw):
+        self.log.append(("operator", idname))
+        return type("OpProps", (), {})()
+
+    def label(self, **kw):
+        self.log.append(("label", kw.get("text", "")))
+
+    def __getattr__(self, name):        # row(), column(), box(), separator(), template_ID(), ...
+        if name in ("active", "alert", "enabled", "use_property_split", "use_property_decorate", "scale_x"):
+            return True
+        return lambda *a, **k: self
+
+
+def draw_log(ob):
+    soak = sys.modules["soak"]
+    log = []
+    holder = type("P", (), {})()
+    holder.layout = MockLayout(log)
+    for cls in soak.ui.classes:
+        if not hasattr(cls, "poll") or cls.poll(bpy.context):
+            cls.draw(holder, bpy.context)
+    return log
+
+
+def test_panel(ob):
+    """The panel's draw code in each state; every property it draws has a tooltip;
+    the EEVEE switch the wet look needs is offered when it is off."""
+    mat = textured_material("Panel")
+    use(ob, mat)
+    sc = bpy.context.scene
+    states = {}
+    states["dry"] = draw_log(ob)
+    bpy.ops.soak.make_wet()
+    states["wet"] = draw_log(ob)
+    mat.soak.status = "a refused change"
+    states["status"] = draw_log(ob)
+    mat.soak.status = ""
+    for name, log in states.items():
+        for item in log:
+            if item[0] == "prop":
+                data, prop = item[1], item[2]
+                desc = data.bl_rna.properties[prop].description
+                check(desc.strip() != "", f"panel ({name}) draws {prop} without a tooltip")
+    wet_props = {i[2] for i in states["wet"] if i[0] == "prop"}
+    check({"schedule", "drying", "time", "start_time", "fill_time", "wetness_source"} <= wet_props,
+          f"after Make Wet the panel lacks controls: {sorted(wet_props)}")
+    check(("operator", "soak.make_wet") in states["dry"] and ("operator", "soak.make_dry") in states["wet"],
+          "Make Wet / Make Dry not drawn")
+    check(any(i[0] == "label" and "refused" in i[1] for i in states["status"]), "status not shown")
+    engine = "BLENDER_EEVEE_NEXT" if bpy.app.version >= (4, 2, 0) else "BLENDER_EEVEE"
+    switch = "use_raytracing" if bpy.app.version >= (4, 2, 0) else "use_ssr"
+    sc.render.engine = engine
+    setattr(sc.eevee, switch, False)
+    log = draw_log(ob)
+    check(any(i[0] == "prop" and i[2] == switch for i in log), f"{engine}: the panel does not offer {switch}")
+    setattr(sc.eevee, switch, True)
+    log = draw_log(ob)
+    check(not any(i[0] == "prop" and i[2] == switch for i in log), f"{engine}: {switch} offered while on")
+    sc.render.engine = "CYCLES"
+    print(f"panel: drawn dry/wet/refused, {len(wet_props)} properties with tooltips, {engine} offers {switch}")
+    bpy.ops.soak.make_dry()
+
+
 def test_poll_messages(ob):
     mat = textured_material("Poll")
     use(ob, mat)
@@ -591,6 +699,7 @@ def main():
     test_source_after_wet(ground)
     test_key_drying(ground)
     test_poll_messages(ground)
+    test_panel(ground)
     test_bake({"ground": ground, "torus": torus})
     print(f"{len(CHECKS)} checks")
     print("PASS")
