@@ -20,6 +20,7 @@ PRINCIPLED = {
     "coat_weight": ("Clearcoat", "Coat Weight"),
     "coat_roughness": ("Clearcoat Roughness", "Coat Roughness"),
     "coat_ior": (None, "Coat IOR"),
+    "coat_tint": (None, "Coat Tint"),
     "coat_normal": ("Clearcoat Normal", "Coat Normal"),
     "transmission": ("Transmission", "Transmission Weight"),
     "emission_color": ("Emission", "Emission Color"),
@@ -88,3 +89,40 @@ def extension_user_dir(package):
         return fn(package, path="", create=True)
     except (TypeError, ValueError):
         return None
+
+
+def coat_darkens_base(version=None):
+    """4.x Principled layers its coat energy-conservingly: everything under it
+    is scaled by (1 - coat weight * coat albedo) at the view direction
+    (Cycles kernel/svm/closure.h, closure_layering_weight; EEVEE Next the
+    same). 3.x's clear coat adds its lobe on top."""
+    return scheme(version) == 1
+
+
+def coat_base_compensation(b, coat_weight, coat_ior, normal):
+    """A socket with 1 / (1 - coat weight * F(view)) where the engine's coat
+    dims the base (F: Fresnel of the smooth coat, the coat's albedo in Cycles
+    and EEVEE Next), None where it does not. b: nodes._Builder."""
+    if not coat_darkens_base():
+        return None
+    fr = b.node("ShaderNodeFresnel")
+    fr.inputs["IOR"].default_value = coat_ior
+    b.link(normal, fr.inputs["Normal"])
+    dim = b.math("MULTIPLY", coat_weight, fr.outputs[0])
+    return b.math("DIVIDE", 1.0, b.math("MAXIMUM", b.math("SUBTRACT", 1.0, dim), 1e-3))
+
+
+def link_group_normal(b, group_normal, to_socket):
+    """Passes the group's Normal input on (the material's own normal)."""
+    b.link(group_normal, to_socket)
+
+
+def exact_lookups_required(version=None):
+    """EEVEE Next (4.2+) returns 0 (or 65504) from a Linear image lookup whose
+    coordinate does not vary over the screen (zero derivatives: a constant
+    wetness, the per-row parameter column), measured under Mesa llvmpipe:
+    a wet material renders black. Closest lookups are right there, so 4.2+
+    always builds the exact path (four Closest reads, explicit bilinear),
+    which EEVEE needed anyway for the core's bilinear tables."""
+    v = version if version is not None else bpy.app.version
+    return tuple(v) >= (4, 2, 0)

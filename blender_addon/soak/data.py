@@ -11,7 +11,7 @@ import bpy
 
 DATA_FILE = os.path.join(os.path.dirname(__file__), "soak_data.json")
 FORMAT = "soak-blender"
-FORMAT_VERSION = 1
+FORMAT_VERSION = 2
 
 _cache = {}
 
@@ -93,5 +93,5 @@ def lookup_images(preset, liquid_name):
     rows = t["rows_below"] + t["rows_above"] + 1
     tag = f"{d['materials_hash']}:{preset}:{liquid_name}"
     alb = _image(f"Soak LUT {preset} {liquid_name}", t["columns"], rows, t["albedo"], 3, tag)
-    par = _image(f"Soak Params {preset} {liquid_name}", 3, rows, t["params"], 3, tag)
+    par = _image(f"Soak Params {preset} {liquid_name}", len(t["params"][0]) // 3, rows, t["params"], 3, tag)
     return alb, par

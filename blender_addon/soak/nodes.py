@@ -6,8 +6,12 @@ The group evaluates, with native nodes only:
   colour = the core's wetness function for any dry colour, looked up per
            channel in the exported float image (bilinear between pixel
            centres, as the core's writer tested);
-  rough  = Roughness * R(L) / R(0), R the preset's exported roughness;
-  coat   = the film coverage (coat / clearcoat weight);
+  rough  = Roughness * R(L) / R(0), R the preset's exported (apparent) roughness;
+  coat   = the liquid's mirror: film plus water-filled pores (coat / clearcoat weight);
+  spec   = Specular * the base's own specular left under the liquid
+           (soak/wet_specular.h, exported; replaces the dry lobe);
+  metal  = a Metallic material's metallic part gets a conductor preset's
+           function (metal under the film), mixed by Metallic;
   sheet  = the thin-sheet transmittance (a Translucent BSDF added);
   normal = a bump from the wet map at spill edges (Spill Edge strength)."""
 
@@ -35,9 +39,13 @@ INPUTS = (
     ("Fill Time", "float", 1.0, 0.0, 1e9),
     ("Spill Edge", "float", 0.0, 0.0, 10.0),
     ("Normal", "vector", None, None, None),
+    # appended (keyframes address the inputs by index): the Principled's own
+    # specular (3.x Specular / 4.x Specular IOR Level) and metallic amount
+    ("Specular", "float", 0.5, 0.0, 100.0),
+    ("Metallic", "factor", 0.0, 0.0, 1.0),
 )
 OUTPUTS = (("Base Color", "color"), ("Roughness", "float"), ("Coat Weight", "float"),
-           ("Translucency", "color"), ("Normal", "vector"), ("Liquid", "float"))
+           ("Translucency", "color"), ("Normal", "vector"), ("Liquid", "float"), ("Specular", "float"))
 
 
 class _Builder:
@@ -139,39 +147,44 @@ def _sample(b, image, u, v, exact=False):
         b.link(_lookup(b, image, u, v, "Linear"), sep.inputs[0])
         return sep
     w, h = image.size
-    if isinstance(u, float):
-        us = (u, u, 0.0)
-        uf = b.math("MULTIPLY", 0.0, 0.0)
-    else:
-        us = _texel_pair(b, u, w)
-        uf = us[2]
     v0, v1, vf = _texel_pair(b, v, h)
     rows = []
-    for vv in (v0, v1):
-        a = _lookup(b, image, us[0], vv, "Closest")
-        c = _lookup(b, image, us[1], vv, "Closest")
-        rows.append(_lerp(b, a, c, uf))
+    if isinstance(u, float):  # a column's centre: one read per row
+        rows = [_lookup(b, image, u, vv, "Closest") for vv in (v0, v1)]
+    else:
+        us = _texel_pair(b, u, w)
+        for vv in (v0, v1):
+            a = _lookup(b, image, us[0], vv, "Closest")
+            c = _lookup(b, image, us[1], vv, "Closest")
+            rows.append(_lerp(b, a, c, us[2]))
     sep = b.node("ShaderNodeSeparateXYZ")
     b.link(_lerp(b, rows[0], rows[1], vf), sep.inputs[0])
     return sep
 
 
-def build_group(tree, preset, liquid_name, exact=False):
-    """(Re)builds the inside of a Soak Wet group for a preset and liquid."""
+def _sockets_match(tree):
+    """True when the group already has exactly INPUTS and OUTPUTS (then a
+    rebuild keeps them, and with them the group node's links and values)."""
+    if hasattr(tree, "interface"):
+        items = [i for i in tree.interface.items_tree if getattr(i, "item_type", "SOCKET") == "SOCKET"]
+        ins = [i.name for i in items if i.in_out == "INPUT"]
+        outs = [i.name for i in items if i.in_out == "OUTPUT"]
+    else:
+        ins, outs = [s.name for s in tree.inputs], [s.name for s in tree.outputs]
+    return ins == [i[0] for i in INPUTS] and outs == [o[0] for o in OUTPUTS]
+
+
+def _param(b, par_img, t, v, exact, pixel):
+    """Pixel `pixel` of the per-row parameter image (layout: soak_data.json)."""
+    n = len(t["params"][0]) // 3
+    return _sample(b, par_img, (pixel + 0.5) / n, v, exact)
+
+
+def _wet_path(b, gin, L, preset, liquid_name, exact):
+    """The core's wetness function of one preset's class for the input colour:
+    (colour, roughness, coat weight, base specular factor) sockets."""
     t = data.table(preset, liquid_name)
-    m = data.material(preset)
     alb_img, par_img = data.lookup_images(preset, liquid_name)
-    tree.nodes.clear()
-    compat.clear_sockets(tree)
-    for name, kind, default, lo, hi in INPUTS:
-        compat.new_socket(tree, name, "INPUT", kind, default, lo, hi)
-    for name, kind in OUTPUTS:
-        compat.new_socket(tree, name, "OUTPUT", kind)
-    tree[GROUP_TAG] = json.dumps({"preset": preset, "liquid": liquid_name, "exact": bool(exact)})
-    b = _Builder(tree)
-    gin = b.node("NodeGroupInput")
-    gout = b.node("NodeGroupOutput")
-    L = _liquid_schedule(b, gin)
     v = _row_coordinate(b, L, t)
     # per channel: column of the dry value a, s = 1 - sqrt(1 - a)
     na = t["columns"]
@@ -183,26 +196,94 @@ def build_group(tree, preset, liquid_name, exact=False):
         s = b.math("SUBTRACT", 1.0, b.math("SQRT", b.math("SUBTRACT", 1.0, a)))
         u = b.math("MULTIPLY_ADD", s, (na - 1) / na, 0.5 / na)
         b.link(_sample(b, alb_img, u, v, exact).outputs[c], comb.inputs[c])
-    b.link(comb.outputs[0], gout.inputs["Base Color"])
-    par = _sample(b, par_img, 0.5 / 3.0, v, exact)
-    r0 = max(t["params"][0][0], 1e-4)
-    rough = b.math("MULTIPLY", gin.outputs["Roughness"], b.math("DIVIDE", par.outputs[0], r0), clamp=True)
-    b.link(rough, gout.inputs["Roughness"])
-    b.link(par.outputs[1], gout.inputs["Coat Weight"])
-    b.link(L, gout.inputs["Liquid"])
-    if m["kind"] == "thin_sheet":
-        sheet = _sample(b, par_img, 2.5 / 3.0, v, exact)
-        tc = b.node("ShaderNodeCombineColor")
-        for c in range(3):
-            b.link(sheet.outputs[c], tc.inputs[c])
-        b.link(tc.outputs[0], gout.inputs["Translucency"])
+    spec = _param(b, par_img, t, v, exact, 3)  # (base specular factor, interface area, apparent roughness)
+    r0 = max(t["params"][0][11], 1e-4)
+    rough = b.math("MULTIPLY", gin.outputs["Roughness"], b.math("DIVIDE", spec.outputs[2], r0), clamp=True)
+    return comb.outputs[0], rough, spec.outputs[1], spec.outputs[0], (par_img, t, v)
+
+
+def _mix_colour(b, a, c, f):
+    return _lerp(b, a, c, f)
+
+
+def build_group(tree, preset, liquid_name, exact=False, metal=None):
+    """(Re)builds the inside of a Soak Wet group for a preset and liquid.
+    metal: a conductor preset whose function the metallic part of the
+    material gets (mixed by the Metallic input), None for none. Sockets that
+    already match INPUTS/OUTPUTS are kept (the node's links and values too)."""
+    m = data.material(preset)
+    if metal is not None and data.material(metal)["kind"] != "conductor":
+        raise data.SoakDataError(f"'{metal}' is not a conductor preset")
+    tree.nodes.clear()
+    if not _sockets_match(tree):
+        compat.clear_sockets(tree)
+        for name, kind, default, lo, hi in INPUTS:
+            compat.new_socket(tree, name, "INPUT", kind, default, lo, hi)
+        for name, kind in OUTPUTS:
+            compat.new_socket(tree, name, "OUTPUT", kind)
+    tree[GROUP_TAG] = json.dumps({"preset": preset, "liquid": liquid_name, "exact": bool(exact), "metal": metal})
+    exact = bool(exact) or compat.exact_lookups_required()
+    b = _Builder(tree)
+    gin = b.node("NodeGroupInput")
+    gout = b.node("NodeGroupOutput")
+    L = _liquid_schedule(b, gin)
+    colour, rough, coat, factor, (par_img, t, v) = _wet_path(b, gin, L, preset, liquid_name, exact)
+    if metal is not None:
+        mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact)
+        f = b.math("MINIMUM", b.math("MAXIMUM", gin.outputs["Metallic"], 0.0), 1.0)
+        colour = _mix_colour(b, colour, mc, f)
+        rough = b.math("MULTIPLY_ADD", b.math("SUBTRACT", mr, rough), f, rough)
+        coat = b.math("MULTIPLY_ADD", b.math("SUBTRACT", mcoat, coat), f, coat)
     bump = b.node("ShaderNodeBump")
     b.link(gin.outputs["Spill Edge"], bump.inputs["Strength"])
     b.link(gin.outputs["Wet Map"], bump.inputs["Height"])
     bump.inputs["Distance"].default_value = 0.02
-    b.link(gin.outputs["Normal"], bump.inputs["Normal"])
+    compat.link_group_normal(b, gin.outputs["Normal"], bump.inputs["Normal"])
+    spec = b.math("MULTIPLY", gin.outputs["Specular"], factor)
+    # Blender's own coat dims what lies under it (4.x); the core's values
+    # already hold the film's transmission: undo the engine's share.
+    keep = compat.coat_base_compensation(b, coat, data.liquid(liquid_name)["ior"], bump.outputs["Normal"])
+    if keep is not None:
+        sc = b.node("ShaderNodeVectorMath", operation="SCALE")
+        b.link(colour, sc.inputs[0])
+        b.link(keep, sc.inputs["Scale"])
+        colour = sc.outputs[0]
+        spec = b.math("MULTIPLY", spec, keep)
+    b.link(colour, gout.inputs["Base Color"])
+    b.link(rough, gout.inputs["Roughness"])
+    b.link(coat, gout.inputs["Coat Weight"])
+    b.link(spec, gout.inputs["Specular"])
+    b.link(L, gout.inputs["Liquid"])
+    if m["kind"] == "thin_sheet":
+        sheet = _param(b, par_img, t, v, exact, 2)
+        tc = b.node("ShaderNodeCombineColor")
+        for c in range(3):
+            b.link(sheet.outputs[c], tc.inputs[c])
+        b.link(tc.outputs[0], gout.inputs["Translucency"])
     b.link(bump.outputs["Normal"], gout.inputs["Normal"])
     return tree
+
+
+def metal_preset(bsdf, gn, preset):
+    """The conductor preset for the metallic part of a Principled BSDF, or
+    None: Metallic neither linked nor above 0, or the preset is a metal
+    already. The conductor nearest in colour to the dry base colour (the
+    group's input once wet); the first conductor when the colour is a texture."""
+    met = compat.principled_input(bsdf, "metallic")
+    if met is None or data.material(preset)["kind"] == "conductor":
+        return None
+    if not met.is_linked and not met.default_value > 0.0:
+        return None
+    conductors = [x for x in data.load()["materials"] if x["kind"] == "conductor"]
+    if not conductors:
+        return None
+    bc = compat.principled_input(bsdf, "base_color")
+    if bc.is_linked and gn is not None and bc.links[0].from_node == gn:
+        bc = gn.inputs["Base Color"]
+    if bc.is_linked:
+        return conductors[0]["name"]
+    col = list(bc.default_value)[:3]
+    return min(conductors, key=lambda x: sum((p - q) ** 2 for p, q in zip(x["dry_albedo"], col)))["name"]
 
 
 # ---- insertion and exact removal --------------------------------------------
@@ -445,6 +526,32 @@ def connect_outputs(tree, gn, bsdf, settings):
     cior = compat.principled_input(bsdf, "coat_ior")
     if cior is not None:
         cior.default_value = data.liquid(settings.liquid)["ior"]
+    _connect_specular_metal(tree, gn, bsdf, settings)
+
+
+def _connect_specular_metal(tree, gn, bsdf, settings):
+    """The base's own specular through the group (replaced by what is left of
+    it under the liquid), the Metallic amount into the group (rebuilt with a
+    conductor's function where the material is metallic), Coat Tint white
+    (4.x: the liquid's absorption is in the core's colours already)."""
+    want = metal_preset(bsdf, gn, settings.preset)
+    info = json.loads(gn.node_tree.get(GROUP_TAG, "{}"))
+    if info.get("metal") != want:
+        build_group(gn.node_tree, settings.preset, settings.liquid, settings.exact_lookups, metal=want)
+    for role, name in (("specular", "Specular"), ("metallic", "Metallic")):
+        s = compat.principled_input(bsdf, role)
+        if s.is_linked and s.links[0].from_node == gn:
+            continue
+        if s.is_linked:
+            tree.links.new(s.links[0].from_socket, gn.inputs[name])
+        else:
+            for l in list(gn.inputs[name].links):
+                tree.links.remove(l)
+            gn.inputs[name].default_value = s.default_value
+    tree.links.new(gn.outputs["Specular"], compat.principled_input(bsdf, "specular"))
+    tint = compat.principled_input(bsdf, "coat_tint")
+    if tint is not None:
+        tint.default_value = (1.0, 1.0, 1.0, 1.0)
 
 
 def _set_ref(n, key):

@@ -8,9 +8,23 @@ expected values come from `soak export --target json` (an independent
 writer): its base_colour table at its own nodes (exact core values,
 7 digits), its knot table for coverage and roughness. Tolerance: the core's
 SOAK_EXPORT_BASE_TOL 0.005 for the colour (the Blender table's bilinear error
-is below it) plus 2e-4 for float32 texture coordinates; 0.005 for coverage
-and roughness (piecewise linear tables at different knots)."""
+is below it) plus 2e-4 for float32 texture coordinates; 0.005 for the coat
+weight and roughness (piecewise linear tables at different knots).
+
+Coat weight: the liquid's interface area, film coverage c plus the
+uncovered water-filled pores (1 - c) * water specular weight (wetness.h
+step 5), from the knots. Roughness: the knots'; conductors seen through the
+film: sqrt(alpha (1 + c (n_liquid - 1))) (soak/wet_specular.h point 3).
+Specular (group input 1): the base's own specular left under the liquid,
+(1 - c) + c R_under / F0(n), R_under summed bounce by bounce here from
+Fresnel's normal-incidence formula with the json's film thickness and the
+liquid's absorption (a second method for the core's closed form); 1 for
+conductors. Blender 4.x: its coat dims what lies under it by
+(1 - coat * F(view)); the group undoes that, so Base Color and Specular are
+expected times 1 / (1 - coat * F0(n_liquid)) (the camera looks along the
+normal; F0: the json's film_normal_reflectance)."""
 import json
+import math
 import os
 import subprocess
 import sys
@@ -89,6 +103,27 @@ def interp(xs, ys, x):
     return ys[-1]
 
 
+def r0(n):
+    return ((n - 1) / (n + 1)) ** 2
+
+
+def spec_factor(m, liquid, c):
+    """(1 - c) + c R_under / F0(n), R_under as a sum over the film's bounces."""
+    if m["kind"] == "conductor" or c <= 0:
+        return 1.0
+    n, nl, h = m["ior"], liquid["ior"], m["film_thickness_m"]
+    r12, r23 = r0(nl), r0(n / nl)
+    under = 0.0
+    for a in liquid["sigma_a_per_m"]:
+        e = math.exp(-2 * a * h)
+        bounce, total = (1 - r12) * r23 * e * (1 - r12), 0.0
+        for _ in range(40):
+            total += bounce
+            bounce *= r12 * r23 * e
+        under += total / 3
+    return (1 - c) + c * under / r0(n)
+
+
 def main():
     common.install_addon(A["addon"])
     ref_path = os.path.join(A["tmp"], "export.json")
@@ -98,7 +133,9 @@ def main():
         common.fail(f"soak export --target json: {r.stderr}")
     ref = json.load(open(ref_path))
     sc, plane = setup()
-    worst = {"colour": 0.0, "coat": 0.0, "rough": 0.0}
+    worst = {"colour": 0.0, "coat": 0.0, "rough": 0.0, "spec": 0.0}
+    liquids = {l["name"]: l for l in ref["liquids"]}
+    coat_dims = bpy.app.version >= (4, 0, 0)
     failures = []
     combos = [(m, liquid, t, k) for m in ref["materials"] for liquid, t in m["liquids"].items()
               for k in range(ROUNDS)
@@ -129,10 +166,11 @@ def main():
             tree.links.new(wet.outputs["Color"], sep.inputs[0])
             tree.links.new(sep.outputs[0], gn.inputs["Wetness"])
             gn.inputs["Roughness"].default_value = t["knots"]["roughness"][0]
+            gn.inputs["Specular"].default_value = 1.0
             em = tree.nodes.new("ShaderNodeEmission")
             out = tree.nodes["Material Output"]
             for what, sock in (("colour", gn.outputs["Base Color"]), ("coat", gn.outputs["Coat Weight"]),
-                               ("rough", gn.outputs["Roughness"])):
+                               ("rough", gn.outputs["Roughness"]), ("spec", gn.outputs["Specular"])):
                 tree.links.new(sock, em.inputs["Color"])
                 tree.links.new(em.outputs[0], out.inputs["Surface"])
                 path = os.path.join(A["tmp"], f"{m['name']}_{liquid}_{k}_{what}.exr")
@@ -146,12 +184,20 @@ def main():
                 for i, (dry, w, want) in enumerate(pts):
                     # N = 1: the whole (constant) image is the point: its mean
                     got = px[4 * i: 4 * i + 3] if N > 1 else [sum(px[c::4]) / npx for c in range(3)]
+                    c = interp(kn["wetness"], kn["film_coverage"], w)
+                    area = c + (1 - c) * interp(kn["wetness"], kn["water_specular_weight"], w)
+                    keep = 1 / (1 - area * liquids[liquid]["film_normal_reflectance"]) if coat_dims else 1.0
                     if what == "colour":
-                        exp = want
+                        exp = [x * keep for x in want]
                     elif what == "coat":
-                        exp = [interp(kn["wetness"], kn["film_coverage"], w)] * 3
+                        exp = [area] * 3
+                    elif what == "spec":
+                        exp = [spec_factor(m, liquids[liquid], c) * keep] * 3
                     else:
-                        exp = [interp(kn["wetness"], kn["roughness"], w)] * 3
+                        r = interp(kn["wetness"], kn["roughness"], w)
+                        if m["kind"] == "conductor":
+                            r *= math.sqrt(1 + c * (liquids[liquid]["ior"] - 1))
+                        exp = [r] * 3
                     e = max(abs(g - x) for g, x in zip(got, exp))
                     worst[what] = max(worst[what], e)
                     if e > TOL:
@@ -160,7 +206,7 @@ def main():
             for n in ("dry", "wet"):
                 bpy.data.images.remove(bpy.data.images[n])
     print(f"worst |Blender - core|: colour {worst['colour']:.5f}, coat {worst['coat']:.5f}, "
-          f"roughness {worst['rough']:.5f} (tolerance {TOL})")
+          f"roughness {worst['rough']:.5f}, specular factor {worst['spec']:.5f} (tolerance {TOL})")
     if failures:
         common.fail(f"{len(failures)} points off, e.g. " + "; ".join(failures[:5]))
     print("PASS")

@@ -23,12 +23,13 @@
 
 #include "soak/export.h"
 #include "soak/sheet.h"
+#include "soak/wet_specular.h"
 
 #define BL_FORMAT "soak-blender"
-#define BL_FORMAT_VERSION 1
+#define BL_FORMAT_VERSION 2
 #define BL_MAX_COLS 257
 #define BL_MAX_ROWS 257
-#define BL_PARAM_COLS 3 /* see param_pixel */
+#define BL_PARAM_COLS 4 /* see param_pixel */
 
 typedef struct bl_grid {
     const soak_preset *p;
@@ -66,10 +67,13 @@ static soak_status albedo_pixel(const bl_grid *g, double a, double L, double px[
     return SOAK_OK;
 }
 
-/* Per-row parameters, three RGB pixels:
+/* Per-row parameters, four RGB pixels:
  *   0: roughness (= sqrt GGX alpha), film coverage, water specular weight;
  *   1: pore fill, material specular weight, 0;
- *   2: thin-sheet diffuse transmittance (0 for other kinds). */
+ *   2: thin-sheet diffuse transmittance (0 for other kinds);
+ *   3: soak/wet_specular.h: the base's own specular over its dry value, the
+ *      liquid mirror's weight (interface area), apparent roughness
+ *      (= sqrt apparent GGX alpha: conductors seen through the film). */
 static soak_status param_pixel(const bl_grid *g, double L, double px[BL_PARAM_COLS * 3])
 {
     soak_wet_input in = soak_wet_input_steady(g->p, L);
@@ -77,9 +81,12 @@ static soak_status param_pixel(const bl_grid *g, double L, double px[BL_PARAM_CO
     soak_status st = soak_wetness_eval(g->p, g->l, &in, &w);
     soak_rgb T = {0.0, 0.0, 0.0};
     if (st == SOAK_OK && g->p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, g->p->thickness_mm, g->p->ior, &T);
+    soak_wet_specular s;
+    if (st == SOAK_OK) st = soak_wet_specular_eval(g->p, g->l, &w, &s);
     if (st != SOAK_OK) return st;
     double v[BL_PARAM_COLS * 3] = {sqrt(w.ggx_alpha), w.film_coverage, w.water_specular_weight,
-                                   w.fill, w.specular_weight, 0.0, T.r, T.g, T.b};
+                                   w.fill, w.specular_weight, 0.0, T.r, T.g, T.b,
+                                   s.base_factor, s.interface_area, sqrt(s.ggx_alpha)};
     memcpy(px, v, sizeof v);
     return SOAK_OK;
 }
@@ -325,7 +332,9 @@ static void write_header(FILE *out, const soak_export_header *h)
             "for r <= rows_below, else saturation+(1-saturation)*(r-rows_below)/rows_above. Channel c of the "
             "albedo pixel is the wet albedo of channel c (under a coat of the liquid's IOR weighted by the film "
             "coverage) for dry albedo a. params pixels: 0 = (roughness, film coverage, water specular weight), "
-            "1 = (pore fill, specular weight, 0), 2 = thin-sheet transmittance. Interpolate bilinearly between "
+            "1 = (pore fill, specular weight, 0), 2 = thin-sheet transmittance, 3 = (the base's own specular under the "
+            "liquid over its dry value, the liquid mirror's weight = interface area, apparent roughness: conductors "
+            "seen through the film; see soak/wet_specular.h). Interpolate bilinearly between "
             "pixel centres; max_error is the worst error of that against the core.");
     fputs(",\n \"liquids\": [\n", out);
 }
