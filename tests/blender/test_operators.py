@@ -543,6 +543,21 @@ def test_bake(scene_objects):
     check(s["under ring"] < 0.05, f"the torus does not shelter the ground: {s} vs {n}")
     check(abs(s["open"] - w_open) < 0.08 and abs(s["hole"] - w_open) < 0.2,
           f"open ground or the ring's hole changed with occluders: {s}")
+    # Shelter: a chosen collection (the torus's, then an empty one)
+    torus = scene_objects["torus"]
+    shelter, empty = bpy.data.collections.new("Shelter"), bpy.data.collections.new("Empty")
+    bpy.context.scene.collection.children.link(shelter)
+    bpy.context.scene.collection.children.link(empty)
+    shelter.objects.link(torus)
+    under = {}
+    for name in ("Shelter", "Empty"):
+        r = bpy.ops.soak.bake_wetmap("EXEC_DEFAULT", size=32, rays=32, duration=60.0, occluders="COLLECTION",
+                                     collection=name)
+        check(r == {"FINISHED"}, f"bake with collection {name}")
+        under[name] = texel(mat.soak.wet_map, 0.75, 0.5)
+    print("under the ring, collection shelter:", under)
+    check(under["Shelter"] < 0.05 and abs(under["Empty"] - w_open) < 0.08,
+          f"collection shelter: {under} (open ground {w_open:.3f})")
     # an already-wet material gets the new map wired in
     mat.soak.wetness_source = "CONSTANT"
     bpy.ops.soak.make_wet()
