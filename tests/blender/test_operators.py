@@ -529,18 +529,20 @@ def test_bake(scene_objects):
         # under the ring (x = 1, y = 0 on a 4 x 4 plane: u = 0.75, v = 0.5), in the
         # ring's hole (centre) and in the open corner
         vals[mode] = {"under ring": texel(img, 0.75, 0.5), "hole": texel(img, 0.5, 0.5),
-                      "open": texel(img, 0.95, 0.95)}
+                      "open": texel(img, 0.95, 0.95), "under roof": texel(img, 0.125, 0.875)}
     print("bake wet map values:", vals)
     # open ground: w = 1 - exp(-(rainfall - evaporation) t / saturation) with soak bake rain's
     # defaults (10 mm/h, 0.5 mm/h, 0.2 mm) = 0.547 (+- the Poisson drop noise of 32 x 32 texels)
     w_open = 1.0 - __import__("math").exp(-(10.0 - 0.5) / 3600.0 * 60.0 / 0.2)
     n = vals["NONE"]
-    for k in ("under ring", "hole", "open"):
+    for k in ("under ring", "hole", "open", "under roof"):
         check(abs(n[k] - w_open) < 0.08, f"no occluders: {k} {n[k]:.3f}, open-ground value {w_open:.3f}")
     # the torus's tube (radius 0.25, 0.6 above the ground) covers the ground under its centre line
     # from the whole 10-degree rain cone (0.6 tan 10 deg = 0.11 < 0.25): no rain reaches it
     s = vals["SCENE"]
     check(s["under ring"] < 0.05, f"the torus does not shelter the ground: {s} vs {n}")
+    # the instanced roof (0.6 wide, 0.5 up: the cone's 0.09 leaves its centre covered) shelters too
+    check(s["under roof"] < 0.05, f"the instanced roof does not shelter the ground: {s} vs {n}")
     check(abs(s["open"] - w_open) < 0.08 and abs(s["hole"] - w_open) < 0.2,
           f"open ground or the ring's hole changed with occluders: {s}")
     # Shelter: a chosen collection (the torus's, then an empty one)
@@ -698,6 +700,16 @@ def main():
         d.value = 0.9
     bpy.ops.mesh.primitive_torus_add(major_radius=1.0, minor_radius=0.25, location=(0, 0, 0.6))
     torus = bpy.context.object
+    # a roof over one corner as a collection instance (its collection is in no scene)
+    roofs = bpy.data.collections.new("Roofs")
+    roof = bpy.data.objects.new("Roof", bpy.data.meshes.new("Roof"))
+    roof.data.from_pydata([(-0.3, -0.3, 0), (0.3, -0.3, 0), (0.3, 0.3, 0), (-0.3, 0.3, 0)], [], [(0, 1, 2, 3)])
+    roofs.objects.link(roof)
+    holder = bpy.data.objects.new("Roof instance", None)
+    holder.instance_type = "COLLECTION"
+    holder.instance_collection = roofs
+    holder.location = (-1.5, 1.5, 0.5)
+    bpy.context.scene.collection.objects.link(holder)
     bpy.ops.object.light_add(type="SUN", location=(0, 0, 5), rotation=(0.5236, 0.0, 0.0))   # 30 deg off normal
     bpy.context.object.data.energy = 3.0
     bpy.context.view_layer.objects.active = ground

@@ -22,17 +22,17 @@ OCCLUDER_UV = (4.5, 4.5)
 OCCLUDER_TYPES = {"MESH", "CURVE", "SURFACE", "META", "FONT"}
 
 
-def _write_object(f, ob, depsgraph, base, uv):
-    """Appends the evaluated object's triangles (world space) to an OBJ
-    file; uv: True for the mesh's active UV map, else OCCLUDER_UV.
-    Returns the number of vertices written."""
-    ev = ob.evaluated_get(depsgraph)
+def _write_mesh(f, ev, matrix, base, uv):
+    """Appends an evaluated object's triangles, transformed by `matrix`
+    (world space), to an OBJ file; uv: True for the mesh's active UV map,
+    else OCCLUDER_UV. Returns the number of triangles written."""
     me = ev.to_mesh()
+    if me is None:
+        return 0
     try:
         me.calc_loop_triangles()
-        mw = ev.matrix_world
         for v in me.vertices:
-            p = mw @ v.co
+            p = matrix @ v.co
             f.write(f"v {p.x:.9g} {p.y:.9g} {p.z:.9g}\n")
         uvl = me.uv_layers.active if uv else None
         if uvl is not None:
@@ -51,33 +51,45 @@ def _write_object(f, ob, depsgraph, base, uv):
         ev.to_mesh_clear()
 
 
-def occluder_objects(context, ob, mode, collection_name=""):
-    """The objects that shelter `ob` from the rain."""
-    if mode == "NONE":
-        return []
+def check_occluders(mode, collection_name=""):
+    """Raises RuntimeError for a Shelter setting that names nothing."""
+    if mode == "COLLECTION" and bpy.data.collections.get(collection_name) is None:
+        raise RuntimeError(f"no collection named '{collection_name}' for the occluders")
+
+
+def _shelters(inst, ob, mode, members):
+    """True for a depsgraph instance that blocks the rain on `ob`: visible
+    geometry (instances included: collection instances, particles, geometry
+    nodes) other than `ob` itself, from the whole scene or a collection."""
+    owner = inst.parent.original if inst.is_instance and inst.parent is not None else inst.object.original
+    if inst.object.type not in OCCLUDER_TYPES or owner.hide_render:
+        return False
+    if not inst.is_instance and inst.object.original == ob:
+        return False
     if mode == "COLLECTION":
-        coll = bpy.data.collections.get(collection_name)
-        if coll is None:
-            raise RuntimeError(f"no collection named '{collection_name}' for the occluders")
-        pool = coll.all_objects
-    else:
-        pool = context.view_layer.objects
-    return [o for o in pool if o != ob and o.type in OCCLUDER_TYPES and o.visible_get()
-            and not o.hide_render]
+        return owner in members or inst.object.original in members
+    return True
 
 
-def export_scene_obj(context, ob, occluders, path):
-    """The active mesh (with its UVs) and the occluders in one OBJ, world
-    space, Blender's Z up. Returns (triangles of ob, occluder triangles)."""
+def export_scene_obj(context, ob, mode, path, collection_name=""):
+    """The active mesh (with its UVs) and the rain's shelter (mode SCENE:
+    everything visible; COLLECTION: one collection's objects; NONE) in one
+    OBJ, world space, Blender's Z up. Returns (triangles of ob, occluder
+    triangles)."""
+    check_occluders(mode, collection_name)
     depsgraph = context.evaluated_depsgraph_get()
+    members = set(bpy.data.collections[collection_name].all_objects) if mode == "COLLECTION" else set()
     base = {"v": 0, "vt": 0}
     with open(path, "w", encoding="utf-8") as f:
         f.write("# soak bake rain: active mesh, then occluders (UVs outside the unit square)\no target\n")
-        n = _write_object(f, ob, depsgraph, base, True)
+        ev = ob.evaluated_get(depsgraph)
+        n = _write_mesh(f, ev, ev.matrix_world.copy(), base, True)
         m = 0
-        for o in occluders:
-            f.write(f"o occluder_{m}\n")
-            m += _write_object(f, o, depsgraph, base, False)
+        if mode != "NONE":
+            for inst in depsgraph.object_instances:
+                if _shelters(inst, ob, mode, members):
+                    f.write(f"o occluder_{m}\n")
+                    m += _write_mesh(f, inst.object, inst.matrix_world.copy(), base, False)
     return n, m
 
 
@@ -101,7 +113,7 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
     occluders: bpy.props.EnumProperty(
         name="Shelter", default="SCENE",
         description="What blocks the rain besides the mesh itself",
-        items=(("SCENE", "Visible Scene", "Every visible, renderable object of the view layer"),
+        items=(("SCENE", "Visible Scene", "Every visible, renderable object of the view layer, instances included"),
                ("COLLECTION", "Collection", "The objects of one collection"),
                ("NONE", "Nothing", "The active mesh alone")))
     collection: bpy.props.StringProperty(name="Collection", default="",
@@ -137,7 +149,7 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
             self.report({"ERROR"}, f"mesh '{ob.name}' has no UV map: the wet map is baked over the UVs")
             return False
         try:
-            occ = occluder_objects(context, ob, self.occluders, self.collection)
+            check_occluders(self.occluders, self.collection)
         except RuntimeError as e:
             self.report({"ERROR"}, str(e))
             return False
@@ -145,7 +157,7 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
         mesh = os.path.join(self._dir, "mesh.obj")
         self._out = os.path.join(self._dir, f"{bpy.path.clean_name(ob.name)}_wet.exr")
         try:
-            self._counts = export_scene_obj(context, ob, occ, mesh)
+            self._counts = export_scene_obj(context, ob, self.occluders, mesh, self.collection)
         except OSError as e:
             shutil.rmtree(self._dir, ignore_errors=True)
             self.report({"ERROR"}, f"cannot write the mesh for soak: {e}")
