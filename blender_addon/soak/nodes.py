@@ -718,11 +718,15 @@ def _remove_translucency(tree, bsdf):
 
 
 def _find_ref(tree, name):
-    """A node the restore record names: by its soak_ref mark (renamed), else by name."""
-    for n in tree.nodes:
-        if n.get(REF_KEY) == name and not n.get(NODE_TAG):
-            return n
+    """A node the restore record names: by name when it still carries its
+    soak_ref mark, else by the mark (renamed; a duplicate copies the mark,
+    the original keeps the name), else by name."""
     n = tree.nodes.get(name)
+    if n is not None and n.get(REF_KEY) == name and not n.get(NODE_TAG):
+        return n
+    for m in tree.nodes:
+        if m.get(REF_KEY) == name and not m.get(NODE_TAG):
+            return m
     return n if n is not None and not n.get(NODE_TAG) else None
 
 

@@ -341,6 +341,18 @@ def test_dry_after_edits(ob):
     check(common.tree_state(t) == before, "Make Dry after renames did not restore the tree")
     check(not any("soak_ref" in n for n in t.nodes), "Make Dry left its marks on the user's nodes")
 
+    # a duplicated texture (a copy carries the same mark): the original is relinked
+    bpy.ops.soak.make_wet()
+    dup = t.nodes.new("ShaderNodeTexImage")
+    for k in t.nodes["Checker"].keys():
+        dup[k] = t.nodes["Checker"][k]
+    problems = soak.nodes.make_dry(mat)
+    b = t.nodes["Principled BSDF"]
+    check(problems == [] and b.inputs["Base Color"].links[0].from_node.name == "Checker",
+          f"duplicate of a recorded node: {problems}")
+    t.nodes.remove(dup)
+    check(common.tree_state(t) == before, "Make Dry with a duplicated node did not restore the tree")
+
     # deleted texture: the rest restored, the texture named
     bpy.ops.soak.make_wet()
     t.nodes.remove(t.nodes["Checker"])
