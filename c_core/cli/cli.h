@@ -30,6 +30,12 @@ int soak_cmd_render(int argc, char **argv);
 int soak_cmd_measure(int argc, char **argv);
 int soak_cmd_bake(int argc, char **argv);
 int soak_cmd_export(int argc, char **argv);
+int soak_cmd_report(int argc, char **argv);
+int soak_cmd_advise(int argc, char **argv);
+
+struct soak_advice;
+/* The table of `soak advise` (also printed by `soak render --auto-model`). */
+void cli_advise_print(FILE *f, const struct soak_advice *a, int n, double tol);
 
 /* Prints "soak <cmd>: <message>" to stderr. */
 void cli_error(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "soak/advise.h"
 #include "soak/image.h"
 #include "soak/render.h"
 #include "soak/scene.h"
@@ -43,6 +44,9 @@ static void usage(FILE *out)
             "  --width W --height H  image size (default: the scene's render.width/height); a render\n"
             "                      takes 52 bytes per pixel and is refused above 4096 MiB (about 9000^2)\n"
             "  --max-depth N       path length cap (default: the scene's render.max_depth)\n"
+            "  --auto-model T      render each material through the cheapest model within a\n"
+            "                      relative error T of its full description (soak advise;\n"
+            "                      the choices are printed on stderr)\n"
             "  -q, --quiet         no statistics on stdout\n\n"
             "example:\n"
             "  soak render scenes/default_wet_dry.json -o wet_dry.png --spp 32 --threads 2\n");
@@ -59,11 +63,26 @@ static void progress_cb(void *ctx, double fraction)
     cli_progress_update((cli_progress *)ctx, fraction);
 }
 
+/* --auto-model: soak advise's choices applied to the scene. */
+static soak_status auto_model(const char *scene_path, soak_scene *scene, double tol)
+{
+    soak_advice *adv = NULL;
+    int n = 0;
+    char err[4096] = "";
+    soak_status st = soak_advise_scene(scene, tol, NULL, &adv, &n, err, sizeof err);
+    if (st == SOAK_OK) st = soak_advise_apply(scene, adv, n, err, sizeof err);
+    if (st != SOAK_OK) cli_error("render", "--auto-model: %s", err[0] ? err : soak_status_str(st));
+    else cli_advise_print(stderr, adv, n, tol);
+    free(adv);
+    (void)scene_path;
+    return st;
+}
+
 int soak_cmd_render(int argc, char **argv)
 {
     const char *cmd = "render", *scene_path = NULL, *out_path = NULL;
     long spp = 0, threads = sysconf(_SC_NPROCESSORS_ONLN), width = 0, height = 0, max_depth = 0, seed = 1;
-    double time_limit = 0;
+    double time_limit = 0, auto_tol = 0;
     int quiet = 0;
     if (threads < 1) threads = 1;
     for (int i = 1; i < argc; ++i) {
@@ -93,6 +112,9 @@ int soak_cmd_render(int argc, char **argv)
                 return SOAK_EXIT_USAGE;
         } else if (cli_is(a, "--max-depth")) {
             if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_int(cmd, "--max-depth", v, 1, 100000, &max_depth))
+                return SOAK_EXIT_USAGE;
+        } else if (cli_is(a, "--auto-model")) {
+            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_double(cmd, "--auto-model", v, 1e-9, 10, &auto_tol))
                 return SOAK_EXIT_USAGE;
         } else if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {
             quiet = 1;
@@ -147,6 +169,10 @@ int soak_cmd_render(int argc, char **argv)
             soak_scene_free(&scene);
             return SOAK_EXIT_USAGE;
         }
+    if (auto_tol > 0 && auto_model(scene_path, &scene, auto_tol) != SOAK_OK) {
+        soak_scene_free(&scene);
+        return SOAK_EXIT_FAIL;
+    }
 
     int W = width > 0 ? (int)width : scene.width, H = height > 0 ? (int)height : scene.height;
     double need_mib = (double)W * H * RENDER_BYTES_PER_PIXEL / 1048576.0;

@@ -13,6 +13,8 @@ static const soak_cli_command commands[] = {
     {"render", "render a JSON scene with the reference path tracer", soak_cmd_render},
     {"measure", "virtual gonio-reflectometer: traced reflectance of canonical configurations", soak_cmd_measure},
     {"export", "the core's data for renderer front ends (json, povray, blender, osl)", soak_cmd_export},
+    {"report", "error against the full material and cost of every model (docs/ACCURACY.md)", soak_cmd_report},
+    {"advise", "the cheapest model per material of a scene within an error tolerance", soak_cmd_advise},
     {"bake", "bake wet maps and parameter volumes (turbulence, waves, drying, rain, combine, volume)", soak_cmd_bake},
 };
 static const int n_commands = (int)(sizeof commands / sizeof commands[0]);

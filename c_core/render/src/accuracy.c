@@ -1,0 +1,195 @@
+/* Directional albedo and cost of a scene material as the renderer shades it
+ * (soak/accuracy.h). */
+#define _POSIX_C_SOURCE 200809L
+#include "soak/accuracy.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <time.h>
+
+#include "render_internal.h"
+#include "soak/bsdf.h"
+#include "soak/rng.h"
+
+#define WALK_MAX_BOUNCES RT_FILM_MAX_BOUNCES
+#define COST_PAIRS 64
+
+int soak_accuracy_supported(const soak_material *m)
+{
+    if (!m) return 0;
+    if (m->type == SOAK_MAT_LAMBERT || m->type == SOAK_MAT_CONDUCTOR || m->type == SOAK_MAT_MODEL) return 1;
+    return m->type == SOAK_MAT_WET && m->base != SOAK_BASE_MEDIUM;
+}
+
+/* The renderer's BSDFs of one material: rt_bsdfs_setup reads only the
+ * materials of the scene it is given. */
+static soak_status material_bsdfs(const soak_material *m, int trace_films, rt_material_bsdf *out)
+{
+    if (!soak_accuracy_supported(m)) return SOAK_ERR_UNSUPPORTED;
+    soak_scene one;
+    memset(&one, 0, sizeof one);
+    one.materials = (soak_material *)m;
+    one.n_materials = 1;
+    return rt_bsdfs_setup(&one, trace_films, out, NULL, 0);
+}
+
+/* One path through a traced film: what leaves into the air (weight). */
+static soak_rgb walk_once(const soak_bsdf *b, soak_vec3 wo, soak_rng *rng)
+{
+    soak_bsdf_walk w;
+    soak_bsdf_sample s;
+    soak_rgb weight, zero = soak_rgb3(0, 0, 0);
+    if (soak_bsdf_walk_start(b, wo, soak_rng_uniform(rng), &w, &s, &weight) == SOAK_WALK_EXIT) return soak_rgb3(1, 1, 1);
+    soak_rgb beta = weight;
+    for (int bounce = 0; bounce < WALK_MAX_BOUNCES; ++bounce) {
+        double u[4] = {soak_rng_uniform(rng), soak_rng_uniform(rng), soak_rng_uniform(rng), soak_rng_uniform(rng)};
+        soak_walk_event ev = soak_bsdf_walk_step(b, &w, u, &s, &weight);
+        if (ev == SOAK_WALK_DEAD) return zero;
+        beta = soak_rgb3(beta.r * weight.r, beta.g * weight.g, beta.b * weight.b);
+        if (ev == SOAK_WALK_EXIT) return beta;
+    }
+    return zero;
+}
+
+/* f cos / pdf of one sampled direction (0 when none). */
+static soak_rgb sample_once(const soak_bsdf *b, soak_vec3 wo, soak_rng *rng)
+{
+    double u[3] = {soak_rng_uniform(rng), soak_rng_uniform(rng), soak_rng_uniform(rng)};
+    soak_bsdf_sample s;
+    int ok = 0;
+    if (soak_bsdf_sample_dir(b, wo, u, &s, &ok) != SOAK_OK || !ok || !(s.wi.z > 0)) return soak_rgb3(0, 0, 0);
+    return s.weight;
+}
+
+static void bsdf_albedo(const soak_bsdf *b, soak_vec3 wo, int samples, soak_rng *rng, soak_rgb *mean, soak_rgb *var)
+{
+    double sum[3] = {0, 0, 0}, sum2[3] = {0, 0, 0};
+    int walk = soak_bsdf_get_flags(b) & SOAK_BSDF_WALK;
+    for (int i = 0; i < samples; ++i) {
+        soak_rgb x = walk ? walk_once(b, wo, rng) : sample_once(b, wo, rng);
+        for (int ch = 0; ch < 3; ++ch) {
+            double v = soak_rgb_at(x, ch);
+            if (!isfinite(v)) v = 0; /* the renderer counts such paths black */
+            sum[ch] += v;
+            sum2[ch] += v * v;
+        }
+    }
+    for (int ch = 0; ch < 3; ++ch) {
+        double m = sum[ch] / samples;
+        soak_rgb_set(mean, ch, m);
+        soak_rgb_set(var, ch, samples > 1 ? fmax(sum2[ch] / samples - m * m, 0.0) / (samples - 1) : 0.0);
+    }
+}
+
+soak_status soak_material_albedo(const soak_material *m, double wetness, double cos_o, int samples, uint64_t seed,
+                                 int trace_films, soak_albedo_estimate *out)
+{
+    if (!m || !out) return SOAK_ERR_NULL;
+    if (!soak_in_range(wetness, 0, 1) || !(cos_o > 0 && cos_o <= 1) || !(samples >= 1 && samples <= 100000000))
+        return SOAK_ERR_ARG;
+    rt_material_bsdf mb;
+    soak_status st = material_bsdfs(m, trace_films, &mb);
+    if (st != SOAK_OK) return st;
+    double p_wet = mb.has_wet ? wetness * m->film_coverage : 0.0;
+    soak_vec3 wo = soak_v3(sqrt(fmax(0.0, 1.0 - cos_o * cos_o)), 0.0, cos_o);
+    soak_rng rng;
+    soak_rgb dry = soak_rgb3(0, 0, 0), dry_var = dry, wet = dry, wet_var = dry;
+    soak_rng_seed(&rng, seed, 1);
+    if (p_wet < 1) bsdf_albedo(&mb.dry, wo, samples, &rng, &dry, &dry_var);
+    soak_rng_seed(&rng, seed, 2);
+    if (p_wet > 0) bsdf_albedo(&mb.wet, wo, samples, &rng, &wet, &wet_var);
+    for (int ch = 0; ch < 3; ++ch) {
+        double v = (1 - p_wet) * soak_rgb_at(dry, ch) + p_wet * soak_rgb_at(wet, ch);
+        double e = (1 - p_wet) * (1 - p_wet) * soak_rgb_at(dry_var, ch) + p_wet * p_wet * soak_rgb_at(wet_var, ch);
+        soak_rgb_set(&out->value, ch, v);
+        soak_rgb_set(&out->std_error, ch, sqrt(e));
+    }
+    return SOAK_OK;
+}
+
+static const soak_bsdf *shaded(const rt_material_bsdf *mb) { return mb->has_wet ? &mb->wet : &mb->dry; }
+
+static double cpu_seconds(void) { return (double)clock() / CLOCKS_PER_SEC; }
+
+soak_status soak_material_cost(const soak_material *m, int n_rounds, double *eval_ns, double *sample_ns)
+{
+    if (!m || !eval_ns || !sample_ns) return SOAK_ERR_NULL;
+    if (!(n_rounds >= 1 && n_rounds <= 1000000)) return SOAK_ERR_ARG;
+    rt_material_bsdf mb;
+    soak_status st = material_bsdfs(m, 0, &mb);
+    if (st != SOAK_OK) return st;
+    const soak_bsdf *b = shaded(&mb);
+    int walk = soak_bsdf_get_flags(b) & SOAK_BSDF_WALK;
+    *eval_ns = 0;
+    if (!walk) {
+        st = soak_bsdf_eval_cost_ns(b, n_rounds, eval_ns);
+        if (st != SOAK_OK) return st;
+    }
+    soak_rng rng;
+    soak_rng_seed(&rng, 7, 0);
+    soak_vec3 wo = soak_v3(0.5, 0.0, sqrt(0.75));
+    volatile double sink = 0;
+    long n = (long)n_rounds * COST_PAIRS;
+    double t0 = cpu_seconds();
+    for (long i = 0; i < n; ++i) {
+        soak_rgb x = walk ? walk_once(b, wo, &rng) : sample_once(b, wo, &rng);
+        sink += x.g;
+    }
+    *sample_ns = (cpu_seconds() - t0) * 1e9 / (double)n;
+    (void)sink;
+    return SOAK_OK;
+}
+
+soak_status soak_material_eval_loop(const soak_material *m, long n, double *checksum)
+{
+    if (!m || !checksum) return SOAK_ERR_NULL;
+    if (!(n >= 0 && n <= 1000000000L)) return SOAK_ERR_ARG;
+    rt_material_bsdf mb;
+    soak_status st = material_bsdfs(m, 0, &mb);
+    if (st != SOAK_OK) return st;
+    const soak_bsdf *b = shaded(&mb);
+    if (soak_bsdf_get_flags(b) & SOAK_BSDF_WALK) return SOAK_ERR_UNSUPPORTED;
+    soak_vec3 wi[COST_PAIRS], wo[COST_PAIRS];
+    for (int i = 0; i < COST_PAIRS; ++i) {
+        double ci = (i + 0.5) / COST_PAIRS, co = 1.0 - ci * 0.9, phi = 2.399963 * i;
+        wi[i] = soak_v3(sqrt(1 - ci * ci) * cos(phi), sqrt(1 - ci * ci) * sin(phi), ci);
+        wo[i] = soak_v3(sqrt(1 - co * co), 0.0, co);
+    }
+    double sum = 0;
+    for (long i = 0; i < n; ++i) {
+        soak_rgb f;
+        double pdf;
+        st = soak_bsdf_eval(b, wi[i % COST_PAIRS], wo[i % COST_PAIRS], &f, &pdf);
+        if (st != SOAK_OK) return st;
+        sum += f.g + pdf;
+    }
+    *checksum = sum;
+    return SOAK_OK;
+}
+
+/* Preset and liquid names are [a-z0-9_-] (soak/preset.h): anything else
+ * could not be one and must not reach the JSON text. */
+static int plain_name(const char *s)
+{
+    if (!*s || strlen(s) >= 64) return 0;
+    for (; *s; ++s)
+        if (!((*s >= 'a' && *s <= 'z') || (*s >= '0' && *s <= '9') || *s == '_' || *s == '-')) return 0;
+    return 1;
+}
+
+soak_status soak_accuracy_preset_scene(const char *preset, const char *liquid, double wetness, soak_scene *scene,
+                                       char *err, size_t errlen)
+{
+    if (!preset || !liquid || !scene) return SOAK_ERR_NULL;
+    if (!soak_in_range(wetness, 0, 1) || !plain_name(preset) || !plain_name(liquid)) return SOAK_ERR_ARG;
+    char text[1024];
+    int n = snprintf(text, sizeof text,
+                     "{\"render\": {\"width\": 4, \"height\": 4, \"spp\": 1, \"max_depth\": 8},"
+                     " \"camera\": {\"position\": [0, 0, 2], \"look_at\": [0, 0, 0], \"up\": [0, 1, 0], \"fov\": 30}, \"environment\": {\"type\": \"constant\", \"radiance\": [1, 1, 1]},"
+                     " \"materials\": {\"m\": {\"type\": \"preset\", \"name\": \"%s\", \"liquid\": \"%s\", \"wetness\": %.17g}},"
+                     " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, \"material\": \"m\", \"wetness\": 1}]}",
+                     preset, liquid, wetness);
+    if (n < 0 || (size_t)n >= sizeof text) return SOAK_ERR_ARG;
+    return soak_scene_parse(text, "report", ".", scene, err, errlen);
+}
