@@ -49,6 +49,9 @@ double soak_fresnel_conductor_raw(double cos_i, double eta, double k)
     double t1 = a2b2 + c2;
     double a = sqrt(fmax(0.0, 0.5 * (a2b2 + t0)));
     double t2 = 2.0 * cos_i * a;
+    /* t1 + t2 underflows to 0 only when cos_i^2 and the index terms all do
+     * (cos_i < ~1e-154 with eta = 1 and k^2 underflowing): the grazing limit. */
+    if (!(t1 + t2 > 0.0)) return 1.0;
     double Rs = (t1 - t2) / (t1 + t2);
     double t3 = c2 * a2b2 + s2 * s2;
     double t4 = t2 * s2;

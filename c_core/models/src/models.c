@@ -29,6 +29,20 @@ void soak_model_params_default(soak_model_params *p)
 
 static int unit(soak_vec3 v) { return soak_v3_is_unit(v); }
 
+/* Every set-up starts here: a NaN or Inf in any field is a caller's error
+ * even where the chosen model ignores that field (otherwise a NaN k would
+ * silently pick the dielectric branch of ww or ggx). k is checked for every
+ * model because it selects the base (k > 0: conductor). */
+static soak_status params_ok(const soak_model_params *p)
+{
+    if (!p) return SOAK_ERR_NULL;
+    const double v[] = {p->albedo, p->ior,      p->k,        p->roughness, p->n_film, p->absorption,
+                        p->thickness, p->porosity, p->sp, p->fill,      p->ks,     p->ks_water};
+    for (size_t i = 0; i < sizeof v / sizeof v[0]; ++i)
+        if (!soak_is_finite(v[i])) return SOAK_ERR_ARG;
+    return soak_in_range(p->k, 0.0, SOAK_GGX_K_MAX) ? SOAK_OK : SOAK_ERR_ARG;
+}
+
 soak_status soak_model_eval(const soak_model *m, const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo, double *f)
 {
     if (!m || !ctx || !f) return SOAK_ERR_NULL;
@@ -49,6 +63,8 @@ soak_status soak_model_eval(const soak_model *m, const soak_model_ctx *ctx, soak
 typedef struct { double albedo; } lambert_ctx;
 static soak_status lambert_setup(const soak_model_params *p, soak_model_ctx *c)
 {
+    soak_status ok = params_ok(p);
+    if (ok != SOAK_OK) return ok;
     if (!soak_in_range(p->albedo, 0.0, 1.0)) return SOAK_ERR_ARG;
     ((lambert_ctx *)c->bytes)->albedo = p->albedo;
     return SOAK_OK;
@@ -65,6 +81,8 @@ static soak_status lambert_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3
 typedef struct { double alpha, eta, k; } ggx_ctx;
 static soak_status ggx_setup(const soak_model_params *p, soak_model_ctx *c)
 {
+    soak_status ok = params_ok(p);
+    if (ok != SOAK_OK) return ok;
     ggx_ctx *g = (ggx_ctx *)c->bytes;
     g->alpha = p->roughness;
     g->eta = p->ior;
@@ -90,6 +108,8 @@ static soak_status ggx_conductor_eval(const soak_model_ctx *c, soak_vec3 wi, soa
 typedef struct { soak_film film; soak_film_ctx ctx; double albedo; } film_ctx;
 static soak_status film_setup(const soak_model_params *p, soak_model_ctx *c)
 {
+    soak_status ok = params_ok(p);
+    if (ok != SOAK_OK) return ok;
     film_ctx *m = (film_ctx *)c->bytes;
     m->film.n = p->n_film;
     m->film.alpha = p->absorption;
@@ -113,6 +133,8 @@ static soak_status film_ctx_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec
 typedef struct { soak_ww ww; soak_ww_triace fast; } ww_ctx;
 static soak_status ww_setup(const soak_model_params *p, soak_model_ctx *c)
 {
+    soak_status ok = params_ok(p);
+    if (ok != SOAK_OK) return ok;
     ww_ctx *m = (ww_ctx *)c->bytes;
     soak_ww_default(&m->ww);
     m->ww.base = p->k > 0.0 ? SOAK_WW_CONDUCTOR : SOAK_WW_DIELECTRIC;
@@ -145,6 +167,8 @@ static soak_status ww_triace_eval(const soak_model_ctx *c, soak_vec3 wi, soak_ve
 typedef struct { soak_porous_params p; double fill; } porous_ctx;
 static soak_status porous_setup(const soak_model_params *p, soak_model_ctx *c)
 {
+    soak_status ok = params_ok(p);
+    if (ok != SOAK_OK) return ok;
     porous_ctx *m = (porous_ctx *)c->bytes;
     memset(&m->p, 0, sizeof m->p);
     m->p.kd = p->albedo;
@@ -172,6 +196,8 @@ static soak_status porous_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 
 typedef struct { soak_porous_ggx g; double fill; } porous_ggx_ctx;
 static soak_status porous_ggx_setup(const soak_model_params *p, soak_model_ctx *c)
 {
+    soak_status ok = params_ok(p);
+    if (ok != SOAK_OK) return ok;
     porous_ggx_ctx *m = (porous_ggx_ctx *)c->bytes;
     soak_porous_ggx_params q = {.albedo = p->albedo,
                                 .roughness = p->roughness,

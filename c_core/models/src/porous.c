@@ -15,7 +15,7 @@
 static double schlick_g1(double k, double c)
 {
     if (!(c > 0.0)) return 0.0;
-    return c / (c * (1.0 - k) + k);
+    return c / (c + k * (1.0 - c)); /* = c / (c (1-k) + k); the denominator is >= c, so G1 <= 1 after rounding */
 }
 
 static double gp_raw(double m, double cos_i, double cos_o)
@@ -136,7 +136,7 @@ soak_status soak_porous_validate(const soak_porous_params *p)
     if (!soak_in_range(p->kd, 0.0, 1.0) || !soak_in_range(p->ks, 0.0, 1.0) || !(p->ks + p->kd <= 1.0) ||
         !soak_in_range(p->m, 0.0, SOAK_POROUS_M_MAX) || !soak_in_range(p->spec_power, 0.0, SOAK_POROUS_POWER_MAX) ||
         !soak_in_range(p->porosity, 0.0, 1.0) || !soak_in_range(p->sp, 0.0, SOAK_POROUS_SP_MAX) ||
-        !soak_in_range(p->ks_water, 0.0, 1.0) || !soak_in_range(p->water_power, 0.0, SOAK_POROUS_POWER_MAX) ||
+        !soak_in_range(p->ks_water, 0.0, SOAK_POROUS_KS_WATER_MAX) || !soak_in_range(p->water_power, 0.0, SOAK_POROUS_POWER_MAX) ||
         (p->norm != SOAK_BLINN_NORM_ENERGY && p->norm != SOAK_BLINN_NORM_SEED001))
         return SOAK_ERR_ARG;
     return SOAK_OK;
@@ -184,10 +184,13 @@ soak_status soak_porous_coeffs_eval(const soak_porous_params *p, double fill, so
     return SOAK_OK;
 }
 
-/* Normalised Blinn-Phong lobe in cos(theta_h); see soak_blinn_norm. */
+/* Normalised Blinn-Phong lobe in cos(theta_h); see soak_blinn_norm. The
+ * energy normaliser is 1 / A(n), A(n) = 8 pi (n + 2^(-n/2)) / ((n+2)(n+4))
+ * the lobe's exact albedo at normal incidence (derivation in porous.h). */
 static double blinn(soak_blinn_norm norm, double n, double cos_h)
 {
-    double scale = norm == SOAK_BLINN_NORM_SEED001 ? (n + 2.0) / (2.0 * SOAK_PI) : (n + 8.0) / (8.0 * SOAK_PI);
+    double scale = norm == SOAK_BLINN_NORM_SEED001 ? (n + 2.0) / (2.0 * SOAK_PI)
+                                                   : (n + 2.0) * (n + 4.0) / (8.0 * SOAK_PI * (n + exp2(-0.5 * n)));
     return scale * pow(cos_h, n);
 }
 
@@ -288,8 +291,11 @@ soak_status soak_porous_sample(const soak_porous_params *p, double fill, soak_ve
         }
     }
     double fv = ok ? eval_raw(p, fill, a, b) : 0.0, pv = ok ? pdf_raw(p, fill, a, b) : 0.0;
-    if (!soak_is_finite(fv) || !soak_is_finite(pv)) return SOAK_ERR_NUMERIC;
-    if (!(pv > 0.0)) fv = pv = 0.0;
+    if (!soak_is_finite(fv)) return SOAK_ERR_NUMERIC;
+    /* The half-vector Jacobian 1 / (4 wi.h) overflows when a grazing wi is
+     * reflected straight back (wi.h ~ 1e-310): a zero-measure direction,
+     * returned as "no sample" like one below the horizon. */
+    if (!(pv > 0.0) || !soak_is_finite(pv)) fv = pv = 0.0;
     *wo = b;
     *f = fv;
     *pdf = pv;

@@ -322,6 +322,10 @@ soak_status soak_porous_ggx_sample(const soak_porous_ggx *c, double fill, soak_v
         }
     }
     double fv = ok ? eval_raw(c, fill, a, b) : 0.0, pv = ok ? pdf_raw(c, fill, a, b) : 0.0;
+    /* A grazing wi (z ~ 1e-300) sampled into an equally grazing wo makes the
+     * GGX terms overflow (soak/ggx.h): a zero-measure pair, returned as
+     * "no sample" like one below the horizon. */
+    if (fv == INFINITY || pv == INFINITY) fv = pv = 0.0;
     if (!soak_is_finite(fv) || !soak_is_finite(pv)) return SOAK_ERR_NUMERIC;
     if (!(pv > 0.0)) fv = pv = 0.0;
     *wo = b;
@@ -336,7 +340,9 @@ soak_status soak_porous_ggx_spec_albedo(const soak_porous_ggx *c, double fill, d
     soak_status s = soak_porous_ggx_validate(&c->p);
     if (s != SOAK_OK) return s;
     if (!soak_in_range(fill, 0.0, 1.0) || !soak_in_range(cos_i, 0.0, 1.0)) return SOAK_ERR_ARG;
-    *E = spec_albedo_raw(c, fill, cos_i);
+    double e = spec_albedo_raw(c, fill, cos_i);
+    /* the cubic interpolant can undershoot 0 by ~1e-32 next to a zero node */
+    *E = e < 0.0 ? 0.0 : (e > 1.0 ? 1.0 : e);
     return SOAK_OK;
 }
 

@@ -39,6 +39,9 @@ soak_status soak_ww_validate(const soak_ww *m)
         !soak_in_range(m->thickness, 0.0, SOAK_WW_THICKNESS_MAX) ||
         !soak_in_range(m->alpha, SOAK_GGX_ALPHA_MIN, SOAK_GGX_ALPHA_MAX))
         return SOAK_ERR_ARG;
+    /* The field the base ignores must still be a number: a NaN there is a
+     * caller's error (e.g. a NaN k that picked the dielectric base). */
+    if (!soak_is_finite(m->k_base) || !soak_is_finite(m->kd)) return SOAK_ERR_ARG;
     if (m->base == SOAK_WW_DIELECTRIC) {
         if (!soak_in_range(m->n_base, SOAK_WW_N_DIELECTRIC_MIN, SOAK_WW_N_DIELECTRIC_MAX) ||
             !soak_in_range(m->kd, 0.0, 1.0))

@@ -21,6 +21,12 @@
  * Index conventions follow soak/fresnel.h: eta = n_base / n_incident_medium,
  * k = extinction coefficient relative to the incident medium.
  *
+ * Grazing pairs: the BRDF grows as 1 / (alpha (wi.z + wo.z)) when both
+ * directions approach the horizon; where that exceeds the double range (both
+ * cosines below ~1e-300, denormal) the checked BRDFs return SOAK_ERR_NUMERIC
+ * rather than Inf. D, G1, G2 and the pdf stay finite for every valid input
+ * (tests/c/test_stability.c).
+ *
  * Stability: other models (porous, ww) depend on this header. */
 #ifndef SOAK_GGX_H
 #define SOAK_GGX_H
@@ -91,11 +97,14 @@ static inline double soak_ggx_G1_raw(double alpha, soak_vec3 w)
     return 2.0 * w.z / (w.z + soak_ggx_lambda_root_raw(alpha, w));
 }
 
+/* Written as 2 / (ri / wi.z + ro / wo.z): each ratio is >= 1, so G2 <= 1,
+ * and denormal cosines give 2 / inf = 0 instead of the 0 / 0 of
+ * 2 wi.z wo.z / (ri wo.z + ro wi.z). */
 static inline double soak_ggx_G2_raw(double alpha, soak_vec3 wi, soak_vec3 wo)
 {
     double ri = soak_ggx_lambda_root_raw(alpha, wi);
     double ro = soak_ggx_lambda_root_raw(alpha, wo);
-    return 2.0 * wi.z * wo.z / (ri * wo.z + ro * wi.z);
+    return 2.0 / (ri / wi.z + ro / wo.z);
 }
 
 /* G2 / (4 wi.z wo.z), finite even as wi.z or wo.z -> 0. */

@@ -23,7 +23,7 @@ typedef struct soak_model_params {
     double sp;         /* pore depth/diameter (default 2) */
     double fill;       /* pore fill fraction, [0,1] (default 1) */
     double ks;         /* Blinn-Phong specular coefficient for the porous model (default 0.05) */
-    double ks_water;   /* water specular coefficient (default 0.02) */
+    double ks_water;   /* water specular coefficient, [0, 0.5] (default 0.02; SOAK_POROUS_KS_WATER_MAX) */
 } soak_model_params;
 
 void soak_model_params_default(soak_model_params *p);

@@ -59,6 +59,18 @@
 #define SOAK_POROUS_SP_MAX 50.0    /* pore depth / diameter */
 #define SOAK_POROUS_POWER_MAX 1e4  /* Blinn-Phong exponents */
 #define SOAK_POROUS_NB_MAX 1e4     /* accepted by soak_porous_Ap */
+/* Upper bound of ks_water, the reflectance of the water surface in a
+ * filled pore (a liquid's F0 is <= 0.25 for indices <= 3). Why a bound:
+ * Merillou's weights (1 - a G_p) and a G_p use G_p = G1(wi) G1(wo), so the
+ * directional albedo is E_mat(wi) + a G1(wi) int G1(wo) (f_pore - f_mat)
+ * cos_o dwo. The pores' diffuse term never exceeds the material lobes it
+ * displaces, but a mirror-like water lobe sits where G1(wo) is largest
+ * while a diffuse material lobe is partly masked: for k_d = 1 at normal
+ * incidence the albedo is 1 + a (ks_water - M), M = 2 int_0^1 G1(mu) mu dmu
+ * >= 0.703 (its value at m = 1). ks_water <= 0.5 < 0.703 keeps the albedo
+ * <= 1 (white furnace over k_d, k_s, m, porosity, s_p, fill, ks_water in
+ * tests/c/test_stability.c); ks_water = 1 reflected up to 1.29. */
+#define SOAK_POROUS_KS_WATER_MAX 0.5
 
 /* ---- building blocks ---- */
 
@@ -93,10 +105,17 @@ soak_status soak_wetmap_t0(double value, double *t0);
 /* ---- Merillou + Hnat on Blinn-Phong (seed 001 code, seed 002 Eq. 2-3) ---- */
 
 typedef enum soak_blinn_norm {
-    /* (n + 8) / (8 pi) cos^n(theta_h) (Hoffman, SIGGRAPH 2010 course): lobe
-     * albedo at normal incidence (n+8)(2^(-n/2) + n) / ((n+2)(n+4)), in
-     * [1, 1.077], so k_s is about the fraction of light reflected
-     * specularly, as k_a = 1 - k_s - k_d requires. Default. */
+    /* cos^n(theta_h) / A(n), A(n) = 8 pi (n + 2^(-n/2)) / ((n+2)(n+4)), the
+     * lobe's exact directional albedo at normal incidence: with wo the
+     * mirror of wi = +z about h, cos_o = 2 cos_h^2 - 1 and dw_o = 4 cos_h
+     * dw_h, so A(n) = 8 pi int_{1/sqrt2}^1 c^(n+1) (2c^2 - 1) dc. The
+     * albedo is then exactly 1 at normal incidence and falls towards
+     * grazing (measured for n in [0, 1e4], tests/c/test_stability.c), so
+     * k_s is the fraction of light reflected specularly, as Merillou's
+     * k_a = 1 - k_s - k_d requires. Default. (Was Hoffman's (n+8)/(8 pi),
+     * SIGGRAPH 2010 course: an approximation of 1/A(n) whose albedo at
+     * normal incidence reaches 1.077 near n = 8 -- with k_s = 1 the porous
+     * model reflected up to 1.07 of the light.) */
     SOAK_BLINN_NORM_ENERGY = 0,
     /* (n + 2) / (2 pi) cos^n(theta_h), seed 001's shader. This normalises the
      * distribution of half vectors (integral of D cos(theta_h) = 1), not the
@@ -113,7 +132,8 @@ typedef struct soak_porous_params {
                            seed 001 links it to m by n = 2/m^2 - 2 */
     double porosity;    /* alpha_poro, fraction of surface in open pores, [0,1] */
     double sp;          /* pore depth / diameter, [0, SOAK_POROUS_SP_MAX] */
-    double ks_water;    /* water specular coefficient, [0,1] (seed 001: 0.02) */
+    double ks_water;    /* water specular coefficient, [0, SOAK_POROUS_KS_WATER_MAX]
+                           (seed 001: 0.02, water's F0) */
     double water_power; /* exponent of the water lobe (seed 001: 200) */
     soak_blinn_norm norm;
 } soak_porous_params;
@@ -133,15 +153,19 @@ soak_status soak_porous_coeffs_eval(const soak_porous_params *p, double fill, so
                                     soak_porous_coeffs *c);
 
 /* f = kd_wet / pi + ks_mat B(spec_power) + ks_water B(water_power), where B is
- * the normalised Blinn-Phong lobe selected by p->norm. Reciprocal. Not
- * energy conserving in general (Blinn-Phong without Fresnel or masking). */
+ * the normalised Blinn-Phong lobe selected by p->norm. Reciprocal. With
+ * SOAK_BLINN_NORM_ENERGY the directional albedo is <= 1 for every valid
+ * parameter set (see SOAK_BLINN_NORM_ENERGY and SOAK_POROUS_KS_WATER_MAX);
+ * SOAK_BLINN_NORM_SEED001 reproduces seed 001 and is not conserving. */
 soak_status soak_porous_eval(const soak_porous_params *p, double fill, soak_vec3 wi, soak_vec3 wo, double *f);
 
 /* Importance sampling: a one-sample mixture of a cosine lobe and the two
  * Blinn-Phong lobes sampled by half vector (pdf_h = (n+1)/(2 pi) cos^n),
  * picked by u_lobe in proportion to bounds of their coefficients. Writes wo,
  * f = eval(wi, wo) and the mixture density pdf (= soak_porous_pdf). A sample
- * below the horizon has f = pdf = 0 ("no sample"). u_lobe, u1, u2 in [0,1]. */
+ * below the horizon, or one whose density overflows (a grazing wi reflected
+ * straight back, wi.h ~ 1e-310), has f = pdf = 0 ("no sample"). u_lobe, u1,
+ * u2 in [0,1]. */
 soak_status soak_porous_sample(const soak_porous_params *p, double fill, soak_vec3 wi, double u_lobe, double u1,
                                double u2, soak_vec3 *wo, double *f, double *pdf);
 soak_status soak_porous_pdf(const soak_porous_params *p, double fill, soak_vec3 wi, soak_vec3 wo, double *pdf);
@@ -216,7 +240,8 @@ soak_status soak_porous_ggx_eval(const soak_porous_ggx *c, double fill, soak_vec
  * sampler of each specular lobe and a cosine lobe, picked by u_lobe in
  * proportion to the lobes' albedo at wi. Writes wo, f = eval(wi, wo) and the
  * mixture density pdf (solid angle of wo; soak_porous_ggx_pdf gives the same
- * value). A sample that ends below the horizon has f = pdf = 0 ("no sample").
+ * value). A sample that ends below the horizon, or a grazing pair whose GGX
+ * terms overflow (both cosines ~1e-300, soak/ggx.h), has f = pdf = 0 ("no sample").
  * u_lobe, u1, u2 in [0,1]. */
 soak_status soak_porous_ggx_sample(const soak_porous_ggx *c, double fill, soak_vec3 wi, double u_lobe, double u1,
                                    double u2, soak_vec3 *wo, double *f, double *pdf);

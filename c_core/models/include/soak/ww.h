@@ -78,8 +78,9 @@ typedef struct soak_ww {
     double thickness;  /* film thickness, [0, 1e3] length units; 0 = no absorption */
     double alpha;      /* GGX roughness of the base, [1e-4, 1] (soak/ggx.h) */
     double n_base;     /* base index relative to air: dielectric [1, 3], conductor [0.01, 100] */
-    double k_base;     /* conductor extinction relative to air, [0, 100]; ignored for dielectric */
-    double kd;         /* dielectric diffuse albedo, [0, 1]; ignored for conductor */
+    double k_base;     /* conductor extinction relative to air, [0, 100]; ignored (but must be
+                          finite) for dielectric */
+    double kd;         /* dielectric diffuse albedo, [0, 1]; ignored (but must be finite) for conductor */
 } soak_ww;
 
 /* Defaults: water 1.33 without absorption, dielectric base n 1.5, alpha 0.3, kd 0.5. */
@@ -166,9 +167,15 @@ soak_status soak_ww_triace_setup(const soak_ww *m, soak_ww_triace *fast);
  * with the refracted cosines (>= 0.66, so 1/cos is bounded; with the
  * unrefracted N.L, N.V seed 001 shows the linear form fails at grazing).
  * No pow/exp; equals soak_ww_eval exactly at normal incidence without
- * absorption. Approximately (not exactly) reciprocal: Schlick T12 at cos_i
- * but a constant exit transmission (1 - F0(1.33, 1)) inside F_bottom, which
- * is the dominant error at grazing theta_o (see tests/c/test_ww.c table). */
+ * absorption. Not reciprocal: Schlick T12 at cos_i but a constant exit
+ * transmission (1 - F0(1.33, 1)) inside F_bottom, which is the dominant
+ * error at grazing theta_o (see tests/c/test_ww.c table). Everything else is
+ * symmetric, so f(wi, wo) / f(wo, wi) = S(cos_i) / S(cos_o) exactly,
+ * S(c) = 1 - (1 - c)^5. Measured (tests/c/test_stability.c, 2e5 pairs
+ * uniform in solid angle, both polar angles <= 85 deg): 78 % of pairs
+ * are more than 1 % off; the largest ratio is 1 / S(cos 85 deg) = 2.731.
+ * Over the whole hemisphere the ratio is unbounded (S(0) = 0: f(wo, wi)
+ * vanishes for a grazing wo where f(wi, wo) does not). */
 soak_status soak_ww_eval_triace(const soak_ww_triace *fast, soak_vec3 wi, soak_vec3 wo, double *f);
 /* Unchecked form for hot loops: fast from soak_ww_triace_setup, wi.z > 0, wo.z > 0, unit. */
 double soak_ww_eval_triace_raw(const soak_ww_triace *fast, soak_vec3 wi, soak_vec3 wo);
