@@ -38,4 +38,8 @@ oiiotool "${frames[@]}" --mosaic 4x1 -o "$OUT/bricks_drying.png"
 "$SOAK" bake volume --material cotton --liquid coffee --map "$OUT/gauze_wet.png" --unit mm --size 100,100,0.03 \
   --depth 1 --dims 128,128,2 --format df3 --threads 2 -o "$OUT/gauze_vol" >/dev/null
 pov gauze_media.pov gauze_media.exr "$W" "$((W * 3 / 8))" Declare=Use_Map=1
+# wet-map placement: one 16-bit map from soak bake, placed, turned, tiled, on UVs
+"$SOAK" bake turbulence --width 128 --height 128 --threshold -0.1 --softness 0.2 --seed 7 --threads 2 \
+  -o "$OUT/place_wet.png" >/dev/null
+pov map_placement.pov map_placement.exr "$W" "$((W / 2))"
 echo "rendered into $OUT"
