@@ -112,11 +112,6 @@ def coat_base_compensation(b, coat_weight, coat_ior, normal):
     return b.math("DIVIDE", 1.0, b.math("MAXIMUM", b.math("SUBTRACT", 1.0, dim), 1e-3))
 
 
-def link_group_normal(b, group_normal, to_socket):
-    """Passes the group's Normal input on (the material's own normal)."""
-    b.link(group_normal, to_socket)
-
-
 def exact_lookups_required(version=None):
     """EEVEE Next (4.2+) returns 0 (or 65504) from a Linear image lookup whose
     coordinate does not vary over the screen (zero derivatives: a constant

@@ -182,7 +182,8 @@ def _param(b, par_img, t, v, exact, pixel):
 
 def _wet_path(b, gin, L, preset, liquid_name, exact):
     """The core's wetness function of one preset's class for the input colour:
-    (colour, roughness, coat weight, base specular factor) sockets."""
+    (colour, roughness, coat weight, base specular factor) sockets, and
+    (parameter image, table, row coordinate) for further parameter reads."""
     t = data.table(preset, liquid_name)
     alb_img, par_img = data.lookup_images(preset, liquid_name)
     v = _row_coordinate(b, L, t)
@@ -200,10 +201,6 @@ def _wet_path(b, gin, L, preset, liquid_name, exact):
     r0 = max(t["params"][0][11], 1e-4)
     rough = b.math("MULTIPLY", gin.outputs["Roughness"], b.math("DIVIDE", spec.outputs[2], r0), clamp=True)
     return comb.outputs[0], rough, spec.outputs[1], spec.outputs[0], (par_img, t, v)
-
-
-def _mix_colour(b, a, c, f):
-    return _lerp(b, a, c, f)
 
 
 def build_group(tree, preset, liquid_name, exact=False, metal=None):
@@ -231,14 +228,14 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None):
     if metal is not None:
         mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact)
         f = b.math("MINIMUM", b.math("MAXIMUM", gin.outputs["Metallic"], 0.0), 1.0)
-        colour = _mix_colour(b, colour, mc, f)
+        colour = _lerp(b, colour, mc, f)
         rough = b.math("MULTIPLY_ADD", b.math("SUBTRACT", mr, rough), f, rough)
         coat = b.math("MULTIPLY_ADD", b.math("SUBTRACT", mcoat, coat), f, coat)
     bump = b.node("ShaderNodeBump")
     b.link(gin.outputs["Spill Edge"], bump.inputs["Strength"])
     b.link(gin.outputs["Wet Map"], bump.inputs["Height"])
     bump.inputs["Distance"].default_value = 0.02
-    compat.link_group_normal(b, gin.outputs["Normal"], bump.inputs["Normal"])
+    b.link(gin.outputs["Normal"], bump.inputs["Normal"])
     spec = b.math("MULTIPLY", gin.outputs["Specular"], factor)
     # Blender's own coat dims what lies under it (4.x); the core's values
     # already hold the film's transmission: undo the engine's share.
