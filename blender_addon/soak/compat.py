@@ -115,9 +115,11 @@ def coat_base_compensation(b, coat_weight, coat_ior, normal):
 def exact_lookups_required(version=None):
     """EEVEE Next (4.2+) returns 0 (or 65504) from a Linear image lookup whose
     coordinate does not vary over the screen (zero derivatives: a constant
-    wetness, the per-row parameter column), measured under Mesa llvmpipe:
-    a wet material renders black. Closest lookups are right there, so 4.2+
-    always builds the exact path (four Closest reads, explicit bilinear),
+    wetness, the per-row parameter column) when anisotropic filtering is on
+    (Preferences > Viewport > Anisotropic Filtering, default 2x; off, the same
+    lookup is right), measured in 4.3.2 under Mesa llvmpipe: a wet material
+    renders black. Closest lookups are right whatever the preference, so
+    4.2+ always builds the exact path (Closest reads, explicit bilinear),
     which EEVEE needed anyway for the core's bilinear tables."""
     v = version if version is not None else bpy.app.version
     return tuple(v) >= (4, 2, 0)
