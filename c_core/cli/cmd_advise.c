@@ -28,7 +28,8 @@ static void usage(FILE *out)
             "  --tol T             relative RMS error allowed, (0, 10] (0.02 = 2 %%; required)\n"
             "  --grid WxH          primary rays (default 32x24)\n"
             "  --samples N         albedo samples per state and hit, [16, 1e6] (default 256)\n"
-            "  --seed S            (default 1)\n\n"
+            "  --seed S            (default 1)\n"
+            "  --all               also every model's predicted error and cost per material\n\n"
             "output: one line per material: name, choice (or 'full'), predicted error,\n"
             "speed-up, visible hits, mean wetness and viewing cosine, note.\n\n"
             "example:\n"
@@ -52,6 +53,7 @@ int soak_cmd_advise(int argc, char **argv)
 {
     const char *scene_path = NULL;
     double tol = -1;
+    int all = 0;
     soak_advise_options o;
     soak_advise_options_default(&o);
     for (int i = 1; i < argc; ++i) {
@@ -60,6 +62,8 @@ int soak_cmd_advise(int argc, char **argv)
         if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
             usage(stdout);
             return SOAK_EXIT_OK;
+        } else if (strcmp(a, "--all") == 0) {
+            all = 1;
         } else if (cli_is(a, "--tol")) {
             if (!(v = cli_value(CMD, argc, argv, &i)) || !cli_parse_double(CMD, "--tol", v, 1e-9, 10, &tol))
                 return SOAK_EXIT_USAGE;
@@ -116,6 +120,15 @@ int soak_cmd_advise(int argc, char **argv)
     }
     printf("# %s\n", scene_path);
     cli_advise_print(stdout, adv, n, tol);
+    if (all) {
+        printf("\n%-16s %-14s %9s %10s\n", "material", "model", "error", "shading ns");
+        for (int i = 0; i < n; ++i) {
+            printf("%-16s %-14s %9s %10.0f\n", adv[i].material, "full", "0", adv[i].full_ns);
+            for (int k = 0; k < adv[i].n_tried; ++k)
+                printf("%-16s %-14s %8.2f%% %10.0f\n", adv[i].material, adv[i].tried[k].model->name,
+                       100 * adv[i].tried[k].error, adv[i].tried[k].ns);
+        }
+    }
     free(adv);
     return SOAK_EXIT_OK;
 }

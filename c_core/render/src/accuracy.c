@@ -82,6 +82,9 @@ static void bsdf_albedo(const soak_bsdf *b, soak_vec3 wo, int samples, soak_rng 
     }
 }
 
+static soak_status albedo_of(const rt_material_bsdf *mb, double p_wet, soak_vec3 wo, int samples, uint64_t seed,
+                             soak_albedo_estimate *out);
+
 soak_status soak_material_albedo(const soak_material *m, double wetness, double cos_o, int samples, uint64_t seed,
                                  int trace_films, soak_albedo_estimate *out)
 {
@@ -93,18 +96,70 @@ soak_status soak_material_albedo(const soak_material *m, double wetness, double 
     if (st != SOAK_OK) return st;
     double p_wet = mb.has_wet ? wetness * m->film_coverage : 0.0;
     soak_vec3 wo = soak_v3(sqrt(fmax(0.0, 1.0 - cos_o * cos_o)), 0.0, cos_o);
+    return albedo_of(&mb, p_wet, wo, samples, seed, out);
+}
+
+static soak_status albedo_of(const rt_material_bsdf *mb, double p_wet, soak_vec3 wo, int samples, uint64_t seed,
+                             soak_albedo_estimate *out)
+{
     soak_rng rng;
     soak_rgb dry = soak_rgb3(0, 0, 0), dry_var = dry, wet = dry, wet_var = dry;
     soak_rng_seed(&rng, seed, 1);
-    if (p_wet < 1) bsdf_albedo(&mb.dry, wo, samples, &rng, &dry, &dry_var);
+    if (p_wet < 1) bsdf_albedo(&mb->dry, wo, samples, &rng, &dry, &dry_var);
     soak_rng_seed(&rng, seed, 2);
-    if (p_wet > 0) bsdf_albedo(&mb.wet, wo, samples, &rng, &wet, &wet_var);
+    if (p_wet > 0) bsdf_albedo(&mb->wet, wo, samples, &rng, &wet, &wet_var);
     for (int ch = 0; ch < 3; ++ch) {
         double v = (1 - p_wet) * soak_rgb_at(dry, ch) + p_wet * soak_rgb_at(wet, ch);
         double e = (1 - p_wet) * (1 - p_wet) * soak_rgb_at(dry_var, ch) + p_wet * p_wet * soak_rgb_at(wet_var, ch);
         soak_rgb_set(&out->value, ch, v);
         soak_rgb_set(&out->std_error, ch, sqrt(e));
     }
+    return SOAK_OK;
+}
+
+/* f(wi, wo) cos(wi) of one BSDF; a traced film: R(wo) cos / pi. */
+static soak_rgb direct(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb walk_albedo)
+{
+    soak_rgb f = soak_rgb3(0, 0, 0);
+    if (soak_bsdf_get_flags(b) & SOAK_BSDF_WALK) {
+        double s = wi.z * SOAK_INV_PI;
+        return soak_rgb3(walk_albedo.r * s, walk_albedo.g * s, walk_albedo.b * s);
+    }
+    if (soak_bsdf_eval(b, wi, wo, &f, NULL) != SOAK_OK) return soak_rgb3(0, 0, 0);
+    return soak_rgb3(f.r * wi.z, f.g * wi.z, f.b * wi.z);
+}
+
+soak_status soak_material_radiance(const soak_material *m, double wetness, soak_vec3 wo, soak_rgb env,
+                                   const soak_local_light *lights, int n_lights, int samples, uint64_t seed,
+                                   soak_albedo_estimate *out)
+{
+    if (!m || !out || (!lights && n_lights > 0)) return SOAK_ERR_NULL;
+    if (!soak_in_range(wetness, 0, 1) || !soak_v3_is_unit(wo) || !(wo.z > 0) || !(n_lights >= 0) ||
+        !(samples >= 1 && samples <= 100000000))
+        return SOAK_ERR_ARG;
+    rt_material_bsdf mb;
+    soak_status st = material_bsdfs(m, 0, &mb);
+    if (st != SOAK_OK) return st;
+    double p_wet = mb.has_wet ? wetness * m->film_coverage : 0.0;
+    soak_albedo_estimate a, dry_a = {{0, 0, 0}, {0, 0, 0}}, wet_a = dry_a;
+    st = albedo_of(&mb, p_wet, wo, samples, seed, &a);
+    /* the walk stand-in needs each state's own albedo */
+    if (st == SOAK_OK && (soak_bsdf_get_flags(&mb.wet) & SOAK_BSDF_WALK) && p_wet > 0) st = albedo_of(&mb, 1.0, wo, samples, seed, &wet_a);
+    if (st == SOAK_OK && (soak_bsdf_get_flags(&mb.dry) & SOAK_BSDF_WALK) && p_wet < 1) st = albedo_of(&mb, 0.0, wo, samples, seed, &dry_a);
+    if (st != SOAK_OK) return st;
+    soak_rgb L = soak_rgb3(a.value.r * env.r, a.value.g * env.g, a.value.b * env.b);
+    for (int i = 0; i < n_lights; ++i) {
+        soak_vec3 wi = lights[i].wi;
+        if (!soak_v3_is_unit(wi) || !(wi.z > 0)) continue;
+        soak_rgb fd = p_wet < 1 ? direct(&mb.dry, wi, wo, dry_a.value) : soak_rgb3(0, 0, 0);
+        soak_rgb fw = p_wet > 0 ? direct(&mb.wet, wi, wo, wet_a.value) : soak_rgb3(0, 0, 0);
+        for (int ch = 0; ch < 3; ++ch) {
+            double v = ((1 - p_wet) * soak_rgb_at(fd, ch) + p_wet * soak_rgb_at(fw, ch)) * soak_rgb_at(lights[i].irradiance, ch);
+            soak_rgb_set(&L, ch, soak_rgb_at(L, ch) + v);
+        }
+    }
+    out->value = L;
+    out->std_error = soak_rgb3(a.std_error.r * env.r, a.std_error.g * env.g, a.std_error.b * env.b);
     return SOAK_OK;
 }
 

@@ -20,8 +20,13 @@ void soak_advise_options_default(soak_advise_options *o)
     o->cost_rounds = 50;
 }
 
+#define ADV_MAX_LIGHTS 8
+
 typedef struct view_hit {
     double cos_o, wetness;
+    soak_vec3 wo; /* local frame */
+    soak_local_light lights[ADV_MAX_LIGHTS];
+    int n_lights;
 } view_hit;
 
 typedef struct hit_list {
@@ -40,6 +45,54 @@ static int push_hit(hit_list *l, view_hit v)
     }
     l->h[l->n++] = v;
     return 1;
+}
+
+/* Mean radiance of the environment (what a mirror or a rough lobe sees on
+ * average; the map's rows are not solid-angle weighted: a rough figure). */
+static soak_rgb env_mean(const soak_environment *e)
+{
+    if (e->type == SOAK_ENV_CONSTANT) return e->radiance;
+    soak_rgb m = soak_rgb3(0, 0, 0);
+    if (e->type != SOAK_ENV_MAP || !e->map.pixels || e->map.channels < 3) return m;
+    size_t n = (size_t)e->map.width * e->map.height;
+    for (size_t i = 0; i < n; ++i) {
+        const float *px = e->map.pixels + i * e->map.channels;
+        m.r += px[0];
+        m.g += px[1];
+        m.b += px[2];
+    }
+    double k = n ? e->scale / (double)n : 0.0;
+    return soak_rgb3(m.r * k, m.g * k, m.b * k);
+}
+
+/* The scene's lights at p (unoccluded ones), in the frame (t, b, n). */
+static void hit_lights(const soak_scene *s, soak_vec3 p, soak_vec3 n, soak_vec3 t, soak_vec3 b, view_hit *v)
+{
+    v->n_lights = 0;
+    for (int i = 0; i < s->n_lights && v->n_lights < ADV_MAX_LIGHTS; ++i) {
+        const soak_light *l = &s->lights[i];
+        soak_vec3 d;
+        double dist = INFINITY, k = 1;
+        if (l->type == SOAK_LIGHT_DIRECTIONAL) {
+            d = soak_v3_norm(l->direction);
+        } else {
+            soak_vec3 to = soak_v3_sub(l->position, p);
+            dist = soak_v3_len(to);
+            if (!(dist > 0)) continue;
+            d = soak_v3_scale(to, 1 / dist);
+            /* point: intensity / d^2; sphere: radiance * pi r^2 / d^2 (far-field) */
+            k = (l->type == SOAK_LIGHT_SPHERE ? SOAK_PI * l->radius * l->radius : 1.0) / (dist * dist);
+            if (l->type == SOAK_LIGHT_SPHERE) dist -= l->radius;
+        }
+        double c = soak_v3_dot(d, n);
+        if (!(c > 1e-6)) continue;
+        soak_ray ray = {soak_v3_add(p, soak_v3_scale(n, 1e-4)), d, 0.0, dist > 2e-4 ? dist - 1e-4 : dist};
+        int occ = 0;
+        if (soak_geometry_occluded(s->geometry, &ray, &occ) != SOAK_OK || occ) continue;
+        soak_local_light *ll = &v->lights[v->n_lights++];
+        ll->wi = soak_v3_norm(soak_v3(soak_v3_dot(d, t), soak_v3_dot(d, b), c));
+        ll->irradiance = soak_rgb3(l->value.r * k, l->value.g * k, l->value.b * k);
+    }
 }
 
 /* Primary rays through pixel centres of a grid_w x grid_h image with the
@@ -64,8 +117,17 @@ static soak_status visible_hits(const soak_scene *s, const soak_advise_options *
             if (!found || hit.object_id >= (unsigned)s->n_objects) continue;
             const soak_object *obj = &s->objects[hit.object_id];
             if (obj->material < 0 || obj->material >= s->n_materials) continue;
-            double c = fabs(soak_v3_dot(ray.dir, hit.ns));
-            view_hit v = {fmin(fmax(c, 1e-3), 1.0), soak_scene_wetness(obj, hit.p, hit.u, hit.v)};
+            soak_vec3 n = soak_v3_dot(ray.dir, hit.ns) > 0 ? soak_v3_scale(hit.ns, -1) : hit.ns, t, b;
+            soak_v3_basis(n, &t, &b);
+            soak_vec3 to_eye = soak_v3_scale(ray.dir, -1);
+            view_hit v;
+            memset(&v, 0, sizeof v);
+            v.cos_o = fmin(fmax(soak_v3_dot(to_eye, n), 1e-3), 1.0);
+            v.wetness = soak_scene_wetness(obj, hit.p, hit.u, hit.v);
+            double sin_o = sqrt(fmax(0.0, 1 - v.cos_o * v.cos_o)), tx = soak_v3_dot(to_eye, t), ty = soak_v3_dot(to_eye, b);
+            double tl = sqrt(tx * tx + ty * ty);
+            v.wo = tl > 0 ? soak_v3(sin_o * tx / tl, sin_o * ty / tl, v.cos_o) : soak_v3(0, 0, 1);
+            hit_lights(s, hit.p, n, t, b, &v);
             if (!push_hit(&lists[obj->material], v)) return SOAK_ERR_NOMEM;
         }
     return SOAK_OK;
@@ -75,14 +137,15 @@ static soak_status visible_hits(const soak_scene *s, const soak_advise_options *
 static int pick(const hit_list *l, int max, int i) { return l->n <= max ? i : (int)((long)i * l->n / max); }
 
 /* Albedos of material m at the chosen hits, interleaved RGB. */
-static soak_status albedos(const soak_material *m, const hit_list *l, const soak_advise_options *o, double *val,
-                           double *var)
+static soak_status albedos(const soak_material *m, const hit_list *l, const soak_advise_options *o, soak_rgb env,
+                           double *val, double *var)
 {
     int n = l->n < o->max_hits ? l->n : o->max_hits;
     for (int i = 0; i < n; ++i) {
         const view_hit *h = &l->h[pick(l, o->max_hits, i)];
         soak_albedo_estimate e;
-        soak_status st = soak_material_albedo(m, h->wetness, h->cos_o, o->samples, o->seed + (uint64_t)i, 0, &e);
+        soak_status st = soak_material_radiance(m, h->wetness, h->wo, env, h->lights, h->n_lights, o->samples,
+                                                o->seed + (uint64_t)i, &e);
         if (st != SOAK_OK) return st;
         for (int ch = 0; ch < 3; ++ch) {
             val[3 * i + ch] = soak_rgb_at(e.value, ch);
@@ -131,7 +194,8 @@ static soak_status advise_material(soak_scene *s, int mi, const hit_list *l, dou
     double *buf = malloc(sizeof(double) * 12 * (size_t)n);
     if (!buf) return SOAK_ERR_NOMEM;
     double *ref = buf, *ref_var = buf + 3 * n, *val = buf + 6 * n, *var = buf + 9 * n;
-    soak_status st = albedos(&full, l, o, ref, ref_var);
+    soak_rgb env = env_mean(&s->env);
+    soak_status st = albedos(&full, l, o, env, ref, ref_var);
     a->full_ns = a->model_ns = shading_ns(&full, o->cost_rounds);
     size_t nm;
     const soak_model *models = soak_models(&nm);
@@ -141,9 +205,14 @@ static soak_status advise_material(soak_scene *s, int mi, const hit_list *l, dou
     for (size_t k = 0; k < nm && st == SOAK_OK; ++k) {
         s->materials[mi] = full;
         if (soak_scene_set_model(s, full.name, models[k].name, err, sizeof err) != SOAK_OK) continue;
-        if (albedos(&s->materials[mi], l, o, val, var) != SOAK_OK) continue;
+        if (albedos(&s->materials[mi], l, o, env, val, var) != SOAK_OK) continue;
         double e = rel_rms(ref, ref_var, val, var, 3 * n);
         double ns = shading_ns(&s->materials[mi], o->cost_rounds);
+        if (a->n_tried < SOAK_ADVISE_MAX_MODELS) {
+            a->tried[a->n_tried].model = &models[k];
+            a->tried[a->n_tried].error = e;
+            a->tried[a->n_tried++].ns = ns;
+        }
         if (e < best_err) {
             best_err = e;
             closest = &models[k];

@@ -37,6 +37,24 @@ int soak_accuracy_supported(const soak_material *m);
 soak_status soak_material_albedo(const soak_material *m, double wetness, double cos_o, int samples, uint64_t seed,
                                  int trace_films, soak_albedo_estimate *out);
 
+/* Light arriving at a shading point, in its local frame (normal +z). */
+typedef struct soak_local_light {
+    soak_vec3 wi;     /* unit, toward the light, wi.z > 0 */
+    soak_rgb irradiance; /* on a surface facing the light (W/m^2) */
+} soak_local_light;
+
+/* Radiance toward wo (local frame, wo.z > 0) of m at object wetness w under
+ * uniform environment radiance env plus the given lights (no shadows here:
+ * the caller leaves occluded lights out):
+ *     L = R(wo) env + sum_l f(wi_l, wo) cos(wi_l) E_l,
+ * R by Monte Carlo as soak_material_albedo (delta lobes reflect env), f by
+ * soak_bsdf_eval with the same dry/wet mixture. A traced film has no eval:
+ * its direct term uses R(wo) cos E / pi (a Lambertian stand-in). The
+ * one-bounce radiance under the scene's own lights, for soak/advise.h. */
+soak_status soak_material_radiance(const soak_material *m, double wetness, soak_vec3 wo, soak_rgb env,
+                                   const soak_local_light *lights, int n_lights, int samples, uint64_t seed,
+                                   soak_albedo_estimate *out);
+
 /* Cost of shading m once, as the renderer does per hit of the wet state
  * (dry when the material has none): eval_ns is soak_bsdf_eval_cost_ns
  * (RGB value and pdf, wall-clock CPU time, n_rounds rounds of 64 pairs);

@@ -25,6 +25,8 @@
 #include "soak/scene.h"
 #include "soak/status.h"
 
+#define SOAK_ADVISE_MAX_MODELS 32
+
 typedef struct soak_advise_options {
     int grid_w, grid_h; /* primary rays, [1, 1024] each (default 32 x 24) */
     int max_hits;       /* hits used per material, [1, 4096] (default 32) */
@@ -43,6 +45,11 @@ typedef struct soak_advice {
     double error;            /* predicted relative RMS error of the choice (0 when kept) */
     double full_ns, model_ns;/* one shading: eval + sample (ns); model_ns = full_ns when kept */
     char note[256];          /* why kept, or the runner-up */
+    int n_tried;             /* every model that accepted the material */
+    struct {
+        const soak_model *model;
+        double error, ns;
+    } tried[SOAK_ADVISE_MAX_MODELS];
 } soak_advice;
 
 /* One entry per material of the scene (emitters included, kept), in the
