@@ -847,7 +847,7 @@ static void sweep_wetness(tallies *ts, soak_rng *r, const soak_preset_db *db, in
         double pb = call_pbad(r);
         soak_preset p = *soak_presets_at(db, (int)(uni(r) * np));
         soak_liquid l = *soak_presets_liquid_at(db, (int)(uni(r) * nl));
-        int v = 1;
+        int v = 1, v_pl = 1;
         soak_wet_input in;
         in.wetness = arg(r, 0.0, 1.0, pb, &v);
         in.time = arg(r, -SOAK_WET_TIME_MAX, SOAK_WET_TIME_MAX, pb, &v);
@@ -858,14 +858,11 @@ static void sweep_wetness(tallies *ts, soak_rng *r, const soak_preset_db *db, in
         if (uni(r) < pb * 0.5) {
             double *fields[] = {&p.albedo.g, &p.ggx_alpha_wet, &l.ior, &l.sigma_a.b, &p.phase_wet.g1, &p.sigma_t.r};
             *fields[(int)(uni(r) * 6)] = NAN;
-            v = 0;
+            v = v_pl = 0;
         }
         soak_wet_params o;
         memset(&o, 0, sizeof o);
         soak_status st = soak_wetness_eval(&p, &l, &in, &o);
-        /* A NaN in a field this kind does not read (phase/sigma_t of a
-         * conductor) may pass: skip the acceptance check for those. */
-        int ignorable = p.kind == SOAK_KIND_CONDUCTOR && (p.phase_wet.g1 != p.phase_wet.g1 || p.sigma_t.r != p.sigma_t.r);
         int ok = 1;
         for (int c = 0; c < 3; ++c)
             ok = ok && in01(soak_rgb_at(o.albedo, c)) && in01(soak_rgb_at(o.albedo_total, c)) &&
@@ -874,8 +871,20 @@ static void sweep_wetness(tallies *ts, soak_rng *r, const soak_preset_db *db, in
         ok = ok && in01(o.progress) && in01(o.fill) && in01(o.film_coverage) && in01(o.liquid) &&
              rng_ok(o.ggx_alpha, 1e-4, 1.0) && rng_ok(o.mean_cosine, -1.0, 1.0) && in01(o.specular_weight) &&
              in01(o.water_specular_weight);
-        REC(ignorable ? "wetness_eval (ignored NaN)" : "wetness_eval", ignorable ? 1 : v,
-            ignorable && st != SOAK_OK ? SOAK_OK : st, st != SOAK_OK || ok);
+        /* a NaN also where the kind does not read it (a conductor's phase) is rejected */
+        REC("wetness_eval", v, st, ok);
+        if (i % 40 == 0) {
+            static soak_wet_params rows[17];
+            const int ns[] = {-1, 0, 1, 2, 3, 17, SOAK_WET_TABLE_MAX + 1};
+            int nr = ns[(int)(uni(r) * 7)], unused = 1;
+            double h = uni(r) < 0.3 ? -1.0 : arg(r, 0.0, SOAK_WET_FILM_MAX_M, pb, &unused); /* < 0: preset default */
+            int vt = nr >= 2 && nr <= SOAK_WET_TABLE_MAX && v_pl && fin(h) && h <= SOAK_WET_FILM_MAX_M;
+            soak_status st_t = soak_wetness_table(&p, &l, nr, h, rows);
+            int rows_ok = 1;
+            for (int k = 0; st_t == SOAK_OK && k < nr; ++k)
+                for (int c = 0; c < 3; ++c) rows_ok = rows_ok && in01(soak_rgb_at(rows[k].albedo, c));
+            REC("wetness_table", vt, st_t, rows_ok);
+        }
         if (st == SOAK_OK) {
             double a = soak_wet_interface_area(&o);
             REC("wet_interface_area", 1, SOAK_OK, in01(a));

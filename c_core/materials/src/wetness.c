@@ -34,6 +34,13 @@ static soak_status validate(const soak_preset *p, const soak_liquid *l, const so
     /* The preset and liquid come from the validated loader, but a caller may
      * build one by hand: check what the formulas rely on. */
     if ((int)p->kind < 0 || (int)p->kind > SOAK_KIND_THIN_SHEET) return SOAK_ERR_ARG;
+    /* Fields a kind does not read (a conductor's phase and medium, a
+     * non-porous kind's porosity) must still be numbers: NaN is a caller's
+     * error wherever it sits. */
+    const double any[] = {p->porosity, p->phase_dry.g1, p->phase_dry.g2, p->phase_dry.w, p->phase_wet.g1,
+                          p->phase_wet.g2, p->phase_wet.w, p->sigma_t.r, p->sigma_t.g, p->sigma_t.b};
+    for (size_t i = 0; i < sizeof any / sizeof any[0]; ++i)
+        if (!soak_is_finite(any[i])) return SOAK_ERR_ARG;
     if (!soak_in_range(l->ior, 1.0, 3.0)) return SOAK_ERR_ARG;
     if (!soak_in_range(p->ggx_alpha_dry, 1e-4, 1.0) || !soak_in_range(p->ggx_alpha_wet, 1e-4, 1.0)) return SOAK_ERR_ARG;
     for (int i = 0; i < 3; ++i) {
