@@ -3,7 +3,7 @@ property split, sub-panels, greyed buttons with their reason (poll
 messages), and the render settings the wet look needs."""
 import bpy
 
-from . import nodes
+from . import compat, nodes
 from .operators.wet import key_icon, osl_available
 from .properties import CONTROLS
 
@@ -29,7 +29,7 @@ def _engine_hints(layout, context, s):
             box.label(text="EEVEE reflects the film sharply only with", icon="INFO")
             box.label(text="Raytracing on (else light probes only):")
             box.prop(scene.eevee, "use_raytracing")
-    if engine.startswith("BLENDER_EEVEE") and not s.exact_lookups:
+    if engine.startswith("BLENDER_EEVEE") and not s.exact_lookups and not compat.exact_lookups_required():
         layout.label(text="EEVEE: turn on Exact lookups for the core's values", icon="INFO")
 
 
@@ -56,7 +56,12 @@ class SOAK_PT_wetness(bpy.types.Panel):
         col = layout.column()
         col.prop(s, "preset")
         col.prop(s, "liquid")
-        col.prop(s, "exact_lookups")
+        if compat.exact_lookups_required():
+            # 4.2+ always builds the exact path (compat.exact_lookups_required):
+            # the setting cannot change anything there, so say so.
+            col.label(text="Exact lookups: always on in Blender 4.2+", icon="CHECKBOX_HLT")
+        else:
+            col.prop(s, "exact_lookups")
         if gn is None:
             col.prop(s, "colour_source")
             col.prop(s, "wetness")
