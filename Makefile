@@ -5,7 +5,7 @@ BUILD      ?= build
 BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc)
 
-.PHONY: all deps build build-asan blender43 addon exports demo test test-release test-asan bench fuzz clean
+.PHONY: all deps build build-asan blender43 addon exports demo gallery test test-release test-asan bench fuzz clean
 
 all: build
 
@@ -38,6 +38,14 @@ demo: build addon
 	@$(BUILD)/bin/soak demo --out out/demo
 	@bash povray/render_scenes.sh $(BUILD)/bin/soak out/demo/povray full
 	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out out/demo/blender --soak $(BUILD)/bin/soak
+
+# The Blender gallery of blender_addon/README.md: the seed scenes of the physics
+# sources (scenes/blender/seeds.py), Cycles, 960x540, into blender_addon/images/
+# (gallery_*.png). About 30 minutes on two shared cores; `make demo` renders
+# the same scenes at 320x180.
+GALLERY_SAMPLES ?= 16
+gallery: build addon
+	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out blender_addon/images --prefix gallery_ --size 960x540 --samples $(GALLERY_SAMPLES) --soak $(BUILD)/bin/soak
 
 # Each pass lists the skipped tests with their reasons and fails when a test
 # failed, was skipped for want of povray or blender (the set-up installs
