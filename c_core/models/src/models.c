@@ -123,6 +123,10 @@ static soak_status film_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo
     const film_ctx *m = (const film_ctx *)c->bytes;
     return soak_film_brdf(&m->film, m->albedo, wi, wo, f);
 }
+static soak_status film_mirror(const soak_model_ctx *c, double cos_o, double *R)
+{
+    return soak_film_specular(&((const film_ctx *)c->bytes)->film, cos_o, R);
+}
 static soak_status film_ctx_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
 {
     const film_ctx *m = (const film_ctx *)c->bytes;
@@ -158,6 +162,16 @@ static soak_status ww_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, 
 {
     return soak_ww_eval(&((const ww_ctx *)c->bytes)->ww, wi, wo, f);
 }
+static soak_status ww_mirror(const soak_model_ctx *c, double cos_o, double *R)
+{
+    return soak_ww_specular(&((const ww_ctx *)c->bytes)->ww, cos_o, R);
+}
+/* The fast path's film top is Schlick's T12 = 1 - R (soak_ww_eval_triace):
+ * its mirror lobe takes the same R so that the two add to the same split. */
+static soak_status ww_triace_mirror(const soak_model_ctx *c, double cos_o, double *R)
+{
+    return soak_fresnel_schlick(cos_o, ((const ww_ctx *)c->bytes)->fast.r0_top, R);
+}
 static soak_status ww_triace_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
 {
     return soak_ww_eval_triace(&((const ww_ctx *)c->bytes)->fast, wi, wo, f);
@@ -192,6 +206,19 @@ static soak_status porous_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 
     const porous_ctx *m = (const porous_ctx *)c->bytes;
     return soak_porous_eval(&m->p, m->fill, wi, wo, f);
 }
+/* The porous samplers take the given direction first; the models are
+ * reciprocal, so sampling wi for wo is the same density. */
+static soak_status porous_sample(const soak_model_ctx *c, soak_vec3 wo, double u0, double u1, double u2,
+                                 soak_vec3 *wi, double *f, double *pdf)
+{
+    const porous_ctx *m = (const porous_ctx *)c->bytes;
+    return soak_porous_sample(&m->p, m->fill, wo, u0, u1, u2, wi, f, pdf);
+}
+static soak_status porous_pdf(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *pdf)
+{
+    const porous_ctx *m = (const porous_ctx *)c->bytes;
+    return soak_porous_pdf(&m->p, m->fill, wo, wi, pdf);
+}
 
 typedef struct { soak_porous_ggx g; double fill; } porous_ggx_ctx;
 static soak_status porous_ggx_setup(const soak_model_params *p, soak_model_ctx *c)
@@ -215,24 +242,35 @@ static soak_status porous_ggx_eval(const soak_model_ctx *c, soak_vec3 wi, soak_v
     const porous_ggx_ctx *m = (const porous_ggx_ctx *)c->bytes;
     return soak_porous_ggx_eval(&m->g, m->fill, wi, wo, f);
 }
+static soak_status porous_ggx_sample(const soak_model_ctx *c, soak_vec3 wo, double u0, double u1, double u2,
+                                     soak_vec3 *wi, double *f, double *pdf)
+{
+    const porous_ggx_ctx *m = (const porous_ggx_ctx *)c->bytes;
+    return soak_porous_ggx_sample(&m->g, m->fill, wo, u0, u1, u2, wi, f, pdf);
+}
+static soak_status porous_ggx_pdf(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *pdf)
+{
+    const porous_ggx_ctx *m = (const porous_ggx_ctx *)c->bytes;
+    return soak_porous_ggx_pdf(&m->g, m->fill, wo, wi, pdf);
+}
 
 static const soak_model models[] = {
-    {"lambert", "Lambertian base, albedo/pi", NULL, lambert_setup, lambert_eval},
+    {"lambert", "Lambertian base, albedo/pi", NULL, lambert_setup, lambert_eval, NULL, NULL, NULL},
     {"ggx-dielectric", "dry GGX microfacet specular of a dielectric (Walter et al. 2007)", NULL, ggx_setup,
-     ggx_dielectric_eval},
+     ggx_dielectric_eval, NULL, NULL, NULL},
     {"ggx-conductor", "dry GGX microfacet conductor with complex IOR (--ior n --k k)", NULL, ggx_setup,
-     ggx_conductor_eval},
+     ggx_conductor_eval, NULL, NULL, NULL},
     {"film", "Lekner-Dorf water film over Lambert, all interreflections (diffuse part; exact)", NULL, film_setup,
-     film_eval},
-    {"film-ctx", "the same film with its hemispherical averages precomputed once", "film", film_setup, film_ctx_eval},
+     film_eval, NULL, NULL, film_mirror},
+    {"film-ctx", "the same film with its hemispherical averages precomputed once", "film", film_setup, film_ctx_eval, NULL, NULL, film_mirror},
     {"ww", "Weidlich-Wilkie layered BRDF: smooth water over GGX dielectric (+Lambert) or conductor (non-delta part)",
-     NULL, ww_setup, ww_eval},
+     NULL, ww_setup, ww_eval, .mirror = ww_mirror},
     {"ww-triace", "Tri-Ace fast path of ww: F_bottom, linear absorption, no refraction", "ww", ww_triace_setup,
-     ww_triace_eval},
+     ww_triace_eval, .mirror = ww_triace_mirror},
     {"porous", "Merillou porous post-process with Hnat wetting on Blinn-Phong (seed 002)", NULL, porous_setup,
-     porous_eval},
+     porous_eval, porous_sample, porous_pdf, NULL},
     {"porous-ggx", "energy-conserving porous wetting on a GGX + Fresnel base", NULL, porous_ggx_setup,
-     porous_ggx_eval},
+     porous_ggx_eval, porous_ggx_sample, porous_ggx_pdf, NULL},
 };
 
 const soak_model *soak_models(size_t *count)

@@ -235,14 +235,19 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
     if (!j) return SOAK_ERR_NOMEM;
     j->ctx.scene = scene;
     j->ctx.max_depth = opt->max_depth > 0 ? opt->max_depth : scene->max_depth;
-    rt_film *films = calloc(scene->n_materials > 0 ? (size_t)scene->n_materials : 1, sizeof *films);
-    if (!films) {
+    rt_material_bsdf *bsdfs = calloc(scene->n_materials > 0 ? (size_t)scene->n_materials : 1, sizeof *bsdfs);
+    if (!bsdfs) {
         free(j);
         return SOAK_ERR_NOMEM;
     }
-    if (!opt->trace_films) rt_films_setup(scene, films); /* else every film is traced */
-    j->ctx.films = films;
-    soak_status st = rt_env_build(&j->ctx.env, &scene->env);
+    j->ctx.bsdfs = bsdfs;
+    soak_status st = rt_bsdfs_setup(scene, opt->trace_films, bsdfs, err, errlen);
+    if (st != SOAK_OK) {
+        free(bsdfs);
+        free(j);
+        return st;
+    }
+    st = rt_env_build(&j->ctx.env, &scene->env);
     if (st == SOAK_OK && scene->caustic_photons > 0) {
         /* Photons are traced before the render, from the same seed. */
         st = rt_photons_build(&j->ctx, scene->caustic_photons, scene->caustic_radius, opt->seed, opt->cancel,
@@ -251,7 +256,7 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
     }
     if (st != SOAK_OK) {
         rt_env_free(&j->ctx.env);
-        free(films);
+        free(bsdfs);
         free(j);
         return st;
     }
@@ -275,7 +280,7 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
     if (!j->pass_start) {
         rt_photons_free(&j->caustics);
         rt_env_free(&j->ctx.env);
-        free(films);
+        free(bsdfs);
         free(j);
         return SOAK_ERR_NOMEM;
     }
@@ -373,7 +378,7 @@ done:
     free(j->pass_start);
     free(args);
     free(th);
-    free(films);
+    free(bsdfs);
     free(j);
     return st;
 }

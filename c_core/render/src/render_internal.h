@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "soak/bsdf.h"
 #include "soak/film.h"
 #include "soak/geometry.h"
 #include "soak/hg.h"
@@ -49,18 +50,18 @@ typedef struct rt_env {
     double total;
 } rt_env;
 
-/* Closed-form Lekner-Dorf film over a Lambert base (soak/film.h), per channel,
- * set up once per material; ok = 0 where it does not apply. */
-typedef struct rt_film {
-    int ok;
-    soak_film_ctx ch[3];
-} rt_film;
+/* The BSDFs of one material (soak/bsdf.h), set up once per render: dry,
+ * and wet (chosen with probability wetness * film coverage) when has_wet. */
+typedef struct rt_material_bsdf {
+    soak_bsdf dry, wet;
+    int has_wet;
+} rt_material_bsdf;
 
 struct rt_photon_map;
 typedef struct rt_ctx {
     const soak_scene *scene;
     rt_env env;
-    const rt_film *films; /* one per material; NULL: every film is traced stochastically */
+    const rt_material_bsdf *bsdfs; /* one per material */
     int max_depth;
     const struct rt_photon_map *caustics; /* NULL: no caustic photons */
 } rt_ctx;
@@ -196,8 +197,10 @@ static inline double rt_rr_weight(const rt_path *p) { return rgb_max(p->beta) * 
 /* Handles the surface interaction at hit: gathers next-event estimates into
  * path->L, updates beta and sets the next ray (or alive = 0). */
 void rt_surface(rt_thread *t, const soak_hit *hit, rt_path *path);
-/* Sets up films[i] for every material (n_materials entries). */
-void rt_films_setup(const soak_scene *s, rt_film *films);
+/* Sets up bsdfs[i] for every material (n_materials entries); trace_films:
+ * films over Lambert traced bounce by bounce instead of their closed form.
+ * On failure err names the material. */
+soak_status rt_bsdfs_setup(const soak_scene *s, int trace_films, rt_material_bsdf *bsdfs, char *err, size_t errlen);
 
 /* The air | film | material layer stack of a wet surface. */
 typedef struct rt_stack {

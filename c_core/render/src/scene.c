@@ -520,8 +520,8 @@ static soak_status parse_object(scene_ctx *c, const cJSON *o, const char *p)
     const cJSON *w = cJSON_GetObjectItemCaseSensitive(o, "wetness");
     if (w) {
         sj_path(q, sizeof q, p, "wetness");
-        if (s->materials[mat].type != SOAK_MAT_WET)
-            return sj_fail(c, SOAK_ERR_ARG, q, "only objects with a \"wet\" material take a wetness");
+        if (s->materials[mat].type != SOAK_MAT_WET && s->materials[mat].type != SOAK_MAT_MODEL)
+            return sj_fail(c, SOAK_ERR_ARG, q, "only objects with a \"wet\" or model material take a wetness");
         st = scene_parse_wetness(c, w, q, &s->objects[s->n_objects - 1].wetness);
     }
     return st;

@@ -80,6 +80,184 @@ static soak_status parse_medium(scene_ctx *c, const cJSON *j, const char *path, 
     return st;
 }
 
+/* ---- Materials rendered through a model of soak_models() ----
+ * model_params describe a material in the models' terms (per channel): the
+ * dry albedo, base index, roughness, the liquid film and the pore fill.
+ * wet_albedo is the albedo of models that do not model pores themselves
+ * (the preset chain's darkened subsurface albedo; the albedo otherwise). */
+static void model_view_base(soak_material *m)
+{
+    for (int ch = 0; ch < 3; ++ch) {
+        soak_model_params *q = &m->model_params[ch];
+        soak_model_params_default(q);
+        q->albedo = 0.0;
+        q->n_film = 1.0;
+        q->absorption = 0.0;
+        q->thickness = 0.0;
+        q->fill = 0.0;
+    }
+    m->has_model_params = 1;
+}
+
+static void model_view_film(soak_material *m)
+{
+    for (int ch = 0; ch < 3; ++ch) {
+        soak_model_params *q = &m->model_params[ch];
+        q->n_film = m->film_ior;
+        q->absorption = soak_rgb_at(m->film_absorption, ch);
+        q->thickness = m->film_thickness;
+        q->fill = 1.0;
+    }
+}
+
+static void model_view_lambert(soak_material *m)
+{
+    model_view_base(m);
+    for (int ch = 0; ch < 3; ++ch) m->model_params[ch].albedo = soak_rgb_at(m->albedo, ch);
+    m->wet_albedo = m->albedo;
+}
+
+static void model_view_ggx(soak_material *m)
+{
+    model_view_base(m);
+    for (int ch = 0; ch < 3; ++ch) {
+        m->model_params[ch].ior = soak_rgb_at(m->eta, ch);
+        m->model_params[ch].k = soak_rgb_at(m->k, ch);
+        m->model_params[ch].roughness = m->alpha;
+    }
+    m->wet_albedo = soak_rgb3(0, 0, 0);
+}
+
+/* Preset at the chain's steady state: dry albedo and pores for the porous
+ * models, the chain's subsurface albedo for the others. */
+static void preset_model_view(const soak_preset *p, const soak_wet_params *w, double unit_mm, soak_material *m)
+{
+    model_view_base(m);
+    for (int ch = 0; ch < 3; ++ch) {
+        soak_model_params *q = &m->model_params[ch];
+        int conductor = p->kind == SOAK_KIND_CONDUCTOR;
+        q->albedo = conductor ? 0.0 : soak_rgb_at(p->albedo, ch);
+        q->ior = conductor ? soak_rgb_at(p->ior_n, ch) : p->ior;
+        q->k = conductor ? soak_rgb_at(p->ior_k, ch) : 0.0;
+        q->roughness = w->ggx_alpha;
+        q->n_film = w->film_ior;
+        q->absorption = soak_rgb_at(w->film_absorption_per_m, ch) * unit_mm / 1000.0;
+        q->thickness = w->film_coverage > 0 ? w->film_thickness_m * 1000.0 / unit_mm : 0.0;
+        q->porosity = p->porosity;
+        q->sp = p->s_p;
+        q->fill = w->fill;
+    }
+    m->wet_albedo = p->kind == SOAK_KIND_CONDUCTOR ? soak_rgb3(0, 0, 0) : w->albedo_subsurface;
+}
+
+/* Switches m to be rendered through `model`, from its model view (both
+ * states must pass the model's set-up); the object wetness then picks the
+ * model's wet state with probability wetness * film_coverage (coverage 1
+ * unless the film covers part of a preset's surface; the porous models'
+ * pores fill everywhere). */
+static soak_status material_use_model(soak_material *m, const soak_model *model)
+{
+    if (!m->has_model_params) return SOAK_ERR_UNSUPPORTED;
+    const soak_model *was = m->model;
+    m->model = model;
+    soak_model_params q[3];
+    soak_model_ctx ctx;
+    soak_status st = SOAK_OK;
+    for (int wet = 0; wet <= 1 && st == SOAK_OK; ++wet) {
+        const soak_model *md = soak_material_model(m, wet);
+        soak_material_model_params(m, wet, q);
+        for (int ch = 0; ch < 3 && st == SOAK_OK; ++ch) st = md ? md->setup(&q[ch], &ctx) : SOAK_ERR_NOT_FOUND;
+    }
+    if (st != SOAK_OK) {
+        m->model = was;
+        return st;
+    }
+    if (strncmp(model->name, "porous", 6) == 0 || m->type != SOAK_MAT_WET) m->film_coverage = 1.0;
+    m->type = SOAK_MAT_MODEL;
+    return SOAK_OK;
+}
+
+const soak_model *soak_material_model(const soak_material *m, int wet)
+{
+    if (!m->model || wet || !m->model->exact) return m->model;
+    return soak_model_find(m->model->exact);
+}
+
+void soak_material_model_params(const soak_material *m, int wet, soak_model_params out[3])
+{
+    int pores = m->model && strncmp(m->model->name, "porous", 6) == 0;
+    for (int ch = 0; ch < 3; ++ch) {
+        out[ch] = m->model_params[ch];
+        if (!pores) out[ch].albedo = soak_rgb_at(m->wet_albedo, ch);
+        if (wet) continue;
+        out[ch].n_film = 1.0;
+        out[ch].thickness = 0.0;
+        out[ch].fill = 0.0;
+    }
+}
+
+static soak_status use_model(scene_ctx *c, const char *path, const char *name, soak_material *m)
+{
+    const soak_model *model = soak_model_find(name);
+    if (!model) return sj_fail(c, SOAK_ERR_NOT_FOUND, path, "no model named '%s' (see `soak eval --list`)", name);
+    soak_status st = material_use_model(m, model);
+    if (st != SOAK_OK) return sj_fail(c, st, path, "the model '%s' rejects this material's parameters (%s)", name, soak_status_str(st));
+    return SOAK_OK;
+}
+
+/* A model material: {"type": "<model>", albedo, ior, k, roughness, film
+ * {ior, thickness, absorption}, porosity, sp, fill, ks, ks_water}. */
+static soak_status parse_model(scene_ctx *c, const cJSON *j, const char *path, const soak_model *model, soak_material *m)
+{
+    static const char *const keys[] = {"type", "albedo", "ior", "k", "roughness", "film", "porosity", "sp", "fill", "ks", "ks_water", NULL};
+    static const char *const fkeys[] = {"ior", "thickness", "absorption", NULL};
+    soak_model_params d;
+    soak_model_params_default(&d);
+    soak_rgb albedo, ior, k, absorption = soak_rgb3(0, 0, 0);
+    double rough, n_film = SOAK_WATER_IOR, thick = 0, por, sp, fill, ks, ksw;
+    soak_status st = sj_keys(c, j, path, keys);
+    if (st == SOAK_OK) st = sj_rgb(c, j, "albedo", path, 0, 1, 0, soak_rgb3(d.albedo, d.albedo, d.albedo), &albedo);
+    if (st == SOAK_OK) st = sj_rgb(c, j, "ior", path, SOAK_ETA_MIN, SOAK_ETA_MAX, 0, soak_rgb3(d.ior, d.ior, d.ior), &ior);
+    if (st == SOAK_OK) st = sj_rgb(c, j, "k", path, 0, SOAK_GGX_K_MAX, 0, soak_rgb3(0, 0, 0), &k);
+    if (st == SOAK_OK) st = sj_num(c, j, "roughness", path, SOAK_GGX_ALPHA_MIN, SOAK_GGX_ALPHA_MAX, 0, d.roughness, &rough);
+    if (st == SOAK_OK) st = sj_num(c, j, "porosity", path, 0, 1, 0, d.porosity, &por);
+    if (st == SOAK_OK) st = sj_num(c, j, "sp", path, 0, 1e3, 0, d.sp, &sp);
+    if (st == SOAK_OK) st = sj_num(c, j, "fill", path, 0, 1, 0, 1, &fill);
+    if (st == SOAK_OK) st = sj_num(c, j, "ks", path, 0, 1, 0, d.ks, &ks);
+    if (st == SOAK_OK) st = sj_num(c, j, "ks_water", path, 0, 1, 0, d.ks_water, &ksw);
+    const cJSON *film = cJSON_GetObjectItemCaseSensitive(j, "film");
+    if (st == SOAK_OK && film) {
+        char fp[320];
+        sj_path(fp, sizeof fp, path, "film");
+        st = sj_keys(c, film, fp, fkeys);
+        if (st == SOAK_OK) st = sj_num(c, film, "ior", fp, 1, 3, 0, SOAK_WATER_IOR, &n_film);
+        if (st == SOAK_OK) st = sj_num(c, film, "thickness", fp, 0, 1e3, 0, 0, &thick);
+        if (st == SOAK_OK) st = sj_rgb(c, film, "absorption", fp, 0, 1e9, 0, soak_rgb3(0, 0, 0), &absorption);
+    }
+    if (st != SOAK_OK) return st;
+    m->albedo = albedo;
+    m->film_ior = n_film;
+    m->film_thickness = thick;
+    m->film_absorption = absorption;
+    m->film_coverage = 1.0;
+    model_view_lambert(m);
+    model_view_film(m);
+    for (int ch = 0; ch < 3; ++ch) {
+        soak_model_params *q = &m->model_params[ch];
+        q->ior = soak_rgb_at(ior, ch);
+        q->k = soak_rgb_at(k, ch);
+        q->roughness = rough;
+        q->porosity = por;
+        q->sp = sp;
+        q->fill = fill;
+        q->ks = ks;
+        q->ks_water = ksw;
+    }
+    char tp[320];
+    sj_path(tp, sizeof tp, path, "type");
+    return use_model(c, tp, model->name, m);
+}
+
 static soak_status parse_ggx(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
 {
     soak_status st = sj_rgb(c, j, "eta", path, SOAK_ETA_MIN, SOAK_ETA_MAX, 1, soak_rgb3(1, 1, 1), &m->eta);
@@ -146,6 +324,9 @@ static soak_status parse_wet(scene_ctx *c, const cJSON *j, const char *path, soa
         medium_majorant(&m->dry_medium);
         m->has_dry = 1;
     }
+    if (m->base == SOAK_BASE_LAMBERT) model_view_lambert(m);
+    if (m->base == SOAK_BASE_GGX) model_view_ggx(m);
+    if (m->base != SOAK_BASE_MEDIUM) model_view_film(m);
     return SOAK_OK;
 }
 
@@ -153,14 +334,15 @@ static soak_status parse_wet(scene_ctx *c, const cJSON *j, const char *path, soa
  * coefficients are per mm; "unit_mm" is the scene length unit in mm. */
 static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
 {
-    static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", NULL};
-    const char *name, *liquid_name;
+    static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", NULL};
+    const char *name, *liquid_name, *model_name;
     double wet, unit_mm;
     soak_status st = sj_keys(c, j, path, keys);
     if (st == SOAK_OK) st = sj_str(c, j, "name", path, 1, &name);
     if (st == SOAK_OK) st = sj_num(c, j, "wetness", path, 0, 1, 0, 0, &wet);
     if (st == SOAK_OK) st = sj_str(c, j, "liquid", path, 0, &liquid_name);
     if (st == SOAK_OK) st = sj_num_gt(c, j, "unit_mm", path, 0, 1e9, 0, 1000, &unit_mm);
+    if (st == SOAK_OK) st = sj_str(c, j, "model", path, 0, &model_name);
     if (st != SOAK_OK) return st;
     char np[320], msg[1024];
     sj_path(np, sizeof np, path, "name");
@@ -184,6 +366,7 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     soak_material_kind kind = p->kind;
     double porosity = p->porosity, ior = p->ior;
     soak_rgb n = p->ior_n, k = p->ior_k;
+    if (st == SOAK_OK) preset_model_view(p, &w, unit_mm, m);
     soak_presets_free(db);
     if (st != SOAK_OK) return sj_fail(c, st, path, "wetness evaluation failed (%s)", soak_status_str(st));
     /* The chain's liquid-air interface (wetness.h step 5): the film over
@@ -227,7 +410,10 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
         m->medium.ior = ior;
         medium_majorant(&m->medium);
     }
-    return SOAK_OK;
+    if (!model_name) return SOAK_OK;
+    char mp[320];
+    sj_path(mp, sizeof mp, path, "model");
+    return use_model(c, mp, model_name, m);
 }
 
 soak_status scene_parse_material(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
@@ -240,6 +426,7 @@ soak_status scene_parse_material(scene_ctx *c, const cJSON *j, const char *path,
         m->type = SOAK_MAT_LAMBERT;
         st = sj_keys(c, j, path, keys);
         if (st == SOAK_OK) st = sj_rgb(c, j, "albedo", path, 0, 1, 1, soak_rgb3(0, 0, 0), &m->albedo);
+        if (st == SOAK_OK) model_view_lambert(m);
         return st;
     }
     if (strcmp(type, "dielectric") == 0) {
@@ -255,13 +442,16 @@ soak_status scene_parse_material(scene_ctx *c, const cJSON *j, const char *path,
         m->type = SOAK_MAT_CONDUCTOR;
         st = sj_keys(c, j, path, keys);
         if (st == SOAK_OK) st = parse_ggx(c, j, path, m);
+        if (st == SOAK_OK) model_view_ggx(m);
         return st;
     }
     if (strcmp(type, "wet") == 0) return parse_wet(c, j, path, m);
     if (strcmp(type, "preset") == 0) return parse_preset(c, j, path, m);
+    const soak_model *model = soak_model_find(type);
+    if (model) return parse_model(c, j, path, model, m);
     char tp[320];
     sj_path(tp, sizeof tp, path, "type");
-    return sj_fail(c, SOAK_ERR_PARSE, tp, "unknown material type '%s' (accepted: lambert, dielectric, conductor, wet, preset)",
+    return sj_fail(c, SOAK_ERR_PARSE, tp, "unknown material type '%s' (accepted: lambert, dielectric, conductor, wet, preset, or a model of `soak eval --list`: ww, ww-triace, porous, porous-ggx, ...)",
                    type);
 }
 
@@ -360,4 +550,21 @@ double soak_scene_wetness(const soak_object *obj, soak_vec3 p, double u, double 
     }
     }
     return x < 0 ? 0 : (x > 1 ? 1 : x);
+}
+
+soak_status soak_scene_set_model(soak_scene *scene, const char *material, const char *model, char *err, size_t errlen)
+{
+    if (!scene || !material || !model) return SOAK_ERR_NULL;
+    const soak_model *md = soak_model_find(model);
+    soak_material *m = NULL;
+    for (int i = 0; i < scene->n_materials; ++i)
+        if (scene->materials[i].type != SOAK_MAT_EMITTER && strcmp(scene->materials[i].name, material) == 0) m = &scene->materials[i];
+    soak_status st = !m || !md ? SOAK_ERR_NOT_FOUND : material_use_model(m, md);
+    if (st != SOAK_OK && err && errlen)
+        snprintf(err, errlen, "%s: material '%s' through model '%s': %s", scene->path, material, model,
+                 !m ? "no such material"
+                    : (!md ? "no such model"
+                           : (st == SOAK_ERR_UNSUPPORTED ? "no model describes it (dielectric, emitter or medium base)"
+                                                         : soak_status_str(st))));
+    return st;
 }

@@ -41,6 +41,17 @@ typedef struct soak_model {
     /* The model's own evaluation (its header's contract: both directions
      * strictly above the horizon). Call soak_model_eval instead. */
     soak_status (*eval)(const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo, double *f);
+    /* Optional (NULL when the model has none; soak/bsdf.h then samples a
+     * cosine + GGX mixture). The model's own importance sampling: given wo
+     * and u0, u1, u2 in [0, 1], a direction wi with f = eval(wi, wo) and its
+     * solid-angle density; pdf = 0 means no sample. pdf() gives the same
+     * density for a given pair. */
+    soak_status (*sample)(const soak_model_ctx *ctx, soak_vec3 wo, double u0, double u1, double u2, soak_vec3 *wi,
+                          double *f, double *pdf);
+    soak_status (*pdf)(const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo, double *pdf);
+    /* Optional: reflectance of the model's delta (mirror) lobe at cos_o,
+     * which eval leaves out (ww's film top). NULL: no delta lobe. */
+    soak_status (*mirror)(const soak_model_ctx *ctx, double cos_o, double *R);
 } soak_model;
 
 const soak_model *soak_models(size_t *count);

@@ -16,6 +16,7 @@
 #include "soak/geometry.h"
 #include "soak/hg.h"
 #include "soak/image.h"
+#include "soak/models.h"
 #include "soak/status.h"
 #include "soak/vec.h"
 
@@ -71,7 +72,8 @@ typedef enum soak_material_type {
     SOAK_MAT_DIELECTRIC,
     SOAK_MAT_CONDUCTOR,
     SOAK_MAT_WET,
-    SOAK_MAT_EMITTER /* sphere lights */
+    SOAK_MAT_EMITTER, /* sphere lights */
+    SOAK_MAT_MODEL    /* an entry of soak_models() (ww, ww-triace, porous, porous-ggx, ...) */
 } soak_material_type;
 
 typedef enum soak_base_type { SOAK_BASE_LAMBERT = 0, SOAK_BASE_GGX, SOAK_BASE_MEDIUM } soak_base_type;
@@ -98,6 +100,15 @@ typedef struct soak_material {
     soak_scene_medium dry_medium; /* base medium where the object is dry */
     int has_dry;
     soak_rgb radiance; /* emitter */
+    /* model: the wet state (per channel); the dry state is the same with
+     * n_film 1, thickness 0 and fill 0. Every lambert, conductor, wet
+     * (lambert or ggx base) and preset material also fills model_params with
+     * its own description, so that soak_scene_set_model can render it
+     * through any model. */
+    const soak_model *model;
+    soak_model_params model_params[3];
+    soak_rgb wet_albedo; /* albedo for models that do not model pores */
+    int has_model_params;
 } soak_material;
 
 typedef enum soak_wetness_type {
@@ -145,6 +156,23 @@ soak_status soak_scene_load(const char *path, soak_scene *scene, char *err, size
 soak_status soak_scene_parse(const char *text, const char *name, const char *base_dir, soak_scene *scene, char *err,
                              size_t errlen);
 void soak_scene_free(soak_scene *scene);
+
+/* Renders material `material` (by name) through the model `model` (a name
+ * of soak_models()) from its own description (model_params): the hook for
+ * comparing models on one scene. Fails (message in err) for an unknown
+ * material or model, a material without a model view (dielectric, emitter,
+ * medium base) or parameters the model rejects. */
+soak_status soak_scene_set_model(soak_scene *scene, const char *material, const char *model, char *err, size_t errlen);
+
+/* The parameters a model material is rendered with, per channel: the wet
+ * state, or (wet = 0) the dry one (no film, no pore water). The porous
+ * models take the dry albedo (they darken it themselves), the others
+ * wet_albedo. */
+void soak_material_model_params(const soak_material *m, int wet, soak_model_params out[3]);
+/* The model of the wet state (m->model) or of the dry one: a fast path's
+ * exact peer (without liquid a fast path approximates nothing, and Tri-Ace
+ * accepts water-like film indices only). */
+const soak_model *soak_material_model(const soak_material *m, int wet);
 
 /* Wetness in [0,1] of object at a hit (position and uv). */
 double soak_scene_wetness(const soak_object *obj, soak_vec3 p, double u, double v);

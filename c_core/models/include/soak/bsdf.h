@@ -1,0 +1,147 @@
+/* One BSDF interface over every reflectance model, for the path tracer and
+ * for tests and tools that compare models: set-up once (parameters
+ * sanitised there), then eval / sample / pdf per shading point, RGB-valued.
+ * Modelled on Cycles' closure files (setup, eval, sample) and pbrt-v4's
+ * BxDFs (f, Sample_f, PDF, Flags; CoatedDiffuse / CoatedConductor for the
+ * film as a layer over a base).
+ *
+ * Conventions: unit directions in the local shading frame, normal +z; wo
+ * points to the viewer, wi to the light. f is in 1/sr without the cosine;
+ * pdf is the solid-angle density of sample() producing wi for this wo
+ * (delta lobes excluded: eval and pdf describe the non-delta part). RGB
+ * models that the library defines per channel (soak/models.h) are set up
+ * once per channel.
+ *
+ * Kinds (adaptor files bsdf_<kind>.c):
+ *   LAMBERT         albedo / pi                                  diffuse
+ *   GGX_CONDUCTOR   Walter et al. 2007 with complex index (soak/ggx.h) glossy
+ *   GGX_DIELECTRIC  the same, reflection only, real index       glossy
+ *   GLASS           smooth dielectric, reflection + refraction  delta, two-sided
+ *   MODEL           an entry of soak_models() (ww, ww-triace, porous,
+ *                   porous-ggx, ...): eval per channel; sampled by the
+ *                   model's own sampler (of the green channel) when it has
+ *                   one, else a one-sample mixture of a cosine lobe and GGX
+ *                   visible normals at the model's roughness; a model's
+ *                   mirror lobe (ww's film top) is the delta lobe.
+ * A film (film_ior > 1) makes a LAMBERT / GGX base a layered BSDF: smooth
+ * liquid of index n2 and Beer-Lambert absorption over the base, with every
+ * interreflection between base and film underside (seed 000 sec. 2.1 / 3.1,
+ * Lekner & Dorf 1988):
+ *   - closed form over LAMBERT (soak/film.h): a delta mirror lobe of
+ *     reflectance F12(cos_o) plus the diffuse Lekner-Dorf BSDF; eval / sample
+ *     / pdf as for any BSDF;
+ *   - traced over any other base, or when desc.film_traced: flags contain
+ *     SOAK_BSDF_WALK and the caller follows the light through the film with
+ *     soak_bsdf_walk_* (a random walk, so no closed-form eval).
+ *
+ * Set-up clamps (documented, the only ones): GGX alpha below
+ * SOAK_GGX_ALPHA_MIN is raised to it (a narrower lobe is a mirror that
+ * double precision cannot resolve); everything else outside its range, NaN
+ * or Inf is rejected with SOAK_ERR_ARG. eval/sample/pdf never return
+ * NaN/Inf with SOAK_OK. */
+#ifndef SOAK_BSDF_H
+#define SOAK_BSDF_H
+
+#include "soak/film.h"
+#include "soak/models.h"
+#include "soak/status.h"
+#include "soak/vec.h"
+
+typedef enum soak_bsdf_flags {
+    SOAK_BSDF_DIFFUSE = 1,
+    SOAK_BSDF_GLOSSY = 2,
+    SOAK_BSDF_DELTA = 4,    /* has a delta lobe (mirror or refraction) */
+    SOAK_BSDF_TRANSMIT = 8, /* can send light through the surface (glass) */
+    SOAK_BSDF_WALK = 16     /* traced layer: use soak_bsdf_walk_* */
+} soak_bsdf_flags;
+
+typedef enum soak_bsdf_kind {
+    SOAK_BSDF_LAMBERT = 0,
+    SOAK_BSDF_GGX_CONDUCTOR,
+    SOAK_BSDF_GGX_DIELECTRIC,
+    SOAK_BSDF_GLASS,
+    SOAK_BSDF_MODEL
+} soak_bsdf_kind;
+
+/* What set-up reads; fields a kind does not use are ignored. */
+typedef struct soak_bsdf_desc {
+    soak_bsdf_kind kind;
+    soak_rgb albedo;   /* LAMBERT, [0, 1] */
+    soak_rgb eta, k;   /* GGX: index relative to air; k = 0 for GGX_DIELECTRIC */
+    double alpha;      /* GGX width, (0, 1]; below SOAK_GGX_ALPHA_MIN raised to it */
+    double ior;        /* GLASS, [1, 3] */
+    const soak_model *model;      /* MODEL */
+    soak_model_params params[3];  /* MODEL, per channel */
+    double film_ior;   /* [1, 3]; 1 = no film */
+    soak_rgb film_absorption; /* 1/length, [0, 1e9] */
+    double film_thickness;    /* length, [0, 1e3] */
+    int film_traced;   /* 1: walk through the film even over Lambert */
+} soak_bsdf_desc;
+
+/* A desc of the given kind with neutral values (no film, alpha 0.1, ior 1.5). */
+void soak_bsdf_desc_default(soak_bsdf_desc *d, soak_bsdf_kind kind);
+
+typedef struct soak_bsdf {
+    soak_bsdf_desc d;   /* sanitised copy; GGX eta, k are relative to the film */
+    int flags;
+    int closed_film;    /* Lekner-Dorf closed form over Lambert */
+    soak_film_ctx film[3];
+    soak_model_ctx model[3];
+} soak_bsdf;
+
+typedef struct soak_bsdf_sample {
+    soak_vec3 wi;
+    soak_rgb weight; /* f cos / pdf (delta: the lobe's reflectance / its probability) */
+    double pdf;      /* solid angle; 0 for a delta lobe */
+    int delta;       /* 1: wi is a delta direction (no MIS) */
+    double eta;      /* GLASS refraction: n_t / n_i crossed; 1 otherwise */
+} soak_bsdf_sample;
+
+soak_status soak_bsdf_setup(const soak_bsdf_desc *d, soak_bsdf *b);
+int soak_bsdf_get_flags(const soak_bsdf *b);
+
+/* Non-delta part: f (1/sr, per channel) and the pdf of sampling wi for wo.
+ * Either output may be NULL. Pairs with wi.z <= 0 or wo.z <= 0 give 0 (for
+ * GLASS always 0). Not for WALK BSDFs (SOAK_ERR_UNSUPPORTED). */
+soak_status soak_bsdf_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
+soak_status soak_bsdf_pdf(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, double *pdf);
+/* Samples wi for wo with u[0..2] in [0, 1). Returns SOAK_OK with *ok = 0
+ * when no direction results (below the horizon): the path ends. GLASS
+ * accepts wo on either side (wo.z < 0: from inside). */
+soak_status soak_bsdf_sample_dir(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s, int *ok);
+
+/* ---- Traced layer (SOAK_BSDF_WALK) ----
+ * The walk follows one light path through the film: start() plays the
+ * Fresnel choice at the film top (a mirror reflection ends the walk), then
+ * every step() samples the base and plays the underside's Fresnel choice
+ * (exit into air, or back down: total internal reflection included). Before
+ * each step the caller may estimate direct light at the base with light():
+ * contribution = beta * f * L * cos_air / pdf_light, pdf for MIS in air
+ * solid angle. Weights carry the film's absorption; the 1/n^2 radiance
+ * factors cancel between entering and leaving and are left out of beta
+ * (light() includes the one for light arriving inside). */
+typedef struct soak_bsdf_walk {
+    soak_vec3 up; /* direction of the light leaving the base toward wo (in the film) */
+} soak_bsdf_walk;
+
+typedef enum soak_walk_event { SOAK_WALK_EXIT = 0, SOAK_WALK_BOUNCE, SOAK_WALK_DEAD } soak_walk_event;
+
+/* u: one number for the Fresnel choice. Returns SOAK_WALK_EXIT with s (the
+ * mirror direction, delta) or SOAK_WALK_BOUNCE with *weight (absorption
+ * down). */
+soak_walk_event soak_bsdf_walk_start(const soak_bsdf *b, soak_vec3 wo, double u, soak_bsdf_walk *w,
+                                     soak_bsdf_sample *s, soak_rgb *weight);
+/* Light arriving from wi (air, wi.z > 0) scattered by the base toward w->up. */
+void soak_bsdf_walk_light(const soak_bsdf *b, const soak_bsdf_walk *w, soak_vec3 wi, soak_rgb *f, double *pdf);
+/* u[0..3]: base sample (3) and the underside's Fresnel choice (u[3]). EXIT:
+ * s holds the direction in air, weight and pdf (air solid angle); BOUNCE:
+ * *weight to multiply into beta and the walk goes on; DEAD: the path ends. */
+soak_walk_event soak_bsdf_walk_step(const soak_bsdf *b, soak_bsdf_walk *w, const double u[4], soak_bsdf_sample *s,
+                                    soak_rgb *weight);
+
+/* ---- Cost ----
+ * Mean CPU time of one eval (RGB, value and pdf) over a fixed set of 64
+ * direction pairs, repeated n_rounds times; for reports, never for tests. */
+soak_status soak_bsdf_eval_cost_ns(const soak_bsdf *b, int n_rounds, double *ns);
+
+#endif

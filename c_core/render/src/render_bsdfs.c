@@ -1,0 +1,64 @@
+/* Scene materials to BSDFs (soak/bsdf.h), once per render. */
+#include <stdio.h>
+
+#include "render_internal.h"
+
+static void base_desc(const soak_material *m, soak_bsdf_desc *d)
+{
+    if (m->type == SOAK_MAT_LAMBERT || (m->type == SOAK_MAT_WET && m->base == SOAK_BASE_LAMBERT)) {
+        soak_bsdf_desc_default(d, SOAK_BSDF_LAMBERT);
+        d->albedo = m->albedo;
+    } else if (m->type == SOAK_MAT_DIELECTRIC) {
+        soak_bsdf_desc_default(d, SOAK_BSDF_GLASS);
+        d->ior = m->ior;
+    } else if (m->type == SOAK_MAT_CONDUCTOR || (m->type == SOAK_MAT_WET && m->base == SOAK_BASE_GGX)) {
+        soak_bsdf_desc_default(d, SOAK_BSDF_GGX_CONDUCTOR);
+        d->eta = m->eta;
+        d->k = m->k;
+        d->alpha = m->alpha;
+    } else {
+        soak_bsdf_desc_default(d, SOAK_BSDF_LAMBERT); /* emitters, media: never shaded here */
+        d->albedo = soak_rgb3(0, 0, 0);
+    }
+}
+
+static void model_desc(const soak_material *m, int wet, soak_bsdf_desc *d)
+{
+    soak_bsdf_desc_default(d, SOAK_BSDF_MODEL);
+    d->model = soak_material_model(m, wet);
+    soak_material_model_params(m, wet, d->params);
+}
+
+static soak_status material_setup(const soak_material *m, int trace_films, rt_material_bsdf *out)
+{
+    soak_bsdf_desc d;
+    if (m->type == SOAK_MAT_MODEL) {
+        model_desc(m, 0, &d);
+        soak_status st = soak_bsdf_setup(&d, &out->dry);
+        model_desc(m, 1, &d);
+        if (st == SOAK_OK) st = soak_bsdf_setup(&d, &out->wet);
+        out->has_wet = 1;
+        return st;
+    }
+    base_desc(m, &d);
+    soak_status st = soak_bsdf_setup(&d, &out->dry);
+    if (st != SOAK_OK || m->type != SOAK_MAT_WET || m->base == SOAK_BASE_MEDIUM) return st;
+    d.film_ior = m->film_ior;
+    d.film_absorption = m->film_absorption;
+    d.film_thickness = m->film_thickness;
+    d.film_traced = trace_films;
+    out->has_wet = 1;
+    return soak_bsdf_setup(&d, &out->wet);
+}
+
+soak_status rt_bsdfs_setup(const soak_scene *s, int trace_films, rt_material_bsdf *bsdfs, char *err, size_t errlen)
+{
+    for (int i = 0; i < s->n_materials; ++i) {
+        soak_status st = material_setup(&s->materials[i], trace_films, &bsdfs[i]);
+        if (st != SOAK_OK) {
+            if (err && errlen) snprintf(err, errlen, "material '%s': BSDF set-up failed (%s)", s->materials[i].name, soak_status_str(st));
+            return st;
+        }
+    }
+    return SOAK_OK;
+}
