@@ -45,7 +45,7 @@ demo: build addon
 # the same scenes at 320x180.
 GALLERY_SAMPLES ?= 16
 gallery: build addon
-	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out blender_addon/images --prefix gallery_ --size 960x540 --samples $(GALLERY_SAMPLES) --soak $(BUILD)/bin/soak
+	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out blender_addon/images --prefix gallery_ --size 960x540 --samples $(GALLERY_SAMPLES) --max-kb 400 --soak $(BUILD)/bin/soak
 
 # Each pass lists the skipped tests with their reasons and fails when a test
 # failed, was skipped for want of povray or blender (the set-up installs

@@ -607,7 +607,7 @@ def build_bricks_drying():
     del mat
     _sky(sc)
     _sun(sc, 30, 255, strength=3.0, angle=1.0)
-    _camera(sc, (1.3, -3.1, 1.15), (0.0, 0.0, 0.85), lens=50)
+    _camera(sc, (0.8, -2.0, 1.05), (0.0, 0.0, 0.9), lens=50)
     return [("bricks_drying", [1, 14, 27, 40])]
 
 
