@@ -4,9 +4,13 @@
 # diffuse 1), same settings, interleaved, wall time (min and median of REPEAT): povray's
 # CPU time is not reported to /usr/bin/time on this build.
 # usage: c_core/bench/bench_povray.sh [REPEAT] > c_core/bench/results/YYYY-MM-DD-povray.md
+# env: SCENES (names without .pov; default all seed scenes), POVRAY_LIB (soak.inc's folder,
+# default povray/: point it at an older copy to compare versions)
 set -eu
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 REPEAT=${1:-1}
+LIB=${POVRAY_LIB:-$ROOT/povray}
+SCENES=${SCENES:-wet_paper beach_rock bricks_drying flowerpot_porosity film_copper gauze_media marble_subsurface}
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 # plain variant: every Soak material/texture macro call becomes a plain texture
@@ -28,7 +32,7 @@ cp "$ROOT"/scenes/povray/*.pov "$TMP/"
 for f in "$TMP"/*.pov; do sed 's|#include "soak.inc"|#include "plain.inc"|' "$f" > "${f%.pov}_plain.pov"; done
 W=640 H=480
 cpu() {
-  /usr/bin/time -o "$TMP/t" -f "%e" povray "+I$1" "+O$TMP/o.png" +W$W +H$H -D -V +WT1 "+L$ROOT/povray" "+L$TMP" \
+  /usr/bin/time -o "$TMP/t" -f "%e" povray "+I$1" "+O$TMP/o.png" +W$W +H$H -D -V +WT1 "+L$LIB" "+L$TMP" \
     +A0.3 Declare=Use_Map=0 >"$TMP/log" 2>&1 || { echo "povray $1 failed" >&2; tail -5 "$TMP/log" >&2; exit 1; }
   awk '{print $1}' "$TMP/t"
 }
@@ -37,7 +41,7 @@ echo
 echo "| scene | plain min (s) | wet min (s) | overhead (min) | plain median (s) | wet median (s) | overhead (median) |"
 echo "|---|---|---|---|---|---|---|"
 stats() { sort -g | awk '{v[NR] = $1} END {m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2; print v[1], m}'; }
-for s in wet_paper beach_rock bricks_drying flowerpot_porosity film_copper gauze_media marble_subsurface; do
+for s in $SCENES; do
   : > "$TMP/plain.t"; : > "$TMP/wet.t"
   for r in $(seq "$REPEAT"); do
     cpu "$TMP/${s}_plain.pov" >> "$TMP/plain.t"; cpu "$TMP/$s.pov" >> "$TMP/wet.t"

@@ -8,7 +8,7 @@ thin sheets from behind. Per patch: mean radiance over the patch's central
 region, and the wet/dry ratio; both are compared within the error budget
 derived in povray/README.md ("Measured error").
 
-usage: flat_ground.py SOAK ROOT TMPDIR [--spp N] [--report]
+usage: flat_ground.py SOAK ROOT TMPDIR [--spp N] [--report] [--highlights] [--liquid NAME]
 """
 import json
 import os
@@ -66,8 +66,8 @@ def layered_material(exp, name, w):
     area (1 - c) a, a = water_specular_weight (zero-thickness pore water; a clear
     liquid's film thickness does not matter for water's absorption)."""
     m = next(m for m in exp["materials"] if m["name"] == name)
-    liq = next(l for l in exp["liquids"] if l["name"] == "water")
-    k = m["liquids"]["water"]["knots"]
+    liq = next(l for l in exp["liquids"] if l["name"] == LIQUID)
+    k = m["liquids"][LIQUID]["knots"]
     i = k["wetness"].index(w)
     unit_m = UNIT_MM / 1000.0
     film = {"ior": liq["ior"], "thickness": m["film_thickness_m"] / unit_m,
@@ -91,7 +91,7 @@ def json_scene(items, sun_dir, sky, depth, spp, exp=None):
     mats, objs = {}, []
     for i, ((name, w), (x0, y0)) in enumerate(zip(items, cells)):
         key = f"m{i}"
-        mats[key] = {"type": "preset", "name": name, "wetness": w, "liquid": "water", "unit_mm": UNIT_MM}
+        mats[key] = {"type": "preset", "name": name, "wetness": w, "liquid": LIQUID, "unit_mm": UNIT_MM}
         if exp is not None:
             mats[key] = layered_material(exp, name, w) or mats[key]
         objs.append({"type": "box", "min": [x0, y0, -depth], "max": [x0 + PATCH, y0 + PATCH, 0.0], "material": key})
@@ -107,6 +107,10 @@ def json_scene(items, sun_dir, sky, depth, spp, exp=None):
     return scene
 
 
+LIQUID = "water"  # --liquid NAME: another liquid, reported (budget terms for absorption: issue 23, open)
+HIGHLIGHTS = 0  # --highlights: soak.inc's default (1), reported; the reference has no rough dielectric lobe
+
+
 def pov_scene(items, sun_dir, sky, depth, sheet=False):
     cells, span = layout(len(items))
     h, fov = camera(span)
@@ -115,7 +119,7 @@ def pov_scene(items, sun_dir, sky, depth, sheet=False):
         "#version 3.7;",
         "global_settings { assumed_gamma 1.0 ambient_light 1 max_trace_level 8 }",
         f"#declare Soak_Ambient = {sky};",
-        "#declare Soak_Highlights = 0; // the reference has no rough dielectric lobe",
+        f"#declare Soak_Highlights = {HIGHLIGHTS}; // the reference has no rough dielectric lobe",
         '#include "soak.inc"',
         # soak render: right-handed, z up, looking down -z with up +y, +x to the right.
         f"camera {{ perspective location <0,0,{h}> look_at <0,0,0> sky <0,1,0> right -x up y angle {fov} }}",
@@ -125,7 +129,7 @@ def pov_scene(items, sun_dir, sky, depth, sheet=False):
     ]
     for (name, w), (x0, y0) in zip(items, cells):
         lines.append(f'box {{ <{x0},{y0},{-depth}>, <{x0 + PATCH},{y0 + PATCH},0> '
-                     f'Soak_Wet_Material("{name}", "water", {w}){" no_shadow" if sheet else ""} }}')
+                     f'Soak_Wet_Material("{name}", "{LIQUID}", {w}){" no_shadow" if sheet else ""} }}')
     return "\n".join(lines) + "\n"
 
 
@@ -168,7 +172,7 @@ def wetness_levels(exp, patches):
     out = []
     for name, w in patches:
         m = next(m for m in exp["materials"] if m["name"] == name)
-        knots = m["liquids"]["water"]["knots"]["wetness"]
+        knots = m["liquids"][LIQUID]["knots"]["wetness"]
         out.append((name, min(knots, key=lambda k: abs(k - w))))
     return out
 
@@ -200,8 +204,11 @@ def main():
     soak, root, tmp, _ = setup_args(__doc__)
     spp = int(sys.argv[sys.argv.index("--spp") + 1]) if "--spp" in sys.argv else 16
     report = "--report" in sys.argv
+    global HIGHLIGHTS, LIQUID
+    HIGHLIGHTS = int("--highlights" in sys.argv)
+    LIQUID = sys.argv[sys.argv.index("--liquid") + 1] if "--liquid" in sys.argv else "water"
     exp = export_json(soak, tmp)
-    n_water = next(l for l in exp["liquids"] if l["name"] == "water")["ior"]
+    n_water = next(l for l in exp["liquids"] if l["name"] == LIQUID)["ior"]
     patches = wetness_levels(exp, PATCHES)
     rows = []
 
@@ -211,7 +218,7 @@ def main():
 
     def coverage(name, w):
         m = next(m for m in exp["materials"] if m["name"] == name)
-        k = m["liquids"]["water"]["knots"]
+        k = m["liquids"][LIQUID]["knots"]
         i = k["wetness"].index(w)
         return k["film_coverage"][i] + (1 - k["film_coverage"][i]) * k["water_specular_weight"][i]
 
@@ -280,6 +287,9 @@ def main():
     bad += not ok
     print(f"ratio backlit paper w {w1:.3f}/{w0:.3f}: soak {r1 / max(r0, 1e-9):.2f} povray {p1 / max(p0, 1e-9):.2f} "
           f"(wet brighter in both: {'ok' if ok else 'FAIL'})")
+    if bad and (HIGHLIGHTS or LIQUID != "water"):
+        print(f"{bad} comparisons outside the budget (--highlights / --liquid: reported, not asserted)")
+        return
     if bad:
         fail(f"{bad} comparisons outside their error budget")
     print("PASS")

@@ -54,6 +54,11 @@ BAD = [  # (snippet, the argument the message must name)
      "Phase_Wetness = 2"),
     ('object { Soak_Sheet_Object("cotton", "water", 0.5, 0) }', "Thickness_mm = 0"),
     ('#declare F = Soak_Df3_Fn("x.df3", <0, 4, 4>, 1)', "Dims = <0"),
+    # placement and drying maps (the checks run before the file is opened)
+    ('#declare F = Soak_Map_Placed_Fn("m.png", transform { }, 3, 0)', "Map_Type = 3"),
+    ('#declare F = Soak_Map_Placed_Fn("m.png", transform { }, 0, 2)', "Tile = 2"),
+    ('#declare F = Soak_Drying_Map_Fn("s.png", 1.5, 0.5)', "T_Fill = 1.5"),
+    ('#declare F = Soak_Drying_Map_Fn("s.png", -0.1, 0.5)', "T_Fill = -0.1"),
     ('#declare Soak_Media_Lobes_Max = 1;\n'
      'box { 0, 1 hollow Soak_Clear_Texture() interior { Soak_Media_Raw(1, 0, 0, 0, 1) } }', "Soak_Media_Lobes_Max = 1"),
 ]
@@ -92,6 +97,10 @@ WARN = [
     ('#declare W = function { x }\nbox { <0,0,-1>, <1,1,0> texture { pigment { rgb 0.5 } '
      'Soak_Spill_Normal(W, 3) } }', "very strong bump"),
     ('object { Soak_Sheet_Object("paper", "water", 1, 0.8) }', "media scatter once"),
+    ('box { <0,0,-1>, <1,1,0> Soak_Wet_User_Material("clay", "water", 0.5, pigment { rgb <1.2, 0.5, 0.5> }) }',
+     "User_Pigment has channels from 0.5000 to 1.2000"),
+    ('box { <0,0,-1>, <1,1,0> Soak_Wet_User_Material("clay", "water", 0.5, '
+     'pigment { gradient x color_map { [0 rgb -0.2] [1 rgb 0.5] } }) }', "User_Pigment has channels from -0.2000"),
 ]
 
 
@@ -261,6 +270,24 @@ sphere { <1.5, 1, 0>, 0.6 Soak_Wet_User_Subsurface_Material("marble", "water", 1
     ok = rc == 0 and np.all(np.isfinite(img)) and img.min() >= 0
     bad += not ok
     print(f"{'ok  ' if ok else 'FAIL'} subsurface: every preset with a medium x liquid x wetness edge renders finite (exit {rc})")
+    # A user pigment's transmit is kept: over a background B, the pixel is (1 - T) x the opaque
+    # pixel + T x B (POV-Ray's transmit), highlights off, a flat polygon (no interior).
+    px = {}
+    for t in (0.0, 0.5):
+        body = (  # highlights off: the identity is about the diffuse and ambient terms
+            "#declare Soak_Highlights = 0;\n"
+            f'polygon {{ 5, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0>, <0,0,0> Soak_Wet_User_Texture("clay", "water", 0.6, '
+            f'pigment {{ rgb <0.6, 0.4, 0.3> transmit {t} }}) }}')
+        rc, log, out = render(tmp, lib, f"transmit{t}", body, size=8)
+        if rc != 0:
+            fail(f"transmit {t}: exit {rc}\n{log[-800:]}")
+        px[t] = read_image(out)[4, 4]
+    back = np.array([0.2, 0.2, 0.2])  # HEAD's sky_sphere
+    want = 0.5 * px[0.0] + 0.5 * back
+    ok = bool(np.all(np.abs(px[0.5] - want) <= 2e-3 + 1e-3 * want))
+    bad += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} user pigment transmit 0.5: {np.round(px[0.5], 4)} vs 0.5 x opaque + 0.5 x sky "
+          f"{np.round(want, 4)}")
     if bad:
         fail(f"{bad} guard checks failed")
     print("PASS")
