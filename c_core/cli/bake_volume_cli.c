@@ -6,6 +6,7 @@
 
 #include "bake_cli.h"
 #include "cli.h"
+#include "soak/io_guard.h"
 #include "soak/staged.h"
 #include "soak/bake_volume.h"
 #include "soak/preset.h"
@@ -242,6 +243,12 @@ static int check_outputs(const vol_args *a)
                   *name && !slash ? "/" : "");
         return SOAK_EXIT_USAGE;
     }
+    soak_io_guard g;
+    soak_io_guard_init(&g);
+    int ok = soak_io_guard_input(&g, "--map", a->map) == SOAK_OK &&
+             soak_io_guard_input(&g, a->materials ? "--materials" : "presets file ($SOAK_MATERIALS or the shipped one)",
+                                 a->material ? (a->materials ? a->materials : soak_presets_default_path()) : NULL) ==
+                 SOAK_OK;
     for (int k = 0; k < 5 + SOAK_VOL_NCHANNELS; ++k) {
         if (k < 5) {
             if (!wanted[k]) continue;
@@ -252,12 +259,16 @@ static int check_outputs(const vol_args *a)
         }
         if (soak_path_check_writable(path, err, sizeof err) != SOAK_OK) {
             cli_error(CMD, "-o: %s", err);
+            soak_io_guard_free(&g);
             return SOAK_EXIT_FAIL;
         }
-        if (a->map && soak_path_same(path, a->map)) {
-            cli_error(CMD, "-o: output '%s' would overwrite the input map", path);
-            return SOAK_EXIT_USAGE;
-        }
+        ok = ok && soak_io_guard_output(&g, "-o", path) == SOAK_OK;
+    }
+    soak_status st = ok ? soak_io_guard_check(&g, err, sizeof err) : SOAK_ERR_NOMEM;
+    soak_io_guard_free(&g);
+    if (st != SOAK_OK) {
+        cli_error(CMD, "%s", st == SOAK_ERR_NOMEM ? "out of memory" : err);
+        return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
     }
     return 0;
 }

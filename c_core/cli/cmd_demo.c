@@ -14,7 +14,9 @@
 
 #include "cli.h"
 #include "soak/image.h"
+#include "soak/io_guard.h"
 #include "soak/preset.h"
+#include "soak/scene.h"
 #include "soak/staged.h"
 #include "soak/wetness.h"
 
@@ -217,6 +219,47 @@ static int render_scene(const char *cmd, const char *dir, const char *scene, int
     return 1;
 }
 
+/* Everything the demo reads is checked before it writes anything: the
+ * output folder, the presets, the scene (loaded once to validate it and list
+ * its files) and that no output is one of those inputs. */
+static int check_before_writing(const char *cmd, const char *dir, const char *materials, const char *scene_path)
+{
+    struct stat sb;
+    if (stat(dir, &sb) == 0 && !S_ISDIR(sb.st_mode)) {
+        cli_error(cmd, "--out '%s': is a file, not a folder", dir);
+        return SOAK_EXIT_USAGE;
+    }
+    static const char *const outputs[] = {"albedo_table.csv",      "swatches.png",       "wetmap_turbulence.exr",
+                                          "wetmap_turbulence.png", "wetmap_drying_t0.3.png", "wetmap_waves.png",
+                                          "render_wet_dry.exr",    "render_wet_dry.png"};
+    char err[4352];
+    soak_scene scene;
+    soak_status st = soak_scene_load(scene_path, &scene, err, sizeof err);
+    if (st != SOAK_OK) {
+        cli_error(cmd, "--scene: %s", err);
+        return SOAK_EXIT_FAIL;
+    }
+    soak_io_guard g;
+    soak_io_guard_init(&g);
+    st = soak_io_guard_input(&g, "--materials", materials);
+    if (st == SOAK_OK) st = soak_io_guard_input(&g, "--scene", scene_path);
+    for (int i = 0; i < scene.n_inputs && st == SOAK_OK; ++i)
+        st = soak_io_guard_input(&g, "file of the scene", scene.inputs[i]);
+    soak_scene_free(&scene);
+    for (size_t i = 0; i < sizeof outputs / sizeof *outputs && st == SOAK_OK; ++i) {
+        char path[4352];
+        snprintf(path, sizeof path, "%s/%s", dir, outputs[i]);
+        st = soak_io_guard_output(&g, "output", path);
+    }
+    if (st == SOAK_OK) st = soak_io_guard_check(&g, err, sizeof err);
+    soak_io_guard_free(&g);
+    if (st != SOAK_OK) {
+        cli_error(cmd, "--out: %s", st == SOAK_ERR_ARG ? err : soak_status_str(st));
+        return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
+    }
+    return 0;
+}
+
 int soak_cmd_demo(int argc, char **argv)
 {
     const char *cmd = "demo", *dir = "out/demo", *materials = NULL;
@@ -239,13 +282,17 @@ int soak_cmd_demo(int argc, char **argv)
             return SOAK_EXIT_USAGE;
         }
     }
-    if (!make_dir(cmd, dir)) return SOAK_EXIT_FAIL;
     if (!materials) materials = soak_presets_default_path();
     soak_preset_db *db = NULL;
     char err[2048];
     if (soak_presets_load(materials, &db, err, sizeof err) != SOAK_OK) {
         cli_error(cmd, "%s", err);
         return SOAK_EXIT_FAIL;
+    }
+    int rc = check_before_writing(cmd, dir, materials, scene);
+    if (rc || !make_dir(cmd, dir)) {
+        soak_presets_free(db);
+        return rc ? rc : SOAK_EXIT_FAIL;
     }
     printf("== wet vs dry albedo of every preset (%s)\n", materials);
     int ok = write_table_and_swatches(cmd, db, dir);

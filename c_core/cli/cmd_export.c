@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "soak/io_guard.h"
 #include "soak/export.h"
 #include "soak/preset.h"
 
@@ -64,7 +65,14 @@ int soak_cmd_export(int argc, char **argv)
         cli_error(CMD, "--target: unknown target '%s' (see 'soak export --help')", target_name);
         return SOAK_EXIT_USAGE;
     }
-    char err[1024] = "";
+    char err[4352] = "";
+    if (output && strcmp(output, "-") != 0) {
+        const char *inputs[1] = {file ? file : soak_presets_default_path()};
+        if (soak_io_check_output("-o", output, inputs, 1, err, sizeof err) != SOAK_OK) {
+            cli_error(CMD, "%s (--materials or $SOAK_MATERIALS)", err);
+            return SOAK_EXIT_USAGE;
+        }
+    }
     soak_preset_db *db = NULL;
     soak_status st = soak_presets_load(file, &db, err, sizeof err);
     if (st != SOAK_OK) {

@@ -10,6 +10,7 @@
 #include "cli.h"
 #include "soak/advise.h"
 #include "soak/image.h"
+#include "soak/io_guard.h"
 #include "soak/render.h"
 #include "soak/scene.h"
 
@@ -136,11 +137,11 @@ int soak_cmd_render(int argc, char **argv)
         cli_error(cmd, "-o: missing output image (.exr or .png)");
         return SOAK_EXIT_USAGE;
     }
-    if (soak_path_same(out_path, scene_path)) {
-        cli_error(cmd, "-o %s: refusing to overwrite the scene file", out_path);
+    char err[4096];
+    if (soak_io_check_output("-o", out_path, &scene_path, 1, err, sizeof err) != SOAK_OK) {
+        cli_error(cmd, "%s (the scene file)", err);
         return SOAK_EXIT_USAGE;
     }
-    char err[4096];
     soak_status pst = soak_path_check_writable(out_path, err, sizeof err);
     if (pst == SOAK_ERR_ARG) {
         cli_error(cmd, "-o: %s", err);
@@ -163,12 +164,18 @@ int soak_cmd_render(int argc, char **argv)
         cli_error(cmd, "%s", err);
         return SOAK_EXIT_FAIL;
     }
-    for (int i = 0; i < scene.n_inputs; ++i)
-        if (soak_path_same(out_path, scene.inputs[i])) {
-            cli_error(cmd, "-o %s: refusing to overwrite an input of the scene (%s)", out_path, scene.inputs[i]);
-            soak_scene_free(&scene);
-            return SOAK_EXIT_USAGE;
-        }
+    soak_io_guard guard;
+    soak_io_guard_init(&guard);
+    st = soak_io_guard_output(&guard, "-o", out_path);
+    if (st == SOAK_OK) st = soak_io_guard_input(&guard, "scene file", scene_path);
+    for (int i = 0; i < scene.n_inputs && st == SOAK_OK; ++i) st = soak_io_guard_input(&guard, "file of the scene", scene.inputs[i]);
+    if (st == SOAK_OK) st = soak_io_guard_check(&guard, err, sizeof err);
+    soak_io_guard_free(&guard);
+    if (st != SOAK_OK) {
+        cli_error(cmd, "%s", st == SOAK_ERR_ARG ? err : soak_status_str(st));
+        soak_scene_free(&scene);
+        return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
+    }
     if (auto_tol > 0 && auto_model(scene_path, &scene, auto_tol) != SOAK_OK) {
         soak_scene_free(&scene);
         return SOAK_EXIT_FAIL;

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "soak/hash.h"
+#include "soak/io_guard.h"
 #include "soak/staged.h"
 
 int soak_bake_threads(const soak_bake_exec *exec)
@@ -253,10 +254,7 @@ soak_status soak_bake_check_output(const char *path, const char *const *inputs, 
         if (err && errlen) snprintf(err, errlen, "%s: unsupported output type (use .exr, .png, .tif or .tx)", path);
         return SOAK_ERR_ARG;
     }
-    for (int i = 0; i < n_inputs; ++i)
-        if (inputs[i] && soak_path_same(path, inputs[i])) {
-            if (err && errlen) snprintf(err, errlen, "%s: output is the input '%s'; refusing to overwrite it", path, inputs[i]);
-            return SOAK_ERR_ARG;
-        }
+    st = soak_io_check_output("output", path, inputs, n_inputs, err, errlen);
+    if (st != SOAK_OK) return st;
     return soak_path_check_writable(path, err, errlen);
 }
