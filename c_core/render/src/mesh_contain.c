@@ -5,7 +5,14 @@
  * end_header never returns). The import therefore runs in a forked child
  * that sends the finished arrays back through a pipe; the parent turns a
  * crash, a hang past the limit or a short message into a clear error naming
- * the file. Only the formats listed in soak/geometry.h are accepted. */
+ * the file. Only the formats listed in soak/geometry.h are accepted.
+ *
+ * Before the child starts, the parent refuses what is not a regular file (a
+ * FIFO would block its open forever, a folder reads as garbage) and checks
+ * the file's header against its size (mesh_check.c), so most malformed
+ * files are refused at once. The child dies with its parent (SIGKILL on the
+ * parent's death, even by SIGKILL), and a signal the parent catches while it
+ * waits (an interrupt) kills the child at once. */
 #define _GNU_SOURCE
 #include <errno.h>
 #include <fcntl.h>
@@ -16,14 +23,21 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "mesh_import.h"
 
-#define DEFAULT_TIMEOUT_S 120.0
+/* The time limit is the last line of defence after mesh_check.c: a fixed
+ * start-up allowance plus one second per MiB (Assimp reads ~10-50 MiB/s in a
+ * release build; a sanitizer build about ten times slower). */
+#define TIMEOUT_BASE_S 10.0
+#define TIMEOUT_S_PER_MIB 1.0
+#define TIMEOUT_MAX_S 1e6
 
 typedef struct reply_header {
     int32_t status, has_uvs;
@@ -49,15 +63,17 @@ static double now_s(void)
     return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
-/* Seconds the import may take: SOAK_MESH_TIMEOUT when set to a number in
- * (0, 1e6], else DEFAULT_TIMEOUT_S. */
-static double timeout_s(void)
+/* Seconds the import of a file of size bytes may take: SOAK_MESH_TIMEOUT
+ * when set to a number in (0, 1e6], else proportional to the size. */
+static double timeout_s(long long size)
 {
+    double t = TIMEOUT_BASE_S + TIMEOUT_S_PER_MIB * (double)size / 1048576.0;
+    if (t > TIMEOUT_MAX_S) t = TIMEOUT_MAX_S;
     const char *e = getenv("SOAK_MESH_TIMEOUT");
-    if (!e || !*e) return DEFAULT_TIMEOUT_S;
+    if (!e || !*e) return t;
     char *end = NULL;
-    double t = strtod(e, &end);
-    return (*end == '\0' && t > 0 && t <= 1e6) ? t : DEFAULT_TIMEOUT_S;
+    double user = strtod(e, &end);
+    return (*end == '\0' && user > 0 && user <= TIMEOUT_MAX_S) ? user : t;
 }
 
 static int write_all(int fd, const void *data, size_t n)
@@ -73,7 +89,8 @@ static int write_all(int fd, const void *data, size_t n)
     return 0;
 }
 
-/* 0 when n bytes arrived before the deadline, -1 on EOF/error, -2 on timeout. */
+/* 0 when n bytes arrived before the deadline, -1 on EOF/error, -2 on
+ * timeout, -3 when a caught signal interrupted the wait. */
 static int read_all(int fd, void *data, size_t n, double deadline)
 {
     char *p = data;
@@ -82,7 +99,7 @@ static int read_all(int fd, void *data, size_t n, double deadline)
         if (left <= 0) return -2;
         struct pollfd pfd = {fd, POLLIN, 0};
         int r = poll(&pfd, 1, left > 1e6 ? 1000000000 : (int)(left * 1000) + 1);
-        if (r < 0 && errno == EINTR) continue;
+        if (r < 0 && errno == EINTR) return -3; /* a signal the process catches: an interrupt */
         if (r < 0) return -1;
         if (r == 0) continue;
         ssize_t got = read(fd, p, n);
@@ -94,9 +111,14 @@ static int read_all(int fd, void *data, size_t n, double deadline)
     return 0;
 }
 
-static void child_main(int fd, const char *path, int require_uvs)
+static void child_main(int fd, const char *path, int require_uvs, pid_t parent)
 {
+    /* Dies with the parent; the check after it catches a parent that died
+     * before the request was made. */
+    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent) _exit(4);
     signal(SIGPIPE, SIG_DFL);
+    signal(SIGINT, SIG_DFL);
+    signal(SIGTERM, SIG_DFL);
     reply_header h;
     memset(&h, 0, sizeof h);
     soak_mesh m = {0};
@@ -124,7 +146,9 @@ static void child_fate(pid_t pid, int timed_out, double limit, const char *path,
     while (waitpid(pid, &ws, 0) < 0 && errno == EINTR) {
     }
     if (!err || !errlen) return;
-    if (timed_out)
+    if (timed_out == -3)
+        snprintf(err, errlen, "%s: mesh import interrupted", path);
+    else if (timed_out)
         snprintf(err, errlen, "%s: the mesh reader did not finish within %g s: malformed or far too large file "
                  "(SOAK_MESH_TIMEOUT sets the limit)", path, limit);
     else if (WIFSIGNALED(ws))
@@ -142,7 +166,7 @@ static soak_status receive(int fd, pid_t pid, double deadline, double limit, con
     reply_header h;
     int r = read_all(fd, &h, sizeof h, deadline);
     if (r != 0) {
-        child_fate(pid, r == -2, limit, path, err, errlen);
+        child_fate(pid, r == -2 ? 1 : r == -3 ? -3 : 0, limit, path, err, errlen);
         return SOAK_ERR_PARSE;
     }
     h.message[sizeof h.message - 1] = '\0';
@@ -174,7 +198,7 @@ static soak_status receive(int fd, pid_t pid, double deadline, double limit, con
     if (!r) r = read_all(fd, m.indices, 3 * m.n_triangles * sizeof(unsigned), deadline);
     if (r != 0) {
         soak_mesh_free(&m);
-        child_fate(pid, r == -2, limit, path, err, errlen);
+        child_fate(pid, r == -2 ? 1 : r == -3 ? -3 : 0, limit, path, err, errlen);
         return SOAK_ERR_PARSE;
     }
     child_fate(pid, 0, limit, path, NULL, 0);
@@ -183,27 +207,60 @@ static soak_status receive(int fd, pid_t pid, double deadline, double limit, con
     return st;
 }
 
-soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen)
+/* Refuses what is not a regular file before opening it for reading (a
+ * FIFO's open would block), then opens it without blocking and checks its
+ * format and header. */
+static soak_status open_and_check(const char *path, long long *size, char *err, size_t errlen)
 {
-    if (!path || !mesh) return SOAK_ERR_NULL;
-    memset(mesh, 0, sizeof *mesh);
-    FILE *fp = fopen(path, "rb");
-    if (!fp) {
+    struct stat sb;
+    if (stat(path, &sb) != 0) {
         if (err && errlen) snprintf(err, errlen, "%s: cannot open mesh file (%s)", path, strerror(errno));
         return SOAK_ERR_IO;
     }
-    fclose(fp);
+    if (!S_ISREG(sb.st_mode)) {
+        if (err && errlen)
+            snprintf(err, errlen, "%s: %s", path,
+                     S_ISDIR(sb.st_mode) ? "is a folder, not a mesh file" : "is not a regular file (a FIFO, socket or device)");
+        return SOAK_ERR_IO;
+    }
     if (!soak_mesh_format_ok(path)) {
         if (err && errlen)
             snprintf(err, errlen, "%s: unsupported mesh format (use .obj, .ply, .stl, .off, .gltf or .glb)", path);
         return SOAK_ERR_UNSUPPORTED;
     }
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    FILE *f = fd >= 0 ? fdopen(fd, "rb") : NULL;
+    if (!f) {
+        if (err && errlen) snprintf(err, errlen, "%s: cannot open mesh file (%s)", path, strerror(errno));
+        if (fd >= 0) close(fd);
+        return SOAK_ERR_IO;
+    }
+    soak_status st = SOAK_OK;
+    if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+        if (err && errlen) snprintf(err, errlen, "%s: is not a regular file", path);
+        st = SOAK_ERR_IO;
+    } else {
+        *size = (long long)sb.st_size;
+        st = soak_mesh_check_file(path, f, *size, err, errlen);
+    }
+    fclose(f);
+    return st;
+}
+
+soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen)
+{
+    if (!path || !mesh) return SOAK_ERR_NULL;
+    memset(mesh, 0, sizeof *mesh);
+    long long size = 0;
+    soak_status st = open_and_check(path, &size, err, errlen);
+    if (st != SOAK_OK) return st;
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) {
         if (err && errlen) snprintf(err, errlen, "%s: cannot start the mesh reader: %s", path, strerror(errno));
         return SOAK_ERR_IO;
     }
-    double limit = timeout_s();
+    double limit = timeout_s(size);
+    pid_t parent = getpid();
     fflush(NULL); /* nothing buffered is written twice by the child */
     pid_t pid = fork();
     if (pid < 0) {
@@ -214,10 +271,10 @@ soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, c
     }
     if (pid == 0) {
         close(fds[0]);
-        child_main(fds[1], path, require_uvs);
+        child_main(fds[1], path, require_uvs, parent);
     }
     close(fds[1]);
-    soak_status st = receive(fds[0], pid, now_s() + limit, limit, path, mesh, err, errlen);
+    st = receive(fds[0], pid, now_s() + limit, limit, path, mesh, err, errlen);
     close(fds[0]);
     return st;
 }

@@ -4,6 +4,8 @@
 #ifndef SOAK_MESH_IMPORT_H
 #define SOAK_MESH_IMPORT_H
 
+#include <stdio.h>
+
 #include "soak/geometry.h"
 
 /* Assimp import in this process, validated. No containment: a malformed
@@ -12,6 +14,10 @@ soak_status soak_mesh_import(const char *path, int require_uvs, soak_mesh *mesh,
 /* Rejects (and frees) a mesh with a non-finite coordinate or an index past
  * its vertices, naming path and the first offender. */
 soak_status soak_mesh_validate(soak_mesh *m, const char *path, char *err, size_t errlen);
+/* Structural checks of the header (and for OBJ the face indices) of an
+ * open mesh file of size bytes, by path's extension (mesh_check.c): refuses
+ * a file whose header is incomplete or claims more than the file holds. */
+soak_status soak_mesh_check_file(const char *path, FILE *f, long long size, char *err, size_t errlen);
 /* 1 when path's extension is a mesh format Soak accepts (and fuzzes). */
 int soak_mesh_format_ok(const char *path);
 
