@@ -242,25 +242,34 @@ soak_status soak_volume_read_grid(const char *json_path, soak_volume *v, char *e
     if (st == SOAK_OK) data_path(json_path, name, raw, sizeof raw);
     cJSON_Delete(root);
     if (st != SOAK_OK) return st;
-    st = soak_volume_alloc(v, dims[0], dims[1], dims[2], size);
-    if (st != SOAK_OK) return st;
 
+    /* The payload's size is checked against the header before anything is
+     * allocated: memory is bounded by the file on disk. */
     FILE *f = fopen(raw, "rb");
     if (!f) {
         set_err(err, errlen, "%s: cannot open: %s", raw, strerror(errno));
-        soak_volume_free(v);
         return SOAK_ERR_IO;
     }
-    size_t n = soak_volume_count(v);
-    long want = (long)(n * (size_t)nch * 4);
-    if (fseek(f, 0, SEEK_END) != 0 || ftell(f) != want) {
-        set_err(err, errlen, "%s: size does not match %s", raw, "channels * nx*ny*nz * 4 bytes");
+    size_t n = (size_t)dims[0] * (size_t)dims[1] * (size_t)dims[2];
+    long long want = (long long)n * nch * 4, have = fseek(f, 0, SEEK_END) == 0 ? (long long)ftell(f) : -1;
+    if (have != want) {
+        char msg[256];
+        snprintf(msg, sizeof msg, "%lld bytes, but dims %dx%dx%d with %d channels of float32 need %lld", have, dims[0],
+                 dims[1], dims[2], nch, want);
+        set_err(err, errlen, "%s: size does not match the header: %s", raw, msg);
         fclose(f);
-        soak_volume_free(v);
         return SOAK_ERR_PARSE;
+    }
+    st = soak_volume_alloc(v, dims[0], dims[1], dims[2], size);
+    if (st != SOAK_OK) {
+        set_err(err, errlen, "%s: dims: %s", json_path,
+                st == SOAK_ERR_NOMEM ? "out of memory for the grid" : "too many voxels (at most 2^31 / 10 in all)");
+        fclose(f);
+        return st;
     }
     unsigned char *buf = malloc(n * 4);
     st = buf ? SOAK_OK : SOAK_ERR_NOMEM;
+    if (!buf) set_err(err, errlen, "%s: out of memory reading %s", raw, "the grid");
     for (int c = 0; c < SOAK_VOL_NCHANNELS && st == SOAK_OK; ++c) {
         if (fseek(f, (long)((size_t)map[c] * n * 4), SEEK_SET) != 0 || fread(buf, 4, n, f) != n) {
             set_err(err, errlen, "%s: read failed%s", raw, "");
