@@ -4,6 +4,7 @@
 
 #include "cli.h"
 #include "soak/models.h"
+#include "soak/porous.h"
 
 static void usage(FILE *out)
 {
@@ -19,7 +20,7 @@ static void usage(FILE *out)
             "parameters (defaults in brackets):\n"
             "  --albedo A [0.5]  --ior N [1.5]  --k K [0, >0 = conductor]  --roughness ALPHA [0.3]\n"
             "  --film-ior N [1.333]  --absorption 1/m [0.35]  --thickness m [1e-3]\n"
-            "  --porosity P [0.3]  --sp S [2]  --fill F [1]  --ks KS [0.05]  --ks-water KW [0.02]\n\n"
+            "  --porosity P [0.3]  --sp S [2]  --fill F [1]  --ks KS [0.05]  --ks-water KW [0.02, at most 0.5]\n\n"
             "models:\n");
     for (size_t i = 0; i < n; ++i)
         fprintf(out, "  %-15s %s%s%s\n", m[i].name, m[i].summary, m[i].exact ? "; fast path of " : "",
@@ -38,7 +39,7 @@ static const param_opt params[] = {
     P("--albedo", 0, 1, albedo),       P("--ior", 0.01, 100, ior),          P("--k", 0, 1000, k),
     P("--roughness", 1e-4, 1, roughness), P("--film-ior", 1, 3, n_film),    P("--absorption", 0, 1e6, absorption),
     P("--thickness", 0, 1e3, thickness), P("--porosity", 0, 1, porosity),  P("--sp", 0, 50, sp),
-    P("--fill", 0, 1, fill),           P("--ks", 0, 1, ks),                 P("--ks-water", 0, 1, ks_water),
+    P("--fill", 0, 1, fill),           P("--ks", 0, 1, ks),                 P("--ks-water", 0, SOAK_POROUS_KS_WATER_MAX, ks_water),
 };
 #undef P
 

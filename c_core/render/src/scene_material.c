@@ -8,6 +8,7 @@
 #include "scene_json.h"
 #include "soak/fresnel.h"
 #include "soak/ggx.h"
+#include "soak/porous.h"
 #include "soak/preset.h"
 #include "soak/wetness.h"
 
@@ -224,7 +225,7 @@ static soak_status parse_model(scene_ctx *c, const cJSON *j, const char *path, c
     if (st == SOAK_OK) st = sj_num(c, j, "sp", path, 0, 1e3, 0, d.sp, &sp);
     if (st == SOAK_OK) st = sj_num(c, j, "fill", path, 0, 1, 0, 1, &fill);
     if (st == SOAK_OK) st = sj_num(c, j, "ks", path, 0, 1, 0, d.ks, &ks);
-    if (st == SOAK_OK) st = sj_num(c, j, "ks_water", path, 0, 1, 0, d.ks_water, &ksw);
+    if (st == SOAK_OK) st = sj_num(c, j, "ks_water", path, 0, SOAK_POROUS_KS_WATER_MAX, 0, d.ks_water, &ksw);
     const cJSON *film = cJSON_GetObjectItemCaseSensitive(j, "film");
     if (st == SOAK_OK && film) {
         char fp[320];
