@@ -89,6 +89,16 @@ extern "C" soak_status soak_image_read(const char *path, soak_image *img, char *
 {
     if (!path || !img) return SOAK_ERR_NULL;
     img->pixels = nullptr;
+    struct stat sb;
+    if (stat(path, &sb) != 0) {
+        set_err(err, errlen, std::string(path) + ": cannot read image: " + std::strerror(errno));
+        return SOAK_ERR_IO;
+    }
+    if (!S_ISREG(sb.st_mode)) {
+        set_err(err, errlen, std::string(path) + (S_ISDIR(sb.st_mode) ? ": is a folder, not an image file"
+                                                                       : ": is not a regular file (a FIFO, socket or device)"));
+        return SOAK_ERR_IO;
+    }
     auto in = ImageInput::open(path);
     if (!in) {
         set_err(err, errlen, std::string(path) + ": cannot read image: " + OIIO::geterror());
@@ -106,6 +116,18 @@ extern "C" soak_status soak_image_read(const char *path, soak_image *img, char *
                                  " image needs " + std::to_string((long long)(bytes / 1048576)) +
                                  " MiB as float pixels; the limit is " +
                                  std::to_string((long long)(SOAK_IMAGE_MAX_BYTES / 1048576)) + " MiB");
+        return SOAK_ERR_ARG;
+    }
+    double file_bytes = (double)sb.st_size;
+    if (bytes > SOAK_IMAGE_FREE_BYTES && bytes > SOAK_IMAGE_MAX_RATIO * file_bytes) {
+        set_err(err, errlen, std::string(path) + ": the header claims " + std::to_string(spec.width) + "x" +
+                                 std::to_string(spec.height) + "x" + std::to_string(ch) + " pixels (" +
+                                 std::to_string((long long)(bytes / 1048576)) + " MiB as float) from a file of " +
+                                 std::to_string((long long)sb.st_size) + " bytes: more than " +
+                                 std::to_string((int)SOAK_IMAGE_MAX_RATIO) +
+                                 " float bytes per file byte above " +
+                                 std::to_string((long long)(SOAK_IMAGE_FREE_BYTES / 1048576)) +
+                                 " MiB (a decompression bomb or a corrupt header)");
         return SOAK_ERR_ARG;
     }
     soak_status st = soak_image_alloc(img, spec.width, spec.height, ch);

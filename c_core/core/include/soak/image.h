@@ -39,6 +39,16 @@ void soak_image_free(soak_image *img);
 /* Largest image soak_image_read decodes: 1 GiB of float pixels (e.g.
  * 16384 x 16384 x 1, 8192 x 8192 x 4). */
 #define SOAK_IMAGE_MAX_BYTES (1024.0 * 1024.0 * 1024.0)
+/* Compression-ratio rule: above SOAK_IMAGE_FREE_BYTES of float pixels, an
+ * image may claim at most SOAK_IMAGE_MAX_RATIO float bytes per byte of its
+ * file (deflate's own limit is 1032:1 on the packed samples; 1024 float
+ * bytes per file byte is 256:1 on 8-bit samples, 32:1 on 1-bit ones), so a
+ * small file cannot make the reader allocate and decode gigabytes (a 249 KB
+ * PNG claiming 16000 x 16000). Below the floor any ratio is allowed
+ * (uniform masks compress far better). Inputs that are not regular files
+ * are refused before they are opened. */
+#define SOAK_IMAGE_FREE_BYTES (256.0 * 1024.0 * 1024.0)
+#define SOAK_IMAGE_MAX_RATIO 1024.0
 
 /* Reads any format OIIO reads, converting to float. err gets a message
  * naming the file on failure. A NaN or infinite pixel is an error
