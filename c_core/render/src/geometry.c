@@ -406,6 +406,7 @@ static soak_vec3 closest_on_triangle(soak_vec3 p, soak_vec3 a, soak_vec3 b, soak
 typedef struct nearest_query {
     const soak_geometry *g;
     unsigned skip; /* object not counted */
+    int skip_concentric; /* nor any sphere centred exactly at p */
     soak_vec3 p;
     double best;   /* smallest distance found so far, double */
 } nearest_query;
@@ -417,6 +418,9 @@ static bool nearest_prim(struct RTCPointQueryFunctionArguments *args)
     nearest_query *q = args->userPtr;
     if (args->geomID >= q->g->count || args->geomID == q->skip) return false;
     const geo_object *o = &q->g->objects[args->geomID];
+    if (q->skip_concentric && o->kind == SOAK_SHAPE_SPHERE && o->center.x == q->p.x && o->center.y == q->p.y &&
+        o->center.z == q->p.z)
+        return false;
     double d;
     if (o->kind == SOAK_SHAPE_SPHERE) {
         d = fabs(soak_v3_len(soak_v3_sub(q->p, o->center)) - o->radius);
@@ -433,16 +437,71 @@ static bool nearest_prim(struct RTCPointQueryFunctionArguments *args)
 /* A sphere is isolated when every other surface is at least its radius from
  * its centre (less a relative 1e-9, so a plane it rests on, touching it at
  * one point, does not count). */
-static int sphere_isolated(const soak_geometry *g, unsigned id)
+/* Distance from c to the nearest surface within reach of radius r, other
+ * than object skip (and, with skip_concentric, any sphere centred at c). */
+static double nearest_surface(const soak_geometry *g, unsigned skip, int skip_concentric, soak_vec3 c, double r)
 {
-    const geo_object *o = &g->objects[id];
-    nearest_query q = {g, id, o->center, INFINITY};
-    float reach = (float)(o->radius * (1 + 1e-6)) + 1e-6f * (float)(1 + soak_v3_len(o->center));
-    struct RTCPointQuery pq = {(float)o->center.x, (float)o->center.y, (float)o->center.z, 0.0f, reach};
+    nearest_query q = {g, skip, skip_concentric, c, INFINITY};
+    float reach = (float)(r * (1 + 1e-6)) + 1e-6f * (float)(1 + soak_v3_len(c));
+    struct RTCPointQuery pq = {(float)c.x, (float)c.y, (float)c.z, 0.0f, reach};
     struct RTCPointQueryContext ctx;
     rtcInitPointQueryContext(&ctx);
     rtcPointQuery(g->scene, &pq, &ctx, nearest_prim, &q);
-    return q.best >= o->radius * (1 - 1e-9);
+    return q.best;
+}
+
+static int sphere_isolated(const soak_geometry *g, unsigned id)
+{
+    const geo_object *o = &g->objects[id];
+    return nearest_surface(g, id, 0, o->center, o->radius) >= o->radius * (1 - 1e-9);
+}
+
+static int by_centre(const void *pa, const void *pb)
+{
+    const geo_object *a = *(const geo_object *const *)pa, *b = *(const geo_object *const *)pb;
+    if (a->center.x != b->center.x) return a->center.x < b->center.x ? -1 : 1;
+    if (a->center.y != b->center.y) return a->center.y < b->center.y ? -1 : 1;
+    if (a->center.z != b->center.z) return a->center.z < b->center.z ? -1 : 1;
+    return a->radius < b->radius ? -1 : a->radius > b->radius;
+}
+
+/* Spheres sharing one centre (sorted by radius in s[0..k)): one point query
+ * for the surfaces outside the group instead of k queries that each visit
+ * all k (quadratic for stacked spheres). Inside the group the nearest other
+ * surface from the centre is the smallest other radius. */
+static void concentric_isolated(const soak_geometry *g, geo_object **s, size_t k)
+{
+    double outside = nearest_surface(g, (unsigned)-1, 1, s[0]->center, s[k - 1]->radius);
+    for (size_t i = 0; i < k; ++i) {
+        double inside = s[i == 0 ? 1 : 0]->radius;
+        double d = inside < outside ? inside : outside;
+        s[i]->isolated = d >= s[i]->radius * (1 - 1e-9);
+    }
+}
+
+/* Sets isolated on every sphere; SOAK_ERR_NOMEM when the sort has no memory. */
+static soak_status mark_isolated(soak_geometry *g)
+{
+    size_t n = 0;
+    for (unsigned i = 0; i < g->count; ++i) n += g->objects[i].kind == SOAK_SHAPE_SPHERE;
+    if (n == 0) return SOAK_OK;
+    geo_object **s = malloc(n * sizeof *s);
+    if (!s) return SOAK_ERR_NOMEM;
+    n = 0;
+    for (unsigned i = 0; i < g->count; ++i)
+        if (g->objects[i].kind == SOAK_SHAPE_SPHERE) s[n++] = &g->objects[i];
+    qsort(s, n, sizeof *s, by_centre);
+    for (size_t i = 0; i < n;) {
+        size_t k = 1;
+        while (i + k < n && s[i + k]->center.x == s[i]->center.x && s[i + k]->center.y == s[i]->center.y &&
+               s[i + k]->center.z == s[i]->center.z)
+            ++k;
+        if (k == 1) s[i]->isolated = sphere_isolated(g, (unsigned)(s[i] - g->objects));
+        else concentric_isolated(g, s + i, k);
+        i += k;
+    }
+    free(s);
+    return SOAK_OK;
 }
 
 soak_status soak_geometry_commit(soak_geometry *g)
@@ -458,9 +517,7 @@ soak_status soak_geometry_commit(soak_geometry *g)
     rtcCommitScene(g->scene);
     if (g->error[0]) return SOAK_ERR_NUMERIC;
     g->committed = 1;
-    for (unsigned i = 0; i < g->count; ++i)
-        if (g->objects[i].kind == SOAK_SHAPE_SPHERE) g->objects[i].isolated = sphere_isolated(g, i);
-    return SOAK_OK;
+    return mark_isolated(g);
 }
 
 unsigned soak_geometry_object_count(const soak_geometry *g) { return g ? g->count : 0; }
