@@ -37,19 +37,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "accuracy_callgrind: %s: set-up failed or no closed-form eval\n", argv[1]);
         return 1;
     }
-    soak_vec3 wi[64], wo[64];
-    for (int i = 0; i < 64; ++i) {
-        double ci = (i + 0.5) / 64, co = 1.0 - ci * 0.9, phi = 2.399963 * i;
-        wi[i] = soak_v3(sqrt(1 - ci * ci) * cos(phi), sqrt(1 - ci * ci) * sin(phi), ci);
-        wo[i] = soak_v3(sqrt(1 - co * co), 0.0, co);
-    }
     double sum = 0;
-    for (long i = 0; i < n; ++i) {
-        soak_rgb f;
-        double pdf;
-        if (soak_bsdf_eval(&b, wi[i % 64], wo[i % 64], &f, &pdf) != SOAK_OK) return 1;
-        sum += f.g + pdf;
-    }
+    if (soak_bsdf_eval_loop(&b, n, &sum) != SOAK_OK) return 1;
     printf("%s %ld checksum %.6g\n", argv[1], n, sum);
     return 0;
 }

@@ -203,24 +203,7 @@ soak_status soak_material_eval_loop(const soak_material *m, long n, double *chec
     rt_material_bsdf mb;
     soak_status st = material_bsdfs(m, 0, &mb);
     if (st != SOAK_OK) return st;
-    const soak_bsdf *b = shaded(&mb);
-    if (soak_bsdf_get_flags(b) & SOAK_BSDF_WALK) return SOAK_ERR_UNSUPPORTED;
-    soak_vec3 wi[COST_PAIRS], wo[COST_PAIRS];
-    for (int i = 0; i < COST_PAIRS; ++i) {
-        double ci = (i + 0.5) / COST_PAIRS, co = 1.0 - ci * 0.9, phi = 2.399963 * i;
-        wi[i] = soak_v3(sqrt(1 - ci * ci) * cos(phi), sqrt(1 - ci * ci) * sin(phi), ci);
-        wo[i] = soak_v3(sqrt(1 - co * co), 0.0, co);
-    }
-    double sum = 0;
-    for (long i = 0; i < n; ++i) {
-        soak_rgb f;
-        double pdf;
-        st = soak_bsdf_eval(b, wi[i % COST_PAIRS], wo[i % COST_PAIRS], &f, &pdf);
-        if (st != SOAK_OK) return st;
-        sum += f.g + pdf;
-    }
-    *checksum = sum;
-    return SOAK_OK;
+    return soak_bsdf_eval_loop(shaded(&mb), n, checksum);
 }
 
 /* Preset and liquid names are [a-z0-9_-] (soak/preset.h): anything else

@@ -143,5 +143,9 @@ soak_walk_event soak_bsdf_walk_step(const soak_bsdf *b, soak_bsdf_walk *w, const
  * Mean CPU time of one eval (RGB, value and pdf) over a fixed set of 64
  * direction pairs, repeated n_rounds times; for reports, never for tests. */
 soak_status soak_bsdf_eval_cost_ns(const soak_bsdf *b, int n_rounds, double *ns);
+/* The loop that soak_bsdf_eval_cost_ns times, untimed: n evaluations over the
+ * same 64 direction pairs, their sum in checksum (for instruction counts
+ * under valgrind, which must see the work done). */
+soak_status soak_bsdf_eval_loop(const soak_bsdf *b, long n, double *checksum);
 
 #endif
