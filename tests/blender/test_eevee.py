@@ -84,45 +84,9 @@ def half_buffer_term(px):
 
 
 def scene():
-    for coll in (bpy.data.objects, bpy.data.meshes, bpy.data.materials, bpy.data.lights, bpy.data.cameras,
-                 bpy.data.worlds, bpy.data.node_groups, bpy.data.images):
-        for item in list(coll):
-            coll.remove(item)
-    sc = bpy.context.scene
-    sc.render.resolution_x = sc.render.resolution_y = SIZE
-    sc.render.resolution_percentage = 100
-    sc.render.image_settings.file_format = "OPEN_EXR"
-    sc.render.image_settings.color_depth = "32"
-    sc.view_settings.view_transform = "Standard"
-    sc.cycles.device = "CPU"
-    sc.cycles.samples = CASES["render"]["cycles_samples"]
-    sc.cycles.use_denoising = False
-    sc.cycles.seed = 1
+    sc, plane, mat = common.plane_case_scene(CASES, SIZE, SIZE)
     sc.eevee.taa_render_samples = 4
-    world = bpy.data.worlds.new("W")
-    world.use_nodes = True
-    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
-    sc.world = world
-    cd = bpy.data.cameras.new("C")
-    cd.sensor_fit = "VERTICAL"
-    cd.angle_y = math.radians(CASES["camera"]["fov"])
-    co = bpy.data.objects.new("C", cd)
-    sc.collection.objects.link(co)
-    co.location = CASES["camera"]["position"]
-    sc.camera = co
-    import mathutils
-    d = mathutils.Vector(CASES["sun"]["direction"])
-    ld = bpy.data.lights.new("S", "SUN")
-    ld.energy = CASES["sun"]["irradiance"]
-    ld.angle = 0.0
-    lo = bpy.data.objects.new("S", ld)
-    sc.collection.objects.link(lo)
-    lo.rotation_euler = d.to_track_quat("Z", "Y").to_euler()
-    bpy.ops.mesh.primitive_plane_add(size=2)
-    plane = bpy.context.object
-    mat = bpy.data.materials.new("M")
-    mat.use_nodes = True
-    plane.data.materials.append(mat)
+    common.add_case_sun(sc, CASES)
     return sc, plane, mat
 
 

@@ -88,56 +88,11 @@ def soak_render(name, material, back_lit=False):
 
 
 def setup_scene():
-    for coll in (bpy.data.objects, bpy.data.meshes, bpy.data.materials, bpy.data.lights, bpy.data.cameras,
-                 bpy.data.worlds, bpy.data.node_groups, bpy.data.images):
-        for item in list(coll):
-            coll.remove(item)
-    sc = bpy.context.scene
-    sc.render.engine = "CYCLES"
-    sc.cycles.device = "CPU"
-    sc.cycles.samples = CASES["render"]["cycles_samples"]
-    sc.cycles.use_denoising = False
-    sc.render.resolution_x = CASES["render"]["width"]
-    sc.render.resolution_y = CASES["render"]["height"]
-    sc.render.resolution_percentage = 100
-    sc.render.image_settings.file_format = "OPEN_EXR"
-    sc.render.image_settings.color_depth = "32"
-    sc.view_settings.view_transform = "Standard"
-    sc.cycles.seed = 1
-    world = bpy.data.worlds.new("W")
-    world.use_nodes = True
-    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
-    sc.world = world
-    cam = CASES["camera"]
-    cd = bpy.data.cameras.new("C")
-    cd.sensor_fit = "VERTICAL"
-    import math
-    cd.angle_y = math.radians(cam["fov"])
-    co = bpy.data.objects.new("C", cd)
-    sc.collection.objects.link(co)
-    co.location = cam["position"]
-    co.rotation_euler = (0, 0, 0)  # looking down -z, up +y
-    sc.camera = co
-    bpy.ops.mesh.primitive_plane_add(size=2)
-    plane = bpy.context.object
-    mat = bpy.data.materials.new("M")
-    mat.use_nodes = True
-    plane.data.materials.append(mat)
-    return sc, plane, mat
+    return common.plane_case_scene(CASES, CASES["render"]["width"], CASES["render"]["height"])
 
 
 def add_sun(sc, back_lit=False):
-    import mathutils
-    d = mathutils.Vector(CASES["sun"]["direction"])
-    if back_lit:
-        d.z = -d.z
-    ld = bpy.data.lights.new("S", "SUN")
-    ld.energy = CASES["sun"]["irradiance"]
-    ld.angle = 0.0
-    lo = bpy.data.objects.new("S", ld)
-    sc.collection.objects.link(lo)
-    # a sun shines along its local -z: rotate -z onto -d
-    lo.rotation_euler = d.to_track_quat("Z", "Y").to_euler()
+    common.add_case_sun(sc, CASES, back_lit)
 
 
 def blender_render(sc, name):
