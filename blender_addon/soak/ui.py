@@ -33,12 +33,16 @@ def _engine_hints(layout, context, s):
         layout.label(text="EEVEE: turn on Exact lookups for the core's values", icon="INFO")
 
 
-class SOAK_PT_wetness(bpy.types.Panel):
-    bl_label = "Wetness"
-    bl_idname = "SOAK_PT_wetness"
+class _MaterialPanel:
+    """Where the Wetness panels live: Properties editor, Material tab."""
     bl_space_type = "PROPERTIES"
     bl_region_type = "WINDOW"
     bl_context = "material"
+
+
+class SOAK_PT_wetness(_MaterialPanel, bpy.types.Panel):
+    bl_label = "Wetness"
+    bl_idname = "SOAK_PT_wetness"
 
     @classmethod
     def poll(cls, context):
@@ -83,13 +87,10 @@ class SOAK_PT_wetness(bpy.types.Panel):
         row.operator("soak.import_volume", icon="VOLUME_DATA")
 
 
-class SOAK_PT_wetness_source(bpy.types.Panel):
+class SOAK_PT_wetness_source(_MaterialPanel, bpy.types.Panel):
     bl_label = "Source"
     bl_idname = "SOAK_PT_wetness_source"
     bl_parent_id = "SOAK_PT_wetness"
-    bl_space_type = "PROPERTIES"
-    bl_region_type = "WINDOW"
-    bl_context = "material"
 
     def draw(self, context):
         layout = self.layout
@@ -107,13 +108,10 @@ class SOAK_PT_wetness_source(bpy.types.Panel):
             layout.prop(s, "noise_scale")
 
 
-class SOAK_PT_wetness_controls(bpy.types.Panel):
+class SOAK_PT_wetness_controls(_MaterialPanel, bpy.types.Panel):
     bl_label = "Controls"
     bl_idname = "SOAK_PT_wetness_controls"
     bl_parent_id = "SOAK_PT_wetness"
-    bl_space_type = "PROPERTIES"
-    bl_region_type = "WINDOW"
-    bl_context = "material"
 
     @classmethod
     def poll(cls, context):
