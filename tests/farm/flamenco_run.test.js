@@ -1,0 +1,232 @@
+// Runs compiled Soak Flamenco jobs for real on this machine, as Workers
+// would: each task's commands after the Manager's variable replacement, in an
+// order that respects the dependencies. Checks
+//  1. soak-bake (drying, turbulence): every chunked frame equals the frame of
+//     one soak run over the whole range, pixel for pixel (idiff, no tolerance);
+//  2. soak-drying-animation (Blender 3.4, the add-on's Image wetness source):
+//     the baked maps equal one soak run's; every frame is rendered; where the
+//     map of a frame is dry the render equals the all-dry last frame's, where
+//     it is wet the render is darker, and the frames brighten as the map's
+//     mean wetness falls (wet materials are darker: seed 000).
+// Usage: node flamenco_run.test.js REPO_ROOT SOAK_BINARY TMP_DIR
+"use strict";
+const assert = require("node:assert/strict");
+const fs = require("node:fs");
+const path = require("node:path");
+const {spawnSync} = require("node:child_process");
+const F = require("./flamenco_standin.js");
+
+const [root, soak, tmpArg] = process.argv.slice(2);
+const tmp = path.resolve(tmpArg);
+fs.rmSync(tmp, {recursive: true, force: true});
+fs.mkdirSync(tmp, {recursive: true});
+const scripts = path.join(root, "farm/flamenco/scripts");
+const t0 = Date.now();
+const secs = () => ((Date.now() - t0) / 1000).toFixed(1);
+
+function run(argv, env) {
+    const r = spawnSync(argv[0], argv.slice(1), {encoding: "utf8", env: Object.assign({}, process.env, env || {})});
+    if (r.error) throw new Error(`${argv[0]}: ${r.error.message}`);
+    return r;
+}
+function mustRun(argv, env) {
+    const r = run(argv, env);
+    if (r.status !== 0) {
+        throw new Error(`exit ${r.status}: ${argv.join(" ").slice(0, 400)}\n${(r.stdout + r.stderr).slice(-2000)}`);
+    }
+    return r;
+}
+
+// Every task of a compiled job, commands expanded for a Linux worker.
+function runJob(compiled, variables) {
+    let n = 0;
+    for (const task of F.dependencyOrder(compiled.tasks)) {
+        for (const cmd of F.expandTask(task, variables).commands) {
+            const argv = F.commandArgv(cmd);
+            if (argv === null) F.runMakeDirectory(cmd);
+            else mustRun(argv, {BLENDER_USER_SCRIPTS: path.join(tmp, "user_scripts")});
+            n++;
+        }
+    }
+    return n;
+}
+
+function framePath(pattern, f) {
+    return pattern.replace("%04d", String(f).padStart(4, "0"));
+}
+
+// Pixels of several images from one oiiotool --dumpdata run (OIIO starts
+// slowly): file -> {width, height, channels, text: [per-pixel value strings],
+// data: Float64Array}. Printed with 9 decimals, which tells apart any two
+// half floats in [0, 1] (their spacing is at least 6e-8).
+function readImages(files) {
+    const r = run(["oiiotool", "--dumpdata"].concat(files));
+    assert.equal(r.status, 0, r.stderr);
+    const out = new Map();
+    let cur = null;
+    for (const line of r.stdout.split("\n")) {
+        const head = /^(.*\S)\s+:\s+(\d+)\s+x\s+(\d+), (\d+) channel/.exec(line);
+        if (head) {
+            cur = {width: +head[2], height: +head[3], channels: +head[4], text: [], values: []};
+            out.set(head[1], cur);
+            continue;
+        }
+        const px = /^\s+Pixel \((\d+), (\d+)\): (.*)$/.exec(line);
+        if (px && cur) {
+            // integer formats: "raw values (normalised values)"
+            const norm = /\(([^)]*)\)/.exec(px[3]);
+            const text = (norm ? norm[1] : px[3]).trim();
+            cur.text.push(text);
+            for (const v of text.split(/\s+/)) cur.values.push(Number(v));
+        }
+    }
+    for (const f of files) {
+        const img = out.get(f);
+        assert.ok(img, `oiiotool printed no pixels of ${f}`);
+        assert.equal(img.text.length, img.width * img.height, `${f}: pixel count`);
+        img.data = Float64Array.from(img.values);
+    }
+    return out;
+}
+
+// Pixel-for-pixel equality of two dumped images (no tolerance).
+function assertSameImage(images, a, b) {
+    const x = images.get(a), y = images.get(b);
+    assert.deepEqual([x.width, x.height, x.channels], [y.width, y.height, y.channels], `${a} vs ${b}: size`);
+    const bad = x.text.findIndex((v, i) => v !== y.text[i]);
+    assert.equal(bad, -1, `${a} and ${b} differ first at pixel ${bad}: ${x.text[bad]} vs ${y.text[bad]}`);
+}
+function imagesDiffer(images, a, b) {
+    return images.get(a).text.join("|") !== images.get(b).text.join("|");
+}
+
+function luminance(img) {
+    const out = new Float64Array(img.width * img.height);
+    for (let p = 0; p < out.length; p++) {
+        let s = 0;
+        for (let c = 0; c < img.channels; c++) s += img.data[p * img.channels + c];
+        out[p] = s / img.channels;
+    }
+    return out;
+}
+const mean = (a) => a.reduce((s, x) => s + x, 0) / a.length;
+
+let failures = 0;
+function check(name, fn) {
+    try {
+        fn();
+        console.log(`ok   ${name} (${secs()} s)`);
+    } catch (e) {
+        failures++;
+        console.log(`FAIL ${name}\n     ${String(e && e.stack || e).split("\n").slice(0, 12).join("\n     ")}`);
+    }
+}
+
+// ---- 1. soak-bake in chunks vs one run ----
+const bake = F.loadJobType(path.join(scripts, "soak_bake.js"));
+const bakeCases = [
+    {kind: "drying", frames: "1-7", chunk_size: 3, width: 48, height: 40, seed: 3, time: 0.2, frame_time: 0.11,
+     extra_args: "--noise 0.5 --t-fill 0.3"},
+    {kind: "turbulence", frames: "0-3", chunk_size: 2, width: 40, height: 32, seed: 9, time: 0,
+     frame_time: 1 / 24, extra_args: "--evolve 1.5 --octaves 3"},
+];
+for (const c of bakeCases) {
+    check(`soak-bake ${c.kind} ${c.frames} in chunks of ${c.chunk_size} == one soak run`, () => {
+        const dir = path.join(tmp, `bake_${c.kind}`);
+        const settings = Object.assign(F.defaults(bake.jobType), c, {output_dir: path.join(dir, "chunked")});
+        const compiled = bake.compile(settings);
+        const n = runJob(compiled, {soak});
+        const [A, B] = c.frames.split("-").map(Number);
+        const single = path.join(dir, "single", "wet.%04d.exr");
+        fs.mkdirSync(path.dirname(single), {recursive: true});
+        mustRun([soak, "bake", c.kind, "--width", String(c.width), "--height", String(c.height),
+                 "--seed", String(c.seed)].concat(F.shellSplit(c.extra_args),
+                ["--frames", c.frames, "--time", String(c.time), "--frame-time", String(c.frame_time), "-o", single]));
+        const pairs = [];
+        for (let f = A; f <= B; f++) pairs.push([framePath(path.join(dir, "chunked", "wet.%04d.exr"), f), framePath(single, f)]);
+        const images = readImages([].concat(...pairs));
+        for (const [x, y] of pairs) assertSameImage(images, x, y);
+        assert.ok(imagesDiffer(images, framePath(single, A), framePath(single, B)), "first and last frames are " +
+                  "equal: the sequence does not change, the comparison proves little");
+        console.log(`     ${compiled.tasks.length} tasks, ${n} soak commands, ${B - A + 1} frames identical`);
+    });
+}
+
+// ---- 2. soak-drying-animation: bake, then Blender renders ----
+const size = 32;
+const anim = F.loadJobType(path.join(scripts, "soak_drying_animation.js"));
+check("soak-drying-animation 1-4: maps equal one run, renders follow the drying", () => {
+    const dir = path.join(tmp, "anim");
+    fs.mkdirSync(path.join(tmp, "user_scripts"), {recursive: true});
+    const zip = path.join(dir, "soak_blender.zip");
+    fs.mkdirSync(dir, {recursive: true});
+    mustRun(["/usr/bin/python3", path.join(root, "blender_addon/build_zip.py"), zip]);
+    const blend = path.join(dir, "shot.blend");
+    mustRun(["blender", "-b", "--factory-startup", "--python-exit-code", "1", "--python",
+             path.join(root, "tests/farm/make_blend.py"), "--", "--addon", zip, "--out", blend, "--size", String(size)],
+            {BLENDER_USER_SCRIPTS: path.join(tmp, "user_scripts")});
+    console.log(`     blend file made (${secs()} s)`);
+    const settings = Object.assign(F.defaults(anim.jobType), {
+        frames: "1-4", chunk_size: 2, bake_chunk_size: 3, width: size, height: size, seed: 2, noise: 1,
+        t_fill: 0.25, time: 0, frame_time: 1 / 3, render_output_root: path.join(dir, "render"),
+        render_output_path: path.join(dir, "render", "shot", "{timestamp}", "######"),
+        blendfile: blend, format: "PNG", scene: "Scene"});
+    const compiled = anim.compile(settings);
+    const renderDir = path.dirname(compiled.settings.render_output_path);
+    // blenderArgs: Flamenco's default "-b -y" plus --factory-startup, so the
+    // test sees no user preferences.
+    const n = runJob(compiled, {soak, blender: "blender", blenderArgs: "-b -y --factory-startup"});
+    console.log(`     ${compiled.tasks.length} tasks, ${n} commands run (${secs()} s)`);
+
+    const wet = path.join(renderDir, "wetmap", "wet.%04d.exr");
+    const single = path.join(dir, "single", "wet.%04d.exr");
+    fs.mkdirSync(path.dirname(single), {recursive: true});
+    mustRun([soak, "bake", "drying", "--width", String(size), "--height", String(size), "--seed", "2",
+             "--t-fill", "0.25", "--noise", "1", "--frames", "1-4", "--time", "0", "--frame-time", String(1 / 3),
+             "-o", single]);
+    const pngs = [1, 2, 3, 4].map((f) => path.join(renderDir, `${String(f).padStart(6, "0")}.png`));
+    for (const png of pngs) assert.ok(fs.existsSync(png), `render missing: ${png}`);
+    const files = [1, 2, 3, 4].map((f) => [framePath(wet, f), framePath(single, f)]);
+    const images = readImages([].concat(...files, pngs));
+    const maps = [], renders = [];
+    for (let f = 1; f <= 4; f++) {
+        assertSameImage(images, files[f - 1][0], files[f - 1][1]);
+        const img = images.get(pngs[f - 1]);
+        assert.deepEqual([img.width, img.height], [size, size], "render size");
+        renders.push(luminance(img));
+        maps.push(images.get(framePath(wet, f)).data);
+    }
+    // Frame 4 is at drying time 1: the schedule says all dry.
+    assert.equal(Math.max(...maps[3]), 0, "frame 4 (time 1) should be dry everywhere");
+    const dry = renders[3];
+    const mapMeans = maps.map(mean), renderMeans = renders.map(mean);
+    console.log(`     mean wetness ${mapMeans.map((x) => x.toFixed(3)).join(" ")}; ` +
+                `mean render ${renderMeans.map((x) => x.toFixed(4)).join(" ")}`);
+    for (let f = 1; f < 4; f++) {
+        assert.ok(mapMeans[f] < mapMeans[f - 1], `wetness does not fall from frame ${f} to ${f + 1}`);
+        assert.ok(renderMeans[f] > renderMeans[f - 1], `render does not brighten from frame ${f} to ${f + 1}`);
+    }
+    // Per pixel (one texel per pixel): dry texels render as the dry frame,
+    // wet ones (w >= 0.5) darker by more than the 16-bit quantum and noise.
+    let dryPx = 0, wetPx = 0, worstDry = 0, leastDarkening = Infinity;
+    for (let f = 0; f < 3; f++) {
+        for (let p = 0; p < dry.length; p++) {
+            if (maps[f][p] === 0) {
+                dryPx++;
+                worstDry = Math.max(worstDry, Math.abs(renders[f][p] - dry[p]));
+            } else if (maps[f][p] >= 0.5) {
+                wetPx++;
+                leastDarkening = Math.min(leastDarkening, dry[p] - renders[f][p]);
+            }
+        }
+    }
+    console.log(`     ${dryPx} dry pixels: worst |render - dry render| ${worstDry.toExponential(2)}; ` +
+                `${wetPx} wet pixels: least darkening ${leastDarkening.toFixed(4)}`);
+    assert.ok(dryPx > 50 && wetPx > 50, "too few dry or wet pixels for the per-pixel check");
+    // Same shading inputs, same Cycles seed: the same pixel, up to one 16-bit step.
+    assert.ok(worstDry <= 1 / 65535, "a dry texel renders differently from the dry frame");
+    assert.ok(leastDarkening > 0.01, "a wet texel does not render darker than dry");
+});
+
+console.log(`${failures ? "FAILED" : "passed"} in ${secs()} s`);
+process.exit(failures ? 1 : 0);
