@@ -9,6 +9,7 @@ packages=(
   libembree-dev libassimp-dev libcjson-dev libopenvdb-dev libboost-dev
   povray blender xvfb python3 python3-numpy python3-jsonschema
   python3-matplotlib valgrind debootstrap
+  slurm-wlm munge nodejs
 )
 
 missing=()
