@@ -8,7 +8,7 @@ packages=(
   libopenimageio-dev openimageio-tools
   libembree-dev libassimp-dev libcjson-dev libopenvdb-dev libboost-dev
   povray blender xvfb python3 python3-numpy python3-jsonschema
-  python3-matplotlib valgrind debootstrap
+  python3-matplotlib valgrind debootstrap hyperfine
   slurm-wlm munge nodejs
 )
 

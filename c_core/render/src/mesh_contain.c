@@ -253,6 +253,7 @@ soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, c
     memset(mesh, 0, sizeof *mesh);
     long long size = 0;
     soak_status st = open_and_check(path, &size, err, errlen);
+    if (st == SOAK_OK) st = soak_mesh_reader_open(path, err, errlen); /* in the parent: the child only imports */
     if (st != SOAK_OK) return st;
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) {

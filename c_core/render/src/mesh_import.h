@@ -9,8 +9,11 @@
 #include "soak/geometry.h"
 
 /* Assimp import in this process, validated. No containment: a malformed
- * file may crash or hang it. */
+ * file may crash or hang it. Opens libsoak_mesh.so on first use. */
 soak_status soak_mesh_import(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen);
+/* Opens libsoak_mesh.so (Assimp) if it is not open yet: an error naming
+ * path and the module when it cannot be loaded. */
+soak_status soak_mesh_reader_open(const char *path, char *err, size_t errlen);
 /* Rejects (and frees) a mesh with a non-finite coordinate or an index past
  * its vertices, naming path and the first offender. */
 soak_status soak_mesh_validate(soak_mesh *m, const char *path, char *err, size_t errlen);

@@ -1,18 +1,37 @@
-/* Mesh files through Assimp's C API: every mesh of the file merged into one
- * soak_mesh with its node transforms applied. See soak/geometry.h; the
- * import runs in a child process (mesh_contain.c). */
-#define _POSIX_C_SOURCE 200809L
-#include <assimp/cimport.h>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-#include <errno.h>
+/* Mesh import (mesh_import.h): Assimp runs in libsoak_mesh.so, opened on a
+ * command's first mesh (soak/plugin.h); what it returns is validated here.
+ * soak_mesh_load (mesh_contain.c) opens the module before it forks the
+ * reader, so the child only imports. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "mesh_import.h"
-#include "soak/geometry.h"
+#include "mesh_plugin.h"
+#include "soak/plugin.h"
+
+/* Written once under pthread_once, read-only afterwards (soak/plugin.h). */
+static soak_plugin_slot mesh_slot = SOAK_PLUGIN_SLOT(SOAK_MESH_PLUGIN_FILE, SOAK_MESH_PLUGIN_SYMBOL, "mesh reader (Assimp)");
+
+static void mesh_slot_fill(void)
+{
+    soak_plugin_slot_fill(&mesh_slot);
+}
+
+static const soak_mesh_plugin *mesh_plugin(const char *path, char *err, size_t errlen)
+{
+    pthread_once(&mesh_slot.once, mesh_slot_fill);
+    char why[1600];
+    const soak_mesh_plugin *p = soak_plugin_slot_table(&mesh_slot, why, sizeof why);
+    if (!p && err && errlen) snprintf(err, errlen, "%s: %s", path, why);
+    return p;
+}
+
+soak_status soak_mesh_reader_open(const char *path, char *err, size_t errlen)
+{
+    return mesh_plugin(path, err, errlen) ? SOAK_OK : SOAK_ERR_UNSUPPORTED;
+}
 
 static void set_err(char *err, size_t errlen, const char *fmt, const char *a, const char *b)
 {
@@ -29,160 +48,13 @@ void soak_mesh_free(soak_mesh *m)
     memset(m, 0, sizeof *m);
 }
 
-typedef struct walk_state {
-    const struct aiScene *scene;
-    soak_mesh *out;
-    size_t nv, nt;     /* filled so far */
-    int counting;      /* first pass only counts */
-    int any_uv, all_uv;
-} walk_state;
-
-/* 4x4 row-major product r = a * b (Assimp matrices are row-major, column vectors). */
-static void mat_mul(const double *a, const double *b, double *r)
-{
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) {
-            double s = 0;
-            for (int k = 0; k < 4; ++k) s += a[4 * i + k] * b[4 * k + j];
-            r[4 * i + j] = s;
-        }
-}
-
-static void walk(walk_state *w, const struct aiNode *node, const double *parent)
-{
-    const struct aiMatrix4x4 *T = &node->mTransformation;
-    double local[16] = {T->a1, T->a2, T->a3, T->a4, T->b1, T->b2, T->b3, T->b4,
-                        T->c1, T->c2, T->c3, T->c4, T->d1, T->d2, T->d3, T->d4};
-    double M[16];
-    mat_mul(parent, local, M);
-    /* Normals: cofactor of the 3x3 part (inverse transpose up to scale). */
-    double a = M[0], b = M[1], c = M[2], d = M[4], e = M[5], f = M[6], h = M[8], k = M[9], l = M[10];
-    double C[9] = {e * l - f * k, f * h - d * l, d * k - e * h, c * k - b * l, a * l - c * h,
-                   b * h - a * k, b * f - c * e, c * d - a * f, a * e - b * d};
-    double det = a * C[0] + b * C[1] + c * C[2];
-    for (unsigned mi = 0; mi < node->mNumMeshes; ++mi) {
-        const struct aiMesh *m = w->scene->mMeshes[node->mMeshes[mi]];
-        unsigned ntri = 0;
-        for (unsigned fi = 0; fi < m->mNumFaces; ++fi) ntri += m->mFaces[fi].mNumIndices == 3;
-        int has_uv = m->mTextureCoords[0] != NULL;
-        if (w->counting) {
-            w->any_uv |= has_uv;
-            w->all_uv &= has_uv;
-            w->nv += m->mNumVertices;
-            w->nt += ntri;
-            continue;
-        }
-        soak_mesh *o = w->out;
-        size_t base = w->nv;
-        for (unsigned vi = 0; vi < m->mNumVertices; ++vi) {
-            const struct aiVector3D *p = &m->mVertices[vi];
-            double *dst = o->positions + 3 * (base + vi);
-            for (int r = 0; r < 3; ++r) dst[r] = M[4 * r] * p->x + M[4 * r + 1] * p->y + M[4 * r + 2] * p->z + M[4 * r + 3];
-            if (o->normals) {
-                double n[3] = {0, 0, 1};
-                if (m->mNormals) {
-                    const struct aiVector3D *q = &m->mNormals[vi];
-                    double s = det < 0 ? -1 : 1;
-                    for (int r = 0; r < 3; ++r) n[r] = s * (C[3 * r] * q->x + C[3 * r + 1] * q->y + C[3 * r + 2] * q->z);
-                    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-                    if (len > 1e-300 && isfinite(len)) {
-                        n[0] /= len, n[1] /= len, n[2] /= len;
-                    } else {
-                        n[0] = 0, n[1] = 0, n[2] = 1;
-                    }
-                }
-                memcpy(o->normals + 3 * (base + vi), n, sizeof n);
-            }
-            if (o->uvs) {
-                o->uvs[2 * (base + vi)] = has_uv ? m->mTextureCoords[0][vi].x : 0.0;
-                o->uvs[2 * (base + vi) + 1] = has_uv ? m->mTextureCoords[0][vi].y : 0.0;
-            }
-        }
-        for (unsigned fi = 0; fi < m->mNumFaces; ++fi) {
-            const struct aiFace *fc = &m->mFaces[fi];
-            if (fc->mNumIndices != 3) continue; /* points and lines left by the triangulator */
-            unsigned *t = o->indices + 3 * w->nt;
-            t[0] = (unsigned)base + fc->mIndices[0];
-            t[1] = (unsigned)base + fc->mIndices[det < 0 ? 2 : 1];
-            t[2] = (unsigned)base + fc->mIndices[det < 0 ? 1 : 2];
-            w->nt++;
-        }
-        w->nv += m->mNumVertices;
-    }
-    for (unsigned ci = 0; ci < node->mNumChildren; ++ci) walk(w, node->mChildren[ci], M);
-}
-
-static int raw_vertices_finite(const struct aiScene *sc, const char *path, char *err, size_t errlen)
-{
-    for (unsigned mi = 0; mi < sc->mNumMeshes; ++mi) {
-        const struct aiMesh *m = sc->mMeshes[mi];
-        for (unsigned vi = 0; vi < m->mNumVertices; ++vi) {
-            const struct aiVector3D *p = &m->mVertices[vi];
-            if (isfinite(p->x) && isfinite(p->y) && isfinite(p->z)) continue;
-            if (err && errlen)
-                snprintf(err, errlen, "%s: vertex %u of mesh %u has a non-finite coordinate (%g, %g, %g)", path, vi + 1,
-                         mi + 1, p->x, p->y, p->z);
-            return 0;
-        }
-    }
-    return 1;
-}
-
 soak_status soak_mesh_import(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen)
 {
     if (!path || !mesh) return SOAK_ERR_NULL;
-    /* Coordinates are checked on a first import without post-processing:
-     * joining identical vertices merges a NaN vertex into another one (NaN
-     * compares equal in its spatial sort), leaving a silently degenerate
-     * triangle. The file is then read again with post-processing in one call
-     * (aiApplyPostProcessing on the first import crashes Assimp 5.2 when a
-     * step fails: found by tests/fuzz, reproducers/mesh/stl_fuzz_segv). */
-    const struct aiScene *sc = aiImportFile(path, 0);
-    int finite = !sc || !sc->mRootNode || raw_vertices_finite(sc, path, err, errlen);
-    if (sc) aiReleaseImport(sc);
-    if (!finite) return SOAK_ERR_PARSE;
-    sc = aiImportFile(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
-                                aiProcess_SortByPType);
-    if (!sc || !sc->mRootNode) {
-        set_err(err, errlen, "%s: cannot read mesh (%s)", path, aiGetErrorString());
-        if (sc) aiReleaseImport(sc);
-        return SOAK_ERR_PARSE;
-    }
-    static const double I[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    walk_state w = {sc, NULL, 0, 0, 1, 0, 1};
-    walk(&w, sc->mRootNode, I);
-    if (w.nt == 0) {
-        set_err(err, errlen, "%s: %s", path, "file contains no triangles");
-        aiReleaseImport(sc);
-        return SOAK_ERR_PARSE;
-    }
-    if (require_uvs && !w.all_uv) {
-        set_err(err, errlen, "%s: %s", path, "mesh has no UVs");
-        aiReleaseImport(sc);
-        return SOAK_ERR_PARSE;
-    }
-    if (w.nv > 0xFFFFFFFEu) {
-        set_err(err, errlen, "%s: %s", path, "too many vertices");
-        aiReleaseImport(sc);
-        return SOAK_ERR_ARG;
-    }
-    soak_mesh m = {0};
-    m.n_vertices = w.nv;
-    m.n_triangles = w.nt;
-    m.positions = malloc(3 * w.nv * sizeof(double));
-    m.normals = malloc(3 * w.nv * sizeof(double));
-    m.uvs = w.any_uv ? malloc(2 * w.nv * sizeof(double)) : NULL;
-    m.indices = malloc(3 * w.nt * sizeof(unsigned));
-    if (!m.positions || !m.normals || !m.indices || (w.any_uv && !m.uvs)) {
-        soak_mesh_free(&m);
-        aiReleaseImport(sc);
-        return SOAK_ERR_NOMEM;
-    }
-    walk_state fill = {sc, &m, 0, 0, 0, 0, 0};
-    walk(&fill, sc->mRootNode, I);
-    aiReleaseImport(sc);
-    *mesh = m;
-    return soak_mesh_validate(mesh, path, err, errlen);
+    const soak_mesh_plugin *p = mesh_plugin(path, err, errlen);
+    if (!p) return SOAK_ERR_UNSUPPORTED;
+    soak_status st = p->import(path, require_uvs, mesh, err, errlen);
+    return st == SOAK_OK ? soak_mesh_validate(mesh, path, err, errlen) : st;
 }
 
 soak_status soak_mesh_validate(soak_mesh *m, const char *path, char *err, size_t errlen)

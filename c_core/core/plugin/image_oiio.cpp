@@ -1,22 +1,23 @@
-// OpenImageIO shim behind soak/image.h. The only C++ in libsoak.
+// libsoak_image.so: OpenImageIO behind soak/image.h (the table of
+// core/src/image_plugin.h). Loaded by core/src/image.c on a command's first
+// image, so that commands without images do not map OpenImageIO's 260
+// libraries. Calls nothing of libsoak; no exception leaves the module.
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/filesystem.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <string>
-#include <sys/stat.h>
-#include <unistd.h>
+#include <vector>
 
 extern "C" {
-#include "soak/image.h"
-#include "soak/staged.h"
+#include "image_plugin.h"
 }
 
 using namespace OIIO;
@@ -26,16 +27,6 @@ namespace {
 void set_err(char *err, size_t errlen, const std::string &msg)
 {
     if (err && errlen) std::snprintf(err, errlen, "%s", msg.c_str());
-}
-
-std::string extension_of(const std::string &path)
-{
-    size_t slash = path.find_last_of('/');
-    size_t dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    std::string ext = path.substr(dot + 1);
-    for (auto &c : ext) c = (char)std::tolower((unsigned char)c);
-    return ext;
 }
 
 TypeDesc pixel_type_for(const std::string &ext, soak_pixel_type t)
@@ -60,16 +51,12 @@ float srgb_encode(float v)
     return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
-} // namespace
-
-extern "C" soak_status soak_image_alloc(soak_image *img, int width, int height, int channels)
+// The pixels of soak_image_alloc (core/src/image.c), which frees them.
+soak_status alloc_pixels(soak_image *img, int width, int height, int channels)
 {
-    if (!img) return SOAK_ERR_NULL;
-    img->pixels = nullptr;
     if (!(width >= 1 && width <= 65536 && height >= 1 && height <= 65536 && channels >= 1 && channels <= 4))
         return SOAK_ERR_ARG;
-    size_t n = (size_t)width * (size_t)height * (size_t)channels;
-    img->pixels = (float *)std::calloc(n, sizeof(float));
+    img->pixels = (float *)std::calloc((size_t)width * height * channels, sizeof(float));
     if (!img->pixels) return SOAK_ERR_NOMEM;
     img->width = width;
     img->height = height;
@@ -77,28 +64,10 @@ extern "C" soak_status soak_image_alloc(soak_image *img, int width, int height, 
     return SOAK_OK;
 }
 
-extern "C" void soak_image_free(soak_image *img)
+// Header checks before any decoding (soak/image.h's limits), then the
+// pixels as float.
+soak_status read_image(const char *path, long long file_bytes, soak_image *img, char *err, size_t errlen)
 {
-    if (!img) return;
-    std::free(img->pixels);
-    img->pixels = nullptr;
-    img->width = img->height = img->channels = 0;
-}
-
-extern "C" soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t errlen)
-{
-    if (!path || !img) return SOAK_ERR_NULL;
-    img->pixels = nullptr;
-    struct stat sb;
-    if (stat(path, &sb) != 0) {
-        set_err(err, errlen, std::string(path) + ": cannot read image: " + std::strerror(errno));
-        return SOAK_ERR_IO;
-    }
-    if (!S_ISREG(sb.st_mode)) {
-        set_err(err, errlen, std::string(path) + (S_ISDIR(sb.st_mode) ? ": is a folder, not an image file"
-                                                                       : ": is not a regular file (a FIFO, socket or device)"));
-        return SOAK_ERR_IO;
-    }
     auto in = ImageInput::open(path);
     if (!in) {
         set_err(err, errlen, std::string(path) + ": cannot read image: " + OIIO::geterror());
@@ -118,55 +87,29 @@ extern "C" soak_status soak_image_read(const char *path, soak_image *img, char *
                                  std::to_string((long long)(SOAK_IMAGE_MAX_BYTES / 1048576)) + " MiB");
         return SOAK_ERR_ARG;
     }
-    double file_bytes = (double)sb.st_size;
-    if (bytes > SOAK_IMAGE_FREE_BYTES && bytes > SOAK_IMAGE_MAX_RATIO * file_bytes) {
+    if (bytes > SOAK_IMAGE_FREE_BYTES && bytes > SOAK_IMAGE_MAX_RATIO * (double)file_bytes) {
         set_err(err, errlen, std::string(path) + ": the header claims " + std::to_string(spec.width) + "x" +
                                  std::to_string(spec.height) + "x" + std::to_string(ch) + " pixels (" +
                                  std::to_string((long long)(bytes / 1048576)) + " MiB as float) from a file of " +
-                                 std::to_string((long long)sb.st_size) + " bytes: more than " +
+                                 std::to_string(file_bytes) + " bytes: more than " +
                                  std::to_string((int)SOAK_IMAGE_MAX_RATIO) +
                                  " float bytes per file byte above " +
                                  std::to_string((long long)(SOAK_IMAGE_FREE_BYTES / 1048576)) +
                                  " MiB (a decompression bomb or a corrupt header)");
         return SOAK_ERR_ARG;
     }
-    soak_status st = soak_image_alloc(img, spec.width, spec.height, ch);
+    soak_status st = alloc_pixels(img, spec.width, spec.height, ch);
     if (st != SOAK_OK) {
         set_err(err, errlen, std::string(path) + ": image size out of range or out of memory");
         return st;
     }
     if (!in->read_image(0, 0, 0, ch, TypeDesc::FLOAT, img->pixels)) {
         set_err(err, errlen, std::string(path) + ": truncated or unreadable image data: " + in->geterror());
-        soak_image_free(img);
         return SOAK_ERR_IO;
     }
     in->close();
-    size_t n = (size_t)img->width * img->height * img->channels;
-    for (size_t i = 0; i < n; ++i)
-        if (!std::isfinite(img->pixels[i])) {
-            size_t px = i / img->channels;
-            set_err(err, errlen, std::string(path) + ": pixel (" + std::to_string(px % img->width) + ", " +
-                                     std::to_string(px / img->width) + ") channel " +
-                                     std::to_string(i % img->channels) + " is " +
-                                     (std::isnan(img->pixels[i]) ? "NaN" : "infinite") +
-                                     ": images must hold finite values");
-            soak_image_free(img);
-            return SOAK_ERR_ARG;
-        }
     return SOAK_OK;
 }
-
-extern "C" int soak_path_same(const char *a, const char *b)
-{
-    if (!a || !b) return 0;
-    if (std::strcmp(a, b) == 0) return 1;
-    struct stat sa, sb;
-    if (stat(a, &sa) != 0 || stat(b, &sb) != 0) return 0;
-    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
-}
-
-
-namespace {
 
 // Encodes img in the format named by path's extension into memory (every
 // writer OIIO 2.4 has for our formats accepts an I/O proxy), so that every
@@ -204,21 +147,11 @@ void convert_pixels(const soak_image *img, const soak_image_write_opts &o, bool 
     }
 }
 
-} // namespace
-
-extern "C" soak_status soak_image_stage(soak_staged *stage, const char *path, const soak_image *img,
-                                        const soak_image_write_opts *opts, char *err, size_t errlen)
+soak_status encode_image(const char *path, const char *ext_c, const soak_image *img, const soak_image_write_opts *opts,
+                         unsigned char **bytes_out, size_t *n_out, char *err, size_t errlen)
 {
-    if (!stage || !path || !img || !img->pixels) return SOAK_ERR_NULL;
-    soak_status st = soak_output_path_check(path, err, errlen);
-    if (st != SOAK_OK) return st;
-    std::string ext = extension_of(path);
-    if (ext.empty()) {
-        set_err(err, errlen, std::string(path) + ": output needs an extension (.exr, .png, .tif, ...)");
-        return SOAK_ERR_ARG;
-    }
-    soak_image_write_opts o = {SOAK_TONE_LINEAR, SOAK_PIXEL_AUTO};
-    if (opts) o = *opts;
+    const std::string ext(ext_c);
+    const soak_image_write_opts o = *opts;
     TypeDesc type = pixel_type_for(ext, o.pixel_type);
     ImageSpec spec(img->width, img->height, img->channels, type);
     if (o.tone == SOAK_TONE_SRGB) spec.attribute("oiio:ColorSpace", "sRGB");
@@ -231,22 +164,13 @@ extern "C" soak_status soak_image_stage(soak_staged *stage, const char *path, co
     std::vector<float> px((size_t)img->width * img->height * img->channels);
     convert_pixels(img, o, integer, px.data());
     std::vector<unsigned char> bytes;
-    st = encode(path, spec, px.data(), bytes, err, errlen);
+    soak_status st = encode(path, spec, px.data(), bytes, err, errlen);
     if (st != SOAK_OK) return st;
-    return soak_staged_write(stage, path, bytes.data(), bytes.size(), err, errlen);
-}
-
-extern "C" soak_status soak_image_write(const char *path, const soak_image *img, const soak_image_write_opts *opts,
-                                        char *err, size_t errlen)
-{
-    soak_staged stage;
-    soak_staged_init(&stage);
-    soak_status st = soak_image_stage(&stage, path, img, opts, err, errlen);
-    if (st != SOAK_OK) {
-        soak_staged_abort(&stage);
-        return st;
-    }
-    return soak_staged_commit(&stage, err, errlen);
+    *bytes_out = (unsigned char *)std::malloc(bytes.size() ? bytes.size() : 1);
+    if (!*bytes_out) return SOAK_ERR_NOMEM;
+    std::memcpy(*bytes_out, bytes.data(), bytes.size());
+    *n_out = bytes.size();
+    return SOAK_OK;
 }
 
 // Reads every level of the texture at tmp back, which fails on a file cut
@@ -337,24 +261,39 @@ static soak_status write_tx(const char *tmp, const std::string &path, const soak
     return SOAK_OK;
 }
 
-extern "C" soak_status soak_image_stage_tx(soak_staged *stage, const char *path, const soak_image *img, char *err,
-                                           size_t errlen)
+// The table's entries: C++ exceptions (allocation failures) become status codes.
+soak_status plugin_read(const char *path, long long file_bytes, soak_image *img, char *err, size_t errlen)
 {
-    if (!stage || !path || !img || !img->pixels) return SOAK_ERR_NULL;
-    const char *tmp = nullptr;
-    soak_status st = soak_staged_add(stage, path, &tmp, err, errlen);
-    if (st != SOAK_OK) return st;
-    return write_tx(tmp, path, img, err, errlen);
+    try {
+        return read_image(path, file_bytes, img, err, errlen);
+    } catch (const std::exception &e) {
+        set_err(err, errlen, std::string(path) + ": cannot read image: " + e.what());
+        return SOAK_ERR_NOMEM;
+    }
 }
 
-extern "C" soak_status soak_image_write_tx(const char *path, const soak_image *img, char *err, size_t errlen)
+soak_status plugin_encode(const char *path, const char *ext, const soak_image *img, const soak_image_write_opts *opts,
+                          unsigned char **bytes, size_t *n_bytes, char *err, size_t errlen)
 {
-    soak_staged stage;
-    soak_staged_init(&stage);
-    soak_status st = soak_image_stage_tx(&stage, path, img, err, errlen);
-    if (st != SOAK_OK) {
-        soak_staged_abort(&stage);
-        return st;
+    try {
+        return encode_image(path, ext, img, opts, bytes, n_bytes, err, errlen);
+    } catch (const std::exception &e) {
+        set_err(err, errlen, std::string(path) + ": cannot encode image: " + e.what());
+        return SOAK_ERR_NOMEM;
     }
-    return soak_staged_commit(&stage, err, errlen);
 }
+
+soak_status plugin_write_tx(const char *tmp, const char *path, const soak_image *img, char *err, size_t errlen)
+{
+    try {
+        return write_tx(tmp, path, img, err, errlen);
+    } catch (const std::exception &e) {
+        set_err(err, errlen, std::string(path) + ": cannot write texture: " + e.what());
+        return SOAK_ERR_NOMEM;
+    }
+}
+
+} // namespace
+
+extern "C" __attribute__((visibility("default"))) const soak_image_plugin soak_image_plugin_v1 = {
+    plugin_read, plugin_encode, plugin_write_tx};

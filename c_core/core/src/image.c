@@ -1,0 +1,182 @@
+/* soak/image.h: everything that needs no image library is here; decoding
+ * and encoding go to libsoak_image.so (OpenImageIO), opened on the first
+ * image a command reads or writes (soak/plugin.h). */
+#define _GNU_SOURCE
+#include "soak/image.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "image_plugin.h"
+#include "soak/plugin.h"
+#include "soak/staged.h"
+
+/* Written once under pthread_once, read-only afterwards (soak/plugin.h). */
+static soak_plugin_slot image_slot =
+    SOAK_PLUGIN_SLOT(SOAK_IMAGE_PLUGIN_FILE, SOAK_IMAGE_PLUGIN_SYMBOL, "image I/O (OpenImageIO)");
+
+static void image_slot_fill(void)
+{
+    soak_plugin_slot_fill(&image_slot);
+}
+
+static const soak_image_plugin *image_plugin(const char *path, char *err, size_t errlen)
+{
+    pthread_once(&image_slot.once, image_slot_fill);
+    char why[1600];
+    const soak_image_plugin *p = soak_plugin_slot_table(&image_slot, why, sizeof why);
+    if (!p && err && errlen) snprintf(err, errlen, "%s: %s", path, why);
+    return p;
+}
+
+soak_status soak_image_alloc(soak_image *img, int width, int height, int channels)
+{
+    if (!img) return SOAK_ERR_NULL;
+    img->pixels = NULL;
+    if (!(width >= 1 && width <= 65536 && height >= 1 && height <= 65536 && channels >= 1 && channels <= 4))
+        return SOAK_ERR_ARG;
+    size_t n = (size_t)width * (size_t)height * (size_t)channels;
+    img->pixels = calloc(n, sizeof(float));
+    if (!img->pixels) return SOAK_ERR_NOMEM;
+    img->width = width;
+    img->height = height;
+    img->channels = channels;
+    return SOAK_OK;
+}
+
+void soak_image_free(soak_image *img)
+{
+    if (!img) return;
+    free(img->pixels);
+    img->pixels = NULL;
+    img->width = img->height = img->channels = 0;
+}
+
+int soak_path_same(const char *a, const char *b)
+{
+    if (!a || !b) return 0;
+    if (strcmp(a, b) == 0) return 1;
+    struct stat sa, sb;
+    if (stat(a, &sa) != 0 || stat(b, &sb) != 0) return 0;
+    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+/* First non-finite value, as a message naming pixel and channel. */
+static soak_status check_finite(const char *path, const soak_image *img, char *err, size_t errlen)
+{
+    size_t n = (size_t)img->width * img->height * img->channels;
+    for (size_t i = 0; i < n; ++i) {
+        if (isfinite(img->pixels[i])) continue;
+        size_t px = i / img->channels;
+        if (err && errlen)
+            snprintf(err, errlen, "%s: pixel (%zu, %zu) channel %zu is %s: images must hold finite values", path,
+                     px % img->width, px / img->width, i % img->channels, isnan(img->pixels[i]) ? "NaN" : "infinite");
+        return SOAK_ERR_ARG;
+    }
+    return SOAK_OK;
+}
+
+soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t errlen)
+{
+    if (!path || !img) return SOAK_ERR_NULL;
+    img->pixels = NULL;
+    struct stat sb;
+    if (stat(path, &sb) != 0) {
+        if (err && errlen) snprintf(err, errlen, "%s: cannot read image: %s", path, strerror(errno));
+        return SOAK_ERR_IO;
+    }
+    if (!S_ISREG(sb.st_mode)) {
+        if (err && errlen)
+            snprintf(err, errlen, "%s: %s", path,
+                     S_ISDIR(sb.st_mode) ? "is a folder, not an image file"
+                                         : "is not a regular file (a FIFO, socket or device)");
+        return SOAK_ERR_IO;
+    }
+    const soak_image_plugin *p = image_plugin(path, err, errlen);
+    if (!p) return SOAK_ERR_UNSUPPORTED;
+    soak_status st = p->read(path, (long long)sb.st_size, img, err, errlen);
+    if (st != SOAK_OK) {
+        soak_image_free(img);
+        return st;
+    }
+    st = check_finite(path, img, err, errlen);
+    if (st != SOAK_OK) soak_image_free(img);
+    return st;
+}
+
+/* path's extension in lower case ("" when it has none). */
+static void extension_of(const char *path, char *ext, size_t n)
+{
+    const char *slash = strrchr(path, '/');
+    const char *dot = strrchr(path, '.');
+    ext[0] = '\0';
+    if (!dot || (slash && dot < slash) || strlen(dot + 1) >= n) return;
+    size_t i = 0;
+    for (const char *c = dot + 1; *c; ++c) ext[i++] = (char)(*c >= 'A' && *c <= 'Z' ? *c - 'A' + 'a' : *c);
+    ext[i] = '\0';
+}
+
+soak_status soak_image_stage(soak_staged *stage, const char *path, const soak_image *img,
+                             const soak_image_write_opts *opts, char *err, size_t errlen)
+{
+    if (!stage || !path || !img || !img->pixels) return SOAK_ERR_NULL;
+    soak_status st = soak_output_path_check(path, err, errlen);
+    if (st != SOAK_OK) return st;
+    char ext[32];
+    extension_of(path, ext, sizeof ext);
+    if (!ext[0]) {
+        if (err && errlen) snprintf(err, errlen, "%s: output needs an extension (.exr, .png, .tif, ...)", path);
+        return SOAK_ERR_ARG;
+    }
+    soak_image_write_opts o = {SOAK_TONE_LINEAR, SOAK_PIXEL_AUTO};
+    if (opts) o = *opts;
+    const soak_image_plugin *p = image_plugin(path, err, errlen);
+    if (!p) return SOAK_ERR_UNSUPPORTED;
+    unsigned char *bytes = NULL;
+    size_t n = 0;
+    st = p->encode(path, ext, img, &o, &bytes, &n, err, errlen);
+    if (st == SOAK_OK) st = soak_staged_write(stage, path, bytes, n, err, errlen);
+    free(bytes);
+    return st;
+}
+
+soak_status soak_image_write(const char *path, const soak_image *img, const soak_image_write_opts *opts, char *err,
+                             size_t errlen)
+{
+    soak_staged stage;
+    soak_staged_init(&stage);
+    soak_status st = soak_image_stage(&stage, path, img, opts, err, errlen);
+    if (st != SOAK_OK) {
+        soak_staged_abort(&stage);
+        return st;
+    }
+    return soak_staged_commit(&stage, err, errlen);
+}
+
+soak_status soak_image_stage_tx(soak_staged *stage, const char *path, const soak_image *img, char *err,
+                                size_t errlen)
+{
+    if (!stage || !path || !img || !img->pixels) return SOAK_ERR_NULL;
+    const soak_image_plugin *p = image_plugin(path, err, errlen);
+    if (!p) return SOAK_ERR_UNSUPPORTED;
+    const char *tmp = NULL;
+    soak_status st = soak_staged_add(stage, path, &tmp, err, errlen);
+    if (st != SOAK_OK) return st;
+    return p->write_tx(tmp, path, img, err, errlen);
+}
+
+soak_status soak_image_write_tx(const char *path, const soak_image *img, char *err, size_t errlen)
+{
+    soak_staged stage;
+    soak_staged_init(&stage);
+    soak_status st = soak_image_stage_tx(&stage, path, img, err, errlen);
+    if (st != SOAK_OK) {
+        soak_staged_abort(&stage);
+        return st;
+    }
+    return soak_staged_commit(&stage, err, errlen);
+}

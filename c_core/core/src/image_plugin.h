@@ -1,0 +1,30 @@
+/* The table libsoak_image.so (core/plugin/image_oiio.cpp, OpenImageIO)
+ * exports as soak_image_plugin_v1; image.c calls it after the checks that
+ * need no image library. The module calls nothing of libsoak: pixels it
+ * returns are calloc'ed (soak_image_free frees them), encoded bytes
+ * malloc'ed (the caller frees them). No C++ exception leaves it. */
+#ifndef SOAK_IMAGE_PLUGIN_H
+#define SOAK_IMAGE_PLUGIN_H
+
+#include <stddef.h>
+
+#include "soak/image.h"
+
+typedef struct soak_image_plugin {
+    /* Decodes path (a regular file of file_bytes bytes) into img (channels
+     * capped at 4), refusing from the header what soak/image.h's limits
+     * refuse. Finite values are checked by the caller. */
+    soak_status (*read)(const char *path, long long file_bytes, soak_image *img, char *err, size_t errlen);
+    /* Encodes img in the format of path's extension ext (lower case) into a
+     * malloc'ed buffer. opts is never NULL. */
+    soak_status (*encode)(const char *path, const char *ext, const soak_image *img, const soak_image_write_opts *opts,
+                          unsigned char **bytes, size_t *n_bytes, char *err, size_t errlen);
+    /* Writes img as a mip-mapped tiled texture to the file tmp, read back;
+     * path names the destination in messages. */
+    soak_status (*write_tx)(const char *tmp, const char *path, const soak_image *img, char *err, size_t errlen);
+} soak_image_plugin;
+
+#define SOAK_IMAGE_PLUGIN_FILE "libsoak_image.so"
+#define SOAK_IMAGE_PLUGIN_SYMBOL "soak_image_plugin_v1"
+
+#endif
