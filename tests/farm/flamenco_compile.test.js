@@ -34,11 +34,14 @@ function throwsWith(fn, pattern) {
 const bake = F.loadJobType(path.join(scripts, "soak_bake.js"));
 const anim = F.loadJobType(path.join(scripts, "soak_drying_animation.js"));
 const bakeSettings = (over) => Object.assign(F.defaults(bake.jobType), {output_dir: "/farm/wet"}, over);
-const argsOf = (task) => task.commands.map((c) => c.parameters.args);
+// The soak command lines of a task (its exec commands; each bake task starts
+// with a make-directory of the output folder, checked below).
+const argsOf = (task) => task.commands.filter((c) => c.name === "exec").map((c) => c.parameters.args);
 const opt = (args, name) => args[args.indexOf(name) + 1];
 
 // ---- the scripts themselves ----
 check("checked-in scripts equal build_scripts.sh output", () => {
+    fs.mkdirSync(tmp, {recursive: true});
     const out = fs.mkdtempSync(path.join(tmp, "scripts-"));
     execFileSync("sh", [path.join(root, "farm/flamenco/build_scripts.sh"), out]);
     for (const f of ["soak_bake.js", "soak_drying_animation.js"]) {
@@ -128,7 +131,8 @@ check("drying 1-7, chunks of 3: tasks, commands, single-run times", () => {
     for (const t of tasks) {
         assert.equal(t.type, "misc");
         assert.deepEqual(t.dependencies, []);
-        for (const c of t.commands) {
+        assert.deepEqual(t.commands[0], {name: "make-directory", parameters: {path: "/farm/wet"}, totalStepCount: 0});
+        for (const c of t.commands.slice(1)) {
             assert.equal(c.name, "exec");
             assert.equal(c.parameters.exe, "{soak}");
             assert.ok(c.parameters.args.every((a) => typeof a === "string"), "exec args must be strings");
@@ -137,7 +141,7 @@ check("drying 1-7, chunks of 3: tasks, commands, single-run times", () => {
     assert.deepEqual(argsOf(tasks[1]), [["bake", "drying", "--width", "64", "--height", "48", "--seed", "5",
         "--t-fill", "0.3", "--noise", "0.4", "--frames", "4-6", "--time", "0.625", "--frame-time", "0.125",
         "-o", "/farm/wet/wet.%04d.exr"]]);
-    assert.equal(tasks[1].commands[0].totalStepCount, 3);
+    assert.equal(tasks[1].commands[1].totalStepCount, 3);
     assert.deepEqual(framesOfCommands(tasks, 0.25, 1, 0.125), [1, 2, 3, 4, 5, 6, 7]);
 });
 
@@ -173,7 +177,7 @@ check("a chunk whose own time would round differently is split (exact times)", (
     assert.ok(tasks.some((t) => t.commands.length > 1), "no chunk was split");
     const frames = framesOfCommands(tasks, found.T, 1, 0.01);
     assert.deepEqual(frames, Array.from({length: 60}, (_, i) => i + 1));
-    console.log(`     time ${found.T}: ${tasks.reduce((n, t) => n + t.commands.length, 0)} commands for 6 chunks`);
+    console.log(`     time ${found.T}: ${tasks.reduce((n, t) => n + argsOf(t).length, 0)} soak runs for 6 chunks`);
 });
 
 check("drying with a mask: the mask sets the size (no --width/--height)", () => {
@@ -198,6 +202,7 @@ check("rain: one task, one map, the mesh as input", () => {
     const {tasks} = bake.compile(bakeSettings({kind: "rain", input: "/farm/statue.glb", output_name: "rain.exr",
                                                width: 256, height: 256}));
     assert.deepEqual(tasks.map((t) => t.name), ["bake-rain"]);
+    assert.deepEqual(tasks[0].commands[0].parameters, {path: "/farm/wet"});
     assert.deepEqual(argsOf(tasks[0]), [["bake", "rain", "/farm/statue.glb", "--width", "256", "--height", "256",
                                          "--seed", "0", "-o", "/farm/wet/rain.exr"]]);
 });
@@ -243,6 +248,7 @@ check("animation: bake chunks, render chunks depending on the bakes of their fra
     assert.deepEqual(tasks[3].dependencies, [id("bake-1-3"), id("bake-4")]);
     assert.equal(settings.render_output_path, "/farm/render/shot/2026-11-25_030405/######");
     const wet = "/farm/render/shot/2026-11-25_030405/wetmap/wet.%04d.exr";
+    assert.equal(tasks[1].commands[0].parameters.path, "/farm/render/shot/2026-11-25_030405/wetmap");
     assert.deepEqual(argsOf(tasks[1]), [["bake", "drying", "--width", "32", "--height", "32", "--seed", "0",
         "--t-fill", "0.2", "--noise", "0.3", "--frames", "4-4", "--time", "0.75", "--frame-time", "0.25", "-o", wet]]);
     const r = tasks[3].commands[0];

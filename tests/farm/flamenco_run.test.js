@@ -125,8 +125,10 @@ function check(name, fn) {
 // ---- 1. soak-bake in chunks vs one run ----
 const bake = F.loadJobType(path.join(scripts, "soak_bake.js"));
 const bakeCases = [
-    {kind: "drying", frames: "1-7", chunk_size: 3, width: 48, height: 40, seed: 3, time: 0.2, frame_time: 0.11,
-     extra_args: "--noise 0.5 --t-fill 0.3"},
+    // time 0.3, frame time 0.11: chunk 4-6's own time 0.63 + 0.11 rounds differently
+    // from 0.3 + 4 * 0.11, so that chunk bakes as two exact runs (splitRequired).
+    {kind: "drying", frames: "1-7", chunk_size: 3, width: 48, height: 40, seed: 3, time: 0.3, frame_time: 0.11,
+     extra_args: "--noise 0.5 --t-fill 0.3", splitRequired: true},
     {kind: "turbulence", frames: "0-3", chunk_size: 2, width: 40, height: 32, seed: 9, time: 0,
      frame_time: 1 / 24, extra_args: "--evolve 1.5 --octaves 3"},
 ];
@@ -134,7 +136,10 @@ for (const c of bakeCases) {
     check(`soak-bake ${c.kind} ${c.frames} in chunks of ${c.chunk_size} == one soak run`, () => {
         const dir = path.join(tmp, `bake_${c.kind}`);
         const settings = Object.assign(F.defaults(bake.jobType), c, {output_dir: path.join(dir, "chunked")});
+        delete settings.splitRequired;
         const compiled = bake.compile(settings);
+        const execs = (t) => t.commands.filter((x) => x.name === "exec").length;
+        if (c.splitRequired) assert.ok(compiled.tasks.some((t) => execs(t) > 1), "no chunk split: the case misses its point");
         const n = runJob(compiled, {soak});
         const [A, B] = c.frames.split("-").map(Number);
         const single = path.join(dir, "single", "wet.%04d.exr");
@@ -148,7 +153,8 @@ for (const c of bakeCases) {
         for (const [x, y] of pairs) assertSameImage(images, x, y);
         assert.ok(imagesDiffer(images, framePath(single, A), framePath(single, B)), "first and last frames are " +
                   "equal: the sequence does not change, the comparison proves little");
-        console.log(`     ${compiled.tasks.length} tasks, ${n} soak commands, ${B - A + 1} frames identical`);
+        console.log(`     ${compiled.tasks.length} tasks, ${n} commands (${compiled.tasks.map(execs).join("+")} soak runs), ` +
+                    `${B - A + 1} frames identical`);
     });
 }
 
@@ -226,6 +232,20 @@ check("soak-drying-animation 1-4: maps equal one run, renders follow the drying"
     // Same shading inputs, same Cycles seed: the same pixel, up to one 16-bit step.
     assert.ok(worstDry <= 1 / 65535, "a dry texel renders differently from the dry frame");
     assert.ok(leastDarkening > 0.01, "a wet texel does not render darker than dry");
+});
+
+check("soak-drying-animation: a render task fails when no material has the Image source", () => {
+    const dir = path.join(tmp, "anim");
+    const settings = Object.assign(F.defaults(anim.jobType), {
+        frames: "1", render_output_root: path.join(dir, "render2"), material: "NoSuchMaterial",
+        render_output_path: path.join(dir, "render2", "######"), blendfile: path.join(dir, "shot.blend"),
+        format: "PNG", scene: "Scene"});
+    const render = anim.compile(settings).tasks.find((t) => t.type === "blender");
+    const cmd = F.expandTask(render, {blender: "blender", blenderArgs: "-b -y --factory-startup"}).commands[0];
+    const r = run(F.commandArgv(cmd));
+    assert.notEqual(r.status, 0, "Blender rendered without a wet-map source");
+    assert.match(r.stdout + r.stderr, /Soak: no material 'NoSuchMaterial' has a Soak Image wetness source/);
+    assert.ok(!fs.existsSync(path.join(dir, "render2", "000001.png")), "a frame was rendered anyway");
 });
 
 console.log(`${failures ? "FAILED" : "passed"} in ${secs()} s`);

@@ -58,7 +58,6 @@ def main():
     placeholder = bpy.data.images.new("wet_placeholder", size, size, float_buffer=True)
     placeholder.pixels[:] = [1.0] * (4 * size * size)
     placeholder.pack()
-    mat.soak.preset = "concrete"
     mat.soak.wetness_source = "IMAGE"
     mat.soak.wet_map = placeholder
     if bpy.ops.soak.make_wet() != {"FINISHED"}:
