@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -129,30 +130,62 @@ static soak_rgb direct(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb 
     return soak_rgb3(f.r * wi.z, f.g * wi.z, f.b * wi.z);
 }
 
+struct soak_shading_material {
+    const soak_material *m;
+    rt_material_bsdf mb;
+};
+
+soak_status soak_shading_material_new(const soak_material *m, soak_shading_material **out)
+{
+    if (!m || !out) return SOAK_ERR_NULL;
+    *out = NULL;
+    soak_shading_material *p = malloc(sizeof *p);
+    if (!p) return SOAK_ERR_NOMEM;
+    p->m = m;
+    soak_status st = material_bsdfs(m, 0, &p->mb);
+    if (st != SOAK_OK) {
+        free(p);
+        return st;
+    }
+    *out = p;
+    return SOAK_OK;
+}
+
+void soak_shading_material_free(soak_shading_material *p) { free(p); }
+
 soak_status soak_material_radiance(const soak_material *m, double wetness, soak_vec3 wo, soak_rgb env,
                                    const soak_local_light *lights, int n_lights, int samples, uint64_t seed,
                                    soak_albedo_estimate *out)
 {
-    if (!m || !out || (!lights && n_lights > 0)) return SOAK_ERR_NULL;
+    soak_shading_material *p = NULL;
+    soak_status st = soak_shading_material_new(m, &p);
+    if (st == SOAK_OK) st = soak_shading_radiance(p, wetness, wo, env, lights, n_lights, samples, seed, out);
+    soak_shading_material_free(p);
+    return st;
+}
+
+soak_status soak_shading_radiance(const soak_shading_material *p, double wetness, soak_vec3 wo, soak_rgb env,
+                                  const soak_local_light *lights, int n_lights, int samples, uint64_t seed,
+                                  soak_albedo_estimate *out)
+{
+    if (!p || !out || (!lights && n_lights > 0)) return SOAK_ERR_NULL;
     if (!soak_in_range(wetness, 0, 1) || !soak_v3_is_unit(wo) || !(wo.z > 0) || !(n_lights >= 0) ||
         !(samples >= 1 && samples <= 100000000))
         return SOAK_ERR_ARG;
-    rt_material_bsdf mb;
-    soak_status st = material_bsdfs(m, 0, &mb);
-    if (st != SOAK_OK) return st;
-    double p_wet = mb.has_wet ? wetness * m->film_coverage : 0.0;
+    const rt_material_bsdf *mb = &p->mb;
+    double p_wet = mb->has_wet ? wetness * p->m->film_coverage : 0.0;
     soak_albedo_estimate a, dry_a = {{0, 0, 0}, {0, 0, 0}}, wet_a = dry_a;
-    st = albedo_of(&mb, p_wet, wo, samples, seed, &a);
+    soak_status st = albedo_of(mb, p_wet, wo, samples, seed, &a);
     /* the walk stand-in needs each state's own albedo */
-    if (st == SOAK_OK && (soak_bsdf_get_flags(&mb.wet) & SOAK_BSDF_WALK) && p_wet > 0) st = albedo_of(&mb, 1.0, wo, samples, seed, &wet_a);
-    if (st == SOAK_OK && (soak_bsdf_get_flags(&mb.dry) & SOAK_BSDF_WALK) && p_wet < 1) st = albedo_of(&mb, 0.0, wo, samples, seed, &dry_a);
+    if (st == SOAK_OK && (soak_bsdf_get_flags(&mb->wet) & SOAK_BSDF_WALK) && p_wet > 0) st = albedo_of(mb, 1.0, wo, samples, seed, &wet_a);
+    if (st == SOAK_OK && (soak_bsdf_get_flags(&mb->dry) & SOAK_BSDF_WALK) && p_wet < 1) st = albedo_of(mb, 0.0, wo, samples, seed, &dry_a);
     if (st != SOAK_OK) return st;
     soak_rgb L = soak_rgb3(a.value.r * env.r, a.value.g * env.g, a.value.b * env.b);
     for (int i = 0; i < n_lights; ++i) {
         soak_vec3 wi = lights[i].wi;
         if (!soak_v3_is_unit(wi) || !(wi.z > 0)) continue;
-        soak_rgb fd = p_wet < 1 ? direct(&mb.dry, wi, wo, dry_a.value) : soak_rgb3(0, 0, 0);
-        soak_rgb fw = p_wet > 0 ? direct(&mb.wet, wi, wo, wet_a.value) : soak_rgb3(0, 0, 0);
+        soak_rgb fd = p_wet < 1 ? direct(&mb->dry, wi, wo, dry_a.value) : soak_rgb3(0, 0, 0);
+        soak_rgb fw = p_wet > 0 ? direct(&mb->wet, wi, wo, wet_a.value) : soak_rgb3(0, 0, 0);
         for (int ch = 0; ch < 3; ++ch) {
             double v = ((1 - p_wet) * soak_rgb_at(fd, ch) + p_wet * soak_rgb_at(fw, ch)) * soak_rgb_at(lights[i].irradiance, ch);
             soak_rgb_set(&L, ch, soak_rgb_at(L, ch) + v);

@@ -141,18 +141,22 @@ static soak_status albedos(const soak_material *m, const hit_list *l, const soak
                            double *val, double *var)
 {
     int n = l->n < o->max_hits ? l->n : o->max_hits;
-    for (int i = 0; i < n; ++i) {
+    if (n == 0) return SOAK_OK;
+    soak_shading_material *sm = NULL;
+    soak_status st = soak_shading_material_new(m, &sm);
+    for (int i = 0; i < n && st == SOAK_OK; ++i) {
         const view_hit *h = &l->h[pick(l, o->max_hits, i)];
         soak_albedo_estimate e;
-        soak_status st = soak_material_radiance(m, h->wetness, h->wo, env, h->lights, h->n_lights, o->samples,
-                                                o->seed + (uint64_t)i, &e);
-        if (st != SOAK_OK) return st;
+        st = soak_shading_radiance(sm, h->wetness, h->wo, env, h->lights, h->n_lights, o->samples,
+                                   o->seed + (uint64_t)i, &e);
+        if (st != SOAK_OK) break;
         for (int ch = 0; ch < 3; ++ch) {
             val[3 * i + ch] = soak_rgb_at(e.value, ch);
             var[3 * i + ch] = soak_rgb_at(e.std_error, ch) * soak_rgb_at(e.std_error, ch);
         }
     }
-    return SOAK_OK;
+    soak_shading_material_free(sm);
+    return st;
 }
 
 static double rel_rms(const double *ref, const double *ref_var, const double *m, const double *m_var, int n3)

@@ -55,6 +55,16 @@ soak_status soak_material_radiance(const soak_material *m, double wetness, soak_
                                    const soak_local_light *lights, int n_lights, int samples, uint64_t seed,
                                    soak_albedo_estimate *out);
 
+/* The same for many shading points of one material: the BSDFs (and the
+ * tables some models build at set-up) are made once. The material must
+ * outlive the handle. */
+typedef struct soak_shading_material soak_shading_material;
+soak_status soak_shading_material_new(const soak_material *m, soak_shading_material **out);
+soak_status soak_shading_radiance(const soak_shading_material *p, double wetness, soak_vec3 wo, soak_rgb env,
+                                  const soak_local_light *lights, int n_lights, int samples, uint64_t seed,
+                                  soak_albedo_estimate *out);
+void soak_shading_material_free(soak_shading_material *p);
+
 /* Cost of shading m once, as the renderer does per hit of the wet state
  * (dry when the material has none): eval_ns is soak_bsdf_eval_cost_ns
  * (RGB value and pdf, wall-clock CPU time, n_rounds rounds of 64 pairs);
