@@ -60,24 +60,20 @@ const SOAK_PY_WETMAP = `
 import bpy, sys
 a = sys.argv[sys.argv.index("--") + 1:]
 pattern, first, last, only = a[0], int(a[1]), int(a[2]), a[3]
+nodes = [n for m in bpy.data.materials if m.use_nodes and (not only or m.name == only)
+         for n in m.node_tree.nodes if n.bl_idname == "ShaderNodeTexImage" and n.get("soak_role") == "source"]
+if not nodes:
+    raise SystemExit("Soak: no material " + (repr(only) + " " if only else "") + "has a Soak Image wetness source")
 img = bpy.data.images.load(pattern % first, check_existing=False)
 img.source = "SEQUENCE"
 img.colorspace_settings.name = "Non-Color"
-n_set = 0
-for m in bpy.data.materials:
-    if not m.use_nodes or (only and m.name != only):
-        continue
-    for n in m.node_tree.nodes:
-        if n.bl_idname == "ShaderNodeTexImage" and n.get("soak_role") == "source":
-            n.image = img
-            n.image_user.frame_start = first
-            n.image_user.frame_offset = first - 1
-            n.image_user.frame_duration = last - first + 1
-            n.image_user.use_auto_refresh = True
-            n_set += 1
-if n_set == 0:
-    raise SystemExit("Soak: no material " + (repr(only) + " " if only else "") + "has a Soak Image wetness source")
-print("Soak: wet-map sequence", pattern, "on", n_set, "image source(s)")
+for n in nodes:
+    n.image = img
+    n.image_user.frame_start = first
+    n.image_user.frame_offset = first - 1
+    n.image_user.frame_duration = last - first + 1
+    n.image_user.use_auto_refresh = True
+print("Soak: wet-map sequence", pattern, "on", len(nodes), "image source(s)")
 bpy.context.scene.render.use_file_extension = True
 `;
 
