@@ -173,7 +173,7 @@ def check_wetmap(tmp, failures):
     """soak_wetmap.osl on .tx maps made by maketx: a constant start value 0.7
     (t0 = 0.3) and a map whose top half is 1 and bottom half 0 (the image's
     top row must be v = 1, as in Blender's UVs). Time is swept along u; the
-    expected wetness is the schedule's definition (Hnat et al. 2006; osl/README):
+    expected wetness is the schedule's definition (Hnat et al. 2006; osl/README.md):
     drying Amount * (1 - P), wetting Amount * P, P = clamp((Time - t0) / FillTime),
     0 where the map is 0."""
     maps = {"const": ["--pattern", "constant:color=0.7", "32x32", "1"],

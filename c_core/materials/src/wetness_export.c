@@ -158,7 +158,7 @@ static soak_status build(cJSON *root, const soak_preset_db *db, const soak_liqui
     add_str(&b, root, "table_note",
             "rows at wetness i/(rows-1), steady state (progress 1), preset film thickness; interpolate "
             "linearly in wetness. Each material's saturation_wetness (pores full, film starts) is a kink "
-            "of the curves: use enough rows (17 or more). Chain documented in c_core/include/soak/wetness.h.");
+            "of the curves: use enough rows (17 or more). Chain documented in c_core/materials/include/soak/wetness.h.");
     cJSON *mats = cJSON_AddArrayToObject(root, "materials");
     cJSON *liqs = cJSON_AddArrayToObject(root, "liquids");
     if (!b.ok || !mats || !liqs) return SOAK_ERR_NOMEM;
