@@ -85,6 +85,25 @@ else
   bad "bake volume --format vdb failed: $(head -c 300 "$SOAK_TMP/vdb.err")"
 fi
 
+# Started through an explicit loader (as the Blender 4.3 tests start soak in
+# their chroot: /proc/self/exe is then the loader), a copy of soak still
+# takes the modules beside it.
+loader=$(readelf -l "$SOAK" 2> /dev/null | sed -n 's/.*program interpreter: \(.*\)]/\1/p')
+if [ -x "$loader" ]; then
+  inst="$SOAK_TMP/installed"
+  rm -rf "$inst" && mkdir -p "$inst"
+  cp "$SOAK" "$(dirname "$SOAK")"/libsoak_*.so "$inst/"
+  rm -f l.png
+  if loaded explicit -- "$loader" "$inst/soak" bake turbulence --width 8 --height 8 -o l.png && [ -s l.png ]; then
+    grep -qx "$inst/libsoak_image.so" "$SOAK_TMP/explicit.libs" && ok "under $loader the image module beside the copy is used" \
+      || bad "under $loader: $(grep libsoak_image "$SOAK_TMP/explicit.libs" || echo no image module) loaded, want $inst/libsoak_image.so"
+  else
+    bad "soak under $loader failed: $(head -c 300 "$SOAK_TMP/explicit.err")"
+  fi
+else
+  skip "no program interpreter found in $SOAK" "explicit loader"
+fi
+
 # No module where soak looks: a clear error naming the module and the folder.
 empty="$SOAK_TMP/no-modules"
 mkdir -p "$empty"
