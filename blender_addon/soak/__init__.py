@@ -14,14 +14,7 @@ bl_info = {
     "category": "Material",
 }
 
-if "bpy" in locals():
-    import importlib
-    for _m in (compat, data, nodes, properties, preferences, operators, ui):  # noqa: F821
-        importlib.reload(_m)
-else:
-    from . import compat, data, nodes, properties, preferences, operators, ui
-
-import bpy  # noqa: E402
+from . import operators, preferences, properties, ui
 
 _modules = (preferences, properties, operators, ui)
 

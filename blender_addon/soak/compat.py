@@ -109,7 +109,9 @@ def coat_base_compensation(b, coat_weight, coat_ior, normal):
     fr.inputs["IOR"].default_value = coat_ior
     b.link(normal, fr.inputs["Normal"])
     dim = b.math("MULTIPLY", coat_weight, fr.outputs[0])
-    return b.math("DIVIDE", 1.0, b.math("MAXIMUM", b.math("SUBTRACT", 1.0, dim), 1e-3))
+    # 1 - dim is 0 only at exact grazing with a full coat, where the engine
+    # shows none of the base: Math's safe division gives 0 there
+    return b.math("DIVIDE", 1.0, b.math("SUBTRACT", 1.0, dim))
 
 
 def exact_lookups_required(version=None):

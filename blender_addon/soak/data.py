@@ -11,7 +11,7 @@ import bpy
 
 DATA_FILE = os.path.join(os.path.dirname(__file__), "soak_data.json")
 FORMAT = "soak-blender"
-FORMAT_VERSION = 2
+FORMAT_VERSION = 3
 
 _cache = {}
 
@@ -64,34 +64,67 @@ def liquid_items(_self=None, _context=None):
     return [(l["name"], l["display_name"], "") for l in load()["liquids"]]
 
 
-def _image(name, width, height, rows, per_pixel, tag):
+def _image(name, width, height, pixels, tag, alpha=False):
+    """A packed float image of RGB(A) pixels (row 0 at the bottom, as
+    Blender stores images); reused when its tag and size match."""
     img = bpy.data.images.get(name)
     if img is not None and img.get("soak_tag") == tag and tuple(img.size) == (width, height):
         return img
     if img is not None:
         bpy.data.images.remove(img)
-    img = bpy.data.images.new(name, width=width, height=height, alpha=False, float_buffer=True)
+    img = bpy.data.images.new(name, width=width, height=height, alpha=alpha, float_buffer=True)
     img.colorspace_settings.name = "Non-Color"
-    px = []
-    for row in rows:  # row 0 is the bottom row of a Blender image
-        if len(row) != width * per_pixel:
-            raise SoakDataError(f"{name}: row of {len(row)} values, expected {width * per_pixel}")
-        for j in range(width):
-            px.extend(row[per_pixel * j: per_pixel * j + 3])
-            px.append(1.0)
-    img.pixels.foreach_set(px)
+    if alpha:
+        img.alpha_mode = "CHANNEL_PACKED"      # four data channels, never premultiplied
+    img.pixels.foreach_set(pixels)
     img.pack()
     img["soak_tag"] = tag
     img.use_fake_user = False
     return img
 
 
-def lookup_images(preset, liquid_name):
-    """(albedo image, params image) for a preset and liquid."""
+def _rgb_rows(name, rows, width, per_pixel):
+    for row in rows:
+        if len(row) != width * per_pixel:
+            raise SoakDataError(f"{name}: row of {len(row)} values, expected {width * per_pixel}")
+    return [[row[per_pixel * j: per_pixel * j + 3] for j in range(width)] for row in rows]
+
+
+class LookupImages:
+    """The images a group reads for one preset and liquid:
+    params  the per-row parameters (RGB pixels as exported);
+    linear  per channel c, the albedo table with channel c's function in
+            channel c and zeros in the others (Linear lookups, summed);
+    cells   per channel c, one texel per table cell holding the cell's
+            bilinear form: (f00, f01 - f00, f10 - f00) and alpha
+            f11 - f10 - f01 + f00 (f01 the next column, f10 the next row),
+            for one Closest read per channel (exact lookups)."""
+
+    def __init__(self, params, linear, cells):
+        self.params, self.linear, self.cells = params, linear, cells
+
+
+def lookup_images(preset, liquid_name, exact=False):
     t = table(preset, liquid_name)
     d = load()
     rows = t["rows_below"] + t["rows_above"] + 1
+    na = t["columns"]
     tag = f"{d['materials_hash']}:{preset}:{liquid_name}"
-    alb = _image(f"Soak LUT {preset} {liquid_name}", t["columns"], rows, t["albedo"], 3, tag)
-    par = _image(f"Soak Params {preset} {liquid_name}", len(t["params"][0]) // 3, rows, t["params"], 3, tag)
-    return alb, par
+    base = f"{preset} {liquid_name}"
+    npar = len(t["params"][0]) // 3
+    par = _image(f"Soak Params {base}", npar, rows,
+                 [v for row in _rgb_rows("params", t["params"], npar, 3) for p in row for v in (*p, 1.0)], tag)
+    alb = _rgb_rows("albedo", t["albedo"], na, 3)
+    linear, cells = [], []
+    for c in range(3):
+        if not exact:
+            px = [v for row in alb for p in row for v in [p[c] if k == c else 0.0 for k in range(3)] + [1.0]]
+            linear.append(_image(f"Soak LUT {base} {'RGB'[c]}", na, rows, px, tag))
+            continue
+        px = []
+        for r in range(rows - 1):
+            for j in range(na - 1):
+                f00, f01, f10, f11 = alb[r][j][c], alb[r][j + 1][c], alb[r + 1][j][c], alb[r + 1][j + 1][c]
+                px += [f00, f01 - f00, f10 - f00, f11 - f10 - f01 + f00]
+        cells.append(_image(f"Soak Cells {base} {'RGB'[c]}", na - 1, rows - 1, px, tag, alpha=True))
+    return LookupImages(par, linear, cells)

@@ -1,19 +1,25 @@
 """The "Soak Wet" node group and its insertion in front of a Principled BSDF.
 
-The group evaluates, with native nodes only:
-  L      = Wetness * min(Wet Map / Puddle Level, 1) * P,  P = clamp((Time - Start Time) / Fill Time)
-           (1 - P when Drying; P = 1 unless Schedule), wetness.h step 1;
-  colour = the core's wetness function for any dry colour, looked up per
-           channel in the exported float image (bilinear between pixel
-           centres, as the core's writer tested);
-  rough  = Roughness * R(L) / R(0), R the preset's exported (apparent) roughness;
+The group evaluates, with native nodes only, what the core exports
+(soak_data.json, layout in its "layout" entry); it derives no formula:
+  L      = Wetness * min(Wet Map / Puddle Level, 1) * P, P the export's fill
+           schedule program (1 - P when Drying; P = 1 unless Schedule);
+  colour = the core's wetness function for each channel of any dry colour:
+           the export's column and row programs place the channel and L in
+           the table; Linear lookups (one per channel, Cycles' bilinear
+           filter is the core's) or, with exact lookups (EEVEE), one Closest
+           read per channel of the cell's bilinear form;
+  rough  = Roughness * the exported apparent-roughness ratio;
   coat   = the liquid's mirror: film plus water-filled pores (coat / clearcoat weight);
   spec   = Specular * the base's own specular left under the liquid
            (soak/wet_specular.h, exported; replaces the dry lobe);
   metal  = a Metallic material's metallic part gets a conductor preset's
            function (metal under the film), mixed by Metallic;
   sheet  = the thin-sheet transmittance (a Translucent BSDF added);
-  normal = a bump from the wet map at spill edges (Spill Edge strength)."""
+  normal = a bump from the wet map at spill edges (Spill Edge strength).
+Costs are kept low (c_core/bench/bench_blender_overhead.sh): Cycles folds
+the nodes whose inputs are constant, so a constant wetness costs only the
+lookups and what follows them."""
 
 import json
 
@@ -44,6 +50,22 @@ INPUTS = (
     ("Specular", "float", 0.5, 0.0, 100.0),
     ("Metallic", "factor", 0.0, 0.0, 1.0),
 )
+# Before Make Wet the panel's controls keep their values on the material's
+# settings under this prefix (ID properties); Make Wet gives them to the group.
+PENDING = "pending_"
+
+
+def pending_values(settings):
+    """{group input name: value} of the controls set before Make Wet."""
+    return {name: settings[PENDING + name] for name, *_ in INPUTS if PENDING + name in settings}
+
+
+def clear_pending(settings):
+    for name, *_ in INPUTS:
+        if PENDING + name in settings:
+            del settings[PENDING + name]
+
+
 OUTPUTS = (("Base Color", "color"), ("Roughness", "float"), ("Coat Weight", "float"),
            ("Translucency", "color"), ("Normal", "vector"), ("Liquid", "float"), ("Specular", "float"))
 
@@ -76,11 +98,122 @@ class _Builder:
         return n.outputs[0]
 
 
+# Vector Math has these operations too: a program's leading ops on the colour
+# as a whole run once for the three channels.
+_VECTOR_OPS = ("ADD", "SUBTRACT", "MULTIPLY", "DIVIDE", "MULTIPLY_ADD", "MINIMUM", "MAXIMUM")
+
+
+def _split(op):
+    """[op, args..., clamp] -> (op, args, clamp)."""
+    return op[0], list(op[1:-1]), bool(op[-1])
+
+
+def _is_num(a):
+    return isinstance(a, (int, float)) and not isinstance(a, bool)
+
+
+def _uses(ops):
+    n = [0] * len(ops)
+    for op in ops:
+        for a in _split(op)[1]:
+            if isinstance(a, str) and a.startswith("#"):
+                n[int(a[1:])] += 1
+    n[-1] += 1
+    return n
+
+
+def _scale_into(ops, i, k, o, uses):
+    """Rewrites op i (used once, unclamped) so it yields result * k + o;
+    False when it cannot (the caller appends an operation instead)."""
+    op, args, clamp = _split(ops[i])
+    if clamp or uses[i] != 1:
+        return False
+    if op == "MULTIPLY" and _is_num(args[1]):
+        ops[i] = ["MULTIPLY_ADD", args[0], args[1] * k, o, False]
+        return True
+    if op == "MULTIPLY_ADD" and _is_num(args[1]):
+        if _is_num(args[2]):
+            ops[i] = ["MULTIPLY_ADD", args[0], args[1] * k, args[2] * k + o, False]
+            return True
+        if isinstance(args[2], str) and args[2].startswith("#") and _scale_into(ops, int(args[2][1:]), k, o, uses):
+            ops[i] = ["MULTIPLY_ADD", args[0], args[1] * k, args[2], False]
+            return True
+    return False
+
+
+def affine_program(ops, k, o):
+    """The program with its output mapped to output * k + o, folded into its
+    last operations where they are affine (no extra node), else appended."""
+    ops = [list(op) for op in ops]
+    if not _scale_into(ops, len(ops) - 1, k, o, _uses(ops)):
+        ops.append(["MULTIPLY_ADD", f"#{len(ops) - 1}", k, o, False])
+    return ops
+
+
+def clamped_program(ops):
+    """The program with its output clamped to [0, 1]."""
+    ops = [list(op) for op in ops]
+    ops[-1][-1] = True
+    return ops
+
+
+def run_program(b, ops, env, results=None):
+    """Math nodes for an exported program (layout: soak_data.json); env maps
+    input names to sockets or numbers; results: sockets of ops computed
+    already (the program runs on from after the last of them); returns the
+    output socket."""
+    results = dict(results or {})
+    start = max(results) + 1 if results else 0
+    for i, op in enumerate(ops[start:], start):
+        name, args, clamp = _split(op)
+        vals = [a if _is_num(a) else (results[int(a[1:])] if a.startswith("#") else env[a]) for a in args]
+        results[i] = b.math(name, *vals, clamp=clamp)
+    return results[len(ops) - 1]
+
+
+def _vector_prefix(ops):
+    """How many leading ops run on the colour as a vector: unclamped Vector
+    Math operations on x and numbers, a chain the rest reads only at its end."""
+    n = 0
+    for i, op in enumerate(ops):
+        name, args, clamp = _split(op)
+        ok = name in _VECTOR_OPS and not clamp and all(
+            _is_num(a) or a == "x" or a == f"#{i - 1}" for a in args)
+        if not ok:
+            break
+        n = i + 1
+    while n > 0 and any(a.startswith("#") and int(a[1:]) < n - 1
+                        for op in ops[n:] for a in _split(op)[1] if isinstance(a, str)):
+        n -= 1
+    return n
+
+
+def run_program_rgb(b, ops, colour):
+    """The program for each channel of a colour: three output sockets."""
+    n = _vector_prefix(ops)
+    v = colour
+    for op in ops[:n]:
+        name, args, _ = _split(op)
+        node = b.node("ShaderNodeVectorMath", operation=name)
+        for i, a in enumerate(args):
+            if _is_num(a):
+                node.inputs[i].default_value = (float(a),) * 3
+            else:
+                b.link(v, node.inputs[i])
+        v = node.outputs[0]
+    sep = b.node("ShaderNodeSeparateXYZ")
+    b.link(v, sep.inputs[0])
+    if n == len(ops):
+        return list(sep.outputs[:3])
+    return [run_program(b, ops, {"x": sep.outputs[c]}, {n - 1: sep.outputs[c]} if n else None) for c in range(3)]
+
+
 def _liquid_schedule(b, gin):
-    """L = Wetness * Wet Map * mix(1, P or 1 - P, Schedule)."""
-    dt = b.math("SUBTRACT", gin.outputs["Time"], gin.outputs["Start Time"])
-    fill = b.math("MAXIMUM", gin.outputs["Fill Time"], 1e-9)
-    p = b.math("DIVIDE", dt, fill, clamp=True)
+    """L = Wetness * Wet Map * mix(1, P or 1 - P, Schedule), P the core's fill
+    progress (the export's schedule program)."""
+    env = {"time": gin.outputs["Time"], "start_time": gin.outputs["Start Time"],
+           "fill_time": gin.outputs["Fill Time"]}
+    p = run_program(b, data.load()["schedule_program"], env)
     dry = b.math("MULTIPLY_ADD", p, -2.0, 1.0)          # 1 - 2P
     p = b.math("MULTIPLY_ADD", dry, gin.outputs["Drying"], p)  # P + D (1 - 2P)
     one_minus = b.math("SUBTRACT", 1.0, p)
@@ -93,18 +226,6 @@ def _liquid_schedule(b, gin):
     return b.math("MULTIPLY", w, p, clamp=True)
 
 
-def _row_coordinate(b, L, t):
-    """Texture v of the row for liquid L (layout of soak_data.json)."""
-    n1, n2, ws = t["rows_below"], t["rows_above"], t["saturation"]
-    rows = n1 + n2 + 1
-    above = b.math("DIVIDE", b.math("SUBTRACT", L, ws), max(1.0 - ws, 1e-9), clamp=True)
-    r = b.math("MULTIPLY", above, float(n2))
-    if n1 > 0:
-        q = b.math("SQRT", b.math("DIVIDE", L, ws, clamp=True))
-        r = b.math("MULTIPLY_ADD", q, float(n1), r)
-    return b.math("MULTIPLY_ADD", r, 1.0 / rows, 0.5 / rows)
-
-
 def _lookup(b, image, u, v, interpolation):
     xyz = b.node("ShaderNodeCombineXYZ")
     for i, c in enumerate((u, v)):
@@ -114,52 +235,97 @@ def _lookup(b, image, u, v, interpolation):
             b.link(c, xyz.inputs[i])
     tex = b.node("ShaderNodeTexImage", image=image, interpolation=interpolation, extension="EXTEND")
     b.link(xyz.outputs[0], tex.inputs["Vector"])
-    return tex.outputs["Color"]
+    return tex
 
 
-def _lerp(b, a, c, f):
-    d = b.node("ShaderNodeVectorMath", operation="SUBTRACT")
-    b.link(c, d.inputs[0])
-    b.link(a, d.inputs[1])
+def _vec(b, op, a, c):
+    n = b.node("ShaderNodeVectorMath", operation=op)
+    b.link(a, n.inputs[0])
+    b.link(c, n.inputs[1])
+    return n.outputs[0]
+
+
+# Positions t in [0, 1] are mapped just below 1 onto cells (t = 1 lies in the
+# last cell, at its far edge).
+_EDGE = 1.0 - 1e-6
+
+
+class _Rows:
+    """Where the liquid L falls in a table's rows: texture v for Linear
+    lookups; for exact ones the row cell, its fraction, and the centres of
+    the two rows around it."""
+
+    def __init__(self, b, L, t, exact):
+        rows = t["rows_below"] + t["rows_above"] + 1
+        self.exact, self.rows = exact, rows
+        if not exact:
+            self.v = run_program(b, affine_program(t["row_program"], (rows - 1) / rows, 0.5 / rows), {"x": L})
+            return
+        y = b.math("MULTIPLY", run_program(b, t["row_program"], {"x": L}), (rows - 1) * _EDGE)
+        r0 = b.math("FLOOR", y)
+        self.fy = b.math("SUBTRACT", y, r0)
+        self.cell = b.math("MULTIPLY_ADD", r0, 1.0 / (rows - 1), 0.5 / (rows - 1))
+        self.v0 = b.math("MULTIPLY_ADD", r0, 1.0 / rows, 0.5 / rows)
+        self.v1 = b.math("ADD", self.v0, 1.0 / rows)
+
+
+def _param(b, par_img, t, rows, pixel):
+    """Pixel `pixel` of the per-row parameter image as a vector socket."""
+    u = (pixel + 0.5) / (len(t["params"][0]) // 3)
+    if not rows.exact:
+        return _lookup(b, par_img, u, rows.v, "Linear").outputs["Color"]
+    a = _lookup(b, par_img, u, rows.v0, "Closest").outputs["Color"]
+    c = _lookup(b, par_img, u, rows.v1, "Closest").outputs["Color"]
     m = b.node("ShaderNodeVectorMath", operation="MULTIPLY_ADD")
-    b.link(d.outputs[0], m.inputs[0])
-    b.link(f, m.inputs[1])
+    b.link(_vec(b, "SUBTRACT", c, a), m.inputs[0])
+    b.link(rows.fy, m.inputs[1])
     b.link(a, m.inputs[2])
     return m.outputs[0]
 
 
-def _texel_pair(b, coord, size):
-    """Centres of the two texels around coord (texture space) and the weight."""
-    x = b.math("MULTIPLY_ADD", coord, float(size), -0.5)
-    x0 = b.math("FLOOR", x)
-    f = b.math("SUBTRACT", x, x0)
-    c0 = b.math("MULTIPLY_ADD", x0, 1.0 / size, 0.5 / size)
-    c1 = b.math("ADD", c0, 1.0 / size)
-    return c0, c1, f
+def _wet_colour(b, colour, t, images, rows):
+    """The core's wetness function for each channel of the dry colour."""
+    na = t["columns"]
+    if not rows.exact:
+        us = run_program_rgb(b, affine_program(t["column_program"], (na - 1) / na, 0.5 / na), colour)
+        out = None
+        for c in range(3):   # image c holds channel c's function in channel c, zeros elsewhere
+            tc = _lookup(b, images.linear[c], us[c], rows.v, "Linear").outputs["Color"]
+            out = tc if out is None else _vec(b, "ADD", out, tc)
+        return out
+    ts = run_program_rgb(b, clamped_program(t["column_program"]), colour)
+    comb = b.node("ShaderNodeCombineXYZ")
+    for c in range(3):
+        x = b.math("MULTIPLY", ts[c], (na - 1) * _EDGE)
+        j = b.math("FLOOR", x)
+        fx = b.math("SUBTRACT", x, j)
+        tex = _lookup(b, images.cells[c], b.math("MULTIPLY_ADD", j, 1.0 / (na - 1), 0.5 / (na - 1)), rows.cell,
+                      "Closest")
+        # cell texel: (f00, f01 - f00, f10 - f00) and alpha f11 - f10 - f01 + f00
+        w = b.node("ShaderNodeCombineXYZ")
+        w.inputs[0].default_value = 1.0
+        b.link(fx, w.inputs[1])
+        b.link(rows.fy, w.inputs[2])
+        dot = b.node("ShaderNodeVectorMath", operation="DOT_PRODUCT")
+        b.link(tex.outputs["Color"], dot.inputs[0])
+        b.link(w.outputs[0], dot.inputs[1])
+        val = b.math("MULTIPLY_ADD", tex.outputs["Alpha"], b.math("MULTIPLY", fx, rows.fy), dot.outputs["Value"])
+        b.link(val, comb.inputs[c])
+    return comb.outputs[0]
 
 
-def _sample(b, image, u, v, exact=False):
-    """Image lookup at (u, v) split into channels. exact: bilinear between
-    texel centres from four Closest lookups (EEVEE's Linear filter is not
-    the plain bilinear one the core's tables were refined for)."""
-    if not exact:
-        sep = b.node("ShaderNodeSeparateColor")
-        b.link(_lookup(b, image, u, v, "Linear"), sep.inputs[0])
-        return sep
-    w, h = image.size
-    v0, v1, vf = _texel_pair(b, v, h)
-    rows = []
-    if isinstance(u, float):  # a column's centre: one read per row
-        rows = [_lookup(b, image, u, vv, "Closest") for vv in (v0, v1)]
-    else:
-        us = _texel_pair(b, u, w)
-        for vv in (v0, v1):
-            a = _lookup(b, image, us[0], vv, "Closest")
-            c = _lookup(b, image, us[1], vv, "Closest")
-            rows.append(_lerp(b, a, c, us[2]))
-    sep = b.node("ShaderNodeSeparateXYZ")
-    b.link(_lerp(b, rows[0], rows[1], vf), sep.inputs[0])
-    return sep
+def _wet_path(b, gin, L, preset, liquid_name, exact):
+    """The core's wetness function of one preset's class for the input colour:
+    (colour, roughness, coat weight, base specular factor) sockets, and a
+    reader of further parameter pixels."""
+    t = data.table(preset, liquid_name)
+    images = data.lookup_images(preset, liquid_name, exact)
+    rows = _Rows(b, L, t, exact)
+    colour = _wet_colour(b, gin.outputs["Base Color"], t, images, rows)
+    spec = b.node("ShaderNodeSeparateXYZ")   # (base specular factor, interface area, roughness ratio)
+    b.link(_param(b, images.params, t, rows, 3), spec.inputs[0])
+    rough = b.math("MULTIPLY", gin.outputs["Roughness"], spec.outputs[2], clamp=True)
+    return colour, rough, spec.outputs[1], spec.outputs[0], lambda pixel: _param(b, images.params, t, rows, pixel)
 
 
 def _sockets_match(tree):
@@ -172,35 +338,6 @@ def _sockets_match(tree):
     else:
         ins, outs = [s.name for s in tree.inputs], [s.name for s in tree.outputs]
     return ins == [i[0] for i in INPUTS] and outs == [o[0] for o in OUTPUTS]
-
-
-def _param(b, par_img, t, v, exact, pixel):
-    """Pixel `pixel` of the per-row parameter image (layout: soak_data.json)."""
-    n = len(t["params"][0]) // 3
-    return _sample(b, par_img, (pixel + 0.5) / n, v, exact)
-
-
-def _wet_path(b, gin, L, preset, liquid_name, exact):
-    """The core's wetness function of one preset's class for the input colour:
-    (colour, roughness, coat weight, base specular factor) sockets, and
-    (parameter image, table, row coordinate) for further parameter reads."""
-    t = data.table(preset, liquid_name)
-    alb_img, par_img = data.lookup_images(preset, liquid_name)
-    v = _row_coordinate(b, L, t)
-    # per channel: column of the dry value a, s = 1 - sqrt(1 - a)
-    na = t["columns"]
-    sep_in = b.node("ShaderNodeSeparateColor")
-    b.link(gin.outputs["Base Color"], sep_in.inputs[0])
-    comb = b.node("ShaderNodeCombineColor")
-    for c in range(3):
-        a = b.math("MINIMUM", b.math("MAXIMUM", sep_in.outputs[c], 0.0), 1.0)
-        s = b.math("SUBTRACT", 1.0, b.math("SQRT", b.math("SUBTRACT", 1.0, a)))
-        u = b.math("MULTIPLY_ADD", s, (na - 1) / na, 0.5 / na)
-        b.link(_sample(b, alb_img, u, v, exact).outputs[c], comb.inputs[c])
-    spec = _param(b, par_img, t, v, exact, 3)  # (base specular factor, interface area, apparent roughness)
-    r0 = max(t["params"][0][11], 1e-4)
-    rough = b.math("MULTIPLY", gin.outputs["Roughness"], b.math("DIVIDE", spec.outputs[2], r0), clamp=True)
-    return comb.outputs[0], rough, spec.outputs[1], spec.outputs[0], (par_img, t, v)
 
 
 def build_group(tree, preset, liquid_name, exact=False, metal=None):
@@ -224,11 +361,15 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None):
     gin = b.node("NodeGroupInput")
     gout = b.node("NodeGroupOutput")
     L = _liquid_schedule(b, gin)
-    colour, rough, coat, factor, (par_img, t, v) = _wet_path(b, gin, L, preset, liquid_name, exact)
+    colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact)
     if metal is not None:
         mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact)
         f = b.math("MINIMUM", b.math("MAXIMUM", gin.outputs["Metallic"], 0.0), 1.0)
-        colour = _lerp(b, colour, mc, f)
+        mix = b.node("ShaderNodeVectorMath", operation="MULTIPLY_ADD")
+        b.link(_vec(b, "SUBTRACT", mc, colour), mix.inputs[0])
+        b.link(f, mix.inputs[1])
+        b.link(colour, mix.inputs[2])
+        colour = mix.outputs[0]
         rough = b.math("MULTIPLY_ADD", b.math("SUBTRACT", mr, rough), f, rough)
         coat = b.math("MULTIPLY_ADD", b.math("SUBTRACT", mcoat, coat), f, coat)
     bump = b.node("ShaderNodeBump")
@@ -252,11 +393,7 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None):
     b.link(spec, gout.inputs["Specular"])
     b.link(L, gout.inputs["Liquid"])
     if m["kind"] == "thin_sheet":
-        sheet = _param(b, par_img, t, v, exact, 2)
-        tc = b.node("ShaderNodeCombineColor")
-        for c in range(3):
-            b.link(sheet.outputs[c], tc.inputs[c])
-        b.link(tc.outputs[0], gout.inputs["Translucency"])
+        b.link(param(2), gout.inputs["Translucency"])
     b.link(bump.outputs["Normal"], gout.inputs["Normal"])
     return tree
 
@@ -290,6 +427,7 @@ def metal_preset(bsdf, gn, preset):
 # a _Snapshot that puts the material's tree back as it was on any exception.
 
 ROLE_KEY = "soak_role"          # on tagged nodes: "source" | "translucency"
+PRIMARY_KEY = "soak_primary"    # on the first group node Make Wet made
 REF_KEY = "soak_ref"            # on the user's nodes a restore record names (survives renames)
 SOURCE_TYPES = ("ShaderNodeTexImage", "ShaderNodeAttribute", "ShaderNodeTexNoise", "ShaderNodeMapRange")
 _REQUIRED_ROLES = ("base_color", "roughness", "coat_weight", "coat_roughness", "normal")
@@ -336,11 +474,16 @@ def find_principled(tree):
     return nodes_[0] if nodes_ else None
 
 
+def group_nodes(tree):
+    """Every Soak Wet group node of a material (one per wetted Principled
+    BSDF), the first wetted first: the panel reads its controls."""
+    gns = [n for n in tree.nodes if n.get(NODE_TAG) and n.type == "GROUP"]
+    return sorted(gns, key=lambda n: (not n.get(PRIMARY_KEY), n.name))
+
+
 def find_group_node(tree):
-    for n in tree.nodes:
-        if n.get(NODE_TAG) and n.type == "GROUP":
-            return n
-    return None
+    gns = group_nodes(tree)
+    return gns[0] if gns else None
 
 
 def _value(sock):
@@ -401,7 +544,7 @@ def check_data(settings):
 
 def check_wettable(mat, settings):
     """Everything Make Wet needs, checked before the tree is touched.
-    Returns the Principled BSDF to wet and the other Principled BSDFs."""
+    Returns the Principled BSDFs to wet: every one in the material."""
     check_editable(mat)
     tree = mat.node_tree
     if find_group_node(tree) is not None:
@@ -409,16 +552,13 @@ def check_wettable(mat, settings):
     bsdfs = principled_nodes(tree)
     if not bsdfs:
         raise RuntimeError(f"material '{mat.name}' has no Principled BSDF")
-    bsdf = bsdfs[0]
-    active = tree.nodes.active
-    if len(bsdfs) > 1 and active is not None and _is_principled(active):
-        bsdf = active          # the user picked one in the Shader Editor
-    missing = [compat.principled_name(r) for r in _REQUIRED_ROLES if compat.principled_input(bsdf, r) is None]
-    if missing:
-        raise RuntimeError(f"'{bsdf.name}' lacks the inputs {', '.join(missing)}")
+    for bsdf in bsdfs:
+        missing = [compat.principled_name(r) for r in _REQUIRED_ROLES if compat.principled_input(bsdf, r) is None]
+        if missing:
+            raise RuntimeError(f"'{bsdf.name}' lacks the inputs {', '.join(missing)}")
     check_data(settings)
     check_source(settings)
-    return bsdf, [n for n in bsdfs if n != bsdf]
+    return bsdfs
 
 
 def _link_key(link):
@@ -505,6 +645,8 @@ def _group_defaults(gn, settings, tree, bsdf):
         tree.links.new(nrm.links[0].from_socket, gn.inputs["Normal"])
     gn.inputs["Wetness"].default_value = settings.wetness
     gn.inputs["Fill Time"].default_value = m["t_fill"]
+    for name, value in pending_values(settings).items():   # the panel's controls set before Make Wet
+        gn.inputs[name].default_value = value
 
 
 def connect_outputs(tree, gn, bsdf, settings):
@@ -581,7 +723,7 @@ def _insert(mat, bsdf, settings):
     gn.location = (bsdf.location.x - 260, bsdf.location.y)
     _group_defaults(gn, settings, tree, bsdf)
     connect_outputs(tree, gn, bsdf, settings)
-    made = _wire_source(tree, gn, settings)
+    made = []
     if data.material(settings.preset)["kind"] == "thin_sheet" and bsdf.outputs[0].is_linked:
         made += _add_translucency(tree, gn, bsdf)
     _note_changes(restore, before, bsdf)
@@ -591,12 +733,24 @@ def _insert(mat, bsdf, settings):
     return gn
 
 
+def _insert_all(mat, bsdfs, settings):
+    gns = [_insert(mat, bsdf, settings) for bsdf in bsdfs]
+    gns[0][PRIMARY_KEY] = True
+    made = _wire_source(mat.node_tree, gns, settings)
+    restore = json.loads(gns[0][RESTORE_KEY])
+    restore["nodes"] += [n.name for n in made]
+    gns[0][RESTORE_KEY] = json.dumps(restore)
+    return gns[0]
+
+
 def make_wet(mat, settings):
-    """Inserts the group in front of one Principled BSDF; returns the group
-    node. All or nothing: raises RuntimeError (or data.SoakDataError) with
-    the material unchanged."""
-    bsdf, _others = check_wettable(mat, settings)
-    gn = _atomic(mat.node_tree, _insert, mat, bsdf, settings)
+    """Inserts a group in front of every Principled BSDF of the material
+    (one wetness source feeds them all); returns the first group node. All
+    or nothing: raises RuntimeError (or data.SoakDataError) with the
+    material unchanged."""
+    bsdfs = check_wettable(mat, settings)
+    gn = _atomic(mat.node_tree, _insert_all, mat, bsdfs, settings)
+    clear_pending(settings)
     if settings.wetness_source == "IMAGE":
         settings.wet_map.colorspace_settings.name = "Non-Color"   # a data map, not a colour
     return gn
@@ -614,7 +768,11 @@ def _source_nodes(tree):
             and (n.get(ROLE_KEY) == "source" or (n.get(ROLE_KEY) is None and n.bl_idname in SOURCE_TYPES))]
 
 
-def _wire_source(tree, gn, settings):
+def _wire_source(tree, gns, settings):
+    """The wetness source's nodes, feeding the Wet Map of every group node
+    in gns (one node or a list)."""
+    gns = list(gns) if isinstance(gns, (list, tuple)) else [gns]
+    gn = gns[0]
     src = settings.wetness_source
     check_source(settings)
     made = []
@@ -622,12 +780,12 @@ def _wire_source(tree, gn, settings):
         n = _tag(tree.nodes.new("ShaderNodeTexImage"), "source")
         n.image = settings.wet_map
         n.extension = "EXTEND"
-        tree.links.new(n.outputs["Color"], gn.inputs["Wet Map"])
+        out = n.outputs["Color"]
         made.append(n)
     elif src == "ATTRIBUTE":
         n = _tag(tree.nodes.new("ShaderNodeAttribute"), "source")
         n.attribute_name = settings.attribute_name
-        tree.links.new(n.outputs["Fac"], gn.inputs["Wet Map"])
+        out = n.outputs["Fac"]
         made.append(n)
     elif src == "NOISE":
         n = _tag(tree.nodes.new("ShaderNodeTexNoise"), "source")
@@ -637,8 +795,11 @@ def _wire_source(tree, gn, settings):
         r.inputs["From Min"].default_value = 0.45
         r.inputs["From Max"].default_value = 0.55
         tree.links.new(n.outputs["Fac"], r.inputs["Value"])
-        tree.links.new(r.outputs["Result"], gn.inputs["Wet Map"])
+        out = r.outputs["Result"]
         made += [n, r]
+    for g in gns:
+        if made:
+            tree.links.new(out, g.inputs["Wet Map"])
     for i, n in enumerate(made):
         n.location = (gn.location.x - 240 * (len(made) - i), gn.location.y - 200)
     return made
@@ -647,7 +808,7 @@ def _wire_source(tree, gn, settings):
 def _replace_source(mat, gn, settings):
     tree = mat.node_tree
     old = _source_nodes(tree)
-    _wire_source(tree, gn, settings)      # new nodes first: a snapshot cannot bring back removed ones
+    _wire_source(tree, group_nodes(tree), settings)   # new nodes first: a snapshot cannot bring back removed ones
     for n in old:
         tree.nodes.remove(n)
     if settings.wetness_source == "IMAGE":
@@ -702,10 +863,18 @@ def _add_translucency(tree, gn, bsdf):
     return [tr, add]
 
 
+def _sheet_pair(tree, bsdf):
+    """The Translucent BSDF + Add Shader pair Make Wet added beside `bsdf`."""
+    adds = [n for n in tree.nodes if n.get(NODE_TAG) and n.get(ROLE_KEY) == "translucency"
+            and n.bl_idname == "ShaderNodeAddShader" and any(l.from_node == bsdf for l in n.inputs[0].links)]
+    trs = [l.from_node for a in adds for l in a.inputs[1].links if l.from_node.get(NODE_TAG)]
+    return adds + trs
+
+
 def _remove_translucency(tree, bsdf):
     """Takes the Translucent + Add Shader pair out, re-linking what the Add
     Shader fed to the BSDF itself."""
-    pair = [n for n in tree.nodes if n.get(NODE_TAG) and n.get(ROLE_KEY) == "translucency"]
+    pair = _sheet_pair(tree, bsdf)
     for add in (n for n in pair if n.bl_idname == "ShaderNodeAddShader"):
         for l in list(add.outputs[0].links):
             if bsdf is not None:
@@ -771,29 +940,34 @@ def make_dry(mat):
     restores what remains; returns the list of what it could not restore."""
     check_editable(mat)
     tree = mat.node_tree
-    gn = find_group_node(tree)
+    gns = group_nodes(tree)
     tagged = [n for n in tree.nodes if n.get(NODE_TAG)]
-    if gn is None and not tagged:
+    if not gns and not tagged:
         raise RuntimeError(f"material '{mat.name}' is not wet")
     problems = []
-    try:
-        restore = json.loads(gn[RESTORE_KEY]) if gn is not None else None
-    except (KeyError, ValueError, TypeError):
-        restore = None
-    if restore is None:
-        problems.append("no restore record (Soak nodes removed; the BSDF's links and values not restored)")
-        restore = {}
-    bsdf = _find_ref(tree, restore["bsdf"]) if "bsdf" in restore else None
-    if "bsdf" in restore and bsdf is None:
-        problems.append(f"the Principled BSDF '{restore['bsdf']}' was deleted: its inputs were not restored")
-    ng = gn.node_tree if gn is not None else None
+    records = []
+    for gn in gns or [None]:
+        try:
+            restore = json.loads(gn[RESTORE_KEY]) if gn is not None else None
+        except (KeyError, ValueError, TypeError):
+            restore = None
+        if restore is None:
+            problems.append("no restore record (Soak nodes removed; the BSDF's links and values not restored)")
+            restore = {}
+        bsdf = _find_ref(tree, restore["bsdf"]) if "bsdf" in restore else None
+        if "bsdf" in restore and bsdf is None:
+            problems.append(f"the Principled BSDF '{restore['bsdf']}' was deleted: its inputs were not restored")
+        records.append((bsdf, restore))
+    ngs = [gn.node_tree for gn in gns if gn.node_tree is not None]
     for n in tagged:
         tree.nodes.remove(n)
-    if ng is not None and ng.users == 0:
-        bpy.data.node_groups.remove(ng)
-    if bsdf is not None:
-        _restore_inputs(tree, bsdf, restore, problems)
-        _restore_outputs(tree, bsdf, restore, problems)
+    for ng in ngs:
+        if ng.name in bpy.data.node_groups and ng.users == 0:
+            bpy.data.node_groups.remove(ng)
+    for bsdf, restore in records:
+        if bsdf is not None:
+            _restore_inputs(tree, bsdf, restore, problems)
+            _restore_outputs(tree, bsdf, restore, problems)
     _clear_refs(tree)
     return problems
 
@@ -837,7 +1011,7 @@ def _rebuild(mat, gn, settings):
     if bsdf is not None:
         before = _bsdf_state(bsdf)
         connect_outputs(tree, gn, bsdf, settings)
-        has_sheet = any(n.get(ROLE_KEY) == "translucency" for n in tree.nodes if n.get(NODE_TAG))
+        has_sheet = bool(_sheet_pair(tree, bsdf))
         if m["kind"] == "thin_sheet" and not has_sheet and bsdf.outputs[0].is_linked:
             _add_translucency(tree, gn, bsdf)
         elif m["kind"] != "thin_sheet" and has_sheet:
@@ -845,9 +1019,6 @@ def _rebuild(mat, gn, settings):
         _note_changes(restore, before, bsdf)
     restore["nodes"] = [n.name for n in tree.nodes if n.get(NODE_TAG) and n != gn]
     gn[RESTORE_KEY] = json.dumps(restore)
-    if old is not None and old.users == 0:
-        bpy.data.node_groups.remove(old)
-        ng.name = "Soak Wet"
     return gn
 
 
@@ -859,19 +1030,28 @@ def rebuild(mat, settings):
     old preset's value follows the new preset. Another material sharing the
     old group keeps it. All or nothing."""
     tree = mat.node_tree
-    gn = find_group_node(tree) if tree is not None else None
-    if gn is None:
+    gns = group_nodes(tree) if tree is not None else []
+    if not gns:
         return None
     check_editable(mat)
     check_data(settings)
-    if RESTORE_KEY not in gn:
-        raise RuntimeError(f"material '{mat.name}': the Soak Wet node has no restore record (Make Dry, then Make Wet)")
-    old = gn.node_tree
+    if any(RESTORE_KEY not in gn for gn in gns):
+        raise RuntimeError(f"material '{mat.name}': a Soak Wet node has no restore record (Make Dry, then Make Wet)")
+    old = [gn.node_tree for gn in gns]
     snap = _Snapshot(tree)
     try:
-        return _rebuild(mat, gn, settings)
+        for gn in gns:
+            _rebuild(mat, gn, settings)
     except BaseException:
-        if gn.node_tree != old:
-            gn.node_tree = old          # first: the snapshot's values are the old group's sockets'
+        for gn, tr in zip(gns, old):
+            if gn.node_tree != tr:
+                gn.node_tree = tr       # first: the snapshot's values are the old group's sockets'
         snap.restore()
         raise
+    for tr in old:                      # the old groups go once every node has its new one
+        if tr is not None and tr.users == 0:
+            bpy.data.node_groups.remove(tr)
+    for gn in gns:
+        if "Soak Wet" not in bpy.data.node_groups:
+            gn.node_tree.name = "Soak Wet"
+    return gns[0]

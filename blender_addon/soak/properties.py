@@ -67,21 +67,35 @@ def _source(self, context):
         _revert(self, nodes.current_source(self.id_data.node_tree))
 
 
+def _group_inputs(self, name):
+    mat = self.id_data
+    if mat is None or mat.node_tree is None:
+        return []
+    return [g.inputs[name] for g in nodes.group_nodes(mat.node_tree) if name in g.inputs]
+
+
 def _group_input(self, name):
     mat = self.id_data
     gn = nodes.find_group_node(mat.node_tree) if mat is not None and mat.node_tree is not None else None
     return gn.inputs.get(name) if gn is not None else None
 
 
+PENDING = nodes.PENDING
+
+
 def _float_proxy(name, label, description, default, lo, hi, subtype="NONE", soft_max=None):
     def get(self):
         s = _group_input(self, name)
-        return float(s.default_value) if s is not None else default
+        if s is None:
+            return float(self.get(PENDING + name, default))
+        return float(s.default_value)
 
     def put(self, value):
-        s = _group_input(self, name)
-        if s is not None:
+        socks = _group_inputs(self, name)
+        for s in socks:                 # every wetted BSDF's group node
             s.default_value = value
+        if not socks:
+            self[PENDING + name] = float(value)
 
     kw = {"soft_max": soft_max} if soft_max is not None else {}
     return FloatProperty(name=label, description=description, get=get, set=put, min=lo, max=hi,
@@ -91,12 +105,16 @@ def _float_proxy(name, label, description, default, lo, hi, subtype="NONE", soft
 def _bool_proxy(name, label, description):
     def get(self):
         s = _group_input(self, name)
-        return s is not None and s.default_value >= 0.5
+        if s is None:
+            return self.get(PENDING + name, 0.0) >= 0.5
+        return s.default_value >= 0.5
 
     def put(self, value):
-        s = _group_input(self, name)
-        if s is not None:
+        socks = _group_inputs(self, name)
+        for s in socks:
             s.default_value = 1.0 if value else 0.0
+        if not socks:
+            self[PENDING + name] = 1.0 if value else 0.0
 
     return BoolProperty(name=label, description=description, get=get, set=put, options=set())
 
@@ -183,13 +201,14 @@ class SoakMaterialSettings(bpy.types.PropertyGroup):
 classes = (SoakMaterialSettings,)
 
 
+_register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)
+
+
 def register():
-    for c in classes:
-        bpy.utils.register_class(c)
+    _register_classes()
     bpy.types.Material.soak = PointerProperty(type=SoakMaterialSettings)
 
 
 def unregister():
     del bpy.types.Material.soak
-    for c in reversed(classes):
-        bpy.utils.unregister_class(c)
+    _unregister_classes()

@@ -4,7 +4,7 @@ messages), and the render settings the wet look needs."""
 import bpy
 
 from . import compat, nodes
-from .operators.wet import key_icon, osl_available
+from .predicates import key_icon, osl_available
 from .properties import CONTROLS
 
 
@@ -147,11 +147,4 @@ class SOAK_PT_wetness_controls(_MaterialPanel, bpy.types.Panel):
 classes = (SOAK_PT_wetness, SOAK_PT_wetness_source, SOAK_PT_wetness_controls)
 
 
-def register():
-    for c in classes:
-        bpy.utils.register_class(c)
-
-
-def unregister():
-    for c in reversed(classes):
-        bpy.utils.unregister_class(c)
+register, unregister = bpy.utils.register_classes_factory(classes)

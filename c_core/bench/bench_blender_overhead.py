@@ -73,10 +73,10 @@ def coat_weight_of_wet_state():
     ws = t["saturation"]
     r = t["rows_below"] + (mat.soak.wetness - ws) / (1 - ws) * t["rows_above"] if mat.soak.wetness > ws else None
     if r is None:
-        return float(t["params"][t["rows_below"]][1])
+        return float(t["params"][t["rows_below"]][10])
     r0 = min(int(r), rows - 2)
     f = r - r0
-    return (1 - f) * float(t["params"][r0][1]) + f * float(t["params"][r0 + 1][1])
+    return (1 - f) * float(t["params"][r0][10]) + f * float(t["params"][r0 + 1][10])
 
 
 def render_cpu():

@@ -84,7 +84,8 @@ def op_error(fn, **kw):
 def bsdf_fed_by_group(mat, bsdf_name="Principled BSDF"):
     b = mat.node_tree.nodes[bsdf_name]
     names = ["Base Color", "Roughness", COAT, "Normal"]
-    return {n: (b.inputs[n].is_linked and b.inputs[n].links[0].from_node.name == "Soak Wet") for n in names}
+    return {n: (b.inputs[n].is_linked and b.inputs[n].links[0].from_node.type == "GROUP"
+                and bool(b.inputs[n].links[0].from_node.get("soak_node"))) for n in names}
 
 
 # ---- 1. failures leave the material as it was ---------------------------------
@@ -396,6 +397,9 @@ def test_dry_after_edits(ob):
 # ---- 4. several Principled BSDFs ------------------------------------------------
 
 def test_two_principled(ob):
+    """Every Principled BSDF of a material is wetted (two behind a Mix
+    Shader): each gets its own group node fed by its own colour, one wetness
+    source and one set of controls drive both, Make Dry restores the tree."""
     soak = sys.modules["soak"]
     mat = bpy.data.materials.new("TwoBSDF")
     mat.use_nodes = True
@@ -403,33 +407,46 @@ def test_two_principled(ob):
     a = t.nodes["Principled BSDF"]
     b = t.nodes.new("ShaderNodeBsdfPrincipled")
     b.name = "Second BSDF"
+    a.inputs["Base Color"].default_value = (0.6, 0.3, 0.2, 1.0)
+    b.inputs["Base Color"].default_value = (0.1, 0.2, 0.7, 1.0)
     mix = t.nodes.new("ShaderNodeMixShader")
     out = t.nodes["Material Output"]
     t.links.new(a.outputs[0], mix.inputs[1])
     t.links.new(b.outputs[0], mix.inputs[2])
     t.links.new(mix.outputs[0], out.inputs["Surface"])
     use(ob, mat)
-    t.nodes.active = mix
     before = common.tree_state(t)
-    bsdf, others = soak.nodes.check_wettable(mat, mat.soak)
-    check(bsdf.name == "Principled BSDF" and [n.name for n in others] == ["Second BSDF"],
-          f"behind a Mix Shader: wets {bsdf.name}, others {[n.name for n in others]}")
-    second_before = {s.identifier: (s.is_linked, getattr(s, "default_value", None) is not None) for s in b.inputs}
+    g0 = groups()
+    bsdfs = soak.nodes.check_wettable(mat, mat.soak)
+    check([n.name for n in bsdfs] == ["Principled BSDF", "Second BSDF"], f"BSDFs to wet: {[n.name for n in bsdfs]}")
+    mat.soak.wetness_source = "NOISE"
     check(bpy.ops.soak.make_wet() == {"FINISHED"}, "make_wet two BSDFs")
-    check(all(bsdf_fed_by_group(mat).values()), "the first BSDF is not wet")
-    check(not any(s.is_linked for s in b.inputs) and second_before ==
-          {s.identifier: (s.is_linked, getattr(s, "default_value", None) is not None) for s in b.inputs},
-          "the second BSDF was touched")
+    gns = soak.nodes.group_nodes(t)
+    check(len(gns) == 2 and all(bsdf_fed_by_group(mat, n).values() for n in ("Principled BSDF", "Second BSDF")),
+          f"not every BSDF is wet: {len(gns)} group nodes")
+    fed = {n.name: n.inputs["Base Color"].links[0].from_node for n in (a, b)}
+    cols = {n.name: tuple(round(c, 3) for c in fed[n.name].inputs["Base Color"].default_value[:3]) for n in (a, b)}
+    check(fed["Principled BSDF"] != fed["Second BSDF"] and cols == {"Principled BSDF": (0.6, 0.3, 0.2),
+                                                                    "Second BSDF": (0.1, 0.2, 0.7)},
+          f"each BSDF's own colour into its own group: {cols}")
+    src = {g.inputs["Wet Map"].links[0].from_node.name for g in gns if g.inputs["Wet Map"].is_linked}
+    check(len(src) == 1, f"one wetness source for both groups: {src}")
+    mat.soak.fill_time = 42.0
+    check(all(abs(g.inputs["Fill Time"].default_value - 42.0) < 1e-6 for g in gns), "a control set only one group")
+    check(bpy.ops.soak.key_drying() == {"FINISHED"}, "key drying two BSDFs")
+    ad = t.animation_data
+    keyed = {g.name for g in gns if ad and ad.action and ad.action.fcurves.find(
+        f'nodes["{g.name}"].inputs[{list(g.inputs).index(g.inputs["Time"])}].default_value')}
+    check(keyed == {g.name for g in gns}, f"Key Drying keyed {keyed}")
+    if ad is not None:
+        ad.action = None
+    mat.soak.preset = "concrete"
+    check(mat.soak.status == "" and all(__import__("json").loads(g.node_tree["soak_group"])["preset"] == "concrete"
+                                        for g in soak.nodes.group_nodes(t)), "rebuild of two groups")
     bpy.ops.soak.make_dry()
-    check(common.tree_state(t) == before, "two BSDFs: not restored")
-    # the active node picks the other one
-    t.nodes.active = b
-    bsdf, others = soak.nodes.check_wettable(mat, mat.soak)
-    check(bsdf.name == "Second BSDF", "the active Principled BSDF is not the one wetted")
-    bpy.ops.soak.make_wet()
-    check(all(bsdf_fed_by_group(mat, "Second BSDF").values()), "the active BSDF is not wet")
-    bpy.ops.soak.make_dry()
-    check(common.tree_state(t) == before, "two BSDFs (active): not restored")
+    mat.soak.preset, mat.soak.wetness_source = "sand", "CONSTANT"
+    after = common.tree_state(t)
+    check(after == before and groups() == g0, "two BSDFs: not restored")
 
 
 # ---- 5. the source after Make Wet -----------------------------------------------
@@ -588,6 +605,46 @@ def test_bake(scene_objects):
     bpy.ops.soak.make_dry()
 
 
+def test_rain_direction(ground):
+    """Bake Wet Map's Rain From and Spread: rain from 45 degrees towards +x
+    (from (1, 0, 1)) moves the roof's rain shadow by its height (0.5) times
+    tan 45 deg = 0.5 towards -x, so the ground under the roof's centre
+    (x = -1.5, the roof spans -1.8..-1.2) is open to it and the ground at
+    x = -1.94 (first texel column) is under the shifted shelter (-2.3..-1.7,
+    widened by the 5-degree cone's 0.5 (tan 50 - tan 45) = 0.10)."""
+    mat = ground.active_material
+    w_open = 1.0 - __import__("math").exp(-(10.0 - 0.5) / 3600.0 * 60.0 / 0.2)
+    r = bpy.ops.soak.bake_wetmap("EXEC_DEFAULT", size=32, rays=32, duration=60.0, occluders="SCENE",
+                                 rain_from=(1.0, 0.0, 1.0), spread=5.0)
+    check(r == {"FINISHED"}, "bake with Rain From (1, 0, 1), Spread 5")
+    img = mat.soak.wet_map
+    under, shifted = texel(img, 0.125, 0.875), texel(img, 0.01, 0.875)
+    print(f"slanted rain: under the roof {under:.3f}, in its shifted shadow {shifted:.3f}")
+    check(abs(under - w_open) < 0.08, f"slanted rain: ground under the roof {under:.3f}, open value {w_open:.3f}")
+    check(shifted < 0.05, f"slanted rain: the roof's shifted shadow is wet ({shifted:.3f})")
+    msg = op_error(bpy.ops.soak.bake_wetmap, size=16, rays=4, rain_from=(1.0, 0.0, -0.5))
+    check("above" in msg, f"rain from below the horizon: {msg}")
+
+
+def test_pending_controls(ob):
+    """Controls set in the panel before Make Wet reach the group."""
+    mat = textured_material("Pending")
+    use(ob, mat)
+    s = mat.soak
+    s.fill_time, s.start_time, s.time, s.spill_edge = 7.5, 2.0, 3.0, 0.25
+    s.schedule, s.drying = True, True
+    s.puddle_level = 0.4
+    check(abs(s.fill_time - 7.5) < 1e-6 and s.schedule and s.drying, "pending values not kept before Make Wet")
+    check(bpy.ops.soak.make_wet() == {"FINISHED"}, "make_wet with pending controls")
+    gn = mat.node_tree.nodes["Soak Wet"]
+    want = {"Fill Time": 7.5, "Start Time": 2.0, "Time": 3.0, "Spill Edge": 0.25, "Schedule": 1.0, "Drying": 1.0,
+            "Puddle Level": 0.4}
+    got = {k: gn.inputs[k].default_value for k in want}
+    check(all(abs(got[k] - v) < 1e-6 for k, v in want.items()), f"controls set before Make Wet: {got}, want {want}")
+    check(not any(k.startswith("pending_") for k in s.keys()), "pending values left behind after Make Wet")
+    bpy.ops.soak.make_dry()
+
+
 # ---- 8. tooltips and poll messages ------------------------------------------------
 
 def test_tooltips():
@@ -740,6 +797,8 @@ def main():
     test_poll_messages(ground)
     test_panel(ground)
     test_bake({"ground": ground, "torus": torus})
+    test_rain_direction(ground)
+    test_pending_controls(ground)
     print(f"{len(CHECKS)} checks")
     print("PASS")
 

@@ -1,15 +1,7 @@
 import bpy
 
-from . import wet, bake, volume
+from . import bake, volume, wet
 
 classes = wet.classes + bake.classes + volume.classes
 
-
-def register():
-    for c in classes:
-        bpy.utils.register_class(c)
-
-
-def unregister():
-    for c in reversed(classes):
-        bpy.utils.unregister_class(c)
+register, unregister = bpy.utils.register_classes_factory(classes)

@@ -16,7 +16,7 @@ import tempfile
 import bpy
 
 from ..preferences import find_soak
-from .wet import poll_message
+from ..predicates import poll_message
 
 OCCLUDER_UV = (4.5, 4.5)
 OCCLUDER_TYPES = {"MESH", "CURVE", "SURFACE", "META", "FONT"}
@@ -93,9 +93,12 @@ def export_scene_obj(context, ob, mode, path, collection_name=""):
     return n, m
 
 
-def bake_command(exe, mesh_path, out_path, size, rays, duration):
+def bake_command(exe, mesh_path, out_path, size, rays, duration, rain_from=(0.0, 0.0, 1.0), spread=10.0):
+    """rain_from: the direction the rain comes from, world space (the OBJ's
+    frame, Z up); spread: the rain cone's half-angle, degrees."""
     return [exe, "bake", "rain", mesh_path, "-o", out_path, "--width", str(size), "--height", str(size),
-            "--rays", str(rays), "--duration", str(duration), "--up", "z"]
+            "--rays", str(rays), "--duration", str(duration), "--up", "z",
+            "--rain-dir", ",".join(f"{c:.9g}" for c in rain_from), "--spread", f"{spread:.9g}"]
 
 
 class SOAK_OT_bake_wetmap(bpy.types.Operator):
@@ -116,6 +119,13 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
         items=(("SCENE", "Visible Scene", "Every visible, renderable object of the view layer, instances included"),
                ("COLLECTION", "Collection", "The objects of one collection"),
                ("NONE", "Nothing", "The active mesh alone")))
+    rain_from: bpy.props.FloatVectorProperty(
+        name="Rain From", size=3, subtype="DIRECTION", default=(0.0, 0.0, 1.0),
+        description="Direction the rain comes from, world space (straight down: 0, 0, 1; wind-driven rain "
+                    "tilts it towards the wind)")
+    spread: bpy.props.FloatProperty(
+        name="Spread", default=10.0, min=0.0, max=89.0, subtype="NONE",
+        description="Half-angle of the cone of rain directions around Rain From, degrees")
     collection: bpy.props.StringProperty(name="Collection", default="",
                                          description="Collection whose objects block the rain (Shelter: "
                                                      "Collection)")
@@ -134,7 +144,7 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
     def draw(self, context):
         layout = self.layout
         layout.use_property_split = True
-        for p in ("size", "rays", "duration", "occluders"):
+        for p in ("size", "rays", "duration", "rain_from", "spread", "occluders"):
             layout.prop(self, p)
         if self.occluders == "COLLECTION":
             layout.prop_search(self, "collection", bpy.data, "collections")
@@ -147,6 +157,13 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
         ob = context.object
         if not ob.data.uv_layers:
             self.report({"ERROR"}, f"mesh '{ob.name}' has no UV map: the wet map is baked over the UVs")
+            return False
+        if not sum(c * c for c in self.rain_from) > 1e-12:
+            self.report({"ERROR"}, "Rain From is a zero vector: give the direction the rain comes from")
+            return False
+        if not self.rain_from[2] > 0.0:
+            self.report({"ERROR"}, f"Rain From {tuple(round(c, 3) for c in self.rain_from)} points below the "
+                                   "horizon: the rain must come from above (positive Z)")
             return False
         try:
             check_occluders(self.occluders, self.collection)
@@ -162,7 +179,8 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
             shutil.rmtree(self._dir, ignore_errors=True)
             self.report({"ERROR"}, f"cannot write the mesh for soak: {e}")
             return False
-        cmd = bake_command(exe, mesh, self._out, self.size, self.rays, self.duration)
+        cmd = bake_command(exe, mesh, self._out, self.size, self.rays, self.duration, tuple(self.rain_from),
+                           self.spread)
         try:
             self._proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         except OSError as e:

@@ -1,46 +1,18 @@
 """Make Wet, Make Dry, Key Drying. Each is all or nothing: on an error the
 material is as before (nodes.make_wet/set_source/rebuild roll back) and the
 message says why."""
-import importlib
+import json
 
 import bpy
 
-from .. import nodes
+from .. import nodes, osl_nodes
 from ..data import SoakDataError
+from ..predicates import key_icon, osl_available, poll_editable, poll_message, wet_poll
 
 
 def _material(context):
     ob = context.object
     return ob.active_material if ob is not None else None
-
-
-def osl_available(context):
-    scene = context.scene
-    return scene.render.engine == "CYCLES" and bool(getattr(scene.cycles, "shading_system", False))
-
-
-def poll_message(cls, text):
-    """poll_message_set exists in Blender 3.0+; older ones just grey the button."""
-    fn = getattr(cls, "poll_message_set", None)
-    if fn is not None:
-        fn(text)
-    return False
-
-
-def poll_editable(cls, context):
-    """The reason an operator on the active material cannot run, or None."""
-    ob = context.object
-    if ob is None:
-        return poll_message(cls, "No active object")
-    mat = ob.active_material
-    if mat is None:
-        return poll_message(cls, f"'{ob.name}' has no material: add one in the Material tab")
-    if mat.library is not None:
-        return poll_message(cls, f"Material '{mat.name}' is linked from a library: make it local first "
-                                 "(Object > Relations > Make Local)")
-    if mat.node_tree is None or not mat.use_nodes:
-        return poll_message(cls, f"Material '{mat.name}' does not use nodes: click Use Nodes first")
-    return True
 
 
 def internal_error(op, what, e):
@@ -65,9 +37,7 @@ class SOAK_OT_make_wet(bpy.types.Operator):
     def execute(self, context):
         mat = _material(context)
         settings = mat.soak
-        others = []
         try:
-            bsdf, others = nodes.check_wettable(mat, settings)
             nodes.make_wet(mat, settings)
         except (RuntimeError, SoakDataError) as e:
             self.report({"ERROR"}, str(e))
@@ -76,10 +46,11 @@ class SOAK_OT_make_wet(bpy.types.Operator):
             return internal_error(self, "Make Wet", e)
         if settings.use_osl:
             self._osl(context, mat, settings)
-        if others:
-            names = ", ".join(f"'{n.name}'" for n in others)
-            self.report({"WARNING"}, f"{mat.name}: wetted '{bsdf.name}' only; {names} left dry (to wet another, "
-                                     "Make Dry, make it the active node in the Shader Editor and Make Wet)")
+        gns = nodes.group_nodes(mat.node_tree)
+        if len(gns) > 1:
+            names = ", ".join(f"'{json.loads(g[nodes.RESTORE_KEY])['bsdf']}'" for g in gns)
+            self.report({"INFO"}, f"{mat.name}: wet ({settings.preset}, {settings.liquid}): {len(gns)} Principled "
+                                  f"BSDFs ({names}), one set of controls")
         else:
             self.report({"INFO"}, f"{mat.name}: wet ({settings.preset}, {settings.liquid})")
         return {"FINISHED"}
@@ -88,12 +59,7 @@ class SOAK_OT_make_wet(bpy.types.Operator):
         if not osl_available(context):
             self.report({"WARNING"}, "OSL needs Cycles with Open Shading Language enabled; native nodes used")
             return
-        try:
-            osl = importlib.import_module(__package__.rsplit(".", 1)[0] + ".osl_nodes")
-        except ImportError:
-            self.report({"WARNING"}, "the OSL variant is not installed (osl_nodes missing); native nodes used")
-            return
-        if not osl.apply_osl_variant(mat, settings):
+        if not osl_nodes.apply_osl_variant(mat, settings):
             self.report({"WARNING"}, "the OSL variant could not be applied; native nodes used")
 
 
@@ -126,14 +92,6 @@ class SOAK_OT_make_dry(bpy.types.Operator):
         return {"FINISHED"}
 
 
-def _wet_poll(cls, context):
-    if not poll_editable(cls, context):
-        return False
-    if nodes.find_group_node(context.object.active_material.node_tree) is None:
-        return poll_message(cls, "Make the material wet first")
-    return True
-
-
 class SOAK_OT_key_drying(bpy.types.Operator):
     """Keyframe a drying animation on the Soak Wet group: Time goes from Start Time (wet) to Start Time + Fill Time (dry) between two frames, linearly; Schedule and Drying are turned on; Start Time and Fill Time are kept; the group's earlier Time keys are replaced"""
     bl_idname = "soak.key_drying"
@@ -149,7 +107,7 @@ class SOAK_OT_key_drying(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        return _wet_poll(cls, context)
+        return wet_poll(cls, context)
 
     def invoke(self, context, event):
         self._scene_range(context)
@@ -176,6 +134,16 @@ class SOAK_OT_key_drying(bpy.types.Operator):
         if not fill > 0.0:
             self.report({"ERROR"}, f"Fill Time is {fill:g} s: set a positive drying time first")
             return {"CANCELLED"}
+        for g in nodes.group_nodes(tree):   # every wetted BSDF dries together
+            self._key(context, tree, g, start, fill)
+        context.scene.frame_set(context.scene.frame_current)
+        self.report({"INFO"}, f"{mat.name}: Time keyed {start:g} s (frame {self.frame_start}, wet) to "
+                              f"{start + fill:g} s (frame {self.frame_end}, dry); Start Time and Fill Time kept")
+        return {"FINISHED"}
+
+    def _key(self, context, tree, gn, start, fill):
+        gn.inputs["Start Time"].default_value = start
+        gn.inputs["Fill Time"].default_value = fill
         index = list(gn.inputs).index(gn.inputs["Time"])
         path = f'nodes["{gn.name}"].inputs[{index}].default_value'
         ad = tree.animation_data
@@ -193,32 +161,6 @@ class SOAK_OT_key_drying(bpy.types.Operator):
         if fc is not None:
             for k in fc.keyframe_points:
                 k.interpolation = "LINEAR"
-        context.scene.frame_set(context.scene.frame_current)
-        self.report({"INFO"}, f"{mat.name}: Time keyed {start:g} s (frame {self.frame_start}, wet) to "
-                              f"{start + fill:g} s (frame {self.frame_end}, dry); Start Time and Fill Time kept")
-        return {"FINISHED"}
-
-
-def control_fcurve(tree, gn, name):
-    """The F-curve animating the group node's input `name`, or None."""
-    sock = gn.inputs.get(name)
-    ad = tree.animation_data
-    if sock is None or ad is None or ad.action is None:
-        return None
-    index = list(gn.inputs).index(sock)
-    return ad.action.fcurves.find(f'nodes["{gn.name}"].inputs[{index}].default_value')
-
-
-def key_icon(context, tree, gn, name):
-    """The decorator icon Blender draws for a keyable property: key on this
-    frame, animated, or not animated."""
-    fc = control_fcurve(tree, gn, name)
-    if fc is None:
-        return "DECORATE"
-    f = context.scene.frame_current
-    if any(abs(k.co[0] - f) < 0.5 for k in fc.keyframe_points):
-        return "DECORATE_KEYFRAME"
-    return "DECORATE_ANIMATE"
 
 
 class SOAK_OT_key_control(bpy.types.Operator):
@@ -231,20 +173,26 @@ class SOAK_OT_key_control(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        return _wet_poll(cls, context)
+        return wet_poll(cls, context)
 
     def execute(self, context):
         tree = _material(context).node_tree
         gn = nodes.find_group_node(tree)
-        sock = gn.inputs.get(self.name)
-        if sock is None:
+        if gn.inputs.get(self.name) is None:
             self.report({"ERROR"}, f"the Soak Wet group has no input '{self.name}'")
             return {"CANCELLED"}
         f = context.scene.frame_current
-        if key_icon(context, tree, gn, self.name) == "DECORATE_KEYFRAME":
-            sock.keyframe_delete("default_value", frame=f)
-        else:
-            sock.keyframe_insert("default_value", frame=f)
+        delete = key_icon(context, tree, gn, self.name) == "DECORATE_KEYFRAME"
+        for g in nodes.group_nodes(tree):   # one set of controls for every wetted BSDF
+            sock = g.inputs[self.name]
+            if delete:
+                try:
+                    sock.keyframe_delete("default_value", frame=f)
+                except RuntimeError:
+                    pass
+            else:
+                sock.default_value = gn.inputs[self.name].default_value
+                sock.keyframe_insert("default_value", frame=f)
         return {"FINISHED"}
 
 

@@ -26,7 +26,7 @@
 #include "soak/wet_specular.h"
 
 #define BL_FORMAT "soak-blender"
-#define BL_FORMAT_VERSION 2
+#define BL_FORMAT_VERSION 3
 #define BL_MAX_COLS 257
 #define BL_MAX_ROWS 257
 #define BL_PARAM_COLS 4 /* see param_pixel */
@@ -72,8 +72,9 @@ static soak_status albedo_pixel(const bl_grid *g, double a, double L, double px[
  *   1: pore fill, material specular weight, 0;
  *   2: thin-sheet diffuse transmittance (0 for other kinds);
  *   3: soak/wet_specular.h: the base's own specular over its dry value, the
- *      liquid mirror's weight (interface area), apparent roughness
- *      (= sqrt apparent GGX alpha: conductors seen through the film). */
+ *      liquid mirror's weight (interface area), apparent roughness over its
+ *      dry value (sqrt apparent GGX alpha: conductors seen through the film;
+ *      the ratio scales the user's own roughness). */
 static soak_status param_pixel(const bl_grid *g, double L, double px[BL_PARAM_COLS * 3])
 {
     soak_wet_input in = soak_wet_input_steady(g->p, L);
@@ -84,9 +85,11 @@ static soak_status param_pixel(const bl_grid *g, double L, double px[BL_PARAM_CO
     soak_wet_specular s;
     if (st == SOAK_OK) st = soak_wet_specular_eval(g->p, g->l, &w, &s);
     if (st != SOAK_OK) return st;
+    double rough_dry = sqrt(g->p->ggx_alpha_dry);
+    double ratio = rough_dry > 0.0 ? sqrt(s.ggx_alpha) / rough_dry : 1.0;
     double v[BL_PARAM_COLS * 3] = {sqrt(w.ggx_alpha), w.film_coverage, w.water_specular_weight,
                                    w.fill, w.specular_weight, 0.0, T.r, T.g, T.b,
-                                   s.base_factor, s.interface_area, sqrt(s.ggx_alpha)};
+                                   s.base_factor, s.interface_area, ratio};
     memcpy(px, v, sizeof v);
     return SOAK_OK;
 }
@@ -225,6 +228,75 @@ static void put_rgb(FILE *out, soak_rgb c)
     fputc(']', out);
 }
 
+/* Node programs: the coordinate warps and the fill schedule as data, so the
+ * add-on derives no formula. A program is a list of Blender Math node
+ * operations [op, a, b, c, clamp]; an argument is a number, the program's
+ * input ("x" or a named input) or "#k", the result of operation k; the last
+ * operation's result is the program's output. */
+typedef struct bl_op {
+    const char *op;
+    const char *ref[3]; /* NULL: the number num[i] */
+    double num[3];
+    int nargs, clamp;
+} bl_op;
+
+static void put_prog_num(FILE *out, double x)
+{
+    if (fabs(x) < 5e-16) x = 0.0;
+    fprintf(out, "%.10g", x);
+}
+
+static void put_program(FILE *out, const char *key, const bl_op *ops, int n)
+{
+    fprintf(out, "\"%s\": [", key);
+    for (int i = 0; i < n; ++i) {
+        fprintf(out, "%s[\"%s\"", i ? ", " : "", ops[i].op);
+        for (int k = 0; k < ops[i].nargs; ++k) {
+            fputs(", ", out);
+            if (ops[i].ref[k]) put_str(out, ops[i].ref[k]);
+            else put_prog_num(out, ops[i].num[k]);
+        }
+        fputs(ops[i].clamp ? ", true]" : ", false]", out);
+    }
+    fputc(']', out);
+}
+
+/* Column position t = j/(columns-1) of dry albedo x: t = 1 - sqrt(1 - x)
+ * (col_albedo inverted). Row position t = r/(rows-1) of delivered liquid x
+ * (row_liquid inverted): sqrt(x/w_sat) over the rows below saturation plus
+ * (x - w_sat)/(1 - w_sat) over the rows above. */
+static void put_coordinate_programs(FILE *out, const bl_grid *g)
+{
+    const bl_op col[] = {{"SUBTRACT", {NULL, "x"}, {1.0}, 2, 0},
+                         {"SQRT", {"#0"}, {0.0}, 1, 0},
+                         {"MULTIPLY_ADD", {"#1"}, {0.0, -1.0, 1.0}, 3, 0}};
+    put_program(out, "column_program", col, 3);
+    fputs(",\n      ", out);
+    double n = g->n1 + g->n2, ws = g->w_sat;
+    if (g->n1 > 0) {
+        const bl_op row[] = {{"MULTIPLY", {"x"}, {0.0, 1.0 / ws}, 2, 1},
+                             {"SQRT", {"#0"}, {0.0}, 1, 0},
+                             {"MULTIPLY_ADD", {"x"}, {0.0, 1.0 / (1.0 - ws), -ws / (1.0 - ws)}, 3, 1},
+                             {"MULTIPLY", {"#2"}, {0.0, g->n2 / n}, 2, 0},
+                             {"MULTIPLY_ADD", {"#1", NULL, "#3"}, {0.0, g->n1 / n, 0.0}, 3, 0}};
+        put_program(out, "row_program", row, 5);
+    } else {
+        const bl_op row[] = {{"MULTIPLY_ADD", {"x"}, {0.0, 1.0 / (1.0 - ws), -ws / (1.0 - ws)}, 3, 1}};
+        put_program(out, "row_program", row, 1);
+    }
+}
+
+/* The fill schedule of soak_fill_fraction (soak/porous.h):
+ * P = clamp((time - start_time) / fill_time, 0, 1); a zero fill time is the
+ * step at start_time, stood in for by a 1e-9 fill time. */
+static void put_schedule_program(FILE *out)
+{
+    const bl_op ops[] = {{"SUBTRACT", {"time", "start_time"}, {0.0}, 2, 0},
+                         {"MAXIMUM", {"fill_time"}, {0.0, 1e-9}, 2, 0},
+                         {"DIVIDE", {"#0", "#1"}, {0.0}, 2, 1}};
+    put_program(out, "schedule_program", ops, 3);
+}
+
 static soak_status write_pixels(FILE *out, const bl_grid *g)
 {
     int rows = grid_rows(g);
@@ -272,6 +344,8 @@ static soak_status write_table(FILE *out, const soak_preset *p, const soak_liqui
     put_num(out, g.w_sat);
     fputs(", \"max_error\": ", out);
     put_num(out, err);
+    fputs(",\n      ", out);
+    put_coordinate_programs(out, &g);
     fputs(",\n", out);
     st = write_pixels(out, &g);
     fputs(last ? "     }\n" : "     },\n", out);
@@ -336,6 +410,8 @@ static void write_header(FILE *out, const soak_export_header *h)
             "liquid over its dry value, the liquid mirror's weight = interface area, apparent roughness: conductors "
             "seen through the film; see soak/wet_specular.h). Interpolate bilinearly between "
             "pixel centres; max_error is the worst error of that against the core.");
+    fputs(",\n ", out);
+    put_schedule_program(out);
     fputs(",\n \"liquids\": [\n", out);
 }
 
