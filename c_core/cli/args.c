@@ -9,7 +9,10 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "soak/bake.h"
 #include "soak/status.h"
+
+_Static_assert(CLI_MAX_IMAGE_SIDE == SOAK_BAKE_MAX_SIZE, "one limit for every image side");
 
 void cli_error(const char *cmd, const char *fmt, ...)
 {
@@ -44,6 +47,44 @@ int cli_parse_int(const char *cmd, const char *opt, const char *text, long lo, l
         return 0;
     }
     *out = v;
+    return 1;
+}
+
+int cli_parse_size(const char *cmd, const char *opt, const char *text, long max, long *out)
+{
+    char *end = NULL;
+    errno = 0;
+    long v = text ? strtol(text, &end, 10) : 0;
+    if (!text || end == text || *end != '\0' || errno == ERANGE || v < 1 || v > max) {
+        cli_error(cmd, "%s: expected a size from 1 to %ld, got '%s'", opt, max, text ? text : "");
+        return 0;
+    }
+    *out = v;
+    return 1;
+}
+
+int cli_parse_dims(const char *cmd, const char *opt, const char *text, long max_each, double max_total, long out[3])
+{
+    char buf[256], *parts[3];
+    if (cli_split_commas(text, buf, sizeof buf, parts, 3) != 3) {
+        cli_error(cmd, "%s: expected three sizes NX,NY,NZ, got '%s'", opt, text);
+        return 0;
+    }
+    for (int k = 0; k < 3; ++k) {
+        char *end = NULL;
+        errno = 0;
+        long v = strtol(parts[k], &end, 10);
+        if (end == parts[k] || *end != '\0' || errno == ERANGE || v < 1 || v > max_each) {
+            cli_error(cmd, "%s: expected a size from 1 to %ld, got '%s' in '%s'", opt, max_each, parts[k], text);
+            return 0;
+        }
+        out[k] = v;
+    }
+    double total = (double)out[0] * (double)out[1] * (double)out[2];
+    if (total > max_total) {
+        cli_error(cmd, "%s: '%s' is %.0f voxels; the limit is %.0f", opt, text, total, max_total);
+        return 0;
+    }
     return 1;
 }
 

@@ -50,7 +50,7 @@ int bake_opts_parse(bake_opts *o, int argc, char **argv, int *i)
     } else if (cli_is(a, "--width") || cli_is(a, "--height")) {
         int w = cli_is(a, "--width");
         if (!(v = cli_value(o->cmd, argc, argv, i)) ||
-            !cli_parse_int(o->cmd, w ? "--width" : "--height", v, 1, SOAK_BAKE_MAX_SIZE, &n))
+            !cli_parse_size(o->cmd, w ? "--width" : "--height", v, SOAK_BAKE_MAX_SIZE, &n))
             return -1;
         if (w) o->width = n, o->have_width = 1;
         else o->height = n, o->have_height = 1;

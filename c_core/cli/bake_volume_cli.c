@@ -122,15 +122,9 @@ static int parse_valued(vol_args *a, int argc, char **argv, int *i)
     if (!strcmp(name, "-o") || !strcmp(name, "--output")) a->output = v;
     else if (!strcmp(name, "--format")) return parse_formats(a, v) ? 1 : -1;
     else if (!strcmp(name, "--dims")) {
-        double dd[3];
-        if (!parse_triple(name, v, 1, SOAK_VOLUME_MAX_DIM, dd)) return -1;
-        for (int k = 0; k < 3; ++k) {
-            if (dd[k] != (double)(long)dd[k]) {
-                cli_error(CMD, "--dims: expected whole numbers, got '%s'", v);
-                return -1;
-            }
-            a->dims[k] = (long)dd[k];
-        }
+        /* soak_volume_alloc's cap: 2^31 floats over every channel */
+        if (!cli_parse_dims(CMD, name, v, SOAK_VOLUME_MAX_DIM, (double)((1L << 31) / SOAK_VOL_NCHANNELS), a->dims))
+            return -1;
     } else if (!strcmp(name, "--size")) {
         if (!parse_triple(name, v, 1e-9, 1e9, a->size)) return -1;
     } else if (!strcmp(name, "--unit")) {

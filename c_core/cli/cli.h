@@ -45,6 +45,14 @@ void cli_error(const char *cmd, const char *fmt, ...) __attribute__((format(prin
 int cli_parse_double(const char *cmd, const char *opt, const char *text, double lo, double hi, double *out);
 int cli_parse_int(const char *cmd, const char *opt, const char *text, long lo, long hi, long *out);
 
+/* Sizes: every --width, --height, render size and --dims goes through these
+ * two, with one message style naming the option and the value:
+ *   "soak CMD: OPT: expected a size from 1 to MAX, got 'TEXT'". */
+#define CLI_MAX_IMAGE_SIDE 16384 /* pixels per side of any image a command makes (= SOAK_BAKE_MAX_SIZE) */
+int cli_parse_size(const char *cmd, const char *opt, const char *text, long max, long *out);
+/* "NX,NY,NZ", each a size from 1 to max_each, at most max_total in all. */
+int cli_parse_dims(const char *cmd, const char *opt, const char *text, long max_each, double max_total, long out[3]);
+
 /* Splits text at commas into at most max parts of buf; returns the count,
  * or max + 1 when there are more. */
 int cli_split_commas(const char *text, char *buf, size_t len, char **parts, int max);

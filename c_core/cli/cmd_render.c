@@ -106,10 +106,10 @@ int soak_cmd_render(int argc, char **argv)
             if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_double(cmd, "--time", v, 0.001, 1e9, &time_limit))
                 return SOAK_EXIT_USAGE;
         } else if (cli_is(a, "--width")) {
-            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_int(cmd, "--width", v, 1, 16384, &width))
+            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_size(cmd, "--width", v, CLI_MAX_IMAGE_SIDE, &width))
                 return SOAK_EXIT_USAGE;
         } else if (cli_is(a, "--height")) {
-            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_int(cmd, "--height", v, 1, 16384, &height))
+            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_size(cmd, "--height", v, CLI_MAX_IMAGE_SIDE, &height))
                 return SOAK_EXIT_USAGE;
         } else if (cli_is(a, "--max-depth")) {
             if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_int(cmd, "--max-depth", v, 1, 100000, &max_depth))

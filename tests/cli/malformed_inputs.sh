@@ -90,6 +90,6 @@ expect_stderr "JSON syntax error \(NaN/Infinity are not JSON numbers\)" "NaN: hi
 expect_exit 1 "trailing comma" -- "$SOAK" render "$S/syntax_comma.json" -o "$D/o.exr"
 expect_stderr "column 25: JSON syntax error$" "trailing comma: no NaN hint"
 expect_exit 2 "--dims 1,2" -- "$SOAK" bake volume --dry-sigma-s 1 --dry-sigma-a 1 --dims 1,2 -o "$D/v"
-expect_stderr "\-\-dims: expected three comma-separated values" "--dims 1,2: asks for three values"
+expect_stderr "\-\-dims: expected three sizes NX,NY,NZ, got '1,2'" "--dims 1,2: asks for three sizes"
 
 finish

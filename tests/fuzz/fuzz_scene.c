@@ -16,7 +16,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     soak_scene scene;
     char err[1024] = "";
     if (soak_scene_parse(text, "fuzz.json", fuzz_temp_dir(), &scene, err, sizeof err) == SOAK_OK) soak_scene_free(&scene);
-    else if (!err[0]) abort(); /* every failure explains itself */
+    else fuzz_check_message(err, "fuzz.json", NULL); /* every failure explains itself */
     free(text);
     return 0;
 }

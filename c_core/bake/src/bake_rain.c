@@ -505,6 +505,10 @@ static soak_status surface_alloc(rain_surface *s, int w, int h)
     return SOAK_OK;
 }
 
+/* Texture coordinates beyond this are not a texture layout but corrupt data
+ * (a UV of 1e30 was called "not finite"). */
+#define SOAK_RAIN_UV_MAX 1e6
+
 static soak_status check_mesh(const soak_mesh *m, char *err, size_t errlen)
 {
     if (!m->positions || !m->indices || m->n_triangles == 0 || m->n_vertices == 0) {
@@ -526,8 +530,11 @@ static soak_status check_mesh(const soak_mesh *m, char *err, size_t errlen)
                 if (err && errlen) snprintf(err, errlen, "mesh vertex %zu is not finite", i);
                 return SOAK_ERR_ARG;
             }
-        if (!soak_in_range(m->uvs[2 * i], -1e6, 1e6) || !soak_in_range(m->uvs[2 * i + 1], -1e6, 1e6)) {
-            if (err && errlen) snprintf(err, errlen, "mesh UV %zu is not finite", i);
+        if (!soak_in_range(m->uvs[2 * i], -SOAK_RAIN_UV_MAX, SOAK_RAIN_UV_MAX) ||
+            !soak_in_range(m->uvs[2 * i + 1], -SOAK_RAIN_UV_MAX, SOAK_RAIN_UV_MAX)) {
+            if (err && errlen)
+                snprintf(err, errlen, "mesh UV %zu (%g, %g) is out of range: UVs must be finite and within [-%g, %g]",
+                         i, m->uvs[2 * i], m->uvs[2 * i + 1], SOAK_RAIN_UV_MAX, SOAK_RAIN_UV_MAX);
             return SOAK_ERR_ARG;
         }
     }

@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 
 #include "image_plugin.h"
+#include "soak/image_check.h"
 #include "soak/plugin.h"
 #include "soak/staged.h"
 
@@ -96,9 +97,13 @@ soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t
                                          : "is not a regular file (a FIFO, socket or device)");
         return SOAK_ERR_IO;
     }
+    /* Headers an image library would allocate from are checked on the bytes
+     * first (soak/image_check.h: a 566-byte EXR made OpenEXR allocate 1.7 GB). */
+    soak_status st = soak_image_check_header(path, err, errlen);
+    if (st != SOAK_OK) return st;
     const soak_image_plugin *p = image_plugin(path, err, errlen);
     if (!p) return SOAK_ERR_UNSUPPORTED;
-    soak_status st = p->read(path, (long long)sb.st_size, img, err, errlen);
+    st = p->read(path, (long long)sb.st_size, img, err, errlen);
     if (st != SOAK_OK) {
         soak_image_free(img);
         return st;

@@ -15,3 +15,10 @@ const char *soak_status_str(soak_status s)
     }
     return "unknown status";
 }
+
+void soak_message_printable(char *msg)
+{
+    if (!msg) return;
+    for (unsigned char *c = (unsigned char *)msg; *c; ++c)
+        if ((*c < 0x20 && *c != '\n' && *c != '\t') || *c == 0x7f) *c = '?';
+}

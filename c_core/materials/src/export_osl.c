@@ -342,7 +342,9 @@ static soak_status write_surface(const soak_preset_db *db, FILE *out, char *err,
     if (st == SOAK_OK) st = soak_osl_tables_build(db, v == OSL_SHEET, &t);
     if (st == SOAK_OK && t.n_presets == 0) {
         soak_osl_tables_free(&t);
-        st = SOAK_ERR_ARG;
+        snprintf(err, errlen, "%s holds no %s preset: this target needs at least one", h.materials_file,
+                 v == OSL_SHEET ? "thin_sheet" : "surface (non-thin_sheet)");
+        return SOAK_ERR_ARG;
     }
     if (st != SOAK_OK) {
         snprintf(err, errlen, "building the OSL tables failed: %s", soak_status_str(st));

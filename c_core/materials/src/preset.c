@@ -69,6 +69,7 @@ __attribute__((format(printf, 4, 5))) static soak_status fail(ctx *c, soak_statu
             vsnprintf(c->err + n, c->errlen - (size_t)n, fmt, ap);
             va_end(ap);
         }
+        soak_message_printable(c->err);
     }
     return st;
 }

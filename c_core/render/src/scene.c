@@ -23,6 +23,7 @@ soak_status sj_fail(scene_ctx *c, soak_status status, const char *path, const ch
             vsnprintf(c->err + n, c->errlen - (size_t)n, fmt, ap);
             va_end(ap);
         }
+        soak_message_printable(c->err);
     }
     return status;
 }

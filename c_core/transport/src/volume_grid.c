@@ -1,10 +1,12 @@
 /* Soak grid format (<prefix>.json + <prefix>.raw), specified in
  * soak/bake_volume.h next to soak_volume_write_grid. */
+#define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include <cjson/cJSON.h>
 
@@ -121,6 +123,12 @@ soak_status soak_volume_write_grid(const soak_volume *v, const char *prefix, con
 
 static char *read_text(const char *path, char *err, size_t errlen)
 {
+    struct stat sb;
+    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode)) {
+        set_err(err, errlen, "%s: %s", path, S_ISDIR(sb.st_mode) ? "is a folder, not a grid header"
+                                                                  : "is not a regular file (a FIFO, socket or device)");
+        return NULL;
+    }
     FILE *f = fopen(path, "rb");
     if (!f) {
         set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
@@ -245,6 +253,12 @@ soak_status soak_volume_read_grid(const char *json_path, soak_volume *v, char *e
 
     /* The payload's size is checked against the header before anything is
      * allocated: memory is bounded by the file on disk. */
+    struct stat sb;
+    if (stat(raw, &sb) == 0 && !S_ISREG(sb.st_mode)) {
+        set_err(err, errlen, "%s: %s", raw, S_ISDIR(sb.st_mode) ? "is a folder, not the grid's payload"
+                                                                 : "is not a regular file (a FIFO, socket or device)");
+        return SOAK_ERR_IO;
+    }
     FILE *f = fopen(raw, "rb");
     if (!f) {
         set_err(err, errlen, "%s: cannot open: %s", raw, strerror(errno));

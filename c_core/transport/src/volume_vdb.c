@@ -7,6 +7,7 @@
 #include "soak/plugin.h"
 #include "soak/staged.h"
 #include "soak/volume.h"
+#include "soak/volume_check.h"
 #include "vdb_plugin.h"
 
 #ifndef SOAK_HAVE_OPENVDB
@@ -101,6 +102,10 @@ soak_status soak_volume_read_vdb_grid(const char *path, const char *grid, int nx
 {
     if (!path || !grid || !values || !voxel_size || !origin) return SOAK_ERR_NULL;
     if (!(nx >= 1 && ny >= 1 && nz >= 1)) return SOAK_ERR_ARG;
+    /* Magic, version, header and box checked on the bytes before OpenVDB
+     * sees the file (soak/volume_check.h). */
+    soak_status pre = soak_vdb_check(path, nx, ny, nz, err, errlen);
+    if (pre != SOAK_OK) return pre;
     const soak_vdb_plugin *p = vdb_plugin(path, err, errlen);
     if (!p) return SOAK_ERR_UNSUPPORTED;
     return p->read_grid(path, grid, nx, ny, nz, values, voxel_size, origin, err, errlen);

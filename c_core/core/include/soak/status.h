@@ -18,6 +18,11 @@ typedef enum soak_status {
 
 const char *soak_status_str(soak_status s);
 
+/* Makes an error message printable in place: control bytes other than
+ * newline and tab (echoed from a malformed input: a key or a value) become
+ * '?', so a message never carries terminal escapes or garbage. */
+void soak_message_printable(char *msg);
+
 /* The range test used everywhere: false for NaN and +-Inf as well. */
 static inline int soak_in_range(double x, double lo, double hi)
 {
