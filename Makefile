@@ -5,7 +5,7 @@ BUILD      ?= build
 BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc)
 
-.PHONY: all deps build build-asan blender43 addon exports demo gallery test test-release test-asan bench fuzz clean
+.PHONY: all deps build build-asan blender43 addon exports demo gallery povray-gallery test test-release test-asan bench fuzz clean
 
 all: build
 
@@ -46,6 +46,12 @@ demo: build addon
 GALLERY_SAMPLES ?= 16
 gallery: build addon
 	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out blender_addon/images --prefix gallery_ --size 960x540 --samples $(GALLERY_SAMPLES) --max-kb 400 --soak $(BUILD)/bin/soak
+
+# The POV-Ray gallery of povray/README.md: the seven situations of the physics
+# sources (scenes/povray/gallery/), 960x540, beside soak render where it can render
+# them, into povray/images/gallery_*.png (about 10 minutes on two shared cores).
+povray-gallery: build
+	@bash povray/render_gallery.sh $(BUILD)/bin/soak povray/images
 
 # Each pass lists the skipped tests with their reasons and fails when a test
 # failed, was skipped for want of povray or blender (the set-up installs

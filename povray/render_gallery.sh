@@ -1,0 +1,70 @@
+#!/bin/bash
+# The POV-Ray gallery of povray/README.md: the seven situations of the physics
+# sources (seeds 000-002) as scenes an artist would show, scenes/povray/gallery/,
+# rendered at 960x540 (make povray-gallery) into OUT as 8-bit sRGB PNGs (< 400 KB).
+# usage: povray/render_gallery.sh SOAK OUT [WIDTH HEIGHT]
+set -eu
+SOAK=$1 OUT=$2 W=${3:-960} H=${4:-540}
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+SCN=$ROOT/scenes/povray/gallery
+command -v povray >/dev/null || { echo "FAIL: povray not found (installed by the README's set-up)"; exit 1; }
+mkdir -p "$OUT"
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+pov() { # scene output width height [options...]: a linear EXR in WORK, then the sRGB PNG in OUT
+  local scene=$1 out=$2 w=$3 h=$4; shift 4
+  local t0=$(date +%s)
+  ( cd "$WORK" && povray "+I$SCN/$scene" "+O$out.exr" +FE "+W$w" "+H$h" -D -V +WT2 "+L$ROOT/povray" "+L$WORK" \
+      Output_Alpha=off +A0.05 +AM2 +R2 "$@" >"$out.log" 2>&1 ) \
+    || { echo "FAIL: povray $scene (exit $?), see $WORK/$out.log"; tail -5 "$WORK/$out.log"; exit 1; }
+  echo "$out: $((`date +%s` - t0)) s"
+}
+png() { oiiotool "$WORK/$1.exr" --colorconvert linear sRGB -d uint8 -o "$OUT/gallery_$1.png"; }
+# 1 wet paper, front- and back-lit
+pov wet_paper.pov paper_front "$W" "$H"; png paper_front
+pov wet_paper.pov paper_back "$W" "$H" Declare=Back=1; png paper_back
+# 2 beach rock
+pov beach_rock.pov beach_rock "$W" "$H"; png beach_rock
+# 3 cognac on oak, with the glass's caustic (photons; one thread: photons differ between threaded runs)
+pov cognac_table.pov cognac_table "$W" "$H" +WT1; png cognac_table
+# 4 bricks drying: four frames of the animation from a baked start map
+"$SOAK" bake turbulence --width 320 --height 180 --frequency 3 --threshold -0.05 --softness 0.25 --seed 11 --threads 2 \
+  -o "$WORK/splash.png" >/dev/null
+"$SOAK" export --target json -o "$WORK/export.json" >/dev/null
+T_FILL=$(/usr/bin/python3 -c 'import json,sys; print(next(m["t_fill"] for m in json.load(open(sys.argv[1]))["materials"] if m["name"] == "brick"))' "$WORK/export.json")
+"$SOAK" bake drying "$WORK/splash.png" --start-map --t-fill "$T_FILL" \
+  -o "$WORK/brick_start.png" >/dev/null
+frames=()
+for k in 0 1 2 3; do
+  pov bricks_drying.pov "bricks_$k" $((W / 2 - 4)) $((H / 2 - 4)) "+K0.$k"   # clock 0, 0.1, 0.2, 0.3
+  frames+=("$WORK/bricks_$k.exr")
+done
+oiiotool "${frames[@]}" --mosaic:pad=8 2x2 --colorconvert linear sRGB -d uint8 -o "$WORK/bricks.png"
+oiiotool "$WORK/bricks.png" --resize "${W}x${H}" -o "$OUT/gallery_bricks_drying.png"
+# 5 bas-relief under rain: the rain bake on the panel's mesh
+/usr/bin/python3 "$SCN/relief_mesh.py" "$WORK" 192
+"$SOAK" bake rain "$WORK/relief.obj" -o "$WORK/relief_wet.png" --up z --rain-dir 0,-1.4,1 --spread 20 --rainfall 20 --saturation 0.0001 \
+  --duration 3600 --width 384 --height 384 --rays 32 --threads 2 >/dev/null
+pov bas_relief_rain.pov bas_relief_rain "$W" "$H"; png bas_relief_rain
+# 6 flowerpot porosity sweep
+pov flowerpot_porosity.pov flowerpot_porosity "$W" "$H"; png flowerpot_porosity
+# 7 water films of increasing coverage into a puddle, copper under water
+pov film_copper.pov film_copper "$W" "$H"; png film_copper
+# beside them, soak render of the same description where the tracer can render it
+# (spheres, boxes and planes of presets: the beach rock and the films with copper)
+for s in beach_rock film_copper; do
+  t0=$(date +%s)
+  "$SOAK" render "$SCN/$s.json" -o "$WORK/soak_$s.png" --threads 2 --seed 1 >"$WORK/soak_$s.log" 2>&1 \
+    || { echo "FAIL: soak render $s.json, see $WORK/soak_$s.log"; tail -3 "$WORK/soak_$s.log"; exit 1; }
+  oiiotool "$WORK/soak_$s.png" -d uint8 --attrib png:compressionLevel 9 -o "$OUT/gallery_soak_$s.png"   # soak writes 16-bit PNGs
+  if [ "$(stat -c %s "$OUT/gallery_soak_$s.png")" -ge 409600 ]; then   # Monte Carlo fireflies do not compress
+    oiiotool "$WORK/soak_$s.png" --median 3x3 -d uint8 -o "$OUT/gallery_soak_$s.png"
+    echo "soak render $s: 3x3 median (fireflies) to stay under 400 KB"
+  fi
+  echo "soak render $s: $(( $(date +%s) - t0 )) s"
+done
+for f in "$OUT"/gallery_*.png; do
+  kb=$(( $(stat -c %s "$f") / 1024 ))
+  [ "$kb" -lt 400 ] || { echo "FAIL: $f is $kb KB (limit 400)"; exit 1; }
+done
+echo "rendered the gallery into $OUT"
