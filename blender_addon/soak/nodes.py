@@ -301,16 +301,15 @@ def _wet_colour(b, colour, t, images, rows):
         fx = b.math("SUBTRACT", x, j)
         tex = _lookup(b, images.cells[c], b.math("MULTIPLY_ADD", j, 1.0 / (na - 1), 0.5 / (na - 1)), rows.cell,
                       "Closest")
-        # cell texel: (f00, f01 - f00, f10 - f00) and alpha f11 - f10 - f01 + f00
+        # cell texel: (f01 - f00, f10 - f00, f11 - f10 - f01 + f00), alpha f00
         w = b.node("ShaderNodeCombineXYZ")
-        w.inputs[0].default_value = 1.0
-        b.link(fx, w.inputs[1])
-        b.link(rows.fy, w.inputs[2])
+        b.link(fx, w.inputs[0])
+        b.link(rows.fy, w.inputs[1])
+        b.link(b.math("MULTIPLY", fx, rows.fy), w.inputs[2])
         dot = b.node("ShaderNodeVectorMath", operation="DOT_PRODUCT")
         b.link(tex.outputs["Color"], dot.inputs[0])
         b.link(w.outputs[0], dot.inputs[1])
-        val = b.math("MULTIPLY_ADD", tex.outputs["Alpha"], b.math("MULTIPLY", fx, rows.fy), dot.outputs["Value"])
-        b.link(val, comb.inputs[c])
+        b.link(b.math("ADD", tex.outputs["Alpha"], dot.outputs["Value"]), comb.inputs[c])
     return comb.outputs[0]
 
 

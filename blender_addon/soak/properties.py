@@ -173,8 +173,9 @@ class SoakMaterialSettings(bpy.types.PropertyGroup):
         description="Scale of the procedural wet patches (patches per object-space unit)")
     exact_lookups: BoolProperty(
         name="Exact lookups (EEVEE)", default=False, update=_rebuild,
-        description="Interpolate the core's tables with four exact texel reads each (EEVEE's image filter "
-                    "is not plain bilinear); slower, same result in Cycles")
+        description="Read the core's tables exactly: one Closest read per colour channel of the table cell "
+                    "and an explicit bilinear blend (EEVEE's image filter is not plain bilinear); slower, same "
+                    "result in Cycles; always on in Blender 4.2+")
     use_osl: BoolProperty(name="Use OSL shader", default=False,
                           description="Also add the core's OSL shader (Cycles with Open Shading Language only)")
     status: StringProperty(name="Status", default="", options={"SKIP_SAVE"},

@@ -287,14 +287,17 @@ static void put_coordinate_programs(FILE *out, const bl_grid *g)
 }
 
 /* The fill schedule of soak_fill_fraction (soak/porous.h):
- * P = clamp((time - start_time) / fill_time, 0, 1); a zero fill time is the
- * step at start_time, stood in for by a 1e-9 fill time. */
+ * P = clamp((time - start_time) / fill_time, 0, 1), right-continuous: a zero
+ * fill time is the step to 1 at start_time. Written as
+ * clamp((time - start_time + d) / (fill_time + d)) with d = 1e-9 s: 1 at
+ * start_time for a zero fill time, off by d / fill_time otherwise. */
 static void put_schedule_program(FILE *out)
 {
     const bl_op ops[] = {{"SUBTRACT", {"time", "start_time"}, {0.0}, 2, 0},
-                         {"MAXIMUM", {"fill_time"}, {0.0, 1e-9}, 2, 0},
-                         {"DIVIDE", {"#0", "#1"}, {0.0}, 2, 1}};
-    put_program(out, "schedule_program", ops, 3);
+                         {"ADD", {"#0"}, {0.0, 1e-9}, 2, 0},
+                         {"ADD", {"fill_time"}, {0.0, 1e-9}, 2, 0},
+                         {"DIVIDE", {"#1", "#2"}, {0.0}, 2, 1}};
+    put_program(out, "schedule_program", ops, 4);
 }
 
 static soak_status write_pixels(FILE *out, const bl_grid *g)
