@@ -230,7 +230,7 @@ static soak_status parse_header(const cJSON *root, const char *path, int dims[3]
     return SOAK_OK;
 }
 
-soak_status soak_volume_read_grid(const char *json_path, soak_volume *v, char *err, size_t errlen)
+static soak_status read_grid(const char *json_path, soak_volume *v, char *err, size_t errlen)
 {
     if (!json_path || !v) return SOAK_ERR_NULL;
     memset(v, 0, sizeof *v);
@@ -255,13 +255,18 @@ soak_status soak_volume_read_grid(const char *json_path, soak_volume *v, char *e
      * allocated: memory is bounded by the file on disk. */
     struct stat sb;
     if (stat(raw, &sb) == 0 && !S_ISREG(sb.st_mode)) {
-        set_err(err, errlen, "%s: %s", raw, S_ISDIR(sb.st_mode) ? "is a folder, not the grid's payload"
-                                                                 : "is not a regular file (a FIFO, socket or device)");
+        if (err && errlen)
+            snprintf(err, errlen, "%s: %s (the payload named by %s)", raw,
+                     S_ISDIR(sb.st_mode) ? "is a folder, not the grid's payload"
+                                         : "is not a regular file (a FIFO, socket or device)",
+                     json_path);
         return SOAK_ERR_IO;
     }
     FILE *f = fopen(raw, "rb");
     if (!f) {
-        set_err(err, errlen, "%s: cannot open: %s", raw, strerror(errno));
+        /* The payload's name comes from the header: name both. */
+        if (err && errlen)
+            snprintf(err, errlen, "%s: cannot open the payload named by %s: %s", raw, json_path, strerror(errno));
         return SOAK_ERR_IO;
     }
     size_t n = (size_t)dims[0] * (size_t)dims[1] * (size_t)dims[2];
@@ -304,5 +309,13 @@ soak_status soak_volume_read_grid(const char *json_path, soak_volume *v, char *e
     free(buf);
     fclose(f);
     if (st != SOAK_OK) soak_volume_free(v);
+    return st;
+}
+
+soak_status soak_volume_read_grid(const char *json_path, soak_volume *v, char *err, size_t errlen)
+{
+    soak_status st = read_grid(json_path, v, err, errlen);
+    /* Names and values echoed from the header may hold any byte. */
+    if (st != SOAK_OK && err && errlen) soak_message_printable(err);
     return st;
 }
