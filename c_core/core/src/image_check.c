@@ -46,6 +46,7 @@ static soak_status fail(exr_cursor *c, soak_status st, const char *fmt, ...)
             vsnprintf(c->err + n, c->errlen - (size_t)n, fmt, ap);
             va_end(ap);
         }
+        soak_message_printable(c->err); /* attribute names come from the file */
     }
     return st;
 }
