@@ -27,8 +27,9 @@ int soak_bake_combine_main(int argc, char **argv);
  * Options every kind accepts: -o/--output PATH, --width N, --height N
  * (1..16384), --seed N, --threads N (1..64, default: every core), --float
  * (32-bit EXR instead of half), --frames A-B with a printf pattern in the
- * output (wet.%04d.exr), --time T and --frame-time DT: frame f is baked at
- * time T + (f - A) DT. */
+ * output (wet.%04d.exr), --time T, --frame-time DT and --frame-origin F
+ * (default A): frame f is baked at time T + (f - F) DT, the same double for
+ * a given f whatever --frames range it is baked in (bake_frame_time). */
 #define BAKE_MAX_INPUTS 16 /* input images of one bake */
 
 typedef struct bake_opts {
@@ -43,6 +44,8 @@ typedef struct bake_opts {
     long first, last;
     double time, frame_time;
     int have_time;
+    long origin; /* --frame-origin: the frame baked at `time` */
+    int have_origin;
 } bake_opts;
 
 /* Defaults: 1024 x 1024, seed 0, time and frame_time as given. */
@@ -61,6 +64,11 @@ int bake_opts_check(const bake_opts *o, const char *const *inputs, int n_inputs)
  * `time` into out; err gets a message on failure. */
 typedef soak_status (*bake_frame_fn)(void *ctx, int frame, double time, const soak_bake_exec *exec, soak_image *out,
                                      char *err, size_t errlen);
+
+/* Time of frame f (-1: the single image): time + (f - origin) * frame_time,
+ * origin = --frame-origin or the first frame. Depends only on f and the
+ * three options, never on the --frames range when the origin is given. */
+double bake_frame_time(const bake_opts *o, long f);
 
 /* Runs the frames with a progress bar, writing each atomically; returns
  * the exit code. */

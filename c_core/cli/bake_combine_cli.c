@@ -23,7 +23,7 @@ static void usage(FILE *out)
             "  --width N, --height N optional check: the inputs must have this size\n"
             "  --threads N           worker threads (default: every core)\n"
             "  --frames A-B          sequences: inputs and -o may hold a pattern such as wet.%%04d.exr\n"
-            "  --seed N, --time T, --frame-time DT  accepted for uniformity; unused\n\n"
+            "  --seed N, --time T, --frame-time DT, --frame-origin F  accepted for uniformity; unused\n\n"
             "example:\n"
             "  soak bake combine max waves.exr puddles.exr -o wet.exr\n"
             "  soak bake combine blur wet.exr --sigma 2.5 -o wet_soft.exr\n");

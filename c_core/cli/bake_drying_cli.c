@@ -40,8 +40,10 @@ static void usage(FILE *out)
             "  --diffusion-length L     diffusion: spreading length over the drying time, pixels (default 8)\n"
             "  --steps N                diffusion: implicit steps per frame, 1..100000 (default 32)\n"
             "  --frames A-B             image sequence; -o must hold a pattern such as dry.%%04d.exr\n"
-            "  --time T                 time of the (first) frame (default 0.5)\n"
-            "  --frame-time DT          time between frames (default 0.01): frame f is at T + (f-A) DT\n\n"
+            "  --time T                 time of frame F (default 0.5)\n"
+            "  --frame-time DT          time between frames (default 0.01): frame f is at T + (f-F) DT\n"
+            "  --frame-origin F         frame baked at time T (default A); give the sequence's first\n"
+            "                           frame to bake it in chunks (--frames 11-20 ...) that equal one run\n\n"
             "example:\n"
             "  soak bake drying splash_mask.png --t-fill 0.2 --noise 0.3 --frames 0-100 -o dry.%%04d.exr\n");
 }
@@ -70,11 +72,11 @@ static soak_status start_map(const drying_job *j, soak_image *out)
 static soak_status frame(void *vctx, int f, double time, const soak_bake_exec *exec, soak_image *out, char *err,
                          size_t errlen)
 {
-    (void)f;
     const drying_job *j = vctx;
     soak_drying_params p = j->p;
     if (!(time >= 0)) {
-        snprintf(err, errlen, "--time: drying time must be >= 0 (frame time %g)", time);
+        if (f < 0) snprintf(err, errlen, "--time: drying time must be >= 0, got %g", time);
+        else snprintf(err, errlen, "--time/--frame-time/--frame-origin: frame %d at drying time %g (< 0)", f, time);
         return SOAK_ERR_ARG;
     }
     p.time = time;

@@ -118,7 +118,8 @@ int soak_bake_rain_main(int argc, char **argv)
             usage(stdout);
             return SOAK_EXIT_OK;
         }
-        if (cli_is(a, "--frames") || cli_is(a, "--time") || cli_is(a, "--frame-time") || cli_is(a, "--float")) {
+        if (cli_is(a, "--frames") || cli_is(a, "--time") || cli_is(a, "--frame-time") || cli_is(a, "--frame-origin") ||
+            cli_is(a, "--float")) {
             cli_error(CMD, "option %s does not apply to rain bakes", a);
             return SOAK_EXIT_USAGE;
         }

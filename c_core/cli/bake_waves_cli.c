@@ -32,8 +32,10 @@ static void usage(FILE *out)
             "  --front-octaves N       1..16 (default 4)\n"
             "  --edge E                soft edge width of each front, 0 = sharp (default 0.01)\n"
             "  --frames A-B            image sequence; -o must hold a pattern such as wet.%%04d.exr\n"
-            "  --time T                time of the (first) frame (default 0); wave j arrives at j*P\n"
-            "  --frame-time DT         time between frames (default 1/24): frame f is at T + (f-A) DT\n\n"
+            "  --time T                time of frame F (default 0); wave j arrives at j*P\n"
+            "  --frame-time DT         time between frames (default 1/24): frame f is at T + (f-F) DT\n"
+            "  --frame-origin F        frame baked at time T (default A); give the sequence's first\n"
+            "                          frame to bake it in chunks (--frames 11-20 ...) that equal one run\n\n"
             "example:\n"
             "  soak bake waves --waves 4 --direction 90 --shore 0.2 --seed 3 --width 2048 --height 1024 -o beach.exr\n");
 }
