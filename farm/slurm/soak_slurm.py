@@ -8,19 +8,18 @@ sequence in chunks of frames, plus a job that checks it is complete.
       -- bake drying splash.png --t-fill 0.2 --noise 0.3 --seed 4
 
 Everything after "--" is the soak command without the options this script
-sets itself (--frames, --time, --frame-time, -o, --threads). It writes
+sets itself (--frames, --time, --frame-time, --frame-origin, -o, --threads). It writes
 JOB_DIR/bake.sbatch (array task i bakes chunk i: its --frames come from a
 table indexed by SLURM_ARRAY_TASK_ID) and JOB_DIR/check.sbatch (lists missing
 frames, exit 1 if any; on success writes JOB_DIR/complete). With --submit it
 runs sbatch for both, the check with --dependency=afterany on the array, and
 prints the two job ids.
 
-Chunks are identical to one soak run over the whole range: soak gives frame f
-the time T + (f - A) * DT in IEEE double, A the first frame of its --frames;
-each chunk's --time is the single run's time of its first frame, and a chunk
-is split where its own T_c + (f - A_c) * DT would round differently from the
-single run's (Python floats are the same doubles). Outputs are staged by soak
-itself (temporary file + rename per frame), so a frame on disk is complete.
+Chunks are identical to one soak run over the whole range: every chunk is
+one soak run with the job's --time T and --frame-time DT and --frame-origin A
+(the first frame of --frames), and soak bakes frame f at T + (f - A) * DT
+whatever its own --frames range is. Outputs are staged by soak itself
+(temporary file + rename per frame), so a frame on disk is complete.
 """
 import argparse
 import os
@@ -29,7 +28,7 @@ import shlex
 import subprocess
 import sys
 
-OWNED = {"--frames", "--time", "--frame-time", "-o", "--output", "--threads"}
+OWNED = {"--frames", "--time", "--frame-time", "--frame-origin", "-o", "--output", "--threads"}
 
 
 def fail(msg):
@@ -46,20 +45,6 @@ def parse_frames(text):
     if not (0 <= a <= b <= 9999999):
         fail(f"--frames: expected 0 <= A <= B <= 9999999, got '{text}'")
     return a, b
-
-
-def exact_runs(first, last, time, a0, dt):
-    """Splits [first, last] into runs whose soak frame times equal the single
-    run's (time of frame a0 = time) bit for bit: [(first, last, time_of_first)]."""
-    out, start = [], first
-    t0 = time + (start - a0) * dt
-    for f in range(first + 1, last + 1):
-        single = time + (f - a0) * dt
-        if t0 + (f - start) * dt != single:
-            out.append((start, f - 1, t0))
-            start, t0 = f, single
-    out.append((start, last, t0))
-    return out
 
 
 def check_pattern(path):
@@ -120,14 +105,10 @@ def main(argv):
                       f"mkdir -p {q(out_dir)}",
                       'case "${SLURM_ARRAY_TASK_ID:?not an array task}" in']
     for i, (a, b) in enumerate(chunks):
-        cmds = []
-        for (ra, rb, t) in exact_runs(a, b, o.time, first, o.frame_time):
-            args = [o.soak] + soak_cmd + ["--threads", str(o.cpus_per_task), "--frames", f"{ra}-{rb}",
-                                          "--time", repr(t), "--frame-time", repr(o.frame_time), "-o", o.output]
-            cmds.append(" ".join(q(x) for x in args))
-        lines.append(f"  {i}) # frames {a}-{b}")
-        lines += [f"     {c}" for c in cmds]
-        lines.append("     ;;")
+        args = [o.soak] + soak_cmd + ["--threads", str(o.cpus_per_task), "--frames", f"{a}-{b}",
+                                      "--time", repr(o.time), "--frame-time", repr(o.frame_time),
+                                      "--frame-origin", str(first), "-o", o.output]
+        lines.append(f"  {i}) {' '.join(q(x) for x in args)} ;;")
     lines += ['  *) echo "soak_slurm: no chunk $SLURM_ARRAY_TASK_ID" >&2; exit 2 ;;', "esac", ""]
     bake = os.path.join(job_dir, "bake.sbatch")
 

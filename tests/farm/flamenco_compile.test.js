@@ -104,21 +104,18 @@ check("JOB_TYPE settings follow Flamenco's AvailableJobSetting schema", () => {
 });
 
 // ---- soak-bake ----
-// Times soak gives frame f: C's time + (f - first) * frame_time (bake_cli_common.c).
-const soakTime = (T, A, DT, f) => T + (f - A) * DT;
-
+// soak bakes frame f at --time + (f - --frame-origin) * --frame-time whatever
+// its --frames range (bake_cli_common.c): every command must carry the job's
+// own Time, Frame Time and first frame, so each frame gets one run's time.
 function framesOfCommands(tasks, T, A, DT) {
     const seen = [];
     for (const task of tasks) {
         for (const args of argsOf(task)) {
             const [a, b] = opt(args, "--frames").split("-").map(Number);
-            const t = Number(opt(args, "--time")), dt = Number(opt(args, "--frame-time"));
-            assert.equal(dt, DT);
-            for (let f = a; f <= b; f++) {
-                assert.equal(soakTime(t, a, dt, f), soakTime(T, A, DT, f),
-                             `frame ${f}: chunk time differs from the single run's`);
-                seen.push(f);
-            }
+            assert.equal(Number(opt(args, "--time")), T);
+            assert.equal(Number(opt(args, "--frame-time")), DT);
+            assert.equal(opt(args, "--frame-origin"), String(A));
+            for (let f = a; f <= b; f++) seen.push(f);
         }
     }
     return seen;
@@ -139,8 +136,8 @@ check("drying 1-7, chunks of 3: tasks, commands, single-run times", () => {
         }
     }
     assert.deepEqual(argsOf(tasks[1]), [["bake", "drying", "--width", "64", "--height", "48", "--seed", "5",
-        "--t-fill", "0.3", "--noise", "0.4", "--frames", "4-6", "--time", "0.625", "--frame-time", "0.125",
-        "-o", "/farm/wet/wet.%04d.exr"]]);
+        "--t-fill", "0.3", "--noise", "0.4", "--frames", "4-6", "--time", "0.25", "--frame-time", "0.125",
+        "--frame-origin", "1", "-o", "/farm/wet/wet.%04d.exr"]]);
     assert.equal(tasks[1].commands[1].totalStepCount, 3);
     assert.deepEqual(framesOfCommands(tasks, 0.25, 1, 0.125), [1, 2, 3, 4, 5, 6, 7]);
 });
@@ -152,32 +149,22 @@ check("two-frame chunks come as '5,6' (frameRangeMerge) and bake as one run", ()
     assert.deepEqual(framesOfCommands(tasks, 0, 5, 0.01), [5, 6, 7, 8, 9]);
 });
 
-check("a gap in the frames: one command per run, times from the job's first frame", () => {
+check("a gap in the frames: one command per run, all with the job's time and origin", () => {
     const {tasks} = bake.compile(bakeSettings({frames: "10, 1-3", chunk_size: 10, time: 0.5, frame_time: 0.0625}));
     assert.deepEqual(tasks.map((t) => t.name), ["bake-1-3,10"]);
     const a = argsOf(tasks[0]);
     assert.deepEqual(a.map((x) => opt(x, "--frames")), ["1-3", "10-10"]);
-    assert.equal(Number(opt(a[1], "--time")), 0.5 + 9 * 0.0625);
+    assert.deepEqual(framesOfCommands(tasks, 0.5, 1, 0.0625), [1, 2, 3, 10]);
 });
 
-// With frame_time 0.01 some chunk's own start time plus (f - start) * 0.01
-// rounds differently from the single run's; the compiler must split there.
-check("a chunk whose own time would round differently is split (exact times)", () => {
-    let found = null;
-    for (let T = 0; T < 1 && !found; T += 0.05) {
-        for (let s = 2; s < 40 && !found; s++) {
-            const ts = soakTime(T, 1, 0.01, s);
-            for (let f = s + 1; f < s + 10; f++) {
-                if (soakTime(ts, s, 0.01, f) !== soakTime(T, 1, 0.01, f)) { found = {T, s}; break; }
-            }
-        }
-    }
-    assert.ok(found, "no rounding case found: the check would be vacuous");
-    const {tasks} = bake.compile(bakeSettings({frames: "1-60", chunk_size: 10, time: found.T, frame_time: 0.01}));
-    assert.ok(tasks.some((t) => t.commands.length > 1), "no chunk was split");
-    const frames = framesOfCommands(tasks, found.T, 1, 0.01);
-    assert.deepEqual(frames, Array.from({length: 60}, (_, i) => i + 1));
-    console.log(`     time ${found.T}: ${tasks.reduce((n, t) => n + argsOf(t).length, 0)} soak runs for 6 chunks`);
+// At time 0 and frame time 0.01 the former per-chunk times (chunk 11-20 at
+// --time 0.1) rounded differently from one run's further on, which took 19
+// soak runs for these 6 chunks; with --frame-origin each chunk is one run.
+check("frames 1-60 in chunks of 10: one soak run per chunk, Time and origin of the job", () => {
+    const {tasks} = bake.compile(bakeSettings({frames: "1-60", chunk_size: 10, time: 0, frame_time: 0.01}));
+    assert.deepEqual(tasks.map((t) => argsOf(t).length), [1, 1, 1, 1, 1, 1]);
+    assert.deepEqual(argsOf(tasks[5]).map((a) => opt(a, "--frames")), ["51-60"]);
+    assert.deepEqual(framesOfCommands(tasks, 0, 1, 0.01), Array.from({length: 60}, (_, i) => i + 1));
 });
 
 check("drying with a mask: the mask sets the size (no --width/--height)", () => {
@@ -223,6 +210,7 @@ check("bad settings are refused naming the setting", () => {
         [{kind: "rain", input: "/m.obj"}, /"output_name".*single map/],
         [{frames: "1-3", extra_args: "--t-fill 0.3 -o /tmp/x.%04d.exr"}, /"extra_args".*"-o"/],
         [{frames: "1-3", extra_args: "--frames=1-2"}, /"extra_args".*"--frames"/],
+        [{frames: "1-3", extra_args: "--frame-origin 0"}, /"extra_args".*"--frame-origin"/],
         [{frames: "1-3", extra_args: "--noise 'unclosed"}, /"extra_args".*cannot split/],
         [{frames: "1-3", time: -0.5}, /"time".*drying/],
         [{frames: "1-3", frame_time: Number.NaN}, /"frame_time"/],
@@ -250,7 +238,8 @@ check("animation: bake chunks, render chunks depending on the bakes of their fra
     const wet = "/farm/render/shot/2026-11-25_030405/wetmap/wet.%04d.exr";
     assert.equal(tasks[1].commands[0].parameters.path, "/farm/render/shot/2026-11-25_030405/wetmap");
     assert.deepEqual(argsOf(tasks[1]), [["bake", "drying", "--width", "32", "--height", "32", "--seed", "0",
-        "--t-fill", "0.2", "--noise", "0.3", "--frames", "4-4", "--time", "0.75", "--frame-time", "0.25", "-o", wet]]);
+        "--t-fill", "0.2", "--noise", "0.3", "--frames", "4-4", "--time", "0", "--frame-time", "0.25",
+        "--frame-origin", "1", "-o", wet]]);
     const r = tasks[3].commands[0];
     assert.equal(r.name, "blender-render");
     assert.equal(r.parameters.exe, "{blender}");

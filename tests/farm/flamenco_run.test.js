@@ -124,11 +124,16 @@ function check(name, fn) {
 
 // ---- 1. soak-bake in chunks vs one run ----
 const bake = F.loadJobType(path.join(scripts, "soak_bake.js"));
+// A mask whose texel k (1..10) is k texels from the one dry texel: with
+// --t-fill 0 it dries exactly at time k/10, a step. At time 0 and frame time
+// 0.01, frame 11 is at 10 * 0.01 = 0.1 = texel 1's drying time, but a chunk
+// 10-12 started at its own time 0.09 would give it 0.09 + 0.01 < 0.1 (still
+// wet; tests/cli/bake.sh shows it): the comparison sees a last-bit time error.
+const stepMask = path.join(tmp, "step_mask.pgm");
+fs.writeFileSync(stepMask, "P2\n11 1\n1\n0 1 1 1 1 1 1 1 1 1 1\n");
 const bakeCases = [
-    // time 0.3, frame time 0.11: chunk 4-6's own time 0.63 + 0.11 rounds differently
-    // from 0.3 + 4 * 0.11, so that chunk bakes as two exact runs (splitRequired).
-    {kind: "drying", frames: "1-7", chunk_size: 3, width: 48, height: 40, seed: 3, time: 0.3, frame_time: 0.11,
-     extra_args: "--noise 0.5 --t-fill 0.3", splitRequired: true},
+    {kind: "drying", frames: "1-12", chunk_size: 3, input: stepMask, seed: 3, time: 0, frame_time: 0.01,
+     extra_args: "--t-fill 0"},
     {kind: "turbulence", frames: "0-3", chunk_size: 2, width: 40, height: 32, seed: 9, time: 0,
      frame_time: 1 / 24, extra_args: "--evolve 1.5 --octaves 3"},
 ];
@@ -136,21 +141,25 @@ for (const c of bakeCases) {
     check(`soak-bake ${c.kind} ${c.frames} in chunks of ${c.chunk_size} == one soak run`, () => {
         const dir = path.join(tmp, `bake_${c.kind}`);
         const settings = Object.assign(F.defaults(bake.jobType), c, {output_dir: path.join(dir, "chunked")});
-        delete settings.splitRequired;
         const compiled = bake.compile(settings);
         const execs = (t) => t.commands.filter((x) => x.name === "exec").length;
-        if (c.splitRequired) assert.ok(compiled.tasks.some((t) => execs(t) > 1), "no chunk split: the case misses its point");
+        assert.ok(compiled.tasks.every((t) => execs(t) === 1), "a chunk is not exactly one soak run");
         const n = runJob(compiled, {soak});
         const [A, B] = c.frames.split("-").map(Number);
         const single = path.join(dir, "single", "wet.%04d.exr");
         fs.mkdirSync(path.dirname(single), {recursive: true});
-        mustRun([soak, "bake", c.kind, "--width", String(c.width), "--height", String(c.height),
-                 "--seed", String(c.seed)].concat(F.shellSplit(c.extra_args),
+        const size = c.input ? [c.input] : ["--width", String(c.width), "--height", String(c.height)];
+        mustRun([soak, "bake", c.kind].concat(size, ["--seed", String(c.seed)], F.shellSplit(c.extra_args),
                 ["--frames", c.frames, "--time", String(c.time), "--frame-time", String(c.frame_time), "-o", single]));
         const pairs = [];
         for (let f = A; f <= B; f++) pairs.push([framePath(path.join(dir, "chunked", "wet.%04d.exr"), f), framePath(single, f)]);
         const images = readImages([].concat(...pairs));
         for (const [x, y] of pairs) assertSameImage(images, x, y);
+        if (c.input) {
+            // The case's point: texel 1 dries exactly at frame 11's time (0.1), a step.
+            const texel1 = (f) => images.get(framePath(single, f)).data[1];
+            assert.deepEqual([texel1(10), texel1(11)], [1, 0], "texel 1 should dry exactly at frame 11");
+        }
         assert.ok(imagesDiffer(images, framePath(single, A), framePath(single, B)), "first and last frames are " +
                   "equal: the sequence does not change, the comparison proves little");
         console.log(`     ${compiled.tasks.length} tasks, ${n} commands (${compiled.tasks.map(execs).join("+")} soak runs), ` +

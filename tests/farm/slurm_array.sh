@@ -88,17 +88,22 @@ done
 [ "$(sinfo -h -o %T 2>/dev/null)" = idle ] || fail "node not idle: $(sinfo 2>&1); $(tail -5 "$tmp/log/slurmctld.log")"
 echo "cluster up ($(elapsed))"
 
-# Frames 1-7 in chunks of 3 at time 0.3 + (f - 1) * 0.11: chunk 4-6 needs two
-# runs for exact times (see soak_slurm.py).
-bake=(bake drying --width 48 --height 40 --seed 3 --noise 0.5 --t-fill 0.3)
+# Frames 1-12 in chunks of 3 at time (f - 1) * 0.01 of a mask whose texel k
+# (1..10) is k texels from the dry one: with --t-fill 0 texel 1 dries exactly
+# at 0.1, frame 11's time, which a chunk 10-12 started at its own time 0.09
+# would miss by the last bit (tests/cli/bake.sh). Every chunk is one soak run
+# with the job's --time and --frame-origin 1.
+mask=$tmp/step_mask.pgm
+printf 'P2\n11 1\n1\n0 1 1 1 1 1 1 1 1 1 1\n' > "$mask"
+bake=(bake drying "$mask" --seed 3 --t-fill 0)
 out=$tmp/chunked/wet.%04d.exr
-ids=$(/usr/bin/python3 "$root/farm/slurm/soak_slurm.py" --frames 1-7 --chunk-size 3 --time 0.3 --frame-time 0.11 \
+ids=$(/usr/bin/python3 "$root/farm/slurm/soak_slurm.py" --frames 1-12 --chunk-size 3 --time 0 --frame-time 0.01 \
   -o "$out" --job-dir "$tmp/job" --soak "$soak" --submit -- "${bake[@]}" | tail -1) || fail "soak_slurm.py failed"
 read -r array_id check_id <<<"$ids"
 [ -n "${check_id:-}" ] || fail "no job ids from soak_slurm.py: $ids"
-grep -q "^  1) # frames 4-6" "$tmp/job/bake.sbatch" || fail "bake.sbatch has no chunk 1 = frames 4-6"
-[ "$(sed -n '/^  1)/,/;;/p' "$tmp/job/bake.sbatch" | grep -c -- '--frames')" = 2 ] ||
-  fail "chunk 4-6 should bake as two exact runs"
+chunk3=$(grep "^  3) " "$tmp/job/bake.sbatch") || fail "bake.sbatch has no chunk 3"
+[ "$(grep -c -- '--frames' <<<"$chunk3")" = 1 ] && grep -q -- "--frames 10-12 --time 0.0 --frame-time 0.01 --frame-origin 1 " <<<"$chunk3" ||
+  fail "chunk 3 should be one soak run of frames 10-12 with the job's time and origin: $chunk3"
 
 for _ in $(seq 600); do
   [ -z "$(squeue -h -j "$array_id,$check_id" 2>/dev/null)" ] && break
@@ -108,28 +113,29 @@ state() { scontrol show job "$1" 2>/dev/null | grep -o 'JobState=[A-Z_]*' | sort
 echo "array $array_id: $(state "$array_id"); check $check_id: $(state "$check_id")"
 [ "$(state "$array_id")" = "JobState=COMPLETED " ] || fail "array job not completed: $(cat "$tmp"/job/logs/bake_* 2>/dev/null | tail -20)"
 [ "$(state "$check_id")" = "JobState=COMPLETED " ] || fail "check job not completed: $(cat "$tmp"/job/logs/check_* 2>/dev/null)"
-[ "$(cat "$tmp/job/complete")" = 1-7 ] || fail "check job did not mark the bake complete"
+[ "$(cat "$tmp/job/complete")" = 1-12 ] || fail "check job did not mark the bake complete"
 echo "jobs done ($(elapsed))"
 
 single=$tmp/single/wet.%04d.exr
 mkdir -p "$tmp/single"
-"$soak" "${bake[@]}" --frames 1-7 --time 0.3 --frame-time 0.11 -o "$single" 2>/dev/null || fail "single soak run failed"
+"$soak" "${bake[@]}" --frames 1-12 --time 0 --frame-time 0.01 -o "$single" 2>/dev/null || fail "single soak run failed"
 files=()
-for f in 1 2 3 4 5 6 7; do files+=("$(printf "$out" $f)" "$(printf "$single" $f)"); done
+for f in $(seq 12); do files+=("$(printf "$out" $f)" "$(printf "$single" $f)"); done
 oiiotool --dumpdata "${files[@]}" > "$tmp/dump.txt" || fail "oiiotool --dumpdata failed"
 # One block per file: its pixel lines, compared between chunked and single.
-awk -v n=14 '
+awk -v n=24 '
   / : +[0-9]+ x +[0-9]+, / { k++; next }
-  /^ +Pixel / { px[k] = px[k] $0 "\n"; count[k]++ }
+  /^ +Pixel / { px[k] = px[k] $0 "\n"; count[k]++; if ($2 == "(1,") t1[k] = $NF }
   END {
     bad = 0
     for (i = 1; i <= n; i += 2) {
-      if (count[i] != 48 * 40 || px[i] != px[i + 1]) { print "frame " (i + 1) / 2 " differs"; bad = 1 }
+      if (count[i] != 11 || px[i] != px[i + 1]) { print "frame " (i + 1) / 2 " differs"; bad = 1 }
     }
-    if (px[1] == px[13]) { print "frames 1 and 7 equal: the sequence does not change"; bad = 1 }
+    # single run (even blocks): texel 1 wet at frame 10, dry from frame 11 on
+    if (t1[20] != 1 || t1[22] != 0) { print "texel 1: " t1[20] " at frame 10, " t1[22] " at 11 (want 1, 0)"; bad = 1 }
     exit bad
   }' "$tmp/dump.txt" || fail "chunked frames differ from the single run"
-echo "7 chunked frames equal the single run's, pixel for pixel"
+echo "12 chunked frames equal the single run's, pixel for pixel"
 
 # The completeness check names a missing frame (run as the batch script, no queue).
 rm "$(printf "$out" 5)"

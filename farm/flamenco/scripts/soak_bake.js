@@ -95,8 +95,8 @@ function compileJob(job) {
 // arrow functions, template literals, for-of, Set); nothing from Node.
 
 // soak bake options the job types set themselves; refused in extra arguments.
-const SOAK_OWNED_OPTIONS = new Set(["-o", "--output", "--frames", "--time", "--frame-time", "--seed",
-    "--width", "--height", "--threads", "--help", "-h"]);
+const SOAK_OWNED_OPTIONS = new Set(["-o", "--output", "--frames", "--time", "--frame-time", "--frame-origin",
+    "--seed", "--width", "--height", "--threads", "--help", "-h"]);
 
 function soakFail(setting, message) {
     throw `Soak: setting "${setting}": ${message}`;
@@ -165,34 +165,6 @@ function soakChunks(frames, settings, key) {
     return chunks;
 }
 
-// The time soak gives frame f of a run started at frame `first` with time
-// `time`: bake_cli_common.c computes time + (f - first) * frame_time in IEEE
-// double (C11 without contraction), as JavaScript does.
-function soakFrameTime(time, first, frameTime, f) {
-    return time + (f - first) * frameTime;
-}
-
-// Splits a run of frames into soak commands whose frame times equal, to the
-// last bit, those of one soak run over the whole job (time of frame
-// `timing.first` = timing.time): a chunk started at its own first frame with
-// that frame's time can round differently from the single run further on.
-// Returns [{first, last, time}], usually one.
-function soakExactRuns(run, timing) {
-    const out = [];
-    let start = run[0];
-    let t0 = soakFrameTime(timing.time, timing.first, timing.frameTime, start);
-    for (let f = start + 1; f <= run[1]; f++) {
-        const single = soakFrameTime(timing.time, timing.first, timing.frameTime, f);
-        if (soakFrameTime(t0, start, timing.frameTime, f) !== single) {
-            out.push({first: start, last: f - 1, time: t0});
-            start = f;
-            t0 = single;
-        }
-    }
-    out.push({first: start, last: run[1], time: t0});
-    return out;
-}
-
 // A soak output pattern holds exactly one %d, %Nd or %0Nd (and %% for '%').
 function soakCheckPattern(key, name, wantPattern) {
     const rest = name.replace(/%%/g, "");
@@ -245,19 +217,21 @@ function soakMakeOutputDir(output) {
 }
 
 // Bake tasks ("misc": Flamenco's type of the exec command) for every chunk of
-// the job's frames; each exec command bakes one exact run with --frames.
+// the job's frames; one exec command per run of consecutive frames (one per
+// chunk unless the job's frames have gaps). Every command gets the job's
+// Time and Frame Time with --frame-origin = the job's first frame: soak bakes
+// frame f at Time + (f - origin) * Frame Time whatever the --frames range, so
+// each chunk's maps equal those of one soak run over the whole job.
 function soakAuthorBakeTasks(frames, chunks, kindArgs, timing, outPattern) {
     const tasks = [];
     for (const chunk of chunks) {
         const task = author.Task(`bake-${chunk}`, "misc");
         task.addCommand(soakMakeOutputDir(outPattern));
         const runs = [];
-        for (const run of soakChunkRuns(chunk)) {
-            for (const exact of soakExactRuns(run, timing)) runs.push(exact);
-        }
+        for (const run of soakChunkRuns(chunk)) runs.push({first: run[0], last: run[1]});
         for (const r of runs) {
-            const args = kindArgs.concat(["--frames", `${r.first}-${r.last}`, "--time", String(r.time),
-                "--frame-time", String(timing.frameTime), "-o", outPattern]);
+            const args = kindArgs.concat(["--frames", `${r.first}-${r.last}`, "--time", String(timing.time),
+                "--frame-time", String(timing.frameTime), "--frame-origin", String(timing.first), "-o", outPattern]);
             task.addCommand(author.Command("exec", {exe: "{soak}", args: args}, r.last - r.first + 1));
         }
         tasks.push({task: task, runs: runs, chunk: chunk});
