@@ -125,6 +125,17 @@ static void extension_of(const char *path, char *ext, size_t n)
     ext[i] = '\0';
 }
 
+soak_status soak_image_output_ready(const char *path, char *err, size_t errlen)
+{
+    static const char *const image_ext[] = {"exr", "png", "tif", "tiff", "jpg", "jpeg", "hdr", "tx"};
+    if (!path) return SOAK_ERR_NULL;
+    char ext[32];
+    extension_of(path, ext, sizeof ext);
+    for (size_t i = 0; i < sizeof image_ext / sizeof image_ext[0]; ++i)
+        if (!strcmp(ext, image_ext[i])) return image_plugin(path, err, errlen) ? SOAK_OK : SOAK_ERR_UNSUPPORTED;
+    return SOAK_OK;
+}
+
 soak_status soak_image_stage(soak_staged *stage, const char *path, const soak_image *img,
                              const soak_image_write_opts *opts, char *err, size_t errlen)
 {

@@ -275,7 +275,8 @@ static soak_status read_grid(const char *json_path, soak_volume *v, char *err, s
         char msg[256];
         snprintf(msg, sizeof msg, "%lld bytes, but dims %dx%dx%d with %d channels of float32 need %lld", have, dims[0],
                  dims[1], dims[2], nch, want);
-        set_err(err, errlen, "%s: size does not match the header: %s", raw, msg);
+        if (err && errlen)
+            snprintf(err, errlen, "%s: size does not match the header: %s (header %s)", raw, msg, json_path);
         fclose(f);
         return SOAK_ERR_PARSE;
     }
