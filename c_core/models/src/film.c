@@ -212,14 +212,19 @@ soak_status soak_film_ctx_brdf(const soak_film_ctx *ctx, double base_albedo, soa
 {
     if (!ctx || !f) return SOAK_ERR_NULL;
     if (!ctx_ok(ctx) || !soak_in_range(base_albedo, 0.0, 1.0) || !unit_ok(wi) || !unit_ok(wo)) return SOAK_ERR_ARG;
-    if (wi.z <= 0.0 || wo.z <= 0.0) {
-        *f = 0.0;
-        return SOAK_OK;
-    }
-    double ti = film_transmit_to_base(ctx, fmin(wi.z, 1.0), NULL);
-    double to = film_transmit_to_base(ctx, fmin(wo.z, 1.0), NULL);
-    *f = ti * to * base_albedo * SOAK_INV_PI / (ctx->n * ctx->n * (1.0 - base_albedo * ctx->ret));
+    *f = wi.z <= 0.0 || wo.z <= 0.0 ? 0.0 : soak_film_ctx_brdf_raw(ctx, base_albedo, wi, wo);
     return SOAK_OK;
+}
+
+/* The two paths' absorptions exp(-tau / cos_t) multiplied as one exp (cos_t
+ * > 0 for light arriving from air above the horizon). */
+double soak_film_ctx_brdf_raw(const soak_film_ctx *ctx, double base_albedo, soak_vec3 wi, soak_vec3 wo)
+{
+    double cti, cto;
+    double Fi = soak_fresnel_dielectric_raw(wi.z < 1.0 ? wi.z : 1.0, ctx->n, &cti);
+    double Fo = soak_fresnel_dielectric_raw(wo.z < 1.0 ? wo.z : 1.0, ctx->n, &cto);
+    double att = ctx->tau > 0.0 ? exp(-(ctx->tau / cti + ctx->tau / cto)) : 1.0; /* each term may be +Inf, never NaN */
+    return (1.0 - Fi) * (1.0 - Fo) * att * base_albedo * SOAK_INV_PI / (ctx->n * ctx->n * (1.0 - base_albedo * ctx->ret));
 }
 
 soak_status soak_film_albedo_dir(const soak_film *film, double base_albedo, double cos_i, double *albedo)

@@ -2,6 +2,7 @@
 #include "soak/models.h"
 #include "soak/fresnel.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "soak/film.h"
@@ -10,6 +11,28 @@
 #include "soak/ww.h"
 
 _Static_assert(sizeof(soak_porous_ggx) + sizeof(double) <= sizeof(soak_model_ctx), "model context too small");
+
+typedef double (*eval_fast_fn)(const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo);
+
+/* A set-up that succeeds for a model with eval_fast writes that function's
+ * pointer into the last bytes of the context; soak_model_eval runs the
+ * unchecked eval_fast only on a context that carries its own model's mark
+ * (one comparison instead of re-validating every parameter per call). */
+#define CTX_MARK_AT (sizeof(soak_model_ctx) - sizeof(eval_fast_fn))
+
+static soak_status ctx_mark(soak_model_ctx *c, soak_status st, eval_fast_fn fn)
+{
+    eval_fast_fn none = NULL;
+    memcpy(c->bytes + CTX_MARK_AT, st == SOAK_OK ? &fn : &none, sizeof fn);
+    return st;
+}
+
+static int ctx_marked(const soak_model_ctx *c, eval_fast_fn fn)
+{
+    eval_fast_fn mark;
+    memcpy(&mark, c->bytes + CTX_MARK_AT, sizeof mark);
+    return mark == fn;
+}
 
 void soak_model_params_default(soak_model_params *p)
 {
@@ -27,7 +50,6 @@ void soak_model_params_default(soak_model_params *p)
     p->ks_water = 0.02;
 }
 
-static int unit(soak_vec3 v) { return soak_v3_is_unit(v); }
 
 /* Every set-up starts here: a NaN or Inf in any field is a caller's error
  * even where the chosen model ignores that field (otherwise a NaN k would
@@ -43,17 +65,30 @@ static soak_status params_ok(const soak_model_params *p)
     return soak_in_range(p->k, 0.0, SOAK_GGX_K_MAX) ? SOAK_OK : SOAK_ERR_ARG;
 }
 
+/* soak_v3_is_unit for two directions with one branch: |v|^2 - 1 is exact
+ * near 1, and a NaN or Inf component fails the comparison. */
+static int both_unit(soak_vec3 a, soak_vec3 b)
+{
+    double la = a.x * a.x + a.y * a.y + a.z * a.z, lb = b.x * b.x + b.y * b.y + b.z * b.z;
+    return (fabs(la - 1.0) <= SOAK_UNIT_TOL) & (fabs(lb - 1.0) <= SOAK_UNIT_TOL);
+}
+
 soak_status soak_model_eval(const soak_model *m, const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo, double *f)
 {
     if (!m || !ctx || !f) return SOAK_ERR_NULL;
-    if (!unit(wi) || !unit(wo)) return SOAK_ERR_ARG;
+    if (!both_unit(wi, wo)) return SOAK_ERR_ARG;
     if (!(wi.z > 0.0 && wo.z > 0.0)) {
         *f = 0.0;
         return SOAK_OK;
     }
     double v;
-    soak_status st = m->eval(ctx, wi, wo, &v);
-    if (st != SOAK_OK) return st;
+    if (m->eval_fast) {
+        if (!ctx_marked(ctx, m->eval_fast)) return SOAK_ERR_ARG;
+        v = m->eval_fast(ctx, wi, wo);
+    } else {
+        soak_status st = m->eval(ctx, wi, wo, &v);
+        if (st != SOAK_OK) return st;
+    }
     if (!(v >= 0.0 && v <= 1e300)) return SOAK_ERR_NUMERIC;
     *f = v;
     return SOAK_OK;
@@ -106,6 +141,7 @@ static soak_status ggx_conductor_eval(const soak_model_ctx *c, soak_vec3 wi, soa
 
 /* --- Lekner-Dorf film over Lambert ----------------------------------------- */
 typedef struct { soak_film film; soak_film_ctx ctx; double albedo; } film_ctx;
+_Static_assert(sizeof(film_ctx) <= CTX_MARK_AT, "film context overlaps the set-up mark");
 static soak_status film_setup(const soak_model_params *p, soak_model_ctx *c)
 {
     soak_status ok = params_ok(p);
@@ -132,9 +168,19 @@ static soak_status film_ctx_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec
     const film_ctx *m = (const film_ctx *)c->bytes;
     return soak_film_ctx_brdf(&m->ctx, m->albedo, wi, wo, f);
 }
+static double film_ctx_eval_fast(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo)
+{
+    const film_ctx *m = (const film_ctx *)c->bytes;
+    return soak_film_ctx_brdf_raw(&m->ctx, m->albedo, wi, wo);
+}
+static soak_status film_ctx_setup(const soak_model_params *p, soak_model_ctx *c)
+{
+    return ctx_mark(c, film_setup(p, c), film_ctx_eval_fast);
+}
 
 /* --- Weidlich-Wilkie with a water layer, and the Tri-Ace fast path ---------- */
 typedef struct { soak_ww ww; soak_ww_triace fast; } ww_ctx;
+_Static_assert(sizeof(ww_ctx) <= CTX_MARK_AT, "ww context overlaps the set-up mark");
 static soak_status ww_setup(const soak_model_params *p, soak_model_ctx *c)
 {
     soak_status ok = params_ok(p);
@@ -175,6 +221,16 @@ static soak_status ww_triace_mirror(const soak_model_ctx *c, double cos_o, doubl
 static soak_status ww_triace_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
 {
     return soak_ww_eval_triace(&((const ww_ctx *)c->bytes)->fast, wi, wo, f);
+}
+/* The raw form takes the directions as given (unit within 1e-5): the
+ * refracted directions it builds are renormalised inside. */
+static double ww_triace_eval_fast(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo)
+{
+    return soak_ww_eval_triace_raw(&((const ww_ctx *)c->bytes)->fast, wi, wo);
+}
+static soak_status ww_triace_setup_marked(const soak_model_params *p, soak_model_ctx *c)
+{
+    return ctx_mark(c, ww_triace_setup(p, c), ww_triace_eval_fast);
 }
 
 /* --- Merillou porous + Hnat wetting (Blinn-Phong), and the GGX variant ----- */
@@ -255,22 +311,23 @@ static soak_status porous_ggx_pdf(const soak_model_ctx *c, soak_vec3 wi, soak_ve
 }
 
 static const soak_model models[] = {
-    {"lambert", "Lambertian base, albedo/pi", NULL, lambert_setup, lambert_eval, NULL, NULL, NULL},
+    {"lambert", "Lambertian base, albedo/pi", NULL, lambert_setup, lambert_eval, NULL, NULL, NULL, NULL},
     {"ggx-dielectric", "dry GGX microfacet specular of a dielectric (Walter et al. 2007)", NULL, ggx_setup,
-     ggx_dielectric_eval, NULL, NULL, NULL},
+     ggx_dielectric_eval, NULL, NULL, NULL, NULL},
     {"ggx-conductor", "dry GGX microfacet conductor with complex IOR (--ior n --k k)", NULL, ggx_setup,
-     ggx_conductor_eval, NULL, NULL, NULL},
+     ggx_conductor_eval, NULL, NULL, NULL, NULL},
     {"film", "Lekner-Dorf water film over Lambert, all interreflections (diffuse part; exact)", NULL, film_setup,
-     film_eval, NULL, NULL, film_mirror},
-    {"film-ctx", "the same film with its hemispherical averages precomputed once", "film", film_setup, film_ctx_eval, NULL, NULL, film_mirror},
+     film_eval, NULL, NULL, film_mirror, NULL},
+    {"film-ctx", "the same film with its hemispherical averages precomputed once", "film", film_ctx_setup, film_ctx_eval, NULL, NULL, film_mirror,
+     film_ctx_eval_fast},
     {"ww", "Weidlich-Wilkie layered BRDF: smooth water over GGX dielectric (+Lambert) or conductor (non-delta part)",
      NULL, ww_setup, ww_eval, .mirror = ww_mirror},
-    {"ww-triace", "Tri-Ace fast path of ww: F_bottom, linear absorption, no refraction", "ww", ww_triace_setup,
-     ww_triace_eval, .mirror = ww_triace_mirror},
+    {"ww-triace", "Tri-Ace fast path of ww: F_bottom, linear absorption, no refraction", "ww", ww_triace_setup_marked,
+     ww_triace_eval, .mirror = ww_triace_mirror, .eval_fast = ww_triace_eval_fast},
     {"porous", "Merillou porous post-process with Hnat wetting on Blinn-Phong (seed 002)", NULL, porous_setup,
-     porous_eval, porous_sample, porous_pdf, NULL},
+     porous_eval, porous_sample, porous_pdf, NULL, NULL},
     {"porous-ggx", "energy-conserving porous wetting on a GGX + Fresnel base", NULL, porous_ggx_setup,
-     porous_ggx_eval, porous_ggx_sample, porous_ggx_pdf, NULL},
+     porous_ggx_eval, porous_ggx_sample, porous_ggx_pdf, NULL, NULL},
 };
 
 const soak_model *soak_models(size_t *count)

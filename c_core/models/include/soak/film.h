@@ -57,5 +57,8 @@ soak_status soak_film_setup(const soak_film *film, soak_film_ctx *ctx);
 soak_status soak_film_ctx_albedo_dir(const soak_film_ctx *ctx, double base_albedo, double cos_i, double *albedo);
 soak_status soak_film_ctx_albedo_diffuse(const soak_film_ctx *ctx, double base_albedo, double *albedo);
 soak_status soak_film_ctx_brdf(const soak_film_ctx *ctx, double base_albedo, soak_vec3 wi, soak_vec3 wo, double *f);
+/* Unchecked form for hot loops (the same value): ctx from soak_film_setup,
+ * base_albedo in [0, 1], wi, wo unit with wi.z > 0, wo.z > 0. */
+double soak_film_ctx_brdf_raw(const soak_film_ctx *ctx, double base_albedo, soak_vec3 wi, soak_vec3 wo);
 
 #endif

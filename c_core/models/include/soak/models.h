@@ -52,14 +52,22 @@ typedef struct soak_model {
     /* Optional: reflectance of the model's delta (mirror) lobe at cos_o,
      * which eval leaves out (ww's film top). NULL: no delta lobe. */
     soak_status (*mirror)(const soak_model_ctx *ctx, double cos_o, double *R);
+    /* Optional: eval's value without eval's checks, for a context whose
+     * set-up returned SOAK_OK and unit directions strictly above the
+     * horizon; soak_model_eval checks the directions once and calls this.
+     * Call soak_model_eval instead. */
+    double (*eval_fast)(const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo);
 } soak_model;
 
 const soak_model *soak_models(size_t *count);
 const soak_model *soak_model_find(const char *name);
 
-/* BRDF (1/sr) without the cosine, the same contract for every model: wi, wo
+/* BRDF (1/sr) without the cosine, the same contract for every model: ctx
+ * from a successful set-up of the same model (else SOAK_ERR_ARG), wi, wo
  * unit within 1e-5 (else SOAK_ERR_ARG, which also catches NaN/Inf); a
- * direction at or below the horizon (z <= 0) gives f = 0. */
+ * direction at or below the horizon (z <= 0) gives f = 0; a NaN, Inf or
+ * negative value is SOAK_ERR_NUMERIC, never returned. The parameters are
+ * validated once, at set-up: this checks the directions and the result. */
 soak_status soak_model_eval(const soak_model *m, const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo, double *f);
 
 #endif
