@@ -85,7 +85,7 @@ soak_status soak_path_check_writable(const char *path, char *err, size_t errlen)
                                                  : "%s: exists and is not a regular file%s", path, "");
         return SOAK_ERR_ARG;
     }
-    return SOAK_OK;
+    return soak_image_output_ready(path, err, errlen);
 }
 
 soak_status soak_output_path_check(const char *path, char *err, size_t errlen)

@@ -78,7 +78,14 @@ soak_status soak_image_stage_tx(struct soak_staged *stage, const char *path, con
 int soak_path_same(const char *a, const char *b);
 
 /* 0 if path is acceptable as an output (see soak/staged.h) and the folder
- * that would contain it exists and is writable. */
+ * that would contain it exists and is writable; for an image extension
+ * also soak_image_output_ready. */
 soak_status soak_path_check_writable(const char *path, char *err, size_t errlen);
+
+/* For a path with an image extension (.exr .png .tif .tiff .jpg .jpeg .hdr
+ * .tx), opens the image module (soak/plugin.h) now, so that a command checking
+ * its outputs fails before its work when the module is missing, and pays for
+ * OpenImageIO at start-up rather than after an interrupt; 0 otherwise. */
+soak_status soak_image_output_ready(const char *path, char *err, size_t errlen);
 
 #endif
