@@ -78,19 +78,20 @@ no_output "$T/p.exr" "$T/p.0001.exr" "$T/p.2.exr"
 
 # --frame-origin F: frame f at T + (f - F) DT whatever the --frames range, so
 # chunks equal one run bit for bit. The mask's texel k (1..10) is k texels from
-# the dry one: with --t-fill 0 it dries exactly at time k/10 (a step). At
-# T = 0, DT = 0.01 frame 11 is at 10 * 0.01 = 0.1, texel 1's drying time; a
-# chunk 10-12 started at its own time 0.09 (no origin) puts frame 11 at
-# 0.09 + 0.01, one ulp below 0.1: texel 1 still wet.
+# the dry one and starts drying at time k/10; --t-fill 1e-20, far below one ulp
+# of the time, makes it a step: dry iff t > k/10 (whether the schedule counts
+# t = t0 as wet or dry). At T = 0, DT = 0.03 frame 11 is at 10 * 0.03 = 0.3,
+# texel 3's time (wet); a chunk 10-12 started at its own time 0.27 (no origin)
+# puts frame 11 at 0.27 + 0.03, one ulp above 0.3: texel 3 dry.
 printf 'P2\n11 1\n1\n0 1 1 1 1 1 1 1 1 1 1\n' > "$T/step.pgm"
-step=(bake drying "$T/step.pgm" --t-fill 0 --time 0 --frame-time 0.01)
+step=(bake drying "$T/step.pgm" --t-fill 1e-20 --time 0 --frame-time 0.03)
 expect_exit 0 "frames 1-12 in one run" -- "$SOAK" "${step[@]}" --frames 1-12 -o "$T/one.%04d.exr"
 for r in 1-5 6-9 10-12; do
   expect_exit 0 "frames $r with --frame-origin 1" -- "$SOAK" "${step[@]}" --frame-origin 1 --frames "$r" -o "$T/chunk.%04d.exr"
 done
 for f in $(seq -f %04g 1 12); do same_pixels "$T/one.$f.exr" "$T/chunk.$f.exr" "frame $f of the chunks = the single run's"; done
-expect_exit 0 "chunk 10-12 at its own time, no origin" -- "$SOAK" bake drying "$T/step.pgm" --t-fill 0 --time 0.09 \
-  --frame-time 0.01 --frames 10-12 -o "$T/own.%04d.exr"
+expect_exit 0 "chunk 10-12 at its own time, no origin" -- "$SOAK" bake drying "$T/step.pgm" --t-fill 1e-20 --time 0.27 \
+  --frame-time 0.03 --frames 10-12 -o "$T/own.%04d.exr"
 if idiff -fail 0 -warn 0 "$T/one.0011.exr" "$T/own.0011.exr" > /dev/null 2>&1; then
   bad "the chunk's own start time should miss frame 11's time by the last bit (the case proves nothing)"
 else ok "without --frame-origin the chunk's frame 11 differs (the comparison sees one ulp)"; fi

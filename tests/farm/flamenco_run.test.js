@@ -124,16 +124,17 @@ function check(name, fn) {
 
 // ---- 1. soak-bake in chunks vs one run ----
 const bake = F.loadJobType(path.join(scripts, "soak_bake.js"));
-// A mask whose texel k (1..10) is k texels from the one dry texel: with
-// --t-fill 0 it dries exactly at time k/10, a step. At time 0 and frame time
-// 0.01, frame 11 is at 10 * 0.01 = 0.1 = texel 1's drying time, but a chunk
-// 10-12 started at its own time 0.09 would give it 0.09 + 0.01 < 0.1 (still
-// wet; tests/cli/bake.sh shows it): the comparison sees a last-bit time error.
+// A mask whose texel k (1..10) is k texels from the one dry texel: it starts
+// drying at time k/10, and --t-fill 1e-20 (far below one ulp) makes that a
+// step, dry iff t > k/10. At time 0 and frame time 0.03, frame 11 is at
+// 10 * 0.03 = 0.3 = texel 3's time (wet), but a chunk 10-12 started at its
+// own time 0.27 would give it 0.27 + 0.03, one ulp above (dry;
+// tests/cli/bake.sh shows it): the comparison sees a last-bit time error.
 const stepMask = path.join(tmp, "step_mask.pgm");
 fs.writeFileSync(stepMask, "P2\n11 1\n1\n0 1 1 1 1 1 1 1 1 1 1\n");
 const bakeCases = [
-    {kind: "drying", frames: "1-12", chunk_size: 3, input: stepMask, seed: 3, time: 0, frame_time: 0.01,
-     extra_args: "--t-fill 0"},
+    {kind: "drying", frames: "1-12", chunk_size: 3, input: stepMask, seed: 3, time: 0, frame_time: 0.03,
+     extra_args: "--t-fill 1e-20"},
     {kind: "turbulence", frames: "0-3", chunk_size: 2, width: 40, height: 32, seed: 9, time: 0,
      frame_time: 1 / 24, extra_args: "--evolve 1.5 --octaves 3"},
 ];
@@ -156,9 +157,9 @@ for (const c of bakeCases) {
         const images = readImages([].concat(...pairs));
         for (const [x, y] of pairs) assertSameImage(images, x, y);
         if (c.input) {
-            // The case's point: texel 1 dries exactly at frame 11's time (0.1), a step.
-            const texel1 = (f) => images.get(framePath(single, f)).data[1];
-            assert.deepEqual([texel1(10), texel1(11)], [1, 0], "texel 1 should dry exactly at frame 11");
+            // The case's point: texel 3 starts drying exactly at frame 11's time (0.3), a step.
+            const texel3 = (f) => images.get(framePath(single, f)).data[3];
+            assert.deepEqual([texel3(11), texel3(12)], [1, 0], "texel 3 should be wet at frame 11, dry at 12");
         }
         assert.ok(imagesDiffer(images, framePath(single, A), framePath(single, B)), "first and last frames are " +
                   "equal: the sequence does not change, the comparison proves little");

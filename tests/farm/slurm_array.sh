@@ -88,21 +88,21 @@ done
 [ "$(sinfo -h -o %T 2>/dev/null)" = idle ] || fail "node not idle: $(sinfo 2>&1); $(tail -5 "$tmp/log/slurmctld.log")"
 echo "cluster up ($(elapsed))"
 
-# Frames 1-12 in chunks of 3 at time (f - 1) * 0.01 of a mask whose texel k
-# (1..10) is k texels from the dry one: with --t-fill 0 texel 1 dries exactly
-# at 0.1, frame 11's time, which a chunk 10-12 started at its own time 0.09
-# would miss by the last bit (tests/cli/bake.sh). Every chunk is one soak run
-# with the job's --time and --frame-origin 1.
+# Frames 1-12 in chunks of 3 at time (f - 1) * 0.03 of a mask whose texel k
+# (1..10) is k texels from the dry one: with --t-fill 1e-20 (a step) texel 3
+# is wet at 0.3, frame 11's time, and dry one ulp later, where a chunk 10-12
+# started at its own time 0.27 would put frame 11 (tests/cli/bake.sh). Every
+# chunk is one soak run with the job's --time and --frame-origin 1.
 mask=$tmp/step_mask.pgm
 printf 'P2\n11 1\n1\n0 1 1 1 1 1 1 1 1 1 1\n' > "$mask"
-bake=(bake drying "$mask" --seed 3 --t-fill 0)
+bake=(bake drying "$mask" --seed 3 --t-fill 1e-20)
 out=$tmp/chunked/wet.%04d.exr
-ids=$(/usr/bin/python3 "$root/farm/slurm/soak_slurm.py" --frames 1-12 --chunk-size 3 --time 0 --frame-time 0.01 \
+ids=$(/usr/bin/python3 "$root/farm/slurm/soak_slurm.py" --frames 1-12 --chunk-size 3 --time 0 --frame-time 0.03 \
   -o "$out" --job-dir "$tmp/job" --soak "$soak" --submit -- "${bake[@]}" | tail -1) || fail "soak_slurm.py failed"
 read -r array_id check_id <<<"$ids"
 [ -n "${check_id:-}" ] || fail "no job ids from soak_slurm.py: $ids"
 chunk3=$(grep "^  3) " "$tmp/job/bake.sbatch") || fail "bake.sbatch has no chunk 3"
-[ "$(grep -c -- '--frames' <<<"$chunk3")" = 1 ] && grep -q -- "--frames 10-12 --time 0.0 --frame-time 0.01 --frame-origin 1 " <<<"$chunk3" ||
+[ "$(grep -c -- '--frames' <<<"$chunk3")" = 1 ] && grep -q -- "--frames 10-12 --time 0.0 --frame-time 0.03 --frame-origin 1 " <<<"$chunk3" ||
   fail "chunk 3 should be one soak run of frames 10-12 with the job's time and origin: $chunk3"
 
 for _ in $(seq 600); do
@@ -118,21 +118,21 @@ echo "jobs done ($(elapsed))"
 
 single=$tmp/single/wet.%04d.exr
 mkdir -p "$tmp/single"
-"$soak" "${bake[@]}" --frames 1-12 --time 0 --frame-time 0.01 -o "$single" 2>/dev/null || fail "single soak run failed"
+"$soak" "${bake[@]}" --frames 1-12 --time 0 --frame-time 0.03 -o "$single" 2>/dev/null || fail "single soak run failed"
 files=()
 for f in $(seq 12); do files+=("$(printf "$out" $f)" "$(printf "$single" $f)"); done
 oiiotool --dumpdata "${files[@]}" > "$tmp/dump.txt" || fail "oiiotool --dumpdata failed"
 # One block per file: its pixel lines, compared between chunked and single.
 awk -v n=24 '
   / : +[0-9]+ x +[0-9]+, / { k++; next }
-  /^ +Pixel / { px[k] = px[k] $0 "\n"; count[k]++; if ($2 == "(1,") t1[k] = $NF }
+  /^ +Pixel / { px[k] = px[k] $0 "\n"; count[k]++; if ($2 == "(3,") t3[k] = $NF }
   END {
     bad = 0
     for (i = 1; i <= n; i += 2) {
       if (count[i] != 11 || px[i] != px[i + 1]) { print "frame " (i + 1) / 2 " differs"; bad = 1 }
     }
-    # single run (even blocks): texel 1 wet at frame 10, dry from frame 11 on
-    if (t1[20] != 1 || t1[22] != 0) { print "texel 1: " t1[20] " at frame 10, " t1[22] " at 11 (want 1, 0)"; bad = 1 }
+    # single run (even blocks): texel 3 wet at frame 11, dry at frame 12
+    if (t3[22] != 1 || t3[24] != 0) { print "texel 3: " t3[22] " at frame 11, " t3[24] " at 12 (want 1, 0)"; bad = 1 }
     exit bad
   }' "$tmp/dump.txt" || fail "chunked frames differ from the single run"
 echo "12 chunked frames equal the single run's, pixel for pixel"
