@@ -18,7 +18,7 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: soak albedo --material NAME --wetness W [--time T] [--t0 T0]\n"
             "                   [--fill-time TF] [--film-thickness M] [--liquid NAME]\n"
-            "                   [--base-colour R,G,B] [--materials FILE]\n"
+            "                   [--base-colour R,G,B] [--sun-zenith DEG] [--materials FILE]\n"
             "       soak albedo --model film --base-albedo A --ior N\n"
             "                   --incidence normal|diffuse|DEG [--thickness M] [--absorption ALPHA]\n\n"
             "Preset mode prints the dry albedo and the wet albedo (linear RGB) of a\n"
@@ -29,7 +29,11 @@ static void usage(FILE *out)
             "--base-colour wets your own dry colour (a texture's linear RGB, or V for\n"
             "grey) with the preset's class instead of its own colour (soak/export.h).\n"
             "Also printed: the liquid-air interface's share of the surface (it weights\n"
-            "the liquid's Fresnel mirror), the GGX alpha, a thin sheet's transmittance.\n\n"
+            "the liquid's Fresnel mirror), the GGX alpha, a thin sheet's transmittance.\n"
+            "The wet albedos are for uniform diffuse light (bihemispherical: an overcast\n"
+            "sky); --sun-zenith adds the directional-hemispherical albedo for a sun DEG\n"
+            "degrees (0..90) from the normal, as field albedos are measured (the dry\n"
+            "body is Lambertian, so its albedo is the same under both lights).\n\n"
             "Film mode prints the total reflectance of a smooth liquid film of index N\n"
             "(1..3) over a Lambertian base of albedo A (Lekner & Dorf 1988), for light at\n"
             "normal incidence, uniform diffuse light, or DEG degrees (0..90) from the\n"
@@ -39,6 +43,7 @@ static void usage(FILE *out)
             "  soak albedo --material sand --wetness 1\n"
             "  soak albedo --material paper --wetness 0.3 --time 0.2 --t0 0.1 --fill-time 0.3\n"
             "  soak albedo --material brick --wetness 0.6 --base-colour 0.45,0.2,0.12\n"
+            "  soak albedo --material asphalt --wetness 1 --sun-zenith 30\n"
             "  soak albedo --model film --base-albedo 0.5 --ior 1.33 --incidence diffuse\n");
 }
 
@@ -64,8 +69,8 @@ static void list_liquids(const soak_preset_db *db)
 
 typedef struct opts {
     const char *model, *material, *liquid, *file, *incidence, *base_colour;
-    int has_wetness, has_time, has_t0, has_fill, has_film, has_base, has_ior, has_thick, has_abs;
-    double wetness, time, t0, fill, film, base, ior, thickness, absorption;
+    int has_wetness, has_time, has_t0, has_fill, has_film, has_base, has_ior, has_thick, has_abs, has_sun;
+    double wetness, time, t0, fill, film, base, ior, thickness, absorption, sun_zenith;
 } opts;
 
 /* Returns -1 to continue, else an exit code. */
@@ -86,6 +91,7 @@ static int parse(int argc, char **argv, opts *o)
         {"--ior", 1.0, 3.0, &o->has_ior, &o->ior},
         {"--thickness", 0.0, 1e3, &o->has_thick, &o->thickness},
         {"--absorption", 0.0, 1e6, &o->has_abs, &o->absorption},
+        {"--sun-zenith", 0.0, 90.0, &o->has_sun, &o->sun_zenith},
     };
     struct {
         const char *name;
@@ -123,7 +129,7 @@ static int parse(int argc, char **argv, opts *o)
 static int run_film(const opts *o)
 {
     if (o->material || o->liquid || o->file || o->has_wetness || o->has_time || o->has_t0 || o->has_fill ||
-        o->has_film || o->base_colour)
+        o->has_film || o->base_colour || o->has_sun)
         return usage_error("--model film takes --base-albedo, --ior, --incidence, --thickness and --absorption only");
     if (!o->has_base) return usage_error("--base-albedo is required with --model film");
     if (!o->has_ior) return usage_error("--ior is required with --model film");
@@ -193,7 +199,10 @@ static int run_preset(const opts *o)
             return SOAK_EXIT_USAGE;
         }
         st = o->base_colour ? soak_wet_params_for_base(p, l, &in, base, &w) : soak_wetness_eval(p, l, &in, &w);
-        soak_rgb sheet = {0, 0, 0};
+        soak_rgb sheet = {0, 0, 0}, sun = {0, 0, 0}, sun_total = {0, 0, 0};
+        /* cos(90 deg) in floating point is 6e-17, not 0: snap so 90 means grazing. */
+        double cos_sun = o->sun_zenith >= 90.0 ? 0.0 : cos(o->sun_zenith * (SOAK_PI / 180.0));
+        if (st == SOAK_OK && o->has_sun) st = soak_wetness_albedo_sun(p, l, &w, cos_sun, &sun, &sun_total);
         if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &sheet);
         if (st != SOAK_OK) {
             cli_error(CMD, "material %s, wetness %g: wetness mapping failed: %s", p->name, o->wetness,
@@ -209,6 +218,12 @@ static int run_preset(const opts *o)
                    o->base_colour ? " (--base-colour)" : "");
             printf("wet albedo        %.6f %.6f %.6f\n", w.albedo.r, w.albedo.g, w.albedo.b);
             printf("wet albedo total  %.6f %.6f %.6f\n", w.albedo_total.r, w.albedo_total.g, w.albedo_total.b);
+            if (o->has_sun) {
+                printf("under a sun at zenith %g deg (directional-hemispherical; above: uniform diffuse light):\n",
+                       o->sun_zenith);
+                printf("sun wet albedo    %.6f %.6f %.6f\n", sun.r, sun.g, sun.b);
+                printf("sun albedo total  %.6f %.6f %.6f\n", sun_total.r, sun_total.g, sun_total.b);
+            }
             printf("interface area    %.6f\n", soak_wet_interface_area(&w));
             printf("ggx alpha         %.6f\n", w.ggx_alpha);
             if (p->kind == SOAK_KIND_THIN_SHEET)

@@ -101,7 +101,7 @@ static void test_schedule(void)
                 double want = 0;
                 if (!dry[i]) {
                     double t0 = (1 - p.t_fill) * dist[i] / dmax;
-                    want = p.t_fill == 0 ? (p.time <= t0 ? 1.0 : 0.0) : 1 - fmin(1, fmax(0, (p.time - t0) / p.t_fill));
+                    want = p.t_fill == 0 ? (p.time < t0 ? 1.0 : 0.0) : 1 - fmin(1, fmax(0, (p.time - t0) / p.t_fill));
                 }
                 worst = fmax(worst, fabs(out.pixels[i] - want));
                 if (prev && out.pixels[i] > prev[i]) monotone = 0;

@@ -156,7 +156,7 @@ static void test_fill(void)
     check_close("fill after t0 + t_fill", v, 1.0, 0.0);
 
     check_status("t_fill = 0 accepted", soak_fill_fraction(0.2, 0.2, 0.0, &v), SOAK_OK);
-    check_close("t_fill = 0: 0 at t0", v, 0.0, 0.0);
+    check_close("t_fill = 0: 1 at t0 (complete at t0 + t_fill)", v, 1.0, 0.0);
     soak_fill_fraction(nextafter(0.2, 1.0), 0.2, 0.0, &v);
     check_close("t_fill = 0: 1 just after t0 (step)", v, 1.0, 0.0);
     soak_fill_fraction(nextafter(0.2, 0.0), 0.2, 0.0, &v);

@@ -82,7 +82,7 @@ static void check_shipped(void)
     const soak_preset *clay = soak_presets_find(db, "clay"), *concrete = soak_presets_find(db, "concrete");
     const soak_preset *marble = soak_presets_find(db, "marble");
     if (sand && paper && copper && lime && clay && concrete && marble) {
-        check_close("sand porosity (seed 001: 25%)", sand->porosity, 0.25, 0);
+        check_close("sand porosity (Clapp & Hornberger 1978, Table 2: sand 0.395)", sand->porosity, 0.395, 0);
         check_close("concrete porosity (seed 001: concrete pot 25%)", concrete->porosity, 0.25, 0);
         check_true("limestone porosity in seed 001's 30-45%", soak_in_range(lime->porosity, 0.30, 0.45));
         check_true("clay porosity in seed 001's 40-50%", soak_in_range(clay->porosity, 0.40, 0.50));
@@ -230,6 +230,7 @@ static void check_malformed(void)
     const char *wet_end = "\"film_thickness_mm\": 0.5, \"source\": \"s\"}}\n ]";
     const char *measured = "\"film_thickness_mm\": 0.5, \"source\": \"s\"},\n   \"measured\": {\"wet_dry_ratio\": 0.6, "
                            "\"spread\": 0.03, \"dry_albedo\": 0.4, \"wetness\": 1, \"quantity\": \"albedo_total\", "
+                           "\"sun_zenith_deg\": 35, "
                            "\"source\": \"m\"}}\n ]";
     snprintf(path, sizeof path, "%s/variant.json", dir);
     if (write_variant(path, NULL, NULL) && soak_presets_load(path, &db, err, sizeof err) == SOAK_OK) {
@@ -243,6 +244,7 @@ static void check_malformed(void)
         check_true("measured group read", sm && sm->has_measured && sm->measured_ratio == 0.6 &&
                                               sm->measured_spread == 0.03 && sm->measured_dry_albedo == 0.4 &&
                                               sm->measured_wetness == 1.0 && sm->measured_total == 1 &&
+                                              sm->measured_sun_zenith_deg == 35.0 &&
                                               strcmp(sm->measured_source, "m") == 0);
         if (st == SOAK_OK) soak_presets_free(db);
         db = NULL;

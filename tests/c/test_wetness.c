@@ -12,6 +12,7 @@
 #include "soak/fresnel.h"
 #include "soak/preset.h"
 #include "soak/vdhulst.h"
+#include "soak/porous.h"
 #include "soak/wetness.h"
 
 static double vdh_albedo(double omega, double g)
@@ -260,6 +261,42 @@ static void check_schedule(const soak_preset_db *db, const soak_liquid *water)
     soak_wetness_eval(sand, water, &in, &half);
     check_close("t_fill = 0.2: half way at t0 + 0.1 (Hnat's Delta t / t_fill)", half.progress, 0.5, 1e-15);
     check_close("t_fill = 0.2: liquid = w * progress", half.liquid, 0.05, 1e-15);
+
+    /* Continuity at t0 and t0 + t_fill for every t_fill, 0 included: zero
+     * just before t0, complete at t0 + t_fill and after, and (t_fill > 0)
+     * the ramp's own values at both ends and one ulp inside them. The chain
+     * and the bakes share one schedule: step 1 equals soak_fill_fraction. */
+    const double fills[] = {0.0, 1e-300, 1e-9, 0.2, 5.0};
+    int ok = 1, same = 1;
+    for (size_t k = 0; k < sizeof fills / sizeof fills[0]; ++k) {
+        const double tf = fills[k], t0 = 0.5, end = t0 + tf;
+        const double at[] = {nextafter(t0, -1.0), t0, nextafter(t0, 2.0), nextafter(end, -1.0), end,
+                             nextafter(end, 9.0), end + 1.0};
+        in.t0 = t0;
+        in.t_fill = tf;
+        for (size_t j = 0; j < sizeof at / sizeof at[0]; ++j) {
+            in.time = at[j];
+            soak_wet_params o;
+            double ref = -1.0;
+            if (soak_wetness_eval(sand, water, &in, &o) != SOAK_OK ||
+                soak_fill_fraction(in.time, t0, tf, &ref) != SOAK_OK) {
+                ok = 0;
+                continue;
+            }
+            if (o.progress != ref) same = 0;
+            /* (t0 + 1e-300 rounds to t0: the ramp, not the end, decides there) */
+            double want = at[j] < t0 ? 0.0 : (tf == 0.0 ? 1.0 : fmin(1.0, (at[j] - t0) / tf));
+            if (!(fabs(o.progress - want) <= 1e-12)) ok = 0;
+        }
+        /* t_fill > 0: the ramp starts at 0 at t0 (no jump) */
+        if (tf > 0.0) {
+            in.time = t0;
+            soak_wet_params o;
+            if (soak_wetness_eval(sand, water, &in, &o) != SOAK_OK || o.progress != 0.0) ok = 0;
+        }
+    }
+    check_true("schedule continuous at t0 and t0 + t_fill (t_fill 0, 1e-300, 1e-9, 0.2, 5)", ok);
+    check_true("chain's schedule is soak_fill_fraction (one owner)", same);
 }
 
 static void check_paper(const soak_preset_db *db, const soak_liquid *water)

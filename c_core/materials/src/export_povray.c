@@ -150,7 +150,7 @@ static soak_status fill_knot(const soak_preset *p, const soak_liquid *l, double 
     if (st != SOAK_OK) return st;
     const double c = w.film ? w.film_coverage : 0.0;
     const int metal = p->kind == SOAK_KIND_CONDUCTOR;
-    const double film_r = clamp(c + (1.0 - c) * w.water_specular_weight, 0.0, 1.0);
+    const double film_r = soak_wet_interface_area(&w);
     t->s[S_W][i] = wet;
     t->s[S_COVERAGE][i] = c;
     t->s[S_FILL][i] = w.fill;

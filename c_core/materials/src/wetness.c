@@ -7,6 +7,7 @@
 
 #include "soak/film.h"
 #include "soak/fresnel.h"
+#include "soak/porous.h"
 #include "soak/vdhulst.h"
 
 static double lerp(double a, double b, double t) { return a + (b - a) * t; }
@@ -66,12 +67,6 @@ static soak_status validate(const soak_preset *p, const soak_liquid *l, const so
     return SOAK_OK;
 }
 
-/* Step 1: Hnat's Delta t / t_fill. */
-static double schedule(const soak_wet_input *in)
-{
-    if (in->t_fill == 0.0) return in->time >= in->t0 ? 1.0 : 0.0;
-    return clamp01((in->time - in->t0) / in->t_fill);
-}
 
 /* Step 5 for conductors: normal-incidence incoherent film over a metal. */
 static double conductor_film(double n, double k, double n_liq, double two_pass)
@@ -84,17 +79,62 @@ static double conductor_film(double n, double k, double n_liq, double two_pass)
 }
 
 /* Step 5 for dielectrics: the diffuse light leaving through a film over a
- * Lambertian base, T(A) - T(0), and the film's own specular part T(0). */
-static soak_status film_parts(const soak_film *film, double base, double *diffuse, double *specular)
+ * Lambertian base, T(A) - T(0), and the film's own specular part T(0), for
+ * uniform diffuse light (cos_i < 0) or collimated light at cos_i. */
+static soak_status film_parts(const soak_film *film, double base, double cos_i, double *diffuse, double *specular)
 {
     double total = 0.0;
     soak_film_ctx ctx; /* one quadrature setup for both evaluations */
     soak_status st = soak_film_setup(film, &ctx);
-    if (st == SOAK_OK) st = soak_film_ctx_albedo_diffuse(&ctx, base, &total);
-    if (st == SOAK_OK) st = soak_film_ctx_albedo_diffuse(&ctx, 0.0, specular);
+    if (cos_i < 0.0) {
+        if (st == SOAK_OK) st = soak_film_ctx_albedo_diffuse(&ctx, base, &total);
+        if (st == SOAK_OK) st = soak_film_ctx_albedo_diffuse(&ctx, 0.0, specular);
+    } else {
+        if (st == SOAK_OK) st = soak_film_ctx_albedo_dir(&ctx, base, cos_i, &total);
+        if (st == SOAK_OK) st = soak_film_ctx_albedo_dir(&ctx, 0.0, cos_i, specular);
+    }
     if (st != SOAK_OK) return st;
     *diffuse = total - *specular;
     if (*diffuse < 0.0) *diffuse = 0.0; /* rounding when base = 0 */
+    return SOAK_OK;
+}
+
+/* Step 5: one Lekner-Dorf interface wherever liquid meets air -- the pore
+ * water's surface (area fraction porosity f, zero thickness) and the film
+ * (coverage c, which replaces it: one interface, one TIR). Reads the
+ * steps 1-4 fields of o; cos_i < 0 is uniform diffuse light. */
+static soak_status interface_step(const soak_preset *p, const soak_liquid *l, const soak_wet_params *o,
+                                  double cos_i, soak_rgb *albedo, soak_rgb *albedo_total, soak_rgb *albedo_film)
+{
+    const int conductor = p->kind == SOAK_KIND_CONDUCTOR;
+    soak_film film = {l->ior, 0.0, o->film_thickness_m};
+    const soak_film pores = {l->ior, 0.0, 0.0};
+    const double pore_area = soak_material_kind_porous(p->kind) ? p->porosity * o->fill : 0.0;
+    for (int i = 0; i < 3; ++i) {
+        double base = soak_rgb_at(o->albedo_subsurface, i);
+        double diffuse, specular;
+        double open = base, open_total = base; /* the part not under the film */
+        if (conductor) {
+            /* normal-incidence model whatever the light (wetness.h step 5) */
+            double two_pass = exp(-2.0 * soak_rgb_at(o->film_absorption_per_m, i) * o->film_thickness_m);
+            soak_fresnel_r0(l->ior, 0.0, &specular);
+            diffuse = conductor_film(soak_rgb_at(p->ior_n, i), soak_rgb_at(p->ior_k, i), l->ior, two_pass);
+        } else {
+            film.alpha = soak_rgb_at(o->film_absorption_per_m, i);
+            soak_status st = film_parts(&film, base, cos_i, &diffuse, &specular);
+            if (st == SOAK_OK && pore_area > 0.0) {
+                double pore_diffuse = 0.0, pore_specular = 0.0;
+                st = film_parts(&pores, base, cos_i, &pore_diffuse, &pore_specular);
+                open = lerp(base, pore_diffuse, pore_area);
+                open_total = lerp(base, pore_diffuse + pore_specular, pore_area);
+            }
+            if (st != SOAK_OK) return st;
+        }
+        double c = o->film_coverage;
+        if (albedo_film) soak_rgb_set(albedo_film, i, diffuse);
+        soak_rgb_set(albedo, i, c > 0.0 ? lerp(open, diffuse, c) : open);
+        soak_rgb_set(albedo_total, i, c > 0.0 ? lerp(open_total, diffuse + specular, c) : open_total);
+    }
     return SOAK_OK;
 }
 
@@ -110,7 +150,9 @@ soak_status soak_wetness_eval(const soak_preset *p, const soak_liquid *l, const 
     soak_wet_params o;
     memset(&o, 0, sizeof o);
     o.wetness = in->wetness;
-    o.progress = schedule(in);
+    /* Step 1: the one schedule (soak/porous.h); in range after validate(). */
+    st = soak_fill_fraction(in->time, in->t0, in->t_fill, &o.progress);
+    if (st != SOAK_OK) return st;
     o.liquid = in->wetness * o.progress;
 
     /* Step 2. */
@@ -150,36 +192,9 @@ soak_status soak_wetness_eval(const soak_preset *p, const soak_liquid *l, const 
         o.albedo_subsurface = p->albedo;
     }
 
-    /* Step 5: one Lekner-Dorf interface wherever liquid meets air -- the
-     * pore water's surface (area fraction porosity f, zero thickness) and
-     * the film (coverage c, which replaces it: one interface, one TIR). */
-    soak_film film = {l->ior, 0.0, in->film_thickness_m};
-    const soak_film pores = {l->ior, 0.0, 0.0};
-    const double pore_area = porous ? p->porosity * o.fill : 0.0;
-    for (int i = 0; i < 3; ++i) {
-        double base = soak_rgb_at(o.albedo_subsurface, i);
-        double diffuse, specular;
-        double open = base, open_total = base; /* the part not under the film */
-        if (conductor) {
-            double two_pass = exp(-2.0 * 1000.0 * soak_rgb_at(l->sigma_a, i) * in->film_thickness_m);
-            soak_fresnel_r0(l->ior, 0.0, &specular);
-            diffuse = conductor_film(soak_rgb_at(p->ior_n, i), soak_rgb_at(p->ior_k, i), l->ior, two_pass);
-        } else {
-            film.alpha = soak_rgb_at(o.film_absorption_per_m, i);
-            st = film_parts(&film, base, &diffuse, &specular);
-            if (st == SOAK_OK && pore_area > 0.0) {
-                double pore_diffuse = 0.0, pore_specular = 0.0;
-                st = film_parts(&pores, base, &pore_diffuse, &pore_specular);
-                open = lerp(base, pore_diffuse, pore_area);
-                open_total = lerp(base, pore_diffuse + pore_specular, pore_area);
-            }
-            if (st != SOAK_OK) return st;
-        }
-        double c = o.film_coverage;
-        soak_rgb_set(&o.albedo_film, i, diffuse);
-        soak_rgb_set(&o.albedo, i, c > 0.0 ? lerp(open, diffuse, c) : open);
-        soak_rgb_set(&o.albedo_total, i, c > 0.0 ? lerp(open_total, diffuse + specular, c) : open_total);
-    }
+    /* Step 5. */
+    st = interface_step(p, l, &o, -1.0, &o.albedo, &o.albedo_total, &o.albedo_film);
+    if (st != SOAK_OK) return st;
 
     /* Step 6. */
     o.ggx_alpha = lerp(p->ggx_alpha_dry, p->ggx_alpha_wet, o.fill);
@@ -195,6 +210,47 @@ soak_status soak_wetness_eval(const soak_preset *p, const soak_liquid *l, const 
     }
     if (!soak_is_finite(o.mean_cosine) || !soak_is_finite(o.ggx_alpha)) return SOAK_ERR_NUMERIC;
     *out = o;
+    return SOAK_OK;
+}
+
+soak_status soak_wetness_albedo_sun(const soak_preset *p, const soak_liquid *l, const soak_wet_params *w,
+                                    double cos_i, soak_rgb *albedo, soak_rgb *albedo_total)
+{
+    if (!p || !l || !w || !albedo || !albedo_total) return SOAK_ERR_NULL;
+    if (!soak_in_range(cos_i, 0.0, 1.0) || !soak_in_range(w->fill, 0.0, 1.0) ||
+        !soak_in_range(w->film_coverage, 0.0, 1.0) || !soak_in_range(w->film_thickness_m, 0.0, SOAK_WET_FILM_MAX_M))
+        return SOAK_ERR_ARG;
+    for (int i = 0; i < 3; ++i)
+        if (!soak_in_range(soak_rgb_at(w->albedo_subsurface, i), 0.0, 1.0) ||
+            !soak_in_range(soak_rgb_at(w->film_absorption_per_m, i), 0.0, 1e6))
+            return SOAK_ERR_ARG;
+    soak_rgb a, t;
+    soak_status st = interface_step(p, l, w, cos_i, &a, &t, NULL);
+    if (st != SOAK_OK) return st;
+    for (int i = 0; i < 3; ++i)
+        if (!soak_is_finite(soak_rgb_at(a, i)) || !soak_is_finite(soak_rgb_at(t, i))) return SOAK_ERR_NUMERIC;
+    *albedo = a;
+    *albedo_total = t;
+    return SOAK_OK;
+}
+
+soak_status soak_wetness_measured_ratio(const soak_preset *p, const soak_liquid *l, double wetness, double *ratio)
+{
+    if (!p || !l || !ratio) return SOAK_ERR_NULL;
+    if (!p->has_measured || !soak_in_range(wetness, 0.0, 1.0)) return SOAK_ERR_ARG;
+    soak_preset q = *p;
+    const double dry = p->measured_dry_albedo;
+    q.albedo = soak_rgb3(dry, dry, dry);
+    soak_status st = soak_preset_derive(&q);
+    soak_wet_input in = soak_wet_input_steady(&q, wetness);
+    soak_wet_params o;
+    if (st == SOAK_OK) st = soak_wetness_eval(&q, l, &in, &o);
+    soak_rgb a = o.albedo, t = o.albedo_total;
+    const double z = p->measured_sun_zenith_deg;
+    if (st == SOAK_OK && z >= 0.0)
+        st = soak_wetness_albedo_sun(&q, l, &o, z >= 90.0 ? 0.0 : cos(z * (SOAK_PI / 180.0)), &a, &t);
+    if (st != SOAK_OK) return st;
+    *ratio = (p->measured_total ? t.g : a.g) / dry;
     return SOAK_OK;
 }
 

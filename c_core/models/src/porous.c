@@ -85,7 +85,9 @@ soak_status soak_fill_fraction(double t, double t0, double t_fill, double *frac)
     if (!soak_is_finite(t) || !soak_is_finite(t0) || !soak_in_range(t_fill, 0.0, 1.7976931348623157e308))
         return SOAK_ERR_ARG;
     double v;
-    if (t <= t0) v = 0.0;
+    /* Zero before t0, one from t0 + t_fill on: right-continuous, so the
+     * fill is complete at t0 + t_fill for every t_fill, 0 included. */
+    if (t < t0) v = 0.0;
     else if (t_fill == 0.0) v = 1.0;
     else {
         /* t - t0 may overflow to +inf and the ratio may overflow: both mean full. */

@@ -365,22 +365,21 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     soak_wet_params w;
     st = soak_wetness_eval(p, liq, &in, &w);
     soak_material_kind kind = p->kind;
-    double porosity = p->porosity, ior = p->ior;
+    double ior = p->ior;
     soak_rgb n = p->ior_n, k = p->ior_k;
     if (st == SOAK_OK) preset_model_view(p, &w, unit_mm, m);
     soak_presets_free(db);
     if (st != SOAK_OK) return sj_fail(c, st, path, "wetness evaluation failed (%s)", soak_status_str(st));
     /* The chain's liquid-air interface (wetness.h step 5): the film over
      * the coverage c and the pore water's surface (zero thickness) over
-     * porosity * fill of the rest. One film of the chain's area; its
+     * porosity * fill of the rest (soak_wet_interface_area, the one
+     * owner of that area). One film of the chain's area; its
      * thickness only where a film lies (the pore part differs by the
      * absorption of a film thickness, < 1e-3 for clear liquids). */
-    double pores = kind == SOAK_KIND_POROUS_DIELECTRIC || kind == SOAK_KIND_THIN_SHEET ? porosity * w.fill : 0.0;
-    double interface = w.film_coverage + (1.0 - w.film_coverage) * pores;
     m->type = SOAK_MAT_WET;
     m->film_ior = w.film_ior;
     m->film_k = 1;
-    m->film_coverage = kind == SOAK_KIND_CONDUCTOR ? w.film_coverage : interface;
+    m->film_coverage = soak_wet_interface_area(&w);
     m->film_thickness = w.film_coverage > 0 ? w.film_thickness_m * 1000.0 / unit_mm : 0.0;
     m->film_absorption = soak_rgb3(w.film_absorption_per_m.r * unit_mm / 1000.0, w.film_absorption_per_m.g * unit_mm / 1000.0,
                                    w.film_absorption_per_m.b * unit_mm / 1000.0);

@@ -108,6 +108,9 @@ typedef struct soak_preset {
     double measured_dry_albedo; /* (0, 1] */
     double measured_wetness;    /* [0, 1] */
     int measured_total;         /* 1: albedo_total (film specular included), 0: albedo */
+    double measured_sun_zenith_deg; /* the measurement's light: a sun at this zenith
+                                     * angle, [0, 90] (required key); a hand-built
+                                     * preset may set < 0 for uniform diffuse light */
     const char *measured_source;
 
     /* Derived on load (see above). Zero for conductors. */

@@ -9,7 +9,8 @@
  * 1. Schedule (Hnat et al. 2006, seed 002 sec. 3.3.2, Delta t table): a point
  *    whose wet-map start time is t0 receives liquid over the pore fill time
  *    t_fill:  progress P = clamp((t - t0) / t_fill, 0, 1); with t_fill = 0
- *    the step P = (t >= t0 ? 1 : 0) (seed 002: "straight border").
+ *    the step P = (t >= t0 ? 1 : 0) (seed 002: "straight border"). One
+ *    owner: soak_fill_fraction (soak/porous.h), right-continuous in t.
  *    Delivered liquid L = w * P, w in [0,1] the wetness (wet-map amount).
  *
  * 2. Saturation point. w is read as the volume fraction of liquid in the
@@ -139,6 +140,28 @@ soak_wet_input soak_wet_input_steady(const soak_preset *preset, double wetness);
  * written only on SOAK_OK and is free of NaN/Inf. */
 soak_status soak_wetness_eval(const soak_preset *preset, const soak_liquid *liquid, const soak_wet_input *in,
                               soak_wet_params *out);
+
+/* Directional-hemispherical reflectance under a sun: collimated light at
+ * cos_i = cos(zenith angle) in [0, 1], for the state w that
+ * soak_wetness_eval returned for (preset, liquid). Step 5 with the
+ * interface's directional transmission (soak_film_albedo_dir) in place of
+ * the diffuse one; the subsurface body stays Lambertian (step 4's albedo is
+ * van de Hulst's, direction-free) and conductors keep step 5's normal-
+ * incidence model. albedo: without the liquid's mirror reflection (what a
+ * camera away from the mirror direction sees); albedo_total: with it (what
+ * a pyranometer sees). Field albedos are measured under the sun: compare
+ * them with these, not with w->albedo_total (uniform diffuse light). */
+soak_status soak_wetness_albedo_sun(const soak_preset *preset, const soak_liquid *liquid, const soak_wet_params *w,
+                                    double cos_i, soak_rgb *albedo, soak_rgb *albedo_total);
+
+/* The wet/dry ratio a measurement of preset->measured group would see at
+ * wetness w: the preset re-based on the sample's grey dry albedo, evaluated
+ * in steady state and under the measurement's light (a sun at
+ * measured_sun_zenith_deg, else uniform diffuse light), green channel,
+ * measured_total choosing albedo_total or albedo. SOAK_ERR_ARG without a
+ * measured group. */
+soak_status soak_wetness_measured_ratio(const soak_preset *preset, const soak_liquid *liquid, double wetness,
+                                        double *ratio);
 
 /* Share of the surface where the liquid meets the air: the film's coverage c
  * plus the uncovered liquid-filled pores, c + (1 - c) porosity f (zero pore

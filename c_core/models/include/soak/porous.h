@@ -91,9 +91,12 @@ soak_status soak_porous_Ap(double ka, double nb, double *Ap);
 
 /* Fill fraction dt / t_fill of seed 002 sec. 3.3.2:
  *   dt = 0 for t < t0, t - t0 for t0 <= t < t0 + t_fill, t_fill afterwards.
- * t_fill = 0 is instantaneous filling: a step, 0 for t <= t0 and 1 for
- * t > t0 (the limit of the ramp for t_fill -> 0+). t, t0 finite,
- * t_fill in [0, +finite]. Result in [0,1], non-decreasing in t. */
+ * t_fill = 0 is instantaneous filling: a step, 0 for t < t0 and 1 for
+ * t >= t0. Right-continuous in t for every t_fill (0 before t0, complete
+ * at t0 + t_fill), so t_fill = 0 is the ramp's limit at every t except the
+ * single instant t0, where it takes the ramp's end value. The ONE schedule:
+ * soak_wetness_eval (step 1), the bakes and the OSL math follow it.
+ * t, t0 finite, t_fill in [0, +finite]. Result in [0,1], non-decreasing. */
 soak_status soak_fill_fraction(double t, double t0, double t_fill, double *frac);
 
 /* Wet-map value to wetting start time. Seed 002 sec. 3.3.1 stores 1 for
