@@ -235,7 +235,8 @@ static soak_status open_group(ctx *c, const cJSON *m, const char *path, const ch
 /* The optional "measured" group (see soak/preset.h). */
 static soak_status parse_measured(ctx *c, const cJSON *m, const char *path, soak_preset *p)
 {
-    static const char *const keys[] = {"wet_dry_ratio", "spread", "dry_albedo", "wetness", "quantity", "source", NULL};
+    static const char *const keys[] = {"wet_dry_ratio", "spread",         "dry_albedo", "wetness",
+                                       "quantity",      "sun_zenith_deg", "source",     NULL};
     const cJSON *g = NULL;
     char gp[PATH_MAX_LEN];
     const char *quantity = NULL;
@@ -245,6 +246,8 @@ static soak_status parse_measured(ctx *c, const cJSON *m, const char *path, soak
     if (st == SOAK_OK) st = get_number(c, g, gp, "dry_albedo", 1e-6, 1.0, &p->measured_dry_albedo);
     if (st == SOAK_OK) st = get_number(c, g, gp, "wetness", 0.0, 1.0, &p->measured_wetness);
     if (st == SOAK_OK) st = get_string(c, g, gp, "quantity", &quantity);
+    /* Every measurement states its light (docs/calibration.md). */
+    if (st == SOAK_OK) st = get_number(c, g, gp, "sun_zenith_deg", 0.0, 90.0, &p->measured_sun_zenith_deg);
     if (st == SOAK_OK) st = get_string(c, g, gp, "source", &p->measured_source);
     if (st != SOAK_OK) return st;
     if (strcmp(quantity, "albedo_total") != 0 && strcmp(quantity, "albedo") != 0) {
