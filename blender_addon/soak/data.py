@@ -95,11 +95,12 @@ class LookupImages:
     params  the per-row parameters (RGB pixels as exported);
     linear  per channel c, the albedo table with channel c's function in
             channel c and zeros in the others (Linear lookups, summed);
-    cells   per channel c, one texel per table cell holding the cell's
-            bilinear form: (f01 - f00, f10 - f00, f11 - f10 - f01 + f00)
-            and alpha f00 (f01 the next column, f10 the next row; the
-            alpha, which EEVEE Next keeps within [0, 1], holds the value
-            that is), for one Closest read per channel (exact lookups)."""
+    cells   per channel c, one texel per table cell holding its corners
+            (f01, f10, f11) in RGB and f00 in alpha (f01 the next column,
+            f10 the next row; EEVEE Next keeps alpha within [0, 1], as the
+            table values are), read once with Closest and summed with the
+            bilinear weights: a convex sum, so a half-precision GPU copy errs
+            by at most 2^-11 of the value (exact lookups)."""
 
     def __init__(self, params, linear, cells):
         self.params, self.linear, self.cells = params, linear, cells
@@ -126,6 +127,6 @@ def lookup_images(preset, liquid_name, exact=False):
         for r in range(rows - 1):
             for j in range(na - 1):
                 f00, f01, f10, f11 = alb[r][j][c], alb[r][j + 1][c], alb[r + 1][j][c], alb[r + 1][j + 1][c]
-                px += [f01 - f00, f10 - f00, f11 - f10 - f01 + f00, f00]
+                px += [f01, f10, f11, f00]   # corners: bilinear weights make a convex sum
         cells.append(_image(f"Soak Cells {base} {'RGB'[c]}", na - 1, rows - 1, px, tag, alpha=True))
     return LookupImages(par, linear, cells)

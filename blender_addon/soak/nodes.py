@@ -264,6 +264,7 @@ class _Rows:
         y = b.math("MULTIPLY", run_program(b, t["row_program"], {"x": L}), (rows - 1) * _EDGE)
         r0 = b.math("FLOOR", y)
         self.fy = b.math("SUBTRACT", y, r0)
+        self.gy = b.math("SUBTRACT", 1.0, self.fy)
         self.cell = b.math("MULTIPLY_ADD", r0, 1.0 / (rows - 1), 0.5 / (rows - 1))
         self.v0 = b.math("MULTIPLY_ADD", r0, 1.0 / rows, 0.5 / rows)
         self.v1 = b.math("ADD", self.v0, 1.0 / rows)
@@ -301,15 +302,20 @@ def _wet_colour(b, colour, t, images, rows):
         fx = b.math("SUBTRACT", x, j)
         tex = _lookup(b, images.cells[c], b.math("MULTIPLY_ADD", j, 1.0 / (na - 1), 0.5 / (na - 1)), rows.cell,
                       "Closest")
-        # cell texel: (f01 - f00, f10 - f00, f11 - f10 - f01 + f00), alpha f00
+        # cell texel: corners (f01, f10, f11), alpha f00. Bilinear weights
+        # sum to 1 over non-negative corners, so the GPU's half-precision
+        # copy (EEVEE) errs by at most 2^-11 of the value; differences of
+        # corners would add their own rounding to it.
+        gx = b.math("SUBTRACT", 1.0, fx)
         w = b.node("ShaderNodeCombineXYZ")
-        b.link(fx, w.inputs[0])
-        b.link(rows.fy, w.inputs[1])
+        b.link(b.math("MULTIPLY", fx, rows.gy), w.inputs[0])
+        b.link(b.math("MULTIPLY", gx, rows.fy), w.inputs[1])
         b.link(b.math("MULTIPLY", fx, rows.fy), w.inputs[2])
         dot = b.node("ShaderNodeVectorMath", operation="DOT_PRODUCT")
         b.link(tex.outputs["Color"], dot.inputs[0])
         b.link(w.outputs[0], dot.inputs[1])
-        b.link(b.math("ADD", tex.outputs["Alpha"], dot.outputs["Value"]), comb.inputs[c])
+        w00 = b.math("MULTIPLY", gx, rows.gy)
+        b.link(b.math("MULTIPLY_ADD", tex.outputs["Alpha"], w00, dot.outputs["Value"]), comb.inputs[c])
     return comb.outputs[0]
 
 
