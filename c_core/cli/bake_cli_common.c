@@ -9,6 +9,7 @@
 #include "cli.h"
 
 #define MAX_FRAMES 100000
+#define MAX_FRAME_NUMBER 9999999
 
 void bake_opts_init(bake_opts *o, const char *cmd, double time, double frame_time)
 {
@@ -29,9 +30,10 @@ static int parse_frames(bake_opts *o, const char *text)
         b = strtol(second, &end, 10);
         if (end == second) end = (char *)text;
     }
-    if (end == text || *end != '\0' || errno == ERANGE || a < 0 || b < a || b > 9999999 || b - a >= MAX_FRAMES) {
-        cli_error(o->cmd, "--frames: expected A-B with 0 <= A <= B <= 9999999 and at most %d frames, got '%s'",
-                  MAX_FRAMES, text);
+    if (end == text || *end != '\0' || errno == ERANGE || a < 0 || b < a || b > MAX_FRAME_NUMBER ||
+        b - a >= MAX_FRAMES) {
+        cli_error(o->cmd, "--frames: expected A-B with 0 <= A <= B <= %d and at most %d frames, got '%s'",
+                  MAX_FRAME_NUMBER, MAX_FRAMES, text);
         return -1;
     }
     o->first = a;
@@ -75,6 +77,11 @@ int bake_opts_parse(bake_opts *o, int argc, char **argv, int *i)
         if (!(v = cli_value(o->cmd, argc, argv, i)) ||
             !cli_parse_double(o->cmd, "--frame-time", v, 0, 1e6, &o->frame_time))
             return -1;
+    } else if (cli_is(a, "--frame-origin")) {
+        if (!(v = cli_value(o->cmd, argc, argv, i)) ||
+            !cli_parse_int(o->cmd, "--frame-origin", v, 0, MAX_FRAME_NUMBER, &o->origin))
+            return -1;
+        o->have_origin = 1;
     } else {
         return 0;
     }
@@ -116,6 +123,10 @@ int bake_opts_check(const bake_opts *o, const char *const *inputs, int n_inputs)
         cli_error(o->cmd, "-o '%s' is a frame pattern: give --frames A-B", o->output);
         return SOAK_EXIT_USAGE;
     }
+    if (o->have_origin && !o->have_frames) {
+        cli_error(o->cmd, "--frame-origin %ld needs an image sequence: give --frames A-B", o->origin);
+        return SOAK_EXIT_USAGE;
+    }
     long first = o->have_frames ? o->first : -1, last = o->have_frames ? o->last : -1;
     for (long f = first; f <= last; ++f) {
         char out[4096], err[4352];
@@ -143,6 +154,16 @@ int bake_fail(const char *cmd, soak_status st, const char *err)
     return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
 }
 
+double bake_frame_time(const bake_opts *o, long f)
+{
+    if (!o->have_frames || f < 0) return o->time;
+    long origin = o->have_origin ? o->origin : o->first;
+    /* Two rounded steps, one per statement, so no compiler fuses them: the
+     * farm job types rely on this exact double for every chunk. */
+    double offset = (double)(f - origin) * o->frame_time;
+    return o->time + offset;
+}
+
 typedef struct progress_state {
     cli_progress bar;
     double base; /* frames already done */
@@ -164,7 +185,7 @@ int bake_run(const bake_opts *o, bake_frame_fn fn, void *ctx)
         char path[4096], err[4352] = "";
         if (!expand(o, o->output, f, path, sizeof path)) return SOAK_EXIT_USAGE;
         prog.base = (double)(f - first);
-        double time = o->time + (o->have_frames ? (double)(f - first) * o->frame_time : 0.0);
+        double time = bake_frame_time(o, f);
         soak_image img = {0, 0, 0, NULL};
         soak_status st = fn(ctx, (int)f, time, &exec, &img, err, sizeof err);
         if (st == SOAK_OK) st = soak_bake_write(path, &img, o->float_exr, err, sizeof err);

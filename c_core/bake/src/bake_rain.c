@@ -9,6 +9,8 @@
 
 #include "soak/rng.h"
 
+#include "bake_rain_flow.h"
+
 void soak_rain_defaults(soak_rain_params *p)
 {
     memset(p, 0, sizeof *p);
@@ -75,8 +77,8 @@ long soak_rain_poisson(double lambda, soak_rng *rng)
 
 /* ---- step 1: surface sampling ---- */
 
-static const int DX[8] = {1, 1, 0, -1, -1, -1, 0, 1};
-static const int DY[8] = {0, -1, -1, -1, 0, 1, 1, 1};
+static const int *const DX = SOAK_RAIN_DX;
+static const int *const DY = SOAK_RAIN_DY;
 
 typedef struct rain_surface {
     int w, h;
@@ -272,7 +274,6 @@ typedef struct water_job {
     const float *exposure;
     double *depth;     /* water depth per texel, m */
     float *deposit;    /* drop volume per texel this step */
-    float *out8;       /* 8 outflows per texel + 1 drip */
     double *retain;    /* film kept per texel */
     double lambda_per_area, drop_volume;
     uint64_t step_seed;
@@ -306,67 +307,6 @@ static void add_deposit_row(void *ctx, int y, int thread)
     }
 }
 
-/* Outflows of texel i from the current depths (Jacobi: reads only depth). */
-static void outflow_row(void *ctx, int y, int thread)
-{
-    (void)thread;
-    water_job *j = ctx;
-    const rain_surface *s = j->s;
-    for (int x = 0; x < s->w; ++x) {
-        size_t i = (size_t)y * s->w + x;
-        float *o = j->out8 + 9 * i;
-        for (int d = 0; d < 9; ++d) o[d] = 0.0f;
-        if (s->tri[i] < 0) continue;
-        double h = j->depth[i], mobile = h - j->retain[i];
-        if (!(mobile > 0.0)) continue;
-        if (s->drip[i] < 0.0f) { /* faces down */
-            o[8] = (float)mobile;
-            continue;
-        }
-        double lvl = s->level[i] + h, diff[9], sum = 0.0, mx = 0.0;
-        for (int d = 0; d < 8; ++d) {
-            diff[d] = 0.0;
-            if (!(s->adj[i] >> d & 1u)) continue;
-            size_t k = (size_t)(y + DY[d]) * s->w + (size_t)(x + DX[d]);
-            double dl = lvl - (s->level[k] + j->depth[k]);
-            if (dl > 0.0) diff[d] = dl;
-        }
-        diff[8] = s->drip[i] > 0.0f ? h + s->drip[i] : 0.0; /* virtual dry neighbour beyond the edge */
-        for (int d = 0; d < 9; ++d) {
-            sum += diff[d];
-            mx = fmax(mx, diff[d]);
-        }
-        if (!(sum > 0.0)) continue;
-        double moved = fmin(mobile, 0.5 * mx);
-        for (int d = 0; d < 9; ++d) o[d] = (float)(moved * diff[d] / sum);
-    }
-}
-
-/* depth' = depth - outflows + inflows (volumes via texel areas). */
-static void gather_row(void *ctx, int y, int thread)
-{
-    (void)thread;
-    water_job *j = ctx;
-    const rain_surface *s = j->s;
-    for (int x = 0; x < s->w; ++x) {
-        size_t i = (size_t)y * s->w + x;
-        if (s->tri[i] < 0) continue;
-        const float *o = j->out8 + 9 * i;
-        double out = 0.0;
-        for (int d = 0; d < 9; ++d) out += o[d];
-        double vol_in = 0.0;
-        for (int d = 0; d < 8; ++d) {
-            int kx = x + DX[d], ky = y + DY[d];
-            if (kx < 0 || ky < 0 || kx >= s->w || ky >= s->h) continue;
-            size_t k = (size_t)ky * s->w + kx;
-            int back = (d + 4) & 7; /* direction from k to i */
-            if (s->tri[k] >= 0 && (s->adj[k] >> back & 1u)) vol_in += j->out8[9 * k + back] * (double)s->area[k];
-        }
-        double h = j->depth[i] - out + vol_in / s->area[i];
-        j->depth[i] = h > 0.0 ? h : 0.0;
-    }
-}
-
 static soak_status run_water(const rain_surface *s, const soak_rain_params *p, const float *exposure,
                              const soak_bake_exec *exec, double *depth)
 {
@@ -378,14 +318,16 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
     j.exposure = exposure;
     j.depth = depth;
     j.deposit = malloc(n * sizeof *j.deposit);
-    j.out8 = malloc(9 * n * sizeof *j.out8);
     j.retain = malloc(n * sizeof *j.retain);
-    if (!j.deposit || !j.out8 || !j.retain) {
+    unsigned char *covered = malloc(n);
+    if (!j.deposit || !j.retain || !covered) {
         free(j.deposit);
-        free(j.out8);
         free(j.retain);
+        free(covered);
         return SOAK_ERR_NOMEM;
     }
+    for (size_t i = 0; i < n; ++i) covered[i] = s->tri[i] >= 0;
+    soak_rain_flow_grid grid = {s->w, s->h, covered, s->adj, s->area, s->drip, s->level, j.retain};
     soak_vec3 up = soak_v3_norm(p->up);
     for (size_t i = 0; i < n; ++i)
         j.retain[i] = s->tri[i] >= 0 ? p->retention * fmax(0.0, soak_v3_dot(fget(s->nrm, i), up)) : 0.0;
@@ -406,15 +348,12 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
             soak_image_free(&blurred);
         }
         if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, add_deposit_row, &j, lo, lo);
-        for (int it = 0; it < p->flow_iterations && st == SOAK_OK; ++it) {
-            st = soak_parallel_rows(s->h, exec, outflow_row, &j, lo, lo);
-            if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, gather_row, &j, lo, lo);
-        }
+        if (st == SOAK_OK) st = soak_rain_flow(&grid, depth, p->flow_iterations, exec, lo, lo);
         for (size_t i = 0; i < n; ++i) depth[i] = depth[i] > evap ? depth[i] - evap : 0.0;
     }
     free(j.deposit);
-    free(j.out8);
     free(j.retain);
+    free(covered);
     return st;
 }
 
