@@ -352,6 +352,7 @@ def main():
         gn.inputs["Base Color"].default_value = (0, 0, 0, 1)
         sb = blender_render(sc, f"textured_{w}_black")
         dim = furnace(sc, f"textured_{w}") if bpy.app.version >= (4, 0, 0) else 0.0  # as in case()
+        assert w in bt["wetness"], f"plane_cases.json: wetness {w} is not a knot of the export's base-colour table {bt['wetness']}"
         iw = bt["wetness"].index(w)
         alb = [0.5 * sum(bt["albedo"][c][iw][bt["dry_albedo"].index(col[c])] for col in tx["colours"])
                for c in range(3)]
@@ -388,6 +389,7 @@ def main():
         l_wet = lum(blender_render(sc, f"dark_wet_{w}"))
         # the reference: a plain Principled BSDF with the core's numbers
         bt = dt["base_colour"]
+        assert w in bt["wetness"], f"plane_cases.json: wetness {w} is not a knot of the export's base-colour table {bt['wetness']}"
         iw = bt["wetness"].index(w)
         wet_cols = [[bt["albedo"][c][iw][bt["dry_albedo"].index(col[c])] for c in range(3)] for col in dk["colours"]]
         kn = dt["knots"]
