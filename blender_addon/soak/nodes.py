@@ -99,8 +99,11 @@ class _Builder:
 
 
 # Vector Math has these operations too: a program's leading ops on the colour
-# as a whole run once for the three channels.
-_VECTOR_OPS = ("ADD", "SUBTRACT", "MULTIPLY", "DIVIDE", "MULTIPLY_ADD", "MINIMUM", "MAXIMUM")
+# as a whole run once for the three channels. SQRT runs as a Gamma node
+# (colour ** 0.5 per channel; a negative channel, 1 - x for a colour above 1,
+# stays negative where Math's SQRT gives 0: both then map past the table's
+# last column, which EXTEND or the clamp below holds there).
+_VECTOR_OPS = ("ADD", "SUBTRACT", "MULTIPLY", "DIVIDE", "MULTIPLY_ADD", "MINIMUM", "MAXIMUM", "SQRT")
 
 
 def _split(op):
@@ -150,13 +153,6 @@ def affine_program(ops, k, o):
     return ops
 
 
-def clamped_program(ops):
-    """The program with its output clamped to [0, 1]."""
-    ops = [list(op) for op in ops]
-    ops[-1][-1] = True
-    return ops
-
-
 def run_program(b, ops, env, results=None):
     """Math nodes for an exported program (layout: soak_data.json); env maps
     input names to sockets or numbers; results: sockets of ops computed
@@ -173,12 +169,15 @@ def run_program(b, ops, env, results=None):
 
 def _vector_prefix(ops):
     """How many leading ops run on the colour as a vector: unclamped Vector
-    Math operations on x and numbers, a chain the rest reads only at its end."""
+    Math operations (or SQRT) on x and numbers, a chain the rest reads only
+    at its end."""
     n = 0
     for i, op in enumerate(ops):
         name, args, clamp = _split(op)
         ok = name in _VECTOR_OPS and not clamp and all(
             _is_num(a) or a == "x" or a == f"#{i - 1}" for a in args)
+        if name == "SQRT":
+            ok = ok and not _is_num(args[0])
         if not ok:
             break
         n = i + 1
@@ -188,24 +187,39 @@ def _vector_prefix(ops):
     return n
 
 
-def run_program_rgb(b, ops, colour):
-    """The program for each channel of a colour: three output sockets."""
+def _vector_op(b, name, args, v):
+    """One op of a program on a whole colour; v: the previous result."""
+    if name == "SQRT":
+        node = b.node("ShaderNodeGamma")
+        node.inputs["Gamma"].default_value = 0.5
+        b.link(v, node.inputs["Color"])
+        return node.outputs[0]
+    node = b.node("ShaderNodeVectorMath", operation=name)
+    for i, a in enumerate(args):
+        if _is_num(a):
+            node.inputs[i].default_value = (float(a),) * 3
+        else:
+            b.link(v, node.inputs[i])
+    return node.outputs[0]
+
+
+def run_program_vector(b, ops, colour):
+    """The program for each channel of a colour, as one vector socket: the
+    whole program on the vector where it can run there (the exported column
+    programs can), else its remainder per channel, recombined."""
     n = _vector_prefix(ops)
     v = colour
     for op in ops[:n]:
         name, args, _ = _split(op)
-        node = b.node("ShaderNodeVectorMath", operation=name)
-        for i, a in enumerate(args):
-            if _is_num(a):
-                node.inputs[i].default_value = (float(a),) * 3
-            else:
-                b.link(v, node.inputs[i])
-        v = node.outputs[0]
+        v = _vector_op(b, name, args, v)
+    if n == len(ops):
+        return v
     sep = b.node("ShaderNodeSeparateXYZ")
     b.link(v, sep.inputs[0])
-    if n == len(ops):
-        return list(sep.outputs[:3])
-    return [run_program(b, ops, {"x": sep.outputs[c]}, {n - 1: sep.outputs[c]} if n else None) for c in range(3)]
+    comb = b.node("ShaderNodeCombineXYZ")
+    for c in range(3):
+        b.link(run_program(b, ops, {"x": sep.outputs[c]}, {n - 1: sep.outputs[c]} if n else None), comb.inputs[c])
+    return comb.outputs[0]
 
 
 def _liquid_schedule(b, gin):
@@ -284,39 +298,72 @@ def _param(b, par_img, t, rows, pixel):
     return m.outputs[0]
 
 
+def _separate(b, v):
+    sep = b.node("ShaderNodeSeparateXYZ")
+    b.link(v, sep.inputs[0])
+    return sep.outputs
+
+
+def _combine(b, x, y, z):
+    comb = b.node("ShaderNodeCombineXYZ")
+    for i, c in enumerate((x, y, z)):
+        if isinstance(c, (int, float)):
+            comb.inputs[i].default_value = float(c)
+        else:
+            b.link(c, comb.inputs[i])
+    return comb.outputs[0]
+
+
+def _vec_num(b, op, a, k, c=None):
+    """Vector Math op on socket a with numbers k (and c) for every channel."""
+    n = b.node("ShaderNodeVectorMath", operation=op)
+    b.link(a, n.inputs[0])
+    n.inputs[1].default_value = (float(k),) * 3
+    if c is not None:
+        n.inputs[2].default_value = (float(c),) * 3
+    return n.outputs[0]
+
+
 def _wet_colour(b, colour, t, images, rows):
-    """The core's wetness function for each channel of the dry colour."""
+    """The core's wetness function for each channel of the dry colour. The
+    column program and the cell arithmetic run on the colour as a vector
+    (one node for three channels); only the lookups and their weights are
+    per channel (c_core/bench/results/2026-11-27-blender-ablation.md)."""
     na = t["columns"]
     if not rows.exact:
-        us = run_program_rgb(b, affine_program(t["column_program"], (na - 1) / na, 0.5 / na), colour)
+        us = _separate(b, run_program_vector(b, affine_program(t["column_program"], (na - 1) / na, 0.5 / na), colour))
         out = None
         for c in range(3):   # image c holds channel c's function in channel c, zeros elsewhere
             tc = _lookup(b, images.linear[c], us[c], rows.v, "Linear").outputs["Color"]
             out = tc if out is None else _vec(b, "ADD", out, tc)
         return out
-    ts = run_program_rgb(b, clamped_program(t["column_program"]), colour)
-    comb = b.node("ShaderNodeCombineXYZ")
+    top = (na - 1) * _EDGE
+    x = run_program_vector(b, affine_program(t["column_program"], top, 0.0), colour)
+    x = _vec_num(b, "MINIMUM", _vec_num(b, "MAXIMUM", x, 0.0), top)
+    j = _vec_num(b, "FLOOR", x, 0.0)
+    fxs = _separate(b, _vec(b, "SUBTRACT", x, j))
+    us = _separate(b, _vec_num(b, "MULTIPLY_ADD", j, 1.0 / (na - 1), 0.5 / (na - 1)))
+    # cell texel: corners (f01, f10, f11), alpha f00, weighted by
+    # (fx gy, gx fy, fx fy) = fx (gy, -fy, fy) + (0, fy, 0) and gx gy. The
+    # weights sum to 1 over non-negative corners, so the GPU's half-precision
+    # copy (EEVEE) errs by at most 2^-11 of the value; differences of corners
+    # would add their own rounding to it.
+    neg_fy = b.math("MULTIPLY", rows.fy, -1.0)
+    slope = _combine(b, rows.gy, neg_fy, rows.fy)
+    base = _combine(b, 0.0, rows.fy, 0.0)
+    neg_gy = b.math("MULTIPLY", rows.gy, -1.0)
+    values = []
     for c in range(3):
-        x = b.math("MULTIPLY", ts[c], (na - 1) * _EDGE)
-        j = b.math("FLOOR", x)
-        fx = b.math("SUBTRACT", x, j)
-        tex = _lookup(b, images.cells[c], b.math("MULTIPLY_ADD", j, 1.0 / (na - 1), 0.5 / (na - 1)), rows.cell,
-                      "Closest")
-        # cell texel: corners (f01, f10, f11), alpha f00. Bilinear weights
-        # sum to 1 over non-negative corners, so the GPU's half-precision
-        # copy (EEVEE) errs by at most 2^-11 of the value; differences of
-        # corners would add their own rounding to it.
-        gx = b.math("SUBTRACT", 1.0, fx)
-        w = b.node("ShaderNodeCombineXYZ")
-        b.link(b.math("MULTIPLY", fx, rows.gy), w.inputs[0])
-        b.link(b.math("MULTIPLY", gx, rows.fy), w.inputs[1])
-        b.link(b.math("MULTIPLY", fx, rows.fy), w.inputs[2])
-        dot = b.node("ShaderNodeVectorMath", operation="DOT_PRODUCT")
-        b.link(tex.outputs["Color"], dot.inputs[0])
-        b.link(w.outputs[0], dot.inputs[1])
-        w00 = b.math("MULTIPLY", gx, rows.gy)
-        b.link(b.math("MULTIPLY_ADD", tex.outputs["Alpha"], w00, dot.outputs["Value"]), comb.inputs[c])
-    return comb.outputs[0]
+        tex = _lookup(b, images.cells[c], us[c], rows.cell, "Closest")
+        w = b.node("ShaderNodeVectorMath", operation="MULTIPLY_ADD")
+        b.link(fxs[c], w.inputs[0])
+        b.link(slope, w.inputs[1])
+        b.link(base, w.inputs[2])
+        dot = _vec(b, "DOT_PRODUCT", tex.outputs["Color"], w.outputs[0])
+        w00 = b.math("MULTIPLY_ADD", fxs[c], neg_gy, rows.gy)
+        dot_value = dot.node.outputs["Value"]
+        values.append(b.math("MULTIPLY_ADD", tex.outputs["Alpha"], w00, dot_value))
+    return _combine(b, *values)
 
 
 def _wet_path(b, gin, L, preset, liquid_name, exact):
