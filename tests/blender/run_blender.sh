@@ -8,6 +8,8 @@
 #                               scripts/setup-blender43.sh made at
 #                               $SOAK_BLENDER43_ROOT (default build/trixie-root)
 #   SOAK_BLENDER_UI=1           run with Blender's window (screenshots) instead of -b
+#   SOAK_BLENDER_RAW=1          ARGS are Blender's own command line, no SCRIPT
+#                               (a render farm's blender-render command)
 #
 # In 4.3 the root is entered with chroot inside a private mount namespace
 # (nothing stays mounted afterwards): the repository, the build folder and
@@ -19,11 +21,17 @@ set -u
 here=$(cd "$(dirname "$0")" && pwd)
 repo=$(cd "$here/../.." && pwd)
 version=${SOAK_BLENDER:-3.4}
-script=$1; shift
+raw=${SOAK_BLENDER_RAW:-0}
+script=""
+[ "$raw" = 1 ] || { script=$1; shift; }
 
 mode=(-b)
 [ "${SOAK_BLENDER_UI:-0}" = 1 ] && mode=()
-blender_args=("${mode[@]}" --factory-startup --python-exit-code 1 --python "$script" -- "$@")
+script_args() { # the blender arguments that run $script with the given arguments
+  if [ "$raw" = 1 ]; then printf '%s\0' "$@"; return; fi
+  printf '%s\0' "${mode[@]}" --factory-startup --python-exit-code 1 --python "$script" -- "$@"
+}
+mapfile -d '' blender_args < <(script_args "$@")
 
 xvfb=()
 if command -v xvfb-run >/dev/null; then
@@ -79,7 +87,7 @@ for v in BLENDER_USER_SCRIPTS TMPDIR; do
   d=${!v:-}
   if [ -n "$d" ]; then mkdir -p "$d"; binds+=("$d"); fi
 done
-blender_args=("${mode[@]}" --factory-startup --python-exit-code 1 --python "$script" -- "${args[@]}")
+mapfile -d '' blender_args < <(script_args "${args[@]}")
 
 exec unshare --mount --propagation private bash -euc '
   root=$1; cwd=$2; nb=$3; shift 3

@@ -3,11 +3,14 @@
 // order that respects the dependencies. Checks
 //  1. soak-bake (drying, turbulence): every chunked frame equals the frame of
 //     one soak run over the whole range, pixel for pixel (idiff, no tolerance);
-//  2. soak-drying-animation (Blender 3.4, the add-on's Image wetness source):
-//     the baked maps equal one soak run's; every frame is rendered; where the
-//     map of a frame is dry the render equals the all-dry last frame's, where
-//     it is wet the render is darker, and the frames brighten as the map's
-//     mean wetness falls (wet materials are darker: seed 000).
+//  2. soak-drying-animation (the add-on's Image wetness source), its render
+//     tasks in Blender 3.4 and in Blender 4.3 (the Debian 13 root of
+//     tests/blender/run_blender.sh, SOAK_BLENDER43_ROOT): the baked maps equal
+//     one soak run's; every frame is rendered; where the map of a frame is dry
+//     the render equals the all-dry last frame's, where it is wet the render
+//     is darker, and the frames brighten as the map's mean wetness falls (wet
+//     materials are darker: seed 000). The blend file is made in 3.4 and
+//     opened by 4.3, as a farm's newer Workers would.
 // Usage: node flamenco_run.test.js REPO_ROOT SOAK_BINARY TMP_DIR
 "use strict";
 const assert = require("node:assert/strict");
@@ -171,84 +174,97 @@ for (const c of bakeCases) {
 // ---- 2. soak-drying-animation: bake, then Blender renders ----
 const size = 32;
 const anim = F.loadJobType(path.join(scripts, "soak_drying_animation.js"));
-check("soak-drying-animation 1-4: maps equal one run, renders follow the drying", () => {
-    const dir = path.join(tmp, "anim");
+const animDir = path.join(tmp, "anim");
+const blend = path.join(animDir, "shot.blend");
+check("soak-drying-animation: the shot's blend file (Blender 3.4, the add-on's Image source)", () => {
     fs.mkdirSync(path.join(tmp, "user_scripts"), {recursive: true});
-    const zip = path.join(dir, "soak_blender.zip");
-    fs.mkdirSync(dir, {recursive: true});
+    const zip = path.join(animDir, "soak_blender.zip");
+    fs.mkdirSync(animDir, {recursive: true});
     mustRun(["/usr/bin/python3", path.join(root, "blender_addon/build_zip.py"), zip]);
-    const blend = path.join(dir, "shot.blend");
     mustRun(["blender", "-b", "--factory-startup", "--python-exit-code", "1", "--python",
              path.join(root, "tests/farm/make_blend.py"), "--", "--addon", zip, "--out", blend, "--size", String(size)],
             {BLENDER_USER_SCRIPTS: path.join(tmp, "user_scripts")});
     console.log(`     blend file made (${secs()} s)`);
-    const settings = Object.assign(F.defaults(anim.jobType), {
-        frames: "1-4", chunk_size: 2, bake_chunk_size: 3, width: size, height: size, seed: 2, noise: 1,
-        t_fill: 0.25, time: 0, frame_time: 1 / 3, render_output_root: path.join(dir, "render"),
-        render_output_path: path.join(dir, "render", "shot", "{timestamp}", "######"),
-        blendfile: blend, format: "PNG", scene: "Scene"});
-    const compiled = anim.compile(settings);
-    const renderDir = path.dirname(compiled.settings.render_output_path);
-    // blenderArgs: Flamenco's default "-b -y" plus --factory-startup, so the
-    // test sees no user preferences.
-    const n = runJob(compiled, {soak, blender: "blender", blenderArgs: "-b -y --factory-startup"});
-    console.log(`     ${compiled.tasks.length} tasks, ${n} commands run (${secs()} s)`);
-
-    const wet = path.join(renderDir, "wetmap", "wet.%04d.exr");
-    const single = path.join(dir, "single", "wet.%04d.exr");
-    fs.mkdirSync(path.dirname(single), {recursive: true});
-    mustRun([soak, "bake", "drying", "--width", String(size), "--height", String(size), "--seed", "2",
-             "--t-fill", "0.25", "--noise", "1", "--frames", "1-4", "--time", "0", "--frame-time", String(1 / 3),
-             "-o", single]);
-    const pngs = [1, 2, 3, 4].map((f) => path.join(renderDir, `${String(f).padStart(6, "0")}.png`));
-    for (const png of pngs) assert.ok(fs.existsSync(png), `render missing: ${png}`);
-    const files = [1, 2, 3, 4].map((f) => [framePath(wet, f), framePath(single, f)]);
-    const images = readImages([].concat(...files, pngs));
-    const maps = [], renders = [];
-    for (let f = 1; f <= 4; f++) {
-        assertSameImage(images, files[f - 1][0], files[f - 1][1]);
-        const img = images.get(pngs[f - 1]);
-        assert.deepEqual([img.width, img.height], [size, size], "render size");
-        renders.push(luminance(img));
-        maps.push(images.get(framePath(wet, f)).data);
-    }
-    // Frame 4 is at drying time 1: the schedule says all dry.
-    assert.equal(Math.max(...maps[3]), 0, "frame 4 (time 1) should be dry everywhere");
-    const dry = renders[3];
-    const mapMeans = maps.map(mean), renderMeans = renders.map(mean);
-    console.log(`     mean wetness ${mapMeans.map((x) => x.toFixed(3)).join(" ")}; ` +
-                `mean render ${renderMeans.map((x) => x.toFixed(4)).join(" ")}`);
-    for (let f = 1; f < 4; f++) {
-        assert.ok(mapMeans[f] < mapMeans[f - 1], `wetness does not fall from frame ${f} to ${f + 1}`);
-        assert.ok(renderMeans[f] > renderMeans[f - 1], `render does not brighten from frame ${f} to ${f + 1}`);
-    }
-    // Per pixel (one texel per pixel): dry texels render as the dry frame,
-    // wet ones (w >= 0.5) darker by more than the 16-bit quantum and noise.
-    let dryPx = 0, wetPx = 0, worstDry = 0, leastDarkening = Infinity;
-    for (let f = 0; f < 3; f++) {
-        for (let p = 0; p < dry.length; p++) {
-            if (maps[f][p] === 0) {
-                dryPx++;
-                worstDry = Math.max(worstDry, Math.abs(renders[f][p] - dry[p]));
-            } else if (maps[f][p] >= 0.5) {
-                wetPx++;
-                leastDarkening = Math.min(leastDarkening, dry[p] - renders[f][p]);
-            }
-        }
-    }
-    console.log(`     ${dryPx} dry pixels: worst |render - dry render| ${worstDry.toExponential(2)}; ` +
-                `${wetPx} wet pixels: least darkening ${leastDarkening.toFixed(4)}`);
-    assert.ok(dryPx > 50 && wetPx > 50, "too few dry or wet pixels for the per-pixel check");
-    // Same shading inputs, same Cycles seed: the same pixel, up to one 16-bit step.
-    assert.ok(worstDry <= 1 / 65535, "a dry texel renders differently from the dry frame");
-    assert.ok(leastDarkening > 0.01, "a wet texel does not render darker than dry");
 });
 
+// Blender 4.3 as a Worker's {blender}: a wrapper around run_blender.sh's
+// raw mode (Blender's own arguments, inside the Debian 13 root).
+const blender43 = path.join(tmp, "blender43");
+fs.writeFileSync(blender43, "#!/bin/sh\nSOAK_BLENDER=4.3 SOAK_BLENDER_RAW=1 exec bash " +
+                 JSON.stringify(path.join(root, "tests/blender/run_blender.sh")) + ' "$@"\n', {mode: 0o755});
+
+for (const [version, blenderExe] of [["3.4", "blender"], ["4.3", blender43]]) {
+    check(`soak-drying-animation 1-4, Blender ${version}: maps equal one run, renders follow the drying`, () => {
+        const dir = path.join(animDir, version);
+        fs.mkdirSync(dir, {recursive: true});
+        const settings = Object.assign(F.defaults(anim.jobType), {
+            frames: "1-4", chunk_size: 2, bake_chunk_size: 3, width: size, height: size, seed: 2, noise: 1,
+            t_fill: 0.25, time: 0, frame_time: 1 / 3, render_output_root: path.join(dir, "render"),
+            render_output_path: path.join(dir, "render", "shot", "{timestamp}", "######"),
+            blendfile: blend, format: "PNG", scene: "Scene"});
+        const compiled = anim.compile(settings);
+        const renderDir = path.dirname(compiled.settings.render_output_path);
+        // blenderArgs: Flamenco's default "-b -y" plus --factory-startup, so the
+        // test sees no user preferences.
+        const n = runJob(compiled, {soak, blender: blenderExe, blenderArgs: "-b -y --factory-startup"});
+        console.log(`     ${compiled.tasks.length} tasks, ${n} commands run (${secs()} s)`);
+
+        const wet = path.join(renderDir, "wetmap", "wet.%04d.exr");
+        const single = path.join(dir, "single", "wet.%04d.exr");
+        fs.mkdirSync(path.dirname(single), {recursive: true});
+        mustRun([soak, "bake", "drying", "--width", String(size), "--height", String(size), "--seed", "2",
+                 "--t-fill", "0.25", "--noise", "1", "--frames", "1-4", "--time", "0", "--frame-time", String(1 / 3),
+                 "-o", single]);
+        const pngs = [1, 2, 3, 4].map((f) => path.join(renderDir, `${String(f).padStart(6, "0")}.png`));
+        for (const png of pngs) assert.ok(fs.existsSync(png), `render missing: ${png}`);
+        const files = [1, 2, 3, 4].map((f) => [framePath(wet, f), framePath(single, f)]);
+        const images = readImages([].concat(...files, pngs));
+        const maps = [], renders = [];
+        for (let f = 1; f <= 4; f++) {
+            assertSameImage(images, files[f - 1][0], files[f - 1][1]);
+            const img = images.get(pngs[f - 1]);
+            assert.deepEqual([img.width, img.height], [size, size], "render size");
+            renders.push(luminance(img));
+            maps.push(images.get(framePath(wet, f)).data);
+        }
+        // Frame 4 is at drying time 1: the schedule says all dry.
+        assert.equal(Math.max(...maps[3]), 0, "frame 4 (time 1) should be dry everywhere");
+        const dry = renders[3];
+        const mapMeans = maps.map(mean), renderMeans = renders.map(mean);
+        console.log(`     mean wetness ${mapMeans.map((x) => x.toFixed(3)).join(" ")}; ` +
+                    `mean render ${renderMeans.map((x) => x.toFixed(4)).join(" ")}`);
+        for (let f = 1; f < 4; f++) {
+            assert.ok(mapMeans[f] < mapMeans[f - 1], `wetness does not fall from frame ${f} to ${f + 1}`);
+            assert.ok(renderMeans[f] > renderMeans[f - 1], `render does not brighten from frame ${f} to ${f + 1}`);
+        }
+        // Per pixel (one texel per pixel): dry texels render as the dry frame,
+        // wet ones (w >= 0.5) darker by more than the 16-bit quantum and noise.
+        let dryPx = 0, wetPx = 0, worstDry = 0, leastDarkening = Infinity;
+        for (let f = 0; f < 3; f++) {
+            for (let p = 0; p < dry.length; p++) {
+                if (maps[f][p] === 0) {
+                    dryPx++;
+                    worstDry = Math.max(worstDry, Math.abs(renders[f][p] - dry[p]));
+                } else if (maps[f][p] >= 0.5) {
+                    wetPx++;
+                    leastDarkening = Math.min(leastDarkening, dry[p] - renders[f][p]);
+                }
+            }
+        }
+        console.log(`     ${dryPx} dry pixels: worst |render - dry render| ${worstDry.toExponential(2)}; ` +
+                    `${wetPx} wet pixels: least darkening ${leastDarkening.toFixed(4)}`);
+        assert.ok(dryPx > 50 && wetPx > 50, "too few dry or wet pixels for the per-pixel check");
+        // Same shading inputs, same Cycles seed: the same pixel, up to one 16-bit step.
+        assert.ok(worstDry <= 1 / 65535, "a dry texel renders differently from the dry frame");
+        assert.ok(leastDarkening > 0.01, "a wet texel does not render darker than dry");
+    });
+}
+
 check("soak-drying-animation: a render task fails when no material has the Image source", () => {
-    const dir = path.join(tmp, "anim");
+    const dir = animDir;
     const settings = Object.assign(F.defaults(anim.jobType), {
         frames: "1", render_output_root: path.join(dir, "render2"), material: "NoSuchMaterial",
-        render_output_path: path.join(dir, "render2", "######"), blendfile: path.join(dir, "shot.blend"),
+        render_output_path: path.join(dir, "render2", "######"), blendfile: blend,
         format: "PNG", scene: "Scene"});
     const render = anim.compile(settings).tasks.find((t) => t.type === "blender");
     const cmd = F.expandTask(render, {blender: "blender", blenderArgs: "-b -y --factory-startup"}).commands[0];
