@@ -1,18 +1,25 @@
-// Gallery: a carved limestone panel after an hour of wind-driven rain (seed 002
-// sec. 3.3.1, Fig. 7). The wet map is `soak bake rain` on the panel's own mesh
-// (relief.obj, written with relief.inc by relief_mesh.py): the rain comes from the
-// viewer's side and above, so the cornice's top, the string course, the medallions'
-// upper faces and the open wall are wet; the strip sheltered under the cornice stays dry.
+// Gallery: a carved limestone panel after a shower (seed 002 sec. 3.3.1, Fig. 7). The
+// wet map is `soak bake rain` on the panel's own mesh (relief.obj, written with
+// relief.inc by relief_mesh.py; render_gallery.sh bakes it): ten minutes of fine rain
+// from the viewer's side and steeply above, no runoff (the stone takes the water where
+// it lands), so the faces open to the rain are wet, the tops of the cornice and the
+// string course wettest, and the strips sheltered under them stay dry. A low sun from
+// the left for the carving; render_gallery.sh pastes the baked map (white = wet) into
+// the lower right corner.
 #version 3.7;
 global_settings { assumed_gamma 1.0 ambient_light 1 }
-#declare Soak_Ambient = 0.18;
+#declare Soak_Ambient = 0.22;
 #include "soak.inc"
 #include "relief.inc"
-camera { location <1.0, -2.5, 1.25> look_at <1.0, 0, 0.58> sky z up z right -x * image_width / image_height angle 46 }
-light_source { <-1, -0.5, 0.7> * 1e4 rgb 1.1 parallel point_at 0 }
-sky_sphere { pigment { gradient z color_map { [0 rgb <0.75, 0.78, 0.8>] [1 rgb <0.45, 0.5, 0.58>] } } }
+camera { location <1.3, -3.1, 0.72> look_at <1.3, 0, 0.62> sky z up z right -x * image_width / image_height angle 42 }
+light_source { <-1.6, -1, 0.8> * 1e4 rgb <1.35, 1.2, 1.0> parallel point_at 0 }
+sky_sphere { pigment { gradient z color_map { [0 rgb <0.62, 0.64, 0.66>] [1 rgb <0.42, 0.45, 0.5>] } } }
 #declare Wet = Soak_Map_Fn("relief_wet.png")
 object { Relief Soak_Wet_Material_UV_Fn("limestone", "water", Wet) }
-// the wall around the panel and the paving, wet after the rain
-box { <-2, 0.001, -0.2>, <4, 0.4, 1.6> Soak_Wet_Material("limestone", "water", 0.2) }
-plane { z, 0 Soak_Wet_Material_Bumped("concrete", "water", function { 0.6 }, normal { granite 0.15 scale 0.08 }) }
+// the wall around the panel: the open wall's wetness in the same bake (u, v = 0.05, 0.55)
+#declare Wall_Wet = Wet(0.05, 0.55, 0);
+#debug concat("bas_relief_rain: the open wall's wetness ", str(Wall_Wet, 0, 3), "\n")
+box { <-2, 0.001, -0.2>, <4, 0.4, 1.6> Soak_Wet_Material("limestone", "water", Wall_Wet) }
+// the paving: open to the same shower (the bake's open horizontal surface: about 0.9 mm
+// of water, w = 1 - exp(-0.9 / 0.2) = 0.99)
+plane { z, 0 Soak_Wet_Material_Bumped("concrete", "water", function { 0.99 }, normal { granite 0.15 scale 0.08 }) }
