@@ -717,7 +717,20 @@ def connect_outputs(tree, gn, bsdf, settings):
     cior = compat.principled_input(bsdf, "coat_ior")
     if cior is not None:
         cior.default_value = data.liquid(settings.liquid)["ior"]
+    _metal_for_conductor(bsdf, settings)
     _connect_specular_metal(tree, gn, bsdf, settings)
+
+
+def _metal_for_conductor(bsdf, settings):
+    """A conductor preset's function gives a metal's reflectance: a Principled
+    BSDF left at Metallic 0 (unlinked) would show it as a diffuse colour, so
+    it becomes metallic (Make Dry puts the 0 back). A Metallic the user set
+    or linked is theirs."""
+    met = compat.principled_input(bsdf, "metallic")
+    if data.material(settings.preset)["kind"] != "conductor" or met is None or met.is_linked:
+        return
+    if met.default_value == 0.0:
+        met.default_value = 1.0
 
 
 def _connect_specular_metal(tree, gn, bsdf, settings):

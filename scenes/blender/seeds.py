@@ -770,7 +770,9 @@ def build_film_copper():
            g.bsdf.inputs["Base Color"])
     g.set(Roughness=0.6)
     _assign(ground, g.mat)
-    # something for the films and the copper to mirror
+    # something for the films and the copper to mirror: the balls, and behind
+    # them a pale wall with dark window bays (a mirror shows its edges sharply,
+    # a rough dry tile only their average)
     for j, (x, col) in enumerate(((-1.0, (0.7, 0.15, 0.1)), (0.1, (0.85, 0.8, 0.7)), (1.1, (0.1, 0.3, 0.7)))):
         bpy.ops.mesh.primitive_uv_sphere_add(radius=0.18, location=(x, 0.95, 0.18), segments=48,
                                              ring_count=24)
@@ -779,10 +781,19 @@ def build_film_copper():
         m = Tree(f"Ball {j}")
         m.set(Base_Color=(*col, 1), Roughness=0.4)
         _assign(s, m.mat)
+    wall = _box("Wall", (8.0, 0.2, 3.0), (0.0, 2.6, 1.5))
+    wm = Tree("Wall")
+    wm.set(Base_Color=(0.8, 0.78, 0.72, 1), Roughness=0.8)
+    _assign(wall, wm.mat)
+    bay = Tree("Window bay")
+    bay.set(Base_Color=(0.02, 0.02, 0.025, 1), Roughness=0.3)
+    for k in range(-3, 4):
+        win = _box(f"Window {k}", (0.5, 0.05, 1.4), (k * 1.1, 2.48, 1.3))
+        _assign(win, bay.mat)
     _sky(sc, zenith=(0.03, 0.08, 0.3), horizon=(1.0, 0.85, 0.65), strength=0.7)
-    _sun(sc, 35, 120, strength=3.0, angle=2.0)
-    # low: the films mirror the bright horizon and the balls behind them
-    _camera(sc, (0.0, -3.3, 1.1), (0.0, 0.2, 0.05), lens=38)
+    _sun(sc, 35, 150, strength=3.0, angle=2.0)
+    # low: the films and the copper mirror the wall, its windows and the balls
+    _camera(sc, (0.0, -3.0, 0.95), (0.0, 0.3, 0.08), lens=40)
     return [("film_copper", [1])]
 
 

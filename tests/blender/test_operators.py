@@ -645,6 +645,30 @@ def test_pending_controls(ob):
     bpy.ops.soak.make_dry()
 
 
+def test_metal_preset(ob):
+    """A conductor preset on a Principled left at Metallic 0 makes it metallic
+    (its function is a metal's reflectance, which a dielectric would show as a
+    diffuse colour); Make Dry puts the 0 back; a Metallic the user set stays."""
+    for start, want in ((0.0, 1.0), (0.4, 0.4)):
+        mat = textured_material(f"Metal {start}")
+        use(ob, mat)
+        b = mat.node_tree.nodes["Principled BSDF"]
+        b.inputs["Metallic"].default_value = start
+        mat.soak.preset = "copper"
+        check(bpy.ops.soak.make_wet() == {"FINISHED"}, "make_wet with the copper preset")
+        got = b.inputs["Metallic"].default_value
+        check(abs(got - want) < 1e-6, f"copper preset from Metallic {start}: Metallic {got}, want {want}")
+        check(bpy.ops.soak.make_dry() == {"FINISHED"}, "make_dry after the copper preset")
+        got = b.inputs["Metallic"].default_value
+        check(abs(got - start) < 1e-6, f"Make Dry after the copper preset: Metallic {got}, want {start}")
+    mat = textured_material("Metal sand")
+    use(ob, mat)
+    check(bpy.ops.soak.make_wet() == {"FINISHED"}, "make_wet with the sand preset")
+    got = mat.node_tree.nodes["Principled BSDF"].inputs["Metallic"].default_value
+    check(got == 0.0, f"a dielectric preset changed Metallic to {got}")
+    bpy.ops.soak.make_dry()
+
+
 # ---- 8. tooltips and poll messages ------------------------------------------------
 
 def test_tooltips():
@@ -799,6 +823,7 @@ def main():
     test_bake({"ground": ground, "torus": torus})
     test_rain_direction(ground)
     test_pending_controls(ground)
+    test_metal_preset(ground)
     print(f"{len(CHECKS)} checks")
     print("PASS")
 
