@@ -1,6 +1,6 @@
 """Where the Soak Wet group's Cycles time goes (issue 19's speed target).
 
-The close-up textured plane of bench_blender_overhead.py (Cycles CPU, one
+The close-up textured plane of blender_bench_plane.py (Cycles CPU, one
 render thread, 128x128, 64 samples, checker-textured Principled BSDF, sand
 at wetness 0.6), rendered in these states, interleaved:
 
@@ -29,37 +29,16 @@ import time
 
 import bpy
 
-argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-opts = dict(zip(argv[::2], argv[1::2]))
-bpy.ops.preferences.addon_install(filepath=os.path.abspath(opts["--addon"]), overwrite=True)
-bpy.ops.preferences.addon_enable(module="soak")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_bench_plane  # noqa: E402
+
+opts = blender_bench_plane.options()
 repeat = int(opts.get("--repeat", "3"))
 exact = bool(int(opts.get("--exact", "0")))
 COAT = ("Clearcoat", "Coat Weight")[bpy.app.version >= (4, 0, 0)]
 STATES = ("dry", "wet", "wet_nobump", "wet_nocoat", "wet_nocolour", "wet_nospec",
           "wet_lk3", "wet_lk1", "wet_vchain5")
-
-sc = bpy.context.scene
-sc.render.engine = "CYCLES"
-sc.cycles.samples = 64
-sc.cycles.use_denoising = False
-sc.cycles.threads_mode = "FIXED"
-sc.render.threads = 1
-sc.render.resolution_x = sc.render.resolution_y = 128
-for o in list(bpy.data.objects):
-    if o.type == "MESH":
-        bpy.data.objects.remove(o)
-bpy.ops.mesh.primitive_plane_add(size=4)
-mat = bpy.data.materials.new("M")
-mat.use_nodes = True
-bpy.context.object.data.materials.append(mat)
-tree = mat.node_tree
-bsdf = next(n for n in tree.nodes if n.type == "BSDF_PRINCIPLED")
-tree.links.new(tree.nodes.new("ShaderNodeTexChecker").outputs["Color"], bsdf.inputs["Base Color"])
-sc.camera.location = (0, 0, 5)
-sc.camera.rotation_euler = (0, 0, 0)
-mat.soak.preset, mat.soak.wetness = "sand", 0.6
-mat.soak.exact_lookups = exact
+mat, tree, bsdf = blender_bench_plane.textured_plane(opts["--addon"], exact)
 
 
 class _Group:

@@ -21,38 +21,14 @@ import time
 
 import bpy
 
-argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-opts = dict(zip(argv[::2], argv[1::2]))
-bpy.ops.preferences.addon_install(filepath=os.path.abspath(opts["--addon"]), overwrite=True)
-bpy.ops.preferences.addon_enable(module="soak")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_bench_plane  # noqa: E402
+
+opts = blender_bench_plane.options()
 repeat = int(opts.get("--repeat", "3"))
 exact = bool(int(opts.get("--exact", "0")))
 COAT = ("Clearcoat", "Coat Weight")[bpy.app.version >= (4, 0, 0)]
-
-sc = bpy.context.scene
-sc.render.engine = "CYCLES"
-sc.cycles.samples = 64
-sc.cycles.use_denoising = False
-sc.cycles.threads_mode = "FIXED"
-sc.render.threads = 1
-sc.render.resolution_x = sc.render.resolution_y = 128
-for o in list(bpy.data.objects):
-    if o.type == "MESH":
-        bpy.data.objects.remove(o)
-bpy.ops.mesh.primitive_plane_add(size=4)
-ob = bpy.context.object
-mat = bpy.data.materials.new("M")
-mat.use_nodes = True
-ob.data.materials.append(mat)
-tree = mat.node_tree
-bsdf = next(n for n in tree.nodes if n.type == "BSDF_PRINCIPLED")
-tex = tree.nodes.new("ShaderNodeTexChecker")
-tree.links.new(tex.outputs["Color"], bsdf.inputs["Base Color"])
-cam = sc.camera
-cam.location = (0, 0, 5)
-cam.rotation_euler = (0, 0, 0)
-mat.soak.preset, mat.soak.wetness = "sand", 0.6
-mat.soak.exact_lookups = exact
+mat, tree, bsdf = blender_bench_plane.textured_plane(opts["--addon"], exact)
 
 
 def coat_weight_of_wet_state():
