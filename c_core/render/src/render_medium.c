@@ -60,10 +60,10 @@
 
 static double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
-/* F^k of seed 000 Eq. 2; k = 1 (smooth) skips the libm call on the walk's
- * boundary path. */
-
-void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, soak_medium_point *out)
+/* Medium parameters at a point: the grid's, trilinear between cell centres
+ * (clamped at the box's faces), inside its box; the homogeneous values
+ * elsewhere or without a grid. */
+static void medium_at(const soak_scene_medium *m, soak_vec3 x, soak_medium_point *out)
 {
     out->sigma_s = m->sigma_s;
     out->sigma_a = m->sigma_a;
@@ -100,7 +100,7 @@ void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, soak_medium_point *ou
 
 static soak_status grid_coeffs(const void *ctx, soak_vec3 pos, soak_medium_point *out)
 {
-    rt_medium_at(ctx, pos, out);
+    medium_at(ctx, pos, out);
     return SOAK_OK;
 }
 
