@@ -1,6 +1,6 @@
 /* soak_wet_math.h: the arithmetic of Soak's OSL shaders, written in the
  * common subset of C and OSL so that one text serves both: the C tests
- * (tests/c/test_osl_math.c) compile it and check it against the core, and
+ * (tests/c/materials/test_osl_math.c) compile it and check it against the core, and
  * `soak export --target osl` inlines it into the shipped, self-contained
  * shaders. No physics is derived here: the shaders only look up tables the
  * core computed (soak/export.h) and apply the pore-filling schedule.

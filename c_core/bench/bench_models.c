@@ -25,31 +25,52 @@ static double now(void)
     return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
-static uint64_t rs = 12345;
-static double rnd(void)
+/* The fixed random direction pairs every timing loop evaluates. */
+typedef struct dir_set {
+    soak_vec3 wi[NDIRS], wo[NDIRS];
+} dir_set;
+
+static double rnd(uint64_t *rs)
 {
-    rs ^= rs << 13;
-    rs ^= rs >> 7;
-    rs ^= rs << 17;
-    return (double)(rs >> 11) * (1.0 / 9007199254740992.0);
+    *rs ^= *rs << 13;
+    *rs ^= *rs >> 7;
+    *rs ^= *rs << 17;
+    return (double)(*rs >> 11) * (1.0 / 9007199254740992.0);
 }
 
-static soak_vec3 wi_set[NDIRS], wo_set[NDIRS];
-static volatile double sink;
-
-static double time_model(const soak_model *m, const soak_model_ctx *ctx)
+static void make_dirs(dir_set *d)
 {
+    uint64_t rs = 12345;
+    for (int i = 0; i < NDIRS; ++i) {
+        double z1 = 0.02 + 0.98 * rnd(&rs), z2 = 0.02 + 0.98 * rnd(&rs), p1 = 2 * SOAK_PI * rnd(&rs),
+               p2 = 2 * SOAK_PI * rnd(&rs);
+        d->wi[i] = soak_v3(sqrt(1 - z1 * z1) * cos(p1), sqrt(1 - z1 * z1) * sin(p1), z1);
+        d->wo[i] = soak_v3(sqrt(1 - z2 * z2) * cos(p2), sqrt(1 - z2 * z2) * sin(p2), z2);
+    }
+}
+
+/* A table row to stdout and, when open, to the output file. */
+static void emit(const char *line, FILE *out)
+{
+    fputs(line, stdout);
+    if (out) fputs(line, out);
+}
+
+static double time_model(const dir_set *d, const soak_model *m, const soak_model_ctx *ctx)
+{
+    volatile double sink; /* keeps the loop's work */
     long reps = 1;
     for (;;) {
         double t0 = now(), acc = 0;
         for (long r = 0; r < reps; ++r)
             for (int i = 0; i < NDIRS; ++i) {
                 double f;
-                soak_model_eval(m, ctx, wi_set[i], wo_set[i], &f);
+                soak_model_eval(m, ctx, d->wi[i], d->wo[i], &f);
                 acc += f;
             }
         double dt = now() - t0;
         sink = acc;
+        (void)sink;
         if (dt > 0.3) return 1e9 * dt / (reps * (double)NDIRS);
         reps *= 2;
     }
@@ -78,77 +99,72 @@ static double max_rel_error(const soak_model *fast, const soak_model_ctx *fc, co
     return worst;
 }
 
-int main(int argc, char **argv)
+/* One row per model of the registry: its time and its error against its exact peer. */
+static void bench_registry(const dir_set *d, const soak_model_params *p, FILE *out)
 {
-    for (int i = 0; i < NDIRS; ++i) {
-        double z1 = 0.02 + 0.98 * rnd(), z2 = 0.02 + 0.98 * rnd(), p1 = 2 * SOAK_PI * rnd(), p2 = 2 * SOAK_PI * rnd();
-        wi_set[i] = soak_v3(sqrt(1 - z1 * z1) * cos(p1), sqrt(1 - z1 * z1) * sin(p1), z1);
-        wo_set[i] = soak_v3(sqrt(1 - z2 * z2) * cos(p2), sqrt(1 - z2 * z2) * sin(p2), z2);
-    }
-    FILE *out = argc > 1 ? fopen(argv[1], "w") : NULL;
-    char line[256];
-    const char *head = "| model | ns/eval | M evals/s | exact peer | max rel err (0-85 deg) | max rel err (0-60 deg) |\n"
-                       "|---|---:|---:|---|---:|---:|\n";
-    fputs(head, stdout);
-    if (out) fputs(head, out);
     size_t n;
     const soak_model *models = soak_models(&n);
-    soak_model_params p;
-    soak_model_params_default(&p);
     for (size_t i = 0; i < n; ++i) {
         soak_model_ctx ctx;
-        if (models[i].setup(&p, &ctx) != SOAK_OK) continue;
-        double ns = time_model(&models[i], &ctx);
-        char err[32] = "-", err60[32] = "-";
+        if (models[i].setup(p, &ctx) != SOAK_OK) continue;
+        double ns = time_model(d, &models[i], &ctx);
+        char err[32] = "-", err60[32] = "-", line[256];
         if (models[i].exact) {
             const soak_model *ex = soak_model_find(models[i].exact);
             soak_model_ctx ectx;
-            ex->setup(&p, &ectx);
+            ex->setup(p, &ectx);
             snprintf(err, sizeof err, "%.3g", max_rel_error(&models[i], &ctx, ex, &ectx, 85));
             snprintf(err60, sizeof err60, "%.3g", max_rel_error(&models[i], &ctx, ex, &ectx, 60));
         }
         snprintf(line, sizeof line, "| %s | %.1f | %.1f | %s | %s | %s |\n", models[i].name, ns, 1e3 / ns,
                  models[i].exact ? models[i].exact : "-", err, err60);
-        fputs(line, stdout);
-        if (out) fputs(line, out);
+        emit(line, out);
     }
-    /* The Tri-Ace fast path as a hot loop would call it: unchecked form,
-     * directions already valid (the registry rows above include argument
-     * checks on every call). */
-    {
-        soak_ww ww;
-        soak_ww_default(&ww);
-        ww.alpha = p.roughness;
-        ww.kd = p.albedo;
-        soak_ww_triace fast;
-        if (soak_ww_triace_setup(&ww, &fast) == SOAK_OK) {
-            long reps = 1;
-            double dt = 0, acc = 0;
-            for (;;) {
-                double t0 = now();
-                for (long r = 0; r < reps; ++r)
-                    for (int i = 0; i < NDIRS; ++i) acc += soak_ww_eval_triace_raw(&fast, wi_set[i], wo_set[i]);
-                dt = now() - t0;
-                if (dt > 0.3) break;
-                reps *= 2;
-            }
-            sink = acc;
-            double ns = 1e9 * dt / (reps * (double)NDIRS);
-            snprintf(line, sizeof line, "| ww-triace (unchecked _raw form) | %.1f | %.1f | ww | as above | as above |\n", ns,
-                     1e3 / ns);
-            fputs(line, stdout);
-            if (out) fputs(line, out);
-        }
+}
+
+/* The Tri-Ace fast path as a hot loop would call it: unchecked form,
+ * directions already valid (the registry rows include argument checks on
+ * every call). */
+static void bench_triace_raw(const dir_set *d, const soak_model_params *p, FILE *out)
+{
+    soak_ww ww;
+    soak_ww_default(&ww);
+    ww.alpha = p->roughness;
+    ww.kd = p->albedo;
+    soak_ww_triace fast;
+    if (soak_ww_triace_setup(&ww, &fast) != SOAK_OK) return;
+    volatile double sink;
+    long reps = 1;
+    double dt = 0, acc = 0;
+    for (;;) {
+        double t0 = now();
+        for (long r = 0; r < reps; ++r)
+            for (int i = 0; i < NDIRS; ++i) acc += soak_ww_eval_triace_raw(&fast, d->wi[i], d->wo[i]);
+        dt = now() - t0;
+        if (dt > 0.3) break;
+        reps *= 2;
     }
-    /* Fresnel: exact vs Schlick, same run. */
+    sink = acc;
+    (void)sink;
+    double ns = 1e9 * dt / (reps * (double)NDIRS);
+    char line[256];
+    snprintf(line, sizeof line, "| ww-triace (unchecked _raw form) | %.1f | %.1f | ww | as above | as above |\n", ns,
+             1e3 / ns);
+    emit(line, out);
+}
+
+/* Fresnel: exact vs Schlick, same run. */
+static void bench_fresnel(const dir_set *d, FILE *out)
+{
+    volatile double sink;
     double t0 = now(), acc = 0;
     const long N = 20000000;
-    for (long i = 0; i < N; ++i) acc += soak_fresnel_dielectric_raw(wi_set[i & (NDIRS - 1)].z, 1.33, NULL);
+    for (long i = 0; i < N; ++i) acc += soak_fresnel_dielectric_raw(d->wi[i & (NDIRS - 1)].z, 1.33, NULL);
     double ns_exact = 1e9 * (now() - t0) / N;
     double r0 = pow(0.33 / 2.33, 2), worst = 0, worst60 = 0;
     t0 = now();
     for (long i = 0; i < N; ++i) {
-        double c = 1 - wi_set[i & (NDIRS - 1)].z, c2 = c * c;
+        double c = 1 - d->wi[i & (NDIRS - 1)].z, c2 = c * c;
         acc += r0 + (1 - r0) * c2 * c2 * c;
     }
     double ns_schlick = 1e9 * (now() - t0) / N;
@@ -160,12 +176,30 @@ int main(int argc, char **argv)
         if (a <= 60) worst60 = fmax(worst60, fabs(S - R) / R);
     }
     sink = acc;
+    (void)sink;
+    char line[256];
     snprintf(line, sizeof line,
              "| fresnel-dielectric (n=1.33) | %.1f | %.1f | - | - | - |\n"
              "| fresnel-schlick | %.1f | %.1f | fresnel-dielectric | %.3g | %.3g |\n",
              ns_exact, 1e3 / ns_exact, ns_schlick, 1e3 / ns_schlick, worst, worst60);
-    fputs(line, stdout);
-    if (out) fputs(line, out);
+    emit(line, out);
+}
+
+int main(int argc, char **argv)
+{
+    dir_set *d = malloc(sizeof *d);
+    if (!d) return 1;
+    make_dirs(d);
+    FILE *out = argc > 1 ? fopen(argv[1], "w") : NULL;
+    emit("| model | ns/eval | M evals/s | exact peer | max rel err (0-85 deg) | max rel err (0-60 deg) |\n"
+         "|---|---:|---:|---|---:|---:|\n",
+         out);
+    soak_model_params p;
+    soak_model_params_default(&p);
+    bench_registry(d, &p, out);
+    bench_triace_raw(d, &p, out);
+    bench_fresnel(d, out);
     if (out) fclose(out);
+    free(d);
     return 0;
 }

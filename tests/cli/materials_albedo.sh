@@ -12,7 +12,7 @@ grep -q "example" "$SOAK_TMP/last.out" && ok "albedo help has an example" || bad
 # ---- soak materials ----------------------------------------------------------
 expect_exit 0 "materials table" -- "$SOAK" materials
 # (soak materials prints the model under uniform diffuse light, 0.668; the
-# measurement's light, a sun at 35 deg, gives 0.632: tests/c/test_calibration.c)
+# measurement's light, a sun at 35 deg, gives 0.632: tests/c/materials/test_calibration.c)
 grep -Eq "^sand .* 0\.607 \+- 0\.030 \| 0\.6[0-9][0-9] \(dry 0\.395\)" "$SOAK_TMP/last.out" && ok "materials: sand's measured wet/dry beside the model's" || bad "materials: sand's measured vs model wet/dry missing or off"
 for name in sand clay brick concrete asphalt limestone paper cotton oak marble copper aluminium; do
   grep -qE "^$name " "$SOAK_TMP/last.out" && ok "table lists $name" || bad "table lacks $name"

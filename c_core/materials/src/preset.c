@@ -260,13 +260,25 @@ static soak_status parse_measured(ctx *c, const cJSON *m, const char *path, soak
     return SOAK_OK;
 }
 
-static soak_status parse_material(ctx *c, const cJSON *m, const char *path, soak_preset *p)
+/* One material object being read: its kind decides which groups it has. */
+typedef struct mat_reader {
+    ctx *c;
+    const cJSON *m;
+    const char *path;
+    char why[64]; /* "kind <name>", for keys a kind does not use */
+    int porous, conductor, sheet;
+} mat_reader;
+
+/* Opens group `key` of the material; `known`: the keys of every kind. */
+static soak_status open_material_group(const mat_reader *r, const char *key, const char *const *allowed,
+                                       const char *const *known, const cJSON **group, char *gpath)
 {
-    static const char *const all_keys[] = {"name",     "display_name", "kind",  "albedo",  "roughness", "ior",
-                                           "porosity", "medium",       "phase", "wetting", "sheet",     "measured", NULL};
-    static const char *const head_keys[] = {"name", "display_name", "kind", NULL};
-    if (!cJSON_IsObject(m)) return fail(c, SOAK_ERR_PARSE, path, "expected an object");
-    /* The kind decides which groups are required, so read it first. */
+    return open_group(r->c, r->m, r->path, key, allowed, known, r->why, group, gpath);
+}
+
+/* "kind", read first: it decides which groups are required. */
+static soak_status parse_kind(ctx *c, const cJSON *m, const char *path, soak_preset *p)
+{
     const cJSON *kind = cJSON_GetObjectItemCaseSensitive(m, "kind");
     char kpath[PATH_MAX_LEN];
     join(kpath, path, "kind");
@@ -280,12 +292,15 @@ static soak_status parse_material(ctx *c, const cJSON *m, const char *path, soak
                     "'%s' is not one of porous_dielectric, nonporous_dielectric, conductor, thin_sheet",
                     kind->valuestring);
     p->kind = (soak_material_kind)k;
-    const int porous = soak_material_kind_porous(p->kind);
-    const int conductor = p->kind == SOAK_KIND_CONDUCTOR;
-    const int sheet = p->kind == SOAK_KIND_THIN_SHEET;
-    char why[64];
-    snprintf(why, sizeof why, "kind %s", kind_names[k]);
+    return SOAK_OK;
+}
 
+/* The material's keys: the groups of its kind, "measured" when present. */
+static soak_status check_material_keys(const mat_reader *r, int measured)
+{
+    static const char *const all_keys[] = {"name",     "display_name", "kind",  "albedo",  "roughness", "ior",
+                                           "porosity", "medium",       "phase", "wetting", "sheet",     "measured", NULL};
+    static const char *const head_keys[] = {"name", "display_name", "kind", NULL};
     const char *keys[17];
     int nk = 0;
     for (int i = 0; head_keys[i]; ++i) keys[nk++] = head_keys[i];
@@ -293,110 +308,166 @@ static soak_status parse_material(ctx *c, const cJSON *m, const char *path, soak
     keys[nk++] = "roughness";
     keys[nk++] = "ior";
     keys[nk++] = "wetting";
-    if (porous) keys[nk++] = "porosity";
-    if (!conductor) keys[nk++] = "medium";
-    if (!conductor) keys[nk++] = "phase";
-    if (sheet) keys[nk++] = "sheet";
-    const int measured = cJSON_GetObjectItemCaseSensitive(m, "measured") != NULL;
+    if (r->porous) keys[nk++] = "porosity";
+    if (!r->conductor) keys[nk++] = "medium";
+    if (!r->conductor) keys[nk++] = "phase";
+    if (r->sheet) keys[nk++] = "sheet";
     if (measured) keys[nk++] = "measured"; /* optional for every kind */
     keys[nk] = NULL;
-    soak_status st = check_object(c, m, path, keys, all_keys, why);
-    if (st == SOAK_OK) st = get_name(c, m, path, &p->name);
-    if (st == SOAK_OK) st = get_string(c, m, path, "display_name", &p->display_name);
-    if (st != SOAK_OK) return st;
+    return check_object(r->c, r->m, r->path, keys, all_keys, r->why);
+}
 
+static soak_status parse_albedo_group(const mat_reader *r, soak_preset *p)
+{
+    static const char *const albedo_keys[] = {"rgb", "source", NULL};
     const cJSON *g = NULL;
     char gp[PATH_MAX_LEN];
-    static const char *const albedo_keys[] = {"rgb", "source", NULL};
-    st = open_group(c, m, path, "albedo", albedo_keys, NULL, why, &g, gp);
-    if (st == SOAK_OK) st = get_rgb(c, g, gp, "rgb", 0.0, 1.0, &p->albedo);
-    if (st == SOAK_OK) st = get_string(c, g, gp, "source", &p->albedo_source);
-    if (st != SOAK_OK) return st;
+    soak_status st = open_material_group(r, "albedo", albedo_keys, NULL, &g, gp);
+    if (st == SOAK_OK) st = get_rgb(r->c, g, gp, "rgb", 0.0, 1.0, &p->albedo);
+    if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->albedo_source);
+    return st;
+}
 
+/* Dry roughness; porous kinds also a wet one, never rougher (filled pores
+ * only smooth a surface). */
+static soak_status parse_roughness_group(const mat_reader *r, soak_preset *p)
+{
     static const char *const rough_all[] = {"ggx_alpha_dry", "ggx_alpha_wet", "source", NULL};
     static const char *const rough_dry[] = {"ggx_alpha_dry", "source", NULL};
-    st = open_group(c, m, path, "roughness", porous ? rough_all : rough_dry, rough_all, why, &g, gp);
-    if (st == SOAK_OK) st = get_number(c, g, gp, "ggx_alpha_dry", 1e-4, 1.0, &p->ggx_alpha_dry);
+    const cJSON *g = NULL;
+    char gp[PATH_MAX_LEN];
+    soak_status st = open_material_group(r, "roughness", r->porous ? rough_all : rough_dry, rough_all, &g, gp);
+    if (st == SOAK_OK) st = get_number(r->c, g, gp, "ggx_alpha_dry", 1e-4, 1.0, &p->ggx_alpha_dry);
     p->ggx_alpha_wet = p->ggx_alpha_dry;
-    if (st == SOAK_OK && porous) {
-        st = get_number(c, g, gp, "ggx_alpha_wet", 1e-4, 1.0, &p->ggx_alpha_wet);
+    if (st == SOAK_OK && r->porous) {
+        st = get_number(r->c, g, gp, "ggx_alpha_wet", 1e-4, 1.0, &p->ggx_alpha_wet);
         if (st == SOAK_OK && p->ggx_alpha_wet > p->ggx_alpha_dry) {
             char sub[PATH_MAX_LEN];
             join(sub, gp, "ggx_alpha_wet");
-            return fail(c, SOAK_ERR_ARG, sub, "%g exceeds ggx_alpha_dry %g (filled pores only smooth a surface)",
+            return fail(r->c, SOAK_ERR_ARG, sub, "%g exceeds ggx_alpha_dry %g (filled pores only smooth a surface)",
                         p->ggx_alpha_wet, p->ggx_alpha_dry);
         }
     }
-    if (st == SOAK_OK) st = get_string(c, g, gp, "source", &p->roughness_source);
-    if (st != SOAK_OK) return st;
+    if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->roughness_source);
+    return st;
+}
 
+/* A conductor's albedo must be the normal-incidence reflectance of its n, k. */
+static soak_status check_conductor_albedo(const mat_reader *r, const soak_preset *p)
+{
+    for (int i = 0; i < 3; ++i) {
+        double f0 = 0.0;
+        soak_fresnel_r0(soak_rgb_at(p->ior_n, i), soak_rgb_at(p->ior_k, i), &f0);
+        if (!soak_in_range(soak_rgb_at(p->albedo, i) - f0, -CONDUCTOR_F0_TOL, CONDUCTOR_F0_TOL)) {
+            char sub[PATH_MAX_LEN];
+            path_printf(sub, "%s.albedo.rgb[%d]", r->path, i);
+            return fail(r->c, SOAK_ERR_ARG, sub,
+                        "%.6g differs from the normal-incidence reflectance %.6f of ior.n, ior.k by more than %g",
+                        soak_rgb_at(p->albedo, i), f0, CONDUCTOR_F0_TOL);
+        }
+    }
+    return SOAK_OK;
+}
+
+/* Conductors: RGB n and k; dielectrics: one n. */
+static soak_status parse_ior_group(const mat_reader *r, soak_preset *p)
+{
     static const char *const ior_all[] = {"n", "k", "source", NULL};
     static const char *const ior_diel[] = {"n", "source", NULL};
-    st = open_group(c, m, path, "ior", conductor ? ior_all : ior_diel, ior_all, why, &g, gp);
-    if (st == SOAK_OK && conductor) {
-        st = get_rgb(c, g, gp, "n", 0.01, 100.0, &p->ior_n);
-        if (st == SOAK_OK) st = get_rgb(c, g, gp, "k", 0.0, 100.0, &p->ior_k);
-        for (int i = 0; st == SOAK_OK && i < 3; ++i) {
-            double f0 = 0.0;
-            soak_fresnel_r0(soak_rgb_at(p->ior_n, i), soak_rgb_at(p->ior_k, i), &f0);
-            if (!soak_in_range(soak_rgb_at(p->albedo, i) - f0, -CONDUCTOR_F0_TOL, CONDUCTOR_F0_TOL)) {
-                char sub[PATH_MAX_LEN];
-                path_printf(sub, "%s.albedo.rgb[%d]", path, i);
-                return fail(c, SOAK_ERR_ARG, sub,
-                            "%.6g differs from the normal-incidence reflectance %.6f of ior.n, ior.k by more than %g",
-                            soak_rgb_at(p->albedo, i), f0, CONDUCTOR_F0_TOL);
-            }
-        }
+    const cJSON *g = NULL;
+    char gp[PATH_MAX_LEN];
+    soak_status st = open_material_group(r, "ior", r->conductor ? ior_all : ior_diel, ior_all, &g, gp);
+    if (st == SOAK_OK && r->conductor) {
+        st = get_rgb(r->c, g, gp, "n", 0.01, 100.0, &p->ior_n);
+        if (st == SOAK_OK) st = get_rgb(r->c, g, gp, "k", 0.0, 100.0, &p->ior_k);
+        if (st == SOAK_OK) st = check_conductor_albedo(r, p);
     } else if (st == SOAK_OK) {
-        st = get_number(c, g, gp, "n", 1.0, 3.0, &p->ior);
+        st = get_number(r->c, g, gp, "n", 1.0, 3.0, &p->ior);
     }
-    if (st == SOAK_OK) st = get_string(c, g, gp, "source", &p->ior_source);
+    if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->ior_source);
+    return st;
+}
+
+static soak_status parse_porosity_group(const mat_reader *r, soak_preset *p)
+{
+    static const char *const poro_keys[] = {"alpha", "s_p", "source", NULL};
+    const cJSON *g = NULL;
+    char gp[PATH_MAX_LEN];
+    soak_status st = open_material_group(r, "porosity", poro_keys, NULL, &g, gp);
+    if (st == SOAK_OK) st = get_number(r->c, g, gp, "alpha", 1e-3, 0.95, &p->porosity);
+    if (st == SOAK_OK) st = get_number(r->c, g, gp, "s_p", 0.01, 100.0, &p->s_p);
+    if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->porosity_source);
+    return st;
+}
+
+/* Dielectrics' medium: extinction, then the phase function (dry; porous
+ * kinds also wet). */
+static soak_status parse_medium_groups(const mat_reader *r, soak_preset *p)
+{
+    static const char *const medium_keys[] = {"sigma_t_per_mm", "source", NULL};
+    static const char *const phase_all[] = {"dry", "wet", "source", NULL};
+    static const char *const phase_dry[] = {"dry", "source", NULL};
+    const cJSON *g = NULL;
+    char gp[PATH_MAX_LEN];
+    soak_status st = open_material_group(r, "medium", medium_keys, NULL, &g, gp);
+    if (st == SOAK_OK) st = get_rgb(r->c, g, gp, "sigma_t_per_mm", 1e-6, 1e5, &p->sigma_t);
+    if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->medium_source);
     if (st != SOAK_OK) return st;
+    st = open_material_group(r, "phase", r->porous ? phase_all : phase_dry, phase_all, &g, gp);
+    if (st == SOAK_OK) st = get_phase(r->c, g, gp, "dry", &p->phase_dry);
+    p->phase_wet = p->phase_dry;
+    if (st == SOAK_OK && r->porous) st = get_phase(r->c, g, gp, "wet", &p->phase_wet);
+    if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->phase_source);
+    return st;
+}
 
-    if (porous) {
-        static const char *const poro_keys[] = {"alpha", "s_p", "source", NULL};
-        st = open_group(c, m, path, "porosity", poro_keys, NULL, why, &g, gp);
-        if (st == SOAK_OK) st = get_number(c, g, gp, "alpha", 1e-3, 0.95, &p->porosity);
-        if (st == SOAK_OK) st = get_number(c, g, gp, "s_p", 0.01, 100.0, &p->s_p);
-        if (st == SOAK_OK) st = get_string(c, g, gp, "source", &p->porosity_source);
-        if (st != SOAK_OK) return st;
-    }
-
-    if (!conductor) {
-        static const char *const medium_keys[] = {"sigma_t_per_mm", "source", NULL};
-        st = open_group(c, m, path, "medium", medium_keys, NULL, why, &g, gp);
-        if (st == SOAK_OK) st = get_rgb(c, g, gp, "sigma_t_per_mm", 1e-6, 1e5, &p->sigma_t);
-        if (st == SOAK_OK) st = get_string(c, g, gp, "source", &p->medium_source);
-        if (st != SOAK_OK) return st;
-
-        static const char *const phase_all[] = {"dry", "wet", "source", NULL};
-        static const char *const phase_dry[] = {"dry", "source", NULL};
-        st = open_group(c, m, path, "phase", porous ? phase_all : phase_dry, phase_all, why, &g, gp);
-        if (st == SOAK_OK) st = get_phase(c, g, gp, "dry", &p->phase_dry);
-        p->phase_wet = p->phase_dry;
-        if (st == SOAK_OK && porous) st = get_phase(c, g, gp, "wet", &p->phase_wet);
-        if (st == SOAK_OK) st = get_string(c, g, gp, "source", &p->phase_source);
-        if (st != SOAK_OK) return st;
-
-    }
-    if (soak_preset_derive(p) != SOAK_OK) return fail(c, SOAK_ERR_NUMERIC, path, "albedo inversion failed");
-
+static soak_status parse_wetting_group(const mat_reader *r, soak_preset *p)
+{
     static const char *const wet_all[] = {"t_fill", "film_thickness_mm", "source", NULL};
     static const char *const wet_film[] = {"film_thickness_mm", "source", NULL};
-    st = open_group(c, m, path, "wetting", porous ? wet_all : wet_film, wet_all, why, &g, gp);
-    if (st == SOAK_OK && porous) st = get_number(c, g, gp, "t_fill", 0.0, 1e6, &p->t_fill);
-    if (st == SOAK_OK) st = get_number(c, g, gp, "film_thickness_mm", 0.0, 1000.0, &p->film_thickness_mm);
-    if (st == SOAK_OK) st = get_string(c, g, gp, "source", &p->wetting_source);
-    if (st != SOAK_OK) return st;
+    const cJSON *g = NULL;
+    char gp[PATH_MAX_LEN];
+    soak_status st = open_material_group(r, "wetting", r->porous ? wet_all : wet_film, wet_all, &g, gp);
+    if (st == SOAK_OK && r->porous) st = get_number(r->c, g, gp, "t_fill", 0.0, 1e6, &p->t_fill);
+    if (st == SOAK_OK) st = get_number(r->c, g, gp, "film_thickness_mm", 0.0, 1000.0, &p->film_thickness_mm);
+    if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->wetting_source);
+    return st;
+}
 
-    if (sheet) {
-        static const char *const sheet_keys[] = {"thickness_mm", "source", NULL};
-        st = open_group(c, m, path, "sheet", sheet_keys, NULL, why, &g, gp);
-        if (st == SOAK_OK) st = get_number(c, g, gp, "thickness_mm", 1e-3, 1000.0, &p->thickness_mm);
-        if (st == SOAK_OK) st = get_string(c, g, gp, "source", &p->sheet_source);
-        if (st != SOAK_OK) return st;
-    }
-    return measured ? parse_measured(c, m, path, p) : SOAK_OK;
+static soak_status parse_sheet_group(const mat_reader *r, soak_preset *p)
+{
+    static const char *const sheet_keys[] = {"thickness_mm", "source", NULL};
+    const cJSON *g = NULL;
+    char gp[PATH_MAX_LEN];
+    soak_status st = open_material_group(r, "sheet", sheet_keys, NULL, &g, gp);
+    if (st == SOAK_OK) st = get_number(r->c, g, gp, "thickness_mm", 1e-3, 1000.0, &p->thickness_mm);
+    if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->sheet_source);
+    return st;
+}
+
+static soak_status parse_material(ctx *c, const cJSON *m, const char *path, soak_preset *p)
+{
+    if (!cJSON_IsObject(m)) return fail(c, SOAK_ERR_PARSE, path, "expected an object");
+    soak_status st = parse_kind(c, m, path, p);
+    if (st != SOAK_OK) return st;
+    mat_reader r = {c, m, path, "", soak_material_kind_porous(p->kind), p->kind == SOAK_KIND_CONDUCTOR,
+                    p->kind == SOAK_KIND_THIN_SHEET};
+    snprintf(r.why, sizeof r.why, "kind %s", kind_names[p->kind]);
+    const int measured = cJSON_GetObjectItemCaseSensitive(m, "measured") != NULL;
+    st = check_material_keys(&r, measured);
+    if (st == SOAK_OK) st = get_name(c, m, path, &p->name);
+    if (st == SOAK_OK) st = get_string(c, m, path, "display_name", &p->display_name);
+    if (st == SOAK_OK) st = parse_albedo_group(&r, p);
+    if (st == SOAK_OK) st = parse_roughness_group(&r, p);
+    if (st == SOAK_OK) st = parse_ior_group(&r, p);
+    if (st == SOAK_OK && r.porous) st = parse_porosity_group(&r, p);
+    if (st == SOAK_OK && !r.conductor) st = parse_medium_groups(&r, p);
+    if (st != SOAK_OK) return st;
+    if (soak_preset_derive(p) != SOAK_OK) return fail(c, SOAK_ERR_NUMERIC, path, "albedo inversion failed");
+    st = parse_wetting_group(&r, p);
+    if (st == SOAK_OK && r.sheet) st = parse_sheet_group(&r, p);
+    if (st == SOAK_OK && measured) st = parse_measured(c, m, path, p);
+    return st;
 }
 
 soak_status soak_preset_derive(soak_preset *p)

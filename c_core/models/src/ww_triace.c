@@ -1,7 +1,7 @@
 /* Tri-Ace fast paths for the water-over-base Weidlich-Wilkie BRDF (seed 001,
  * "Refract vector", "Fresnel term", "Absorption term"; Gotanda, tri-Ace).
  * Declared and documented in soak/ww.h; accuracy against soak_ww_eval is
- * measured in tests/c/test_ww.c. The per-sample path has no pow/exp, and
+ * measured in tests/c/models/test_ww.c. The per-sample path has no pow/exp, and
  * every division is by a quantity bounded away from zero (refracted cosines
  * >= ~0.65 for n = 1.33, GGX terms >= alpha^2 * cos^2 > 0). */
 #include <math.h>

@@ -120,11 +120,14 @@ static soak_rgb radiance(rt_thread *t, soak_vec3 org, soak_vec3 dir)
     return path.L;
 }
 
+typedef struct worker_arg worker_arg;
+
 typedef struct render_job {
     rt_ctx ctx;
+    rt_material_bsdf *bsdfs; /* ctx.bsdfs, owned */
     rt_photon_map caustics;
     cam_setup cam;
-    int W, H, spp, passes, tiles_x, tiles_y, n_tiles;
+    int W, H, spp, passes, tiles_x, tiles_y, n_tiles, threads;
     int *pass_start; /* passes + 1 entries: samples [pass_start[p], pass_start[p+1]) */
     uint64_t seed;
     long total_items;
@@ -136,17 +139,80 @@ typedef struct render_job {
     double *sum;   /* 3 per pixel */
     int *count;    /* samples per pixel */
     int *tile_pass; /* passes merged per tile */
+    worker_arg *args; /* threads entries */
+    pthread_t *th;    /* threads entries */
     pthread_mutex_t lock;
     pthread_cond_t merged;
-    rt_counters counters;
-    long long paths;
 } render_job;
 
-typedef struct worker_arg {
+struct worker_arg {
     render_job *job;
     rt_counters n;
     long long paths;
-} worker_arg;
+};
+
+/* One work item: samples [s0, s1) of the pixels [x0, x1) x [y0, y1) of a tile. */
+typedef struct tile_item {
+    int pass, tile, x0, y0, x1, y1, s0, s1;
+} tile_item;
+
+static tile_item tile_item_of(const render_job *j, long item)
+{
+    tile_item it;
+    it.pass = (int)(item / j->n_tiles);
+    it.tile = (int)(item % j->n_tiles);
+    it.x0 = (it.tile % j->tiles_x) * TILE;
+    it.y0 = (it.tile / j->tiles_x) * TILE;
+    it.x1 = it.x0 + TILE < j->W ? it.x0 + TILE : j->W;
+    it.y1 = it.y0 + TILE < j->H ? it.y0 + TILE : j->H;
+    it.s0 = j->pass_start[it.pass];
+    it.s1 = j->pass_start[it.pass + 1];
+    return it;
+}
+
+/* Traces the item's samples into the tile-local sums and counts. */
+static void trace_tile(rt_thread *t, worker_arg *a, const tile_item *it, double *local, int *lcount)
+{
+    render_job *j = a->job;
+    int tw = it->x1 - it->x0;
+    memset(local, 0, (size_t)TILE * TILE * 3 * sizeof(double));
+    memset(lcount, 0, (size_t)TILE * TILE * sizeof(int));
+    for (int y = it->y0; y < it->y1 && !atomic_load(&j->stop); ++y)
+        for (int x = it->x0; x < it->x1; ++x) {
+            uint64_t pixel = (uint64_t)y * (uint64_t)j->W + (uint64_t)x;
+            double *acc = local + 3 * ((y - it->y0) * tw + (x - it->x0));
+            for (int sidx = it->s0; sidx < it->s1; ++sidx) {
+                soak_rng_seed(&t->rng, j->seed, pixel * (uint64_t)j->spp + (uint64_t)sidx);
+                rt_qmc_start(t, j->seed, pixel, (uint32_t)sidx);
+                soak_vec3 org, dir = camera_ray(t, &j->cam, x, y, &org);
+                soak_rgb L = radiance(t, org, dir);
+                acc[0] += L.r;
+                acc[1] += L.g;
+                acc[2] += L.b;
+                a->paths++;
+            }
+            lcount[(y - it->y0) * tw + (x - it->x0)] = it->s1 - it->s0;
+        }
+}
+
+/* Merges passes of a tile in order so sums do not depend on scheduling;
+ * local == NULL (out of memory) only advances the tile's pass. */
+static void merge_tile(render_job *j, const tile_item *it, const double *local, const int *lcount)
+{
+    int tw = it->x1 - it->x0;
+    pthread_mutex_lock(&j->lock);
+    while (j->tile_pass[it->tile] != it->pass) pthread_cond_wait(&j->merged, &j->lock);
+    if (local)
+        for (int y = it->y0; y < it->y1; ++y)
+            for (int x = it->x0; x < it->x1; ++x) {
+                size_t pi = (size_t)y * j->W + x, li = (size_t)(y - it->y0) * tw + (x - it->x0);
+                for (int ch = 0; ch < 3; ++ch) j->sum[3 * pi + ch] += local[3 * li + ch];
+                j->count[pi] += lcount[li];
+            }
+    j->tile_pass[it->tile]++;
+    pthread_cond_broadcast(&j->merged);
+    pthread_mutex_unlock(&j->lock);
+}
 
 static void *worker(void *argp)
 {
@@ -157,51 +223,17 @@ static void *worker(void *argp)
     t.ctx = &j->ctx;
     double *local = malloc((size_t)TILE * TILE * 3 * sizeof(double));
     int *lcount = malloc((size_t)TILE * TILE * sizeof(int));
-    if (!local || !lcount) {
+    int have_memory = local && lcount;
+    if (!have_memory) {
         atomic_store(&j->out_of_memory, 1);
         atomic_store(&j->stop, 1);
     }
     for (;;) {
         long item = atomic_fetch_add(&j->next_item, 1);
         if (item >= j->total_items) break;
-        int pass = (int)(item / j->n_tiles), tile = (int)(item % j->n_tiles);
-        int x0 = (tile % j->tiles_x) * TILE, y0 = (tile / j->tiles_x) * TILE;
-        int x1 = x0 + TILE < j->W ? x0 + TILE : j->W, y1 = y0 + TILE < j->H ? y0 + TILE : j->H;
-        int s0 = j->pass_start[pass], s1 = j->pass_start[pass + 1];
-        int tw = x1 - x0;
-        if (local && lcount) {
-            memset(local, 0, (size_t)TILE * TILE * 3 * sizeof(double));
-            memset(lcount, 0, (size_t)TILE * TILE * sizeof(int));
-            for (int y = y0; y < y1 && !atomic_load(&j->stop); ++y)
-                for (int x = x0; x < x1; ++x) {
-                    uint64_t pixel = (uint64_t)y * (uint64_t)j->W + (uint64_t)x;
-                    double *acc = local + 3 * ((y - y0) * tw + (x - x0));
-                    for (int sidx = s0; sidx < s1; ++sidx) {
-                        soak_rng_seed(&t.rng, j->seed, pixel * (uint64_t)j->spp + (uint64_t)sidx);
-                        rt_qmc_start(&t, j->seed, pixel, (uint32_t)sidx);
-                        soak_vec3 org, dir = camera_ray(&t, &j->cam, x, y, &org);
-                        soak_rgb L = radiance(&t, org, dir);
-                        acc[0] += L.r;
-                        acc[1] += L.g;
-                        acc[2] += L.b;
-                        a->paths++;
-                    }
-                    lcount[(y - y0) * tw + (x - x0)] = s1 - s0;
-                }
-        }
-        /* Merge passes of a tile in order so sums do not depend on scheduling. */
-        pthread_mutex_lock(&j->lock);
-        while (j->tile_pass[tile] != pass) pthread_cond_wait(&j->merged, &j->lock);
-        if (local && lcount)
-            for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x) {
-                    size_t pi = (size_t)y * j->W + x, li = (size_t)(y - y0) * tw + (x - x0);
-                    for (int ch = 0; ch < 3; ++ch) j->sum[3 * pi + ch] += local[3 * li + ch];
-                    j->count[pi] += lcount[li];
-                }
-        j->tile_pass[tile]++;
-        pthread_cond_broadcast(&j->merged);
-        pthread_mutex_unlock(&j->lock);
+        tile_item it = tile_item_of(j, item);
+        if (have_memory) trace_tile(&t, a, &it, local, lcount);
+        merge_tile(j, &it, have_memory ? local : NULL, lcount);
         atomic_fetch_add(&j->done_items, 1);
     }
     free(local);
@@ -218,35 +250,36 @@ static double now_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-soak_status soak_render(const soak_scene *scene, const soak_render_options *opt, soak_image *out,
-                        soak_render_stats *stats, char *err, size_t errlen)
+/* Image size and samples: the options' where set, else the scene's. */
+static soak_status check_options(const soak_scene *scene, const soak_render_options *opt, int *W, int *H, int *spp,
+                                 char *err, size_t errlen)
 {
-    if (!scene || !opt || !out) return SOAK_ERR_NULL;
-    int W = opt->width > 0 ? opt->width : scene->width, H = opt->height > 0 ? opt->height : scene->height;
-    int spp = opt->spp > 0 ? opt->spp : scene->spp;
+    int w = opt->width > 0 ? opt->width : scene->width, h = opt->height > 0 ? opt->height : scene->height;
+    int n = opt->spp > 0 ? opt->spp : scene->spp;
     int threads = opt->threads;
-    if (!(W >= 1 && W <= 16384 && H >= 1 && H <= 16384 && spp >= 1 && spp <= 10000000 && threads >= 1 && threads <= 256) ||
+    *W = w;
+    *H = h;
+    *spp = n;
+    if (!(w >= 1 && w <= 16384 && h >= 1 && h <= 16384 && n >= 1 && n <= 10000000 && threads >= 1 && threads <= 256) ||
         !soak_in_range(opt->time_limit, 0, 1e9) || opt->max_depth < 0) {
         if (err && errlen) snprintf(err, errlen, "render options out of range");
         return SOAK_ERR_ARG;
     }
-    double t_start = now_seconds(); /* --time covers every phase */
-    render_job *j = calloc(1, sizeof *j);
-    if (!j) return SOAK_ERR_NOMEM;
+    return SOAK_OK;
+}
+
+/* What the paths read: the materials' BSDFs, the environment's sampling
+ * tables and the caustic photon map. */
+static soak_status prepare_scene(render_job *j, const soak_scene *scene, const soak_render_options *opt,
+                                 double t_start, char *err, size_t errlen)
+{
     j->ctx.scene = scene;
     j->ctx.max_depth = opt->max_depth > 0 ? opt->max_depth : scene->max_depth;
-    rt_material_bsdf *bsdfs = calloc(scene->n_materials > 0 ? (size_t)scene->n_materials : 1, sizeof *bsdfs);
-    if (!bsdfs) {
-        free(j);
-        return SOAK_ERR_NOMEM;
-    }
-    j->ctx.bsdfs = bsdfs;
-    soak_status st = rt_bsdfs_setup(scene, opt->trace_films, bsdfs, err, errlen);
-    if (st != SOAK_OK) {
-        free(bsdfs);
-        free(j);
-        return st;
-    }
+    j->bsdfs = calloc(scene->n_materials > 0 ? (size_t)scene->n_materials : 1, sizeof *j->bsdfs);
+    if (!j->bsdfs) return SOAK_ERR_NOMEM;
+    j->ctx.bsdfs = j->bsdfs;
+    soak_status st = rt_bsdfs_setup(scene, opt->trace_films, j->bsdfs, err, errlen);
+    if (st != SOAK_OK) return st;
     st = rt_env_build(&j->ctx.env, &scene->env);
     if (st == SOAK_OK && scene->caustic_photons > 0) {
         /* Photons are traced before the render, from the same seed. */
@@ -254,84 +287,91 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
                               opt->time_limit > 0 ? t_start + opt->time_limit : 0, &j->caustics);
         if (st == SOAK_OK) j->ctx.caustics = &j->caustics;
     }
-    if (st != SOAK_OK) {
-        rt_env_free(&j->ctx.env);
-        free(bsdfs);
-        free(j);
-        return st;
-    }
-    const soak_camera *cam = &scene->camera;
-    j->cam.pos = cam->position;
-    j->cam.fwd = soak_v3_norm(soak_v3_sub(cam->look_at, cam->position));
-    j->cam.right = soak_v3_norm(soak_v3_cross(j->cam.fwd, cam->up));
-    j->cam.up = soak_v3_cross(j->cam.right, j->cam.fwd);
-    j->cam.tan_half = tan(cam->fov_deg * SOAK_PI / 360.0);
-    j->cam.aspect = (double)W / H;
-    j->cam.aperture = cam->aperture;
-    j->cam.focus = cam->focus_distance;
-    j->cam.W = W;
-    j->cam.H = H;
-    j->W = W;
-    j->H = H;
-    j->spp = spp;
-    /* Passes of 1, 2, 4, ... samples up to spp/8: the whole image gets a
-     * few samples quickly, so an early stop leaves no black tiles. */
+    return st;
+}
+
+static void prepare_camera(cam_setup *c, const soak_camera *cam, int W, int H)
+{
+    c->pos = cam->position;
+    c->fwd = soak_v3_norm(soak_v3_sub(cam->look_at, cam->position));
+    c->right = soak_v3_norm(soak_v3_cross(c->fwd, cam->up));
+    c->up = soak_v3_cross(c->right, c->fwd);
+    c->tan_half = tan(cam->fov_deg * SOAK_PI / 360.0);
+    c->aspect = (double)W / H;
+    c->aperture = cam->aperture;
+    c->focus = cam->focus_distance;
+    c->W = W;
+    c->H = H;
+}
+
+/* Passes of 1, 2, 4, ... samples up to spp/8: the whole image gets a few
+ * samples quickly, so an early stop leaves no black tiles. */
+static soak_status plan_passes(render_job *j)
+{
+    int spp = j->spp;
     j->pass_start = calloc((size_t)spp + 2, sizeof(int));
-    if (!j->pass_start) {
-        rt_photons_free(&j->caustics);
-        rt_env_free(&j->ctx.env);
-        free(bsdfs);
-        free(j);
-        return SOAK_ERR_NOMEM;
+    if (!j->pass_start) return SOAK_ERR_NOMEM;
+    int cap = spp >= 8 ? spp / 8 : 1, b = 1, p = 0;
+    while (j->pass_start[p] < spp) {
+        int next = j->pass_start[p] + b;
+        j->pass_start[++p] = next < spp ? next : spp;
+        b = 2 * b < cap ? 2 * b : cap;
     }
-    {
-        int cap = spp >= 8 ? spp / 8 : 1, b = 1, p = 0;
-        while (j->pass_start[p] < spp) {
-            int next = j->pass_start[p] + b;
-            j->pass_start[++p] = next < spp ? next : spp;
-            b = 2 * b < cap ? 2 * b : cap;
-        }
-        j->passes = p;
-    }
-    j->tiles_x = (W + TILE - 1) / TILE;
-    j->tiles_y = (H + TILE - 1) / TILE;
+    j->passes = p;
+    j->tiles_x = (j->W + TILE - 1) / TILE;
+    j->tiles_y = (j->H + TILE - 1) / TILE;
     j->n_tiles = j->tiles_x * j->tiles_y;
     j->total_items = (long)j->passes * j->n_tiles;
-    j->seed = opt->seed;
+    return SOAK_OK;
+}
+
+/* The sums, counts and worker slots, and the output image. */
+static soak_status alloc_buffers(render_job *j, soak_image *out)
+{
+    size_t W = (size_t)j->W, H = (size_t)j->H;
     atomic_init(&j->next_item, 0);
     atomic_init(&j->done_items, 0);
     atomic_init(&j->stop, 0);
-    atomic_init(&j->workers_left, threads);
+    atomic_init(&j->workers_left, j->threads);
     atomic_init(&j->out_of_memory, 0);
-    j->sum = calloc((size_t)W * H * 3, sizeof(double));
-    j->count = calloc((size_t)W * H, sizeof(int));
+    j->sum = calloc(W * H * 3, sizeof(double));
+    j->count = calloc(W * H, sizeof(int));
     j->tile_pass = calloc((size_t)j->n_tiles, sizeof(int));
-    worker_arg *args = calloc((size_t)threads, sizeof *args);
-    pthread_t *th = calloc((size_t)threads, sizeof *th);
-    st = soak_image_alloc(out, W, H, 3);
-    if (!j->sum || !j->count || !j->tile_pass || !args || !th || st != SOAK_OK) {
+    j->args = calloc((size_t)j->threads, sizeof *j->args);
+    j->th = calloc((size_t)j->threads, sizeof *j->th);
+    soak_status st = soak_image_alloc(out, j->W, j->H, 3);
+    if (!j->sum || !j->count || !j->tile_pass || !j->args || !j->th || st != SOAK_OK) {
         if (st == SOAK_OK) soak_image_free(out);
-        st = SOAK_ERR_NOMEM;
-        goto done;
+        return SOAK_ERR_NOMEM;
     }
-    pthread_mutex_init(&j->lock, NULL);
-    pthread_cond_init(&j->merged, NULL);
-    double t0 = now_seconds();
+    return SOAK_OK;
+}
+
+/* Starts the workers; returns how many started. None: renders on the
+ * calling thread. */
+static int start_workers(render_job *j)
+{
     int started = 0;
-    for (int i = 0; i < threads; ++i) {
-        args[i].job = j;
-        if (pthread_create(&th[i], NULL, worker, &args[i]) != 0) {
-            atomic_fetch_sub(&j->workers_left, threads - i);
+    for (int i = 0; i < j->threads; ++i) {
+        j->args[i].job = j;
+        if (pthread_create(&j->th[i], NULL, worker, &j->args[i]) != 0) {
+            atomic_fetch_sub(&j->workers_left, j->threads - i);
             break;
         }
         started++;
     }
     if (started == 0) {
-        /* No thread could start: render on the calling thread. */
         atomic_store(&j->workers_left, 1);
-        args[0].job = j;
-        worker(&args[0]);
+        j->args[0].job = j;
+        worker(&j->args[0]);
     }
+    return started;
+}
+
+/* Waits for the workers, reporting progress and telling them to stop on
+ * cancel or past the time limit. */
+static void watch_workers(render_job *j, const soak_render_options *opt, double t_start)
+{
     for (long wait_ms = 1; atomic_load(&j->workers_left) > 0; wait_ms = wait_ms < 50 ? 2 * wait_ms : 50) {
         /* Short waits first so tiny renders (tests) do not idle. */
         struct timespec ts = {0, wait_ms * 1000 * 1000};
@@ -341,44 +381,96 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
         if (opt->progress)
             opt->progress(opt->progress_ctx, (double)atomic_load(&j->done_items) / (double)j->total_items);
     }
-    for (int i = 0; i < started; ++i) pthread_join(th[i], NULL);
+}
+
+/* Renders every item; returns the seconds the workers took. */
+static double run_workers(render_job *j, const soak_render_options *opt, double t_start)
+{
+    pthread_mutex_init(&j->lock, NULL);
+    pthread_cond_init(&j->merged, NULL);
+    double t0 = now_seconds();
+    int started = start_workers(j);
+    watch_workers(j, opt, t_start);
+    for (int i = 0; i < started; ++i) pthread_join(j->th[i], NULL);
     pthread_mutex_destroy(&j->lock);
     pthread_cond_destroy(&j->merged);
-    soak_render_stats sst;
-    memset(&sst, 0, sizeof sst);
-    sst.seconds = now_seconds() - t0;
-    sst.min_spp = spp;
-    for (int i = 0; i < threads; ++i) {
-        sst.rays += args[i].n.rays;
-        sst.capped += args[i].n.capped;
-        sst.leaked += args[i].n.leaked;
-        sst.nan_paths += args[i].n.nan_paths;
-        sst.geometry_errors += args[i].n.geom_errors;
-        sst.paths += args[i].paths;
+    return now_seconds() - t0;
+}
+
+/* Pixel means into out, and the workers' counters summed into *sst. */
+static void collect(const render_job *j, soak_image *out, soak_render_stats *sst)
+{
+    sst->min_spp = j->spp;
+    for (int i = 0; i < j->threads; ++i) {
+        const worker_arg *a = &j->args[i];
+        sst->rays += a->n.rays;
+        sst->capped += a->n.capped;
+        sst->leaked += a->n.leaked;
+        sst->nan_paths += a->n.nan_paths;
+        sst->geometry_errors += a->n.geom_errors;
+        sst->paths += a->paths;
     }
-    for (size_t i = 0; i < (size_t)W * H; ++i) {
+    for (size_t i = 0; i < (size_t)j->W * j->H; ++i) {
         int n = j->count[i];
-        if (n < sst.min_spp) sst.min_spp = n;
-        if (n > sst.max_spp) sst.max_spp = n;
+        if (n < sst->min_spp) sst->min_spp = n;
+        if (n > sst->max_spp) sst->max_spp = n;
         for (int ch = 0; ch < 3; ++ch) out->pixels[3 * i + ch] = n > 0 ? (float)(j->sum[3 * i + ch] / n) : 0.0f;
     }
-    sst.stopped_early = atomic_load(&j->stop) && sst.min_spp < spp;
+    sst->stopped_early = atomic_load(&j->stop) && sst->min_spp < j->spp;
+}
+
+/* Renders every pass of every tile into out. */
+static soak_status render_image(render_job *j, const soak_render_options *opt, double t_start, soak_image *out,
+                                soak_render_stats *stats)
+{
+    soak_render_stats sst;
+    memset(&sst, 0, sizeof sst);
+    sst.seconds = run_workers(j, opt, t_start);
+    collect(j, out, &sst);
     if (stats) *stats = sst;
-    st = SOAK_OK;
     if (atomic_load(&j->out_of_memory)) {
         soak_image_free(out);
-        st = SOAK_ERR_NOMEM;
+        return SOAK_ERR_NOMEM;
     }
-done:
+    return SOAK_OK;
+}
+
+static void job_free(render_job *j)
+{
     rt_photons_free(&j->caustics);
     rt_env_free(&j->ctx.env);
     free(j->sum);
     free(j->count);
     free(j->tile_pass);
     free(j->pass_start);
-    free(args);
-    free(th);
-    free(bsdfs);
+    free(j->args);
+    free(j->th);
+    free(j->bsdfs);
     free(j);
+}
+
+soak_status soak_render(const soak_scene *scene, const soak_render_options *opt, soak_image *out,
+                        soak_render_stats *stats, char *err, size_t errlen)
+{
+    if (!scene || !opt || !out) return SOAK_ERR_NULL;
+    int W, H, spp;
+    soak_status st = check_options(scene, opt, &W, &H, &spp, err, errlen);
+    if (st != SOAK_OK) return st;
+    double t_start = now_seconds(); /* --time covers every phase */
+    render_job *j = calloc(1, sizeof *j);
+    if (!j) return SOAK_ERR_NOMEM;
+    j->W = W;
+    j->H = H;
+    j->spp = spp;
+    j->threads = opt->threads;
+    j->seed = opt->seed;
+    st = prepare_scene(j, scene, opt, t_start, err, errlen);
+    if (st == SOAK_OK) {
+        prepare_camera(&j->cam, &scene->camera, W, H);
+        st = plan_passes(j);
+    }
+    if (st == SOAK_OK) st = alloc_buffers(j, out);
+    if (st == SOAK_OK) st = render_image(j, opt, t_start, out, stats);
+    job_free(j);
     return st;
 }

@@ -1,4 +1,6 @@
-/* Private pieces of the path tracer shared by render_*.c. */
+/* Private pieces of the path tracer shared by render_*.c (and accuracy.c,
+ * which shades through the renderer's BSDFs). Each section names the file
+ * its functions live in. */
 #ifndef SOAK_RENDER_INTERNAL_H
 #define SOAK_RENDER_INTERNAL_H
 
@@ -75,9 +77,10 @@ typedef struct rt_counters {
 /* Does the object's wetness read texture coordinates (a wet map)? */
 static inline int rt_object_uses_uv(const soak_object *obj) { return obj->wetness.type == SOAK_WETNESS_MAP; }
 
-/* Quasi-random state of the current camera path (render_sampler.c):
- * dimensions dim < end come from the scrambled Sobol pairs, the rest from
- * rng. end = 0 (a zeroed thread, e.g. the photon tracer) means plain PCG. */
+/* ---- sampler (render_sampler.c) ---- */
+/* Quasi-random state of the current camera path: dimensions dim < end come
+ * from the scrambled Sobol pairs, the rest from rng. end = 0 (a zeroed
+ * thread, e.g. the photon tracer) means plain PCG. */
 typedef struct rt_qmc {
     uint32_t seed, index;
     uint32_t pair_index, seed_x, seed_y; /* of the current pair */
@@ -170,7 +173,6 @@ double rt_sphere_light_pdf(const soak_light *l, soak_vec3 p);
 /* 1 when the segment from p (offset already applied) along wi up to dist is free. */
 int rt_visible(rt_thread *t, soak_vec3 p, soak_vec3 wi, double dist);
 
-/* ---- surfaces (render_surface.c) ---- */
 /* Radiance convention: a refraction into index ratio eta multiplies the
  * radiance by 1/eta^2, and beta carries that factor; eta_scale carries its
  * inverse (pbrt's etaScale), so beta * eta_scale, the weight Russian roulette
@@ -194,14 +196,18 @@ typedef struct rt_path {
 /* The weight Russian roulette plays on: max_c beta_c * eta_scale. */
 static inline double rt_rr_weight(const rt_path *p) { return rgb_max(p->beta) * p->eta_scale; }
 
+/* ---- surfaces (render_surface.c) ---- */
 /* Handles the surface interaction at hit: gathers next-event estimates into
  * path->L, updates beta and sets the next ray (or alive = 0). */
 void rt_surface(rt_thread *t, const soak_hit *hit, rt_path *path);
+
+/* ---- materials to BSDFs (render_bsdfs.c) ---- */
 /* Sets up bsdfs[i] for every material (n_materials entries); trace_films:
  * films over Lambert traced bounce by bounce instead of their closed form.
  * On failure err names the material. */
 soak_status rt_bsdfs_setup(const soak_scene *s, int trace_films, rt_material_bsdf *bsdfs, char *err, size_t errlen);
 
+/* ---- the layer stack (render_stack.c) ---- */
 /* The air | film | material layer stack of a wet surface. */
 typedef struct rt_stack {
     double n2, n3, k;  /* film (1 = none), material, Fresnel exponent */
@@ -209,15 +215,24 @@ typedef struct rt_stack {
     double h;          /* film thickness */
 } rt_stack;
 
+/* Fresnel of the interfaces a path meets (unpolarised, exact): eta = n_t/n_i. */
+double rt_fresnel(double cos_i, double eta, double *cos_t);
+/* Crosses the stack with Snell invariant p = n sin(theta), starting in the
+ * material going up (start_low) or in air going down. Returns 1 when it ends
+ * in the material, 0 in air. Multiplies *beta by the film absorption only. */
+int rt_cross_stack(rt_thread *t, const rt_stack *s, double p, int start_low, soak_rgb *beta);
+/* Direction with tangential unit tdir and invariant p in a medium of index n. */
+soak_vec3 rt_snell_dir(soak_vec3 tdir, soak_vec3 n_out, double p, double n, int up);
+
 /* ---- media (render_medium.c) ---- */
 /* Wet material with a scattering base: enters at hit (from air, direction
  * path->dir), walks, exits or dies. */
 void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, const soak_material *m, rt_path *path);
 
 /* The scene medium as the random walk of soak/medium.h sees it: homogeneous
- * per-channel, or the grid (rt_medium_at) under its majorant. */
+ * per-channel, or the grid (trilinear, cell-centred) under its majorant. */
 soak_medium_rgb rt_medium_rgb(const soak_scene_medium *m);
-/* Walk options of the renderer: roulette on max beta (threshold 1), cap RT_MEDIUM_MAX_EVENTS. */
+/* Walk options of the renderer: roulette on max beta below 1/2, cap RT_MEDIUM_MAX_EVENTS. */
 soak_walk_options rt_walk_options(soak_rgb beta);
 /* Walk boundary: the scene's surfaces, the wet film stack of a medium object
  * crossed upward on arrival (reflection back in, or exit). */
@@ -234,17 +249,8 @@ typedef struct rt_med_boundary {
     const rt_stack *stack;
 } rt_med_boundary;
 soak_boundary rt_med_boundary_make(const rt_med_boundary *b);
-/* Medium parameters at a point (grid or homogeneous). */
-void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, soak_medium_point *out);
 
-/* Crosses the stack with Snell invariant p = n sin(theta), starting in the
- * material going up (start_low) or in air going down. Returns 1 when it ends
- * in the material, 0 in air. Multiplies *beta by the film absorption only. */
-int rt_cross_stack(rt_thread *t, const rt_stack *s, double p, int start_low, soak_rgb *beta);
-/* Direction with tangential unit tdir and invariant p in a medium of index n. */
-soak_vec3 rt_snell_dir(soak_vec3 tdir, soak_vec3 n_out, double p, double n, int up);
-
-/* ---- caustic photons (render_photons.c) ---- */
+/* ---- the photon map (render_photon_map.c) ---- */
 typedef struct rt_photon {
     float pos[3];
     float dir[3];   /* propagation direction before the scattering event */
@@ -261,12 +267,6 @@ typedef struct rt_photon_map {
     long long emitted;
 } rt_photon_map;
 
-/* Traces n photons from the sun and point lights through dielectric objects
- * and stores them at their first scattering event inside a wet medium. */
-/* Stops early (keeping what is traced, rescaled) when *cancel becomes
- * non-zero or the monotonic clock passes deadline (0: none). */
-soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed,
-                             const volatile sig_atomic_t *cancel, double deadline, rt_photon_map *map);
 void rt_photons_free(rt_photon_map *map);
 /* Stores n photons (copied) into map's hash grid; map->radius already set. */
 soak_status rt_photon_map_store(rt_photon_map *map, const rt_photon *photons, size_t n);
@@ -275,7 +275,12 @@ soak_status rt_photon_map_store(rt_photon_map *map, const rt_photon *photons, si
  * reverse of the camera path direction d_in. */
 soak_rgb rt_photons_gather(const rt_photon_map *map, soak_vec3 x, soak_vec3 d_in, const soak_hg2 *phase, unsigned obj);
 
-/* Fresnel of the interfaces a path meets (unpolarised, exact): eta = n_t/n_i. */
-double rt_fresnel(double cos_i, double eta, double *cos_t);
+/* ---- caustic photons (render_photons.c) ---- */
+/* Traces n photons from the sun and point lights through dielectric objects
+ * and stores them at their first scattering event inside a wet medium.
+ * Stops early (keeping what is traced, rescaled) when *cancel becomes
+ * non-zero or the monotonic clock passes deadline (0: none). */
+soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed,
+                             const volatile sig_atomic_t *cancel, double deadline, rt_photon_map *map);
 
 #endif

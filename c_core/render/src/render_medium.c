@@ -60,10 +60,10 @@
 
 static double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
-/* F^k of seed 000 Eq. 2; k = 1 (smooth) skips the libm call on the walk's
- * boundary path. */
-
-void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, soak_medium_point *out)
+/* Medium parameters at a point: the grid's, trilinear between cell centres
+ * (clamped at the box's faces), inside its box; the homogeneous values
+ * elsewhere or without a grid. */
+static void medium_at(const soak_scene_medium *m, soak_vec3 x, soak_medium_point *out)
 {
     out->sigma_s = m->sigma_s;
     out->sigma_a = m->sigma_a;
@@ -100,7 +100,7 @@ void rt_medium_at(const soak_scene_medium *m, soak_vec3 x, soak_medium_point *ou
 
 static soak_status grid_coeffs(const void *ctx, soak_vec3 pos, soak_medium_point *out)
 {
-    rt_medium_at(ctx, pos, out);
+    medium_at(ctx, pos, out);
     return SOAK_OK;
 }
 
@@ -179,6 +179,159 @@ static double max_transmittance(soak_rgb sigma_t, double d) { return exp(-fmin(s
  * transmittance is about T. */
 static double nee_survival(double T) { return fmin(1.0, fmax(RT_NEE_SURVIVAL_MIN, T / RT_NEE_ROULETTE_T)); }
 
+/* Roulette on the shadow estimate with survival q: 0 when it dies, else
+ * *inv_q is divided by q (when q < 1). */
+static int nee_roulette(rt_thread *t, double q, double *inv_q)
+{
+    if (q < 1.0) {
+        if (rt_rand(t) >= q) return 0;
+        *inv_q /= q;
+    }
+    return 1;
+}
+
+/* Stage 1 of the roulette (see RT_NEE_ROULETTE_T), before any ray: survival
+ * for the exit distance predicted by the tangent planes of the surface point
+ * the walk is heading for and of light li's last exit point; 1 without one. */
+static double predicted_survival(const nee_ctx *c, int li, soak_vec3 x, soak_vec3 d3)
+{
+    /* surf->hit is the surface the flight was heading for when the walk
+     * asked for it, else the last one it found (med_within spared the
+     * query): a tangent plane either way, ng outward (med_distance orients
+     * it; the entry hit's is outward). */
+    const soak_hit *wh = &c->surf->hit;
+    double sd = c->surf->lost ? INFINITY : plane_distance(x, d3, wh->p, wh->ng);
+    if (li < RT_NEE_CACHE && c->cached[li]) sd = fmin(sd, plane_distance(x, d3, c->cache_p[li], c->cache_n[li]));
+    if (!(sd < INFINITY)) return 1.0;
+    return fmax(RT_NEE_PREDICT_MIN, nee_survival(max_transmittance(c->med->sigma_t, sd)));
+}
+
+/* Where the shadow path of a delta light leaves the medium. */
+typedef struct nee_exit {
+    soak_hit h;      /* exit point */
+    soak_vec3 n;     /* outward normal used there */
+    soak_vec3 wl;    /* toward the light, in air */
+    soak_vec3 d3;    /* wl refracted into the material */
+    double cos1, cos3;
+    double inv_q;    /* 1 / survival probability of the roulette */
+} nee_exit;
+
+/* Refracts the light direction wl through a flat film at normal n (n2
+ * cancels for parallel layers) into the material of index n3; cos1 = wl . n. */
+static soak_vec3 refract_in(soak_vec3 wl, soak_vec3 n, double cos1, double n3)
+{
+    soak_vec3 tang = soak_v3_scale(soak_v3_sub(wl, soak_v3_scale(n, cos1)), 1.0 / n3);
+    return soak_v3_norm(soak_v3_add(tang, soak_v3_scale(n, sqrt(fmax(0.0, 1 - soak_v3_dot(tang, tang))))));
+}
+
+/* Finds the exit point of light l's shadow path from x: refract at the
+ * current normal, trace, and refine once with the exit point's normal (a
+ * planar face under the sun is exact at once). Returns 0 when there is none
+ * or the roulette ended the estimate. */
+static int find_exit(nee_ctx *c, const soak_light *l, int li, soak_vec3 x, nee_exit *e)
+{
+    rt_thread *t = c->t;
+    const soak_scene *s = t->ctx->scene;
+    double n3 = c->m->medium.ior, q1 = 1.0;
+    soak_vec3 n = c->surf->n_ref, wl = l->type == SOAK_LIGHT_DIRECTIONAL ? l->direction : soak_v3_norm(soak_v3_sub(l->position, x));
+    /* A light behind the face the path came in through (a thin sheet lit
+     * from behind) reaches x through another face: start from the opposite
+     * normal, the exit search below finds the real face. */
+    if (!(soak_v3_dot(wl, n) > 0)) n = soak_v3_scale(n, -1.0);
+    e->inv_q = 1.0;
+    for (int it = 0; it < 2; ++it) {
+        double cos1 = soak_v3_dot(wl, n);
+        if (!(cos1 > 0)) return 0;
+        e->d3 = refract_in(wl, n, cos1, n3);
+        int play = it == 0 && !c->med->coeffs;
+        if (play) {
+            q1 = predicted_survival(c, li, x, e->d3);
+            if (!nee_roulette(t, q1, &e->inv_q)) return 0;
+        }
+        soak_ray r = {x, e->d3, 0.0, INFINITY};
+        int found = 0;
+        t->n.rays++;
+        soak_status gst = soak_geometry_intersect_local(s->geometry, c->obj->object_id, &r, rt_object_uses_uv(c->obj), &e->h, &found);
+        if (gst != SOAK_OK) t->n.geom_errors++;
+        if (gst != SOAK_OK || !found) return 0;
+        /* Stage 2, with the first exit found: deep inside the light barely
+         * gets through, so the rest of the estimate (exit refinement, shadow
+         * ray) survives with overall probability min(q1, nee_survival(T));
+         * survivors are divided by it. */
+        if (play && !nee_roulette(t, fmin(1.0, nee_survival(max_transmittance(c->med->sigma_t, e->h.t)) / q1), &e->inv_q))
+            return 0;
+        soak_vec3 ny = soak_v3_dot(e->d3, e->h.ng) >= 0 ? e->h.ng : soak_v3_scale(e->h.ng, -1.0);
+        if (l->type == SOAK_LIGHT_POINT) wl = soak_v3_norm(soak_v3_sub(l->position, e->h.p));
+        int same = soak_v3_dot(ny, n) > 1 - 1e-12;
+        n = ny;
+        if (same && l->type == SOAK_LIGHT_DIRECTIONAL) break; /* planar face: exact */
+    }
+    e->n = n;
+    e->wl = wl;
+    e->cos1 = soak_v3_dot(wl, n);
+    e->cos3 = soak_v3_dot(e->d3, n);
+    return e->cos1 > 0 && e->cos3 > 0;
+}
+
+/* Beer-Lambert in the film on the light's way in, weighted by the wet
+ * share of the film transmittance Tf. */
+static soak_rgb film_absorbed(const soak_material *m, double cover, double cos1, double Tf, soak_rgb L)
+{
+    double n3 = m->medium.ior;
+    double cos2 = sqrt(fmax(0.0, 1 - (1 - cos1 * cos1) / (m->film_ior * m->film_ior)));
+    soak_jensen_layer wet = {1.0, m->film_ior, n3, m->film_k};
+    double Tw = 0;
+    soak_jensen_shadow(&wet, cos1, &Tw);
+    double share = cover * Tw / Tf;
+    soak_rgb a = rgb_exp(m->film_absorption, m->film_thickness / cos2);
+    return soak_rgb3(L.r * (1 - share + share * a.r), L.g * (1 - share + share * a.g), L.b * (1 - share + share * a.b));
+}
+
+/* Adds the estimate of light l at x through the exit e (see the top of this
+ * file) to the path's radiance, unless the light is blocked or nothing gets
+ * through. */
+static void add_delta_light(nee_ctx *c, const soak_light *l, soak_vec3 x, soak_vec3 d_in, soak_rgb beta,
+                            const soak_medium_point *local, const nee_exit *e)
+{
+    rt_thread *t = c->t;
+    const soak_material *m = c->m;
+    double n3 = m->medium.ior, dist_light = INFINITY;
+    soak_rgb E = l->value;
+    if (l->type == SOAK_LIGHT_POINT) {
+        soak_vec3 dl = soak_v3_sub(l->position, e->h.p);
+        double r2 = soak_v3_dot(dl, dl);
+        if (!(r2 > 0)) return;
+        dist_light = sqrt(r2);
+        E = rgb_scale(E, 1.0 / r2);
+    }
+    double cover = soak_scene_wetness(c->obj, e->h.p, e->h.u, e->h.v) * m->film_coverage;
+    double Tf = film_shadow(m, cover, e->cos1);
+    if (!(Tf > 0)) return;
+    double ph = rt_hg2(&local->phase, soak_v3_dot(d_in, e->d3));
+    soak_rgb Tm;
+    if (!c->med->coeffs)
+        Tm = rgb_exp(c->med->sigma_t, e->h.t); /* homogeneous: exact, the medium was checked by the walk */
+    else if (soak_medium_rgb_transmittance(c->med, x, e->d3, e->h.t, &t->rng, &Tm) != SOAK_OK)
+        return;
+    if (!(rgb_max(Tm) > 0)) return;
+    if (!rt_visible(t, soak_geometry_offset(e->h.p, e->n, e->wl), e->wl, dist_light)) return;
+    soak_rgb L = rgb_mul(rgb_mul(beta, Tm), E);
+    /* 1/n3^2: the radiance factor of entering, left out of beta (rt_cross_stack). */
+    L = rgb_scale(L, e->inv_q * ph * Tf * e->cos1 / (e->cos3 * n3 * n3 * c->path->eta_scale)); /* walk weights: see rt_wet_medium */
+    if (cover > 0 && m->film_thickness > 0) L = film_absorbed(m, cover, e->cos1, Tf, L);
+    c->path->L = rgb_add(c->path->L, L);
+}
+
+/* Caustic in-scattering from the photon map: sigma_s L_s / sigma_s, times 1/n3^2. */
+static soak_rgb caustic_light(const nee_ctx *c, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, const soak_medium_point *local)
+{
+    double n3 = c->m->medium.ior;
+    soak_rgb g = rt_photons_gather(c->t->ctx->caustics, x, d_in, &local->phase, c->object_id);
+    soak_rgb ss = local->sigma_s;
+    soak_rgb ls = soak_rgb3(ss.r > 0 ? g.r / ss.r : 0, ss.g > 0 ? g.g / ss.g : 0, ss.b > 0 ? g.b / ss.b : 0);
+    return rgb_scale(rgb_mul(beta, ls), 1.0 / (n3 * n3 * c->path->eta_scale));
+}
+
 /* Vertex hook of the walk: delta lights by next-event estimation (see the
  * top of this file) and the caustic photon map, both times 1/n3^2. */
 static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, const soak_medium_point *local,
@@ -186,132 +339,20 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
 {
     (void)rng; /* the thread's generator: rt_rand draws from the same stream */
     nee_ctx *c = ctx;
-    rt_thread *t = c->t;
-    const soak_scene *s = t->ctx->scene;
-    const soak_material *m = c->m;
-    double n3 = m->medium.ior;
+    const soak_scene *s = c->t->ctx->scene;
     for (int li = 0; li < s->n_lights; ++li) {
         const soak_light *l = &s->lights[li];
         if (l->type != SOAK_LIGHT_DIRECTIONAL && l->type != SOAK_LIGHT_POINT) continue;
-        soak_vec3 n = c->surf->n_ref, wl = l->type == SOAK_LIGHT_DIRECTIONAL ? l->direction : soak_v3_norm(soak_v3_sub(l->position, x));
-        /* A light behind the face the path came in through (a thin sheet
-         * lit from behind) reaches x through another face: start from the
-         * opposite normal, the exit search below finds the real face. */
-        if (!(soak_v3_dot(wl, n) > 0)) n = soak_v3_scale(n, -1.0);
-        soak_hit h;
-        int found = 0;
-        soak_vec3 d3 = wl;
-        double cos1 = 0, cos3 = 0, inv_q = 1.0, q1 = 1.0;
-        for (int it = 0; it < 2; ++it) {
-            cos1 = soak_v3_dot(wl, n);
-            if (!(cos1 > 0)) {
-                found = 0;
-                break;
-            }
-            soak_vec3 tang = soak_v3_scale(soak_v3_sub(wl, soak_v3_scale(n, cos1)), 1.0 / n3);
-            d3 = soak_v3_norm(soak_v3_add(tang, soak_v3_scale(n, sqrt(fmax(0.0, 1 - soak_v3_dot(tang, tang))))));
-            if (it == 0 && !c->med->coeffs) {
-                /* Roulette (see RT_NEE_ROULETTE_T), stage 1, before any ray: the exit distance predicted by the
-                 * tangent planes of the surface point the walk is heading for
-                 * and of this light's last exit point. */
-                const soak_hit *wh = &c->surf->hit;
-                /* wh is the surface the flight was heading for when the walk
-                 * asked for it, else the last one it found (med_within
-                 * spared the query): a tangent plane either way, ng outward
-                 * (med_distance orients it; the entry hit's is outward). */
-                double sd = c->surf->lost ? INFINITY : plane_distance(x, d3, wh->p, wh->ng);
-                if (li < RT_NEE_CACHE && c->cached[li]) sd = fmin(sd, plane_distance(x, d3, c->cache_p[li], c->cache_n[li]));
-                if (sd < INFINITY) {
-                    q1 = fmax(RT_NEE_PREDICT_MIN, nee_survival(max_transmittance(c->med->sigma_t, sd)));
-                    if (q1 < 1.0) {
-                        if (rt_rand(t) >= q1) {
-                            found = 0;
-                            break;
-                        }
-                        inv_q = 1.0 / q1;
-                    }
-                }
-            }
-            soak_ray r = {x, d3, 0.0, INFINITY};
-            t->n.rays++;
-            soak_status gst = soak_geometry_intersect_local(s->geometry, c->obj->object_id, &r, rt_object_uses_uv(c->obj), &h, &found);
-            if (gst != SOAK_OK) t->n.geom_errors++;
-            if (gst != SOAK_OK || !found) {
-                found = 0;
-                break;
-            }
-            if (it == 0 && !c->med->coeffs) {
-                /* Stage 2, with the first exit found: deep inside the light
-                 * barely gets through, so the rest of the estimate (exit
-                 * refinement, shadow ray) survives with overall probability
-                 * min(q1, nee_survival(T)); survivors are divided by it. */
-                double q = fmin(1.0, nee_survival(max_transmittance(c->med->sigma_t, h.t)) / q1);
-                if (q < 1.0) {
-                    if (rt_rand(t) >= q) {
-                        found = 0;
-                        break;
-                    }
-                    inv_q /= q;
-                }
-            }
-            soak_vec3 ny = soak_v3_dot(d3, h.ng) >= 0 ? h.ng : soak_v3_scale(h.ng, -1.0);
-            if (l->type == SOAK_LIGHT_POINT) wl = soak_v3_norm(soak_v3_sub(l->position, h.p));
-            int same = soak_v3_dot(ny, n) > 1 - 1e-12;
-            n = ny;
-            if (same && l->type == SOAK_LIGHT_DIRECTIONAL) break; /* planar face: exact */
-        }
-        if (found) {
-            cos1 = soak_v3_dot(wl, n);
-            cos3 = soak_v3_dot(d3, n);
-        }
-        if (!found || !(cos1 > 0) || !(cos3 > 0)) continue;
+        nee_exit e;
+        if (!find_exit(c, l, li, x, &e)) continue;
         if (li < RT_NEE_CACHE) {
             c->cached[li] = 1;
-            c->cache_p[li] = h.p;
-            c->cache_n[li] = n;
+            c->cache_p[li] = e.h.p;
+            c->cache_n[li] = e.n;
         }
-        double dist_light = INFINITY;
-        soak_rgb E = l->value;
-        if (l->type == SOAK_LIGHT_POINT) {
-            soak_vec3 dl = soak_v3_sub(l->position, h.p);
-            double r2 = soak_v3_dot(dl, dl);
-            if (!(r2 > 0)) continue;
-            dist_light = sqrt(r2);
-            E = rgb_scale(E, 1.0 / r2);
-        }
-        double cover = soak_scene_wetness(c->obj, h.p, h.u, h.v) * m->film_coverage;
-        double Tf = film_shadow(m, cover, cos1);
-        if (!(Tf > 0)) continue;
-        double ph = rt_hg2(&local->phase, soak_v3_dot(d_in, d3));
-        soak_rgb Tm;
-        if (!c->med->coeffs)
-            Tm = rgb_exp(c->med->sigma_t, h.t); /* homogeneous: exact, the medium was checked by the walk */
-        else if (soak_medium_rgb_transmittance(c->med, x, d3, h.t, &t->rng, &Tm) != SOAK_OK)
-            continue;
-        if (!(rgb_max(Tm) > 0)) continue;
-        if (!rt_visible(t, soak_geometry_offset(h.p, n, wl), wl, dist_light)) continue;
-        soak_rgb L = rgb_mul(rgb_mul(beta, Tm), E);
-        /* 1/n3^2: the radiance factor of entering, left out of beta (cross_stack). */
-        L = rgb_scale(L, inv_q * ph * Tf * cos1 / (cos3 * n3 * n3 * c->path->eta_scale)); /* walk weights: see rt_wet_medium */
-        if (cover > 0 && m->film_thickness > 0) {
-            /* Beer-Lambert in the film, weighted by the wet share of Tf. */
-            double cos2 = sqrt(fmax(0.0, 1 - (1 - cos1 * cos1) / (m->film_ior * m->film_ior)));
-            soak_jensen_layer wet = {1.0, m->film_ior, n3, m->film_k};
-            double Tw = 0;
-            soak_jensen_shadow(&wet, cos1, &Tw);
-            double share = cover * Tw / Tf;
-            soak_rgb a = rgb_exp(m->film_absorption, m->film_thickness / cos2);
-            L = soak_rgb3(L.r * (1 - share + share * a.r), L.g * (1 - share + share * a.g), L.b * (1 - share + share * a.b));
-        }
-        c->path->L = rgb_add(c->path->L, L);
+        add_delta_light(c, l, x, d_in, beta, local, &e);
     }
-    if (t->ctx->caustics) {
-        /* Caustic in-scattering from the photon map: sigma_s L_s / sigma_s. */
-        soak_rgb g = rt_photons_gather(t->ctx->caustics, x, d_in, &local->phase, c->object_id);
-        soak_rgb ss = local->sigma_s;
-        soak_rgb ls = soak_rgb3(ss.r > 0 ? g.r / ss.r : 0, ss.g > 0 ? g.g / ss.g : 0, ss.b > 0 ? g.b / ss.b : 0);
-        c->path->L = rgb_add(c->path->L, rgb_scale(rgb_mul(beta, ls), 1.0 / (n3 * n3 * c->path->eta_scale)));
-    }
+    if (c->t->ctx->caustics) c->path->L = rgb_add(c->path->L, caustic_light(c, x, d_in, beta, local));
     return 1;
 }
 

@@ -157,13 +157,22 @@ static void rescale(photon_list *l, long long n, long long k)
         for (int c = 0; c < 3; ++c) l->p[i].power[c] = (float)(l->p[i].power[c] * s);
 }
 
-soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed,
-                             const volatile sig_atomic_t *cancel, double deadline, rt_photon_map *map)
+/* Where photons come from: the lights, aimed at the bounding sphere of the
+ * dielectric objects, each light chosen in proportion to the luminance flux
+ * it sends toward that sphere. */
+typedef struct photon_source {
+    const soak_scene *scene;
+    soak_vec3 center;
+    double R;
+    double far;   /* distance from center of a sun photon's origin */
+    double *flux; /* per light */
+    double total;
+    long long n;  /* photons to emit: the power of each is divided by it */
+} photon_source;
+
+/* Bounding sphere of the dielectric objects; 0 when there is none. */
+static int dielectric_sphere(const soak_scene *sc, soak_vec3 *center, double *R)
 {
-    memset(map, 0, sizeof *map);
-    map->radius = radius;
-    const soak_scene *sc = c->scene;
-    if (n <= 0 || !(radius > 0)) return SOAK_OK;
     soak_vec3 lo = soak_v3(INFINITY, INFINITY, INFINITY), hi = soak_v3(-INFINITY, -INFINITY, -INFINITY);
     int any = 0;
     for (int i = 0; i < sc->n_objects; ++i) {
@@ -174,79 +183,130 @@ soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64
         hi = soak_v3(fmax(hi.x, b.x), fmax(hi.y, b.y), fmax(hi.z, b.z));
         any = 1;
     }
-    if (!any) return SOAK_OK;
-    soak_vec3 center = soak_v3_scale(soak_v3_add(lo, hi), 0.5);
-    double R = 0.5 * soak_v3_len(soak_v3_sub(hi, lo)) * 1.001 + 1e-9;
-    soak_vec3 slo, shi;
-    double far = 4 * R;
-    if (soak_geometry_bounds(sc->geometry, &slo, &shi) == SOAK_OK) far += soak_v3_len(soak_v3_sub(shi, slo));
-    /* Flux each light sends toward the dielectrics' bounding sphere. */
-    double *flux = calloc((size_t)sc->n_lights + 1, sizeof(double)), total = 0;
-    if (!flux) return SOAK_ERR_NOMEM;
+    if (!any) return 0;
+    *center = soak_v3_scale(soak_v3_add(lo, hi), 0.5);
+    *R = 0.5 * soak_v3_len(soak_v3_sub(hi, lo)) * 1.001 + 1e-9;
+    return 1;
+}
+
+/* Fills flux[] (luminance flux of each light toward the sphere); returns the total. */
+static double light_fluxes(const photon_source *src, double *flux)
+{
+    const soak_scene *sc = src->scene;
+    double R = src->R, total = 0;
     for (int i = 0; i < sc->n_lights; ++i) {
         const soak_light *l = &sc->lights[i];
         if (l->type == SOAK_LIGHT_DIRECTIONAL) {
             flux[i] = luminance(l->value) * SOAK_PI * R * R;
         } else if (l->type == SOAK_LIGHT_POINT) {
-            double d = soak_v3_len(soak_v3_sub(center, l->position));
+            double d = soak_v3_len(soak_v3_sub(src->center, l->position));
             double omega = d > R ? 2 * SOAK_PI * (R * R / (d * d)) / (1 + sqrt(1 - R * R / (d * d))) : 4 * SOAK_PI;
             flux[i] = luminance(l->value) * omega;
         }
         total += flux[i];
     }
-    if (!(total > 0)) {
-        free(flux);
-        return SOAK_OK;
-    }
+    return total;
+}
+
+/* A sun photon: uniform over the sphere's disk seen from the sun, far out. */
+static void emit_from_sun(rt_thread *t, const photon_source *src, const soak_light *l, double prob, soak_vec3 *org,
+                          soak_vec3 *dir, soak_rgb *power)
+{
+    double R = src->R;
+    rt_frame f = rt_frame_make(l->direction);
+    double rr = R * sqrt(rt_rand(t)), phi = 2 * SOAK_PI * rt_rand(t);
+    *org = soak_v3_add(src->center, rt_to_world(&f, soak_v3(rr * cos(phi), rr * sin(phi), src->far)));
+    *dir = soak_v3_scale(l->direction, -1.0);
+    *power = rgb_scale(l->value, SOAK_PI * R * R / (src->n * prob));
+}
+
+/* A point-light photon: uniform in the cone around the sphere (the whole
+ * sphere of directions from inside it). */
+static void emit_from_point(rt_thread *t, const photon_source *src, const soak_light *l, double prob, soak_vec3 *org,
+                            soak_vec3 *dir, soak_rgb *power)
+{
+    double R = src->R;
+    soak_vec3 to = soak_v3_sub(src->center, l->position);
+    double d = soak_v3_len(to);
+    double s2 = d > R ? R * R / (d * d) : 1.0;
+    double one_minus = d > R ? s2 / (1 + sqrt(1 - s2)) : 2.0; /* 1 - cos(theta_max) */
+    double ct = 1 - rt_rand(t) * one_minus, st = sqrt(fmax(0.0, 1 - ct * ct)), phi = 2 * SOAK_PI * rt_rand(t);
+    rt_frame f = rt_frame_make(d > 0 ? soak_v3_scale(to, 1.0 / d) : soak_v3(0, 0, 1));
+    *dir = soak_v3_norm(rt_to_world(&f, soak_v3(st * cos(phi), st * sin(phi), ct)));
+    *org = l->position;
+    *power = rgb_scale(l->value, 2 * SOAK_PI * one_minus / (src->n * prob));
+}
+
+/* Chooses a light by flux and emits a photon from it; 0 when the chosen
+ * light sends nothing. */
+static int emit_photon(rt_thread *t, const photon_source *src, soak_vec3 *org, soak_vec3 *dir, soak_rgb *power)
+{
+    const soak_scene *sc = src->scene;
+    double u = rt_rand(t) * src->total, acc = 0;
+    int li = 0;
+    while (li < sc->n_lights - 1 && acc + src->flux[li] <= u) acc += src->flux[li++];
+    const soak_light *l = &sc->lights[li];
+    double prob = src->flux[li] / src->total;
+    if (!(prob > 0)) return 0;
+    if (l->type == SOAK_LIGHT_DIRECTIONAL)
+        emit_from_sun(t, src, l, prob, org, dir, power);
+    else
+        emit_from_point(t, src, l, prob, org, dir, power);
+    return 1;
+}
+
+/* Emits and traces photons 0, 1, ... (photon i from its own stream of
+ * seed) until n or a stop. Returns how many were emitted, -1 when out of
+ * memory. */
+static long long trace_photons(const rt_ctx *c, const photon_source *src, uint64_t seed,
+                               const volatile sig_atomic_t *cancel, double deadline, photon_list *list)
+{
     rt_thread t;
     memset(&t, 0, sizeof t);
     t.ctx = c;
-    photon_list list = {0};
     int ok = 1;
     long long i = 0;
-    for (; i < n && ok; ++i) {
+    for (; i < src->n && ok; ++i) {
         if ((i & 1023) == 0 && i > 0 && should_stop(cancel, deadline)) break;
         soak_rng_seed(&t.rng, seed ^ 0x5bd1e9955bd1e995ull, (uint64_t)i);
-        double u = rt_rand(&t) * total, acc = 0;
-        int li = 0;
-        while (li < sc->n_lights - 1 && acc + flux[li] <= u) acc += flux[li++];
-        const soak_light *l = &sc->lights[li];
-        double prob = flux[li] / total;
-        if (!(prob > 0)) continue;
         soak_vec3 org, dir;
         soak_rgb power;
-        if (l->type == SOAK_LIGHT_DIRECTIONAL) {
-            rt_frame f = rt_frame_make(l->direction);
-            double rr = R * sqrt(rt_rand(&t)), phi = 2 * SOAK_PI * rt_rand(&t);
-            org = soak_v3_add(center, rt_to_world(&f, soak_v3(rr * cos(phi), rr * sin(phi), far)));
-            dir = soak_v3_scale(l->direction, -1.0);
-            power = rgb_scale(l->value, SOAK_PI * R * R / (n * prob));
+        if (!emit_photon(&t, src, &org, &dir, &power)) continue;
+        ok = trace_photon(&t, org, dir, power, list);
+    }
+    return ok ? i : -1;
+}
+
+soak_status rt_photons_build(const rt_ctx *c, long long n, double radius, uint64_t seed,
+                             const volatile sig_atomic_t *cancel, double deadline, rt_photon_map *map)
+{
+    memset(map, 0, sizeof *map);
+    map->radius = radius;
+    if (n <= 0 || !(radius > 0)) return SOAK_OK;
+    photon_source src;
+    memset(&src, 0, sizeof src);
+    src.scene = c->scene;
+    src.n = n;
+    if (!dielectric_sphere(c->scene, &src.center, &src.R)) return SOAK_OK;
+    soak_vec3 slo, shi;
+    src.far = 4 * src.R;
+    if (soak_geometry_bounds(c->scene->geometry, &slo, &shi) == SOAK_OK) src.far += soak_v3_len(soak_v3_sub(shi, slo));
+    src.flux = calloc((size_t)c->scene->n_lights + 1, sizeof(double));
+    if (!src.flux) return SOAK_ERR_NOMEM;
+    soak_status st = SOAK_OK;
+    photon_list list = {0};
+    src.total = light_fluxes(&src, src.flux);
+    if (src.total > 0) {
+        long long emitted = trace_photons(c, &src, seed, cancel, deadline, &list);
+        if (emitted < 0) {
+            st = SOAK_ERR_NOMEM;
         } else {
-            soak_vec3 to = soak_v3_sub(center, l->position);
-            double d = soak_v3_len(to);
-            double s2 = d > R ? R * R / (d * d) : 1.0;
-            double one_minus = d > R ? s2 / (1 + sqrt(1 - s2)) : 2.0; /* 1 - cos(theta_max) */
-            double ct = 1 - rt_rand(&t) * one_minus, st = sqrt(fmax(0.0, 1 - ct * ct)), phi = 2 * SOAK_PI * rt_rand(&t);
-            rt_frame f = rt_frame_make(d > 0 ? soak_v3_scale(to, 1.0 / d) : soak_v3(0, 0, 1));
-            dir = soak_v3_norm(rt_to_world(&f, soak_v3(st * cos(phi), st * sin(phi), ct)));
-            org = l->position;
-            power = rgb_scale(l->value, 2 * SOAK_PI * one_minus / (n * prob));
+            rescale(&list, n, emitted);
+            map->emitted = emitted;
+            if (list.n > 0) st = rt_photon_map_store(map, list.p, list.n);
         }
-        ok = trace_photon(&t, org, dir, power, &list);
     }
-    free(flux);
-    if (!ok) {
-        free(list.p);
-        return SOAK_ERR_NOMEM;
-    }
-    rescale(&list, n, i);
-    map->emitted = i;
-    if (list.n == 0) {
-        free(list.p);
-        return SOAK_OK;
-    }
-    soak_status st = rt_photon_map_store(map, list.p, list.n);
+    free(src.flux);
     free(list.p);
     return st;
 }
-

@@ -27,9 +27,9 @@ double rt_fresnel(double cos_i, double eta, double *cos_t)
  * crossings multiply to 1/n3^2 (air -> material), n3^2 (material -> air) or
  * 1 (back to the starting side) whatever happens in the film, so they are
  * not applied here: the walk carries beta without the 1/n3^2 and the
- * estimates gathered inside multiply by it instead (see medium_nee). That
- * keeps the roulette from killing paths for a factor that is undone when
- * they leave. */
+ * estimates gathered inside multiply by it instead (add_delta_light and
+ * caustic_light in render_medium.c). That keeps the roulette from killing
+ * paths for a factor that is undone when they leave. */
 int rt_cross_stack(rt_thread *t, const rt_stack *s, double p, int start_low, soak_rgb *beta)
 {
     int film = s->n2 != 1.0;

@@ -399,6 +399,180 @@ static int find_material(const soak_scene *s, const char *name)
     return -1;
 }
 
+/* The shape parsers: each reads its keys (errors at their JSON paths) and
+ * adds the shape to the geometry, returning the new object's id. */
+typedef soak_status (*shape_parser)(scene_ctx *c, const cJSON *o, const char *p, unsigned *id);
+
+/* A failure of the geometry to take a shape the parser accepted. */
+static soak_status shape_added(scene_ctx *c, const char *p, soak_status st)
+{
+    if (st != SOAK_OK) return sj_fail(c, st, p, "cannot add the shape (%s)", soak_status_str(st));
+    return SOAK_OK;
+}
+
+static soak_status add_sphere(scene_ctx *c, const cJSON *o, const char *p, unsigned *id)
+{
+    static const char *const keys[] = {"type", "material", "wetness", "center", "radius", NULL};
+    soak_vec3 center;
+    double r;
+    soak_status st = sj_keys(c, o, p, keys);
+    if (st == SOAK_OK) st = sj_vec3(c, o, "center", p, 1, soak_v3(0, 0, 0), &center);
+    if (st == SOAK_OK) st = sj_num_gt(c, o, "radius", p, 0, 1e9, 1, 1, &r);
+    if (st != SOAK_OK) return st;
+    return shape_added(c, p, soak_geometry_add_sphere(c->scene->geometry, center, r, id));
+}
+
+static soak_status add_quad(scene_ctx *c, const cJSON *o, const char *p, unsigned *id)
+{
+    static const char *const keys[] = {"type", "material", "wetness", "origin", "edge_u", "edge_v", NULL};
+    soak_vec3 org, eu, ev;
+    soak_status st = sj_keys(c, o, p, keys);
+    if (st == SOAK_OK) st = sj_vec3(c, o, "origin", p, 1, soak_v3(0, 0, 0), &org);
+    if (st == SOAK_OK) st = sj_vec3(c, o, "edge_u", p, 1, soak_v3(0, 0, 0), &eu);
+    if (st == SOAK_OK) st = sj_vec3(c, o, "edge_v", p, 1, soak_v3(0, 0, 0), &ev);
+    if (st != SOAK_OK) return st;
+    if (!(soak_v3_len(soak_v3_cross(eu, ev)) > 0)) {
+        char q[320];
+        sj_path(q, sizeof q, p, "edge_v");
+        return sj_fail(c, SOAK_ERR_ARG, q, "edges must be non-zero and not parallel");
+    }
+    return shape_added(c, p, soak_geometry_add_quad(c->scene->geometry, org, eu, ev, id));
+}
+
+/* A plane's "size": [width, depth], both > 0 and finite (required). */
+static soak_status plane_size(scene_ctx *c, const cJSON *o, const char *p, soak_vec3 *size)
+{
+    char q[320];
+    const cJSON *sz = cJSON_GetObjectItemCaseSensitive(o, "size");
+    sj_path(q, sizeof q, p, "size");
+    if (!sz) return sj_fail(c, SOAK_ERR_PARSE, q, "missing (required)");
+    if (!cJSON_IsArray(sz) || cJSON_GetArraySize(sz) != 2 || !cJSON_IsNumber(cJSON_GetArrayItem(sz, 0)) ||
+        !cJSON_IsNumber(cJSON_GetArrayItem(sz, 1)))
+        return sj_fail(c, SOAK_ERR_PARSE, q, "must be [width, depth]");
+    *size = soak_v3(cJSON_GetArrayItem(sz, 0)->valuedouble, cJSON_GetArrayItem(sz, 1)->valuedouble, 0);
+    if (!(size->x > 0 && size->y > 0 && size->x < 1e12 && size->y < 1e12))
+        return sj_fail(c, SOAK_ERR_ARG, q, "sizes must be > 0 and finite, got [%g, %g]", size->x, size->y);
+    return SOAK_OK;
+}
+
+/* A plane is a quad centred at "center", its edges along the tangents of "normal". */
+static soak_status add_plane(scene_ctx *c, const cJSON *o, const char *p, unsigned *id)
+{
+    static const char *const keys[] = {"type", "material", "wetness", "center", "normal", "size", NULL};
+    soak_vec3 center, n, size = soak_v3(0, 0, 0);
+    soak_status st = sj_keys(c, o, p, keys);
+    if (st == SOAK_OK) st = sj_vec3(c, o, "center", p, 0, soak_v3(0, 0, 0), &center);
+    if (st == SOAK_OK) st = sj_vec3(c, o, "normal", p, 0, soak_v3(0, 0, 1), &n);
+    if (st == SOAK_OK) st = plane_size(c, o, p, &size);
+    if (st != SOAK_OK) return st;
+    if (!(soak_v3_len(n) > 0)) {
+        char q[320];
+        sj_path(q, sizeof q, p, "normal");
+        return sj_fail(c, SOAK_ERR_ARG, q, "must not be the zero vector");
+    }
+    soak_vec3 t, b;
+    n = soak_v3_norm(n);
+    soak_v3_basis(n, &t, &b);
+    soak_vec3 eu = soak_v3_scale(t, size.x), ev = soak_v3_scale(b, size.y);
+    soak_vec3 org = soak_v3_sub(center, soak_v3_scale(soak_v3_add(eu, ev), 0.5));
+    return shape_added(c, p, soak_geometry_add_quad(c->scene->geometry, org, eu, ev, id));
+}
+
+static soak_status add_box(scene_ctx *c, const cJSON *o, const char *p, unsigned *id)
+{
+    static const char *const keys[] = {"type", "material", "wetness", "min", "max", NULL};
+    soak_vec3 lo, hi;
+    soak_status st = sj_keys(c, o, p, keys);
+    if (st == SOAK_OK) st = sj_vec3(c, o, "min", p, 1, soak_v3(0, 0, 0), &lo);
+    if (st == SOAK_OK) st = sj_vec3(c, o, "max", p, 1, soak_v3(0, 0, 0), &hi);
+    if (st != SOAK_OK) return st;
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) {
+        char q[320];
+        sj_path(q, sizeof q, p, "max");
+        return sj_fail(c, SOAK_ERR_ARG, q, "must exceed min on every axis (negative or zero size)");
+    }
+    return shape_added(c, p, soak_geometry_add_box(c->scene->geometry, lo, hi, id));
+}
+
+/* A mesh's "translate" and "scale" (one number or one per axis, > 0). */
+static soak_status mesh_placement(scene_ctx *c, const cJSON *o, const char *p, soak_vec3 *tr, soak_vec3 *sc)
+{
+    soak_status st = sj_vec3(c, o, "translate", p, 0, soak_v3(0, 0, 0), tr);
+    if (st == SOAK_OK && cJSON_IsNumber(cJSON_GetObjectItemCaseSensitive(o, "scale"))) {
+        double k;
+        st = sj_num_gt(c, o, "scale", p, 0, 1e12, 1, 1, &k);
+        *sc = soak_v3(k, k, k);
+    } else if (st == SOAK_OK) {
+        st = sj_vec3(c, o, "scale", p, 0, soak_v3(1, 1, 1), sc);
+    }
+    if (st != SOAK_OK) return st;
+    char q[320];
+    sj_path(q, sizeof q, p, "scale");
+    if (!(sc->x > 0 && sc->y > 0 && sc->z > 0)) return sj_fail(c, SOAK_ERR_ARG, q, "must be > 0 on every axis");
+    return SOAK_OK;
+}
+
+/* Does the object's wetness read a map (then the mesh must have texture coordinates)? */
+static int wetness_is_map(const cJSON *o)
+{
+    const cJSON *wet = cJSON_GetObjectItemCaseSensitive(o, "wetness");
+    const cJSON *wtype = cJSON_IsObject(wet) ? cJSON_GetObjectItemCaseSensitive(wet, "type") : NULL;
+    return cJSON_IsString(wtype) && strcmp(wtype->valuestring, "map") == 0;
+}
+
+static soak_status add_mesh(scene_ctx *c, const cJSON *o, const char *p, unsigned *id)
+{
+    static const char *const keys[] = {"type", "material", "wetness", "file", "translate", "scale", NULL};
+    const char *file;
+    soak_vec3 tr, sc = soak_v3(1, 1, 1);
+    soak_status st = sj_keys(c, o, p, keys);
+    if (st == SOAK_OK) st = sj_str(c, o, "file", p, 1, &file);
+    if (st == SOAK_OK) st = mesh_placement(c, o, p, &tr, &sc);
+    if (st != SOAK_OK) return st;
+    char q[320], full[2048], msg[2200];
+    sj_path(q, sizeof q, p, "file");
+    st = sj_file(c, file, q, full, sizeof full);
+    if (st != SOAK_OK) return st;
+    soak_mesh mesh;
+    st = soak_mesh_load(full, wetness_is_map(o), &mesh, msg, sizeof msg);
+    if (st != SOAK_OK) return sj_fail(c, st, q, "%s", msg);
+    double xf[12] = {sc.x, 0, 0, tr.x, 0, sc.y, 0, tr.y, 0, 0, sc.z, tr.z};
+    st = soak_geometry_add_mesh(c->scene->geometry, &mesh, xf, id);
+    soak_mesh_free(&mesh);
+    return shape_added(c, p, st);
+}
+
+typedef struct shape_type {
+    const char *name;
+    soak_shape_kind kind;
+    shape_parser add;
+} shape_type;
+
+static const shape_type *find_shape(const char *name)
+{
+    static const shape_type shapes[] = {
+        {"sphere", SOAK_SHAPE_SPHERE, add_sphere}, {"quad", SOAK_SHAPE_QUAD, add_quad},
+        {"plane", SOAK_SHAPE_QUAD, add_plane},     {"box", SOAK_SHAPE_BOX, add_box},
+        {"mesh", SOAK_SHAPE_MESH, add_mesh},
+    };
+    for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; ++i)
+        if (strcmp(name, shapes[i].name) == 0) return &shapes[i];
+    return NULL;
+}
+
+/* The wetness of the object just added (material mat), when it has one. */
+static soak_status parse_object_wetness(scene_ctx *c, const cJSON *o, const char *p, int mat)
+{
+    soak_scene *s = c->scene;
+    const cJSON *w = cJSON_GetObjectItemCaseSensitive(o, "wetness");
+    if (!w) return SOAK_OK;
+    char q[320];
+    sj_path(q, sizeof q, p, "wetness");
+    if (s->materials[mat].type != SOAK_MAT_WET && s->materials[mat].type != SOAK_MAT_MODEL)
+        return sj_fail(c, SOAK_ERR_ARG, q, "only objects with a \"wet\" or model material take a wetness");
+    return scene_parse_wetness(c, w, q, &s->objects[s->n_objects - 1].wetness);
+}
+
 static soak_status parse_object(scene_ctx *c, const cJSON *o, const char *p)
 {
     soak_scene *s = c->scene;
@@ -412,119 +586,15 @@ static soak_status parse_object(scene_ctx *c, const cJSON *o, const char *p)
         sj_path(q, sizeof q, p, "material");
         return sj_fail(c, SOAK_ERR_NOT_FOUND, q, "no material named '%s' in \"materials\"", mname);
     }
-    unsigned id = 0;
-    soak_shape_kind kind;
-    if (strcmp(type, "sphere") == 0) {
-        static const char *const keys[] = {"type", "material", "wetness", "center", "radius", NULL};
-        soak_vec3 center;
-        double r;
-        st = sj_keys(c, o, p, keys);
-        if (st == SOAK_OK) st = sj_vec3(c, o, "center", p, 1, soak_v3(0, 0, 0), &center);
-        if (st == SOAK_OK) st = sj_num_gt(c, o, "radius", p, 0, 1e9, 1, 1, &r);
-        if (st != SOAK_OK) return st;
-        kind = SOAK_SHAPE_SPHERE;
-        st = soak_geometry_add_sphere(s->geometry, center, r, &id);
-    } else if (strcmp(type, "quad") == 0) {
-        static const char *const keys[] = {"type", "material", "wetness", "origin", "edge_u", "edge_v", NULL};
-        soak_vec3 org, eu, ev;
-        st = sj_keys(c, o, p, keys);
-        if (st == SOAK_OK) st = sj_vec3(c, o, "origin", p, 1, soak_v3(0, 0, 0), &org);
-        if (st == SOAK_OK) st = sj_vec3(c, o, "edge_u", p, 1, soak_v3(0, 0, 0), &eu);
-        if (st == SOAK_OK) st = sj_vec3(c, o, "edge_v", p, 1, soak_v3(0, 0, 0), &ev);
-        if (st != SOAK_OK) return st;
-        if (!(soak_v3_len(soak_v3_cross(eu, ev)) > 0)) {
-            sj_path(q, sizeof q, p, "edge_v");
-            return sj_fail(c, SOAK_ERR_ARG, q, "edges must be non-zero and not parallel");
-        }
-        kind = SOAK_SHAPE_QUAD;
-        st = soak_geometry_add_quad(s->geometry, org, eu, ev, &id);
-    } else if (strcmp(type, "plane") == 0) {
-        static const char *const keys[] = {"type", "material", "wetness", "center", "normal", "size", NULL};
-        soak_vec3 center, n, size;
-        st = sj_keys(c, o, p, keys);
-        if (st == SOAK_OK) st = sj_vec3(c, o, "center", p, 0, soak_v3(0, 0, 0), &center);
-        if (st == SOAK_OK) st = sj_vec3(c, o, "normal", p, 0, soak_v3(0, 0, 1), &n);
-        if (st == SOAK_OK) {
-            const cJSON *sz = cJSON_GetObjectItemCaseSensitive(o, "size");
-            sj_path(q, sizeof q, p, "size");
-            if (!sz) return sj_fail(c, SOAK_ERR_PARSE, q, "missing (required)");
-            if (!cJSON_IsArray(sz) || cJSON_GetArraySize(sz) != 2 || !cJSON_IsNumber(cJSON_GetArrayItem(sz, 0)) ||
-                !cJSON_IsNumber(cJSON_GetArrayItem(sz, 1)))
-                return sj_fail(c, SOAK_ERR_PARSE, q, "must be [width, depth]");
-            size = soak_v3(cJSON_GetArrayItem(sz, 0)->valuedouble, cJSON_GetArrayItem(sz, 1)->valuedouble, 0);
-            if (!(size.x > 0 && size.y > 0 && size.x < 1e12 && size.y < 1e12))
-                return sj_fail(c, SOAK_ERR_ARG, q, "sizes must be > 0 and finite, got [%g, %g]", size.x, size.y);
-        }
-        if (st != SOAK_OK) return st;
-        if (!(soak_v3_len(n) > 0)) {
-            sj_path(q, sizeof q, p, "normal");
-            return sj_fail(c, SOAK_ERR_ARG, q, "must not be the zero vector");
-        }
-        soak_vec3 t, b;
-        n = soak_v3_norm(n);
-        soak_v3_basis(n, &t, &b);
-        soak_vec3 eu = soak_v3_scale(t, size.x), ev = soak_v3_scale(b, size.y);
-        soak_vec3 org = soak_v3_sub(center, soak_v3_scale(soak_v3_add(eu, ev), 0.5));
-        kind = SOAK_SHAPE_QUAD;
-        st = soak_geometry_add_quad(s->geometry, org, eu, ev, &id);
-    } else if (strcmp(type, "box") == 0) {
-        static const char *const keys[] = {"type", "material", "wetness", "min", "max", NULL};
-        soak_vec3 lo, hi;
-        st = sj_keys(c, o, p, keys);
-        if (st == SOAK_OK) st = sj_vec3(c, o, "min", p, 1, soak_v3(0, 0, 0), &lo);
-        if (st == SOAK_OK) st = sj_vec3(c, o, "max", p, 1, soak_v3(0, 0, 0), &hi);
-        if (st != SOAK_OK) return st;
-        if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) {
-            sj_path(q, sizeof q, p, "max");
-            return sj_fail(c, SOAK_ERR_ARG, q, "must exceed min on every axis (negative or zero size)");
-        }
-        kind = SOAK_SHAPE_BOX;
-        st = soak_geometry_add_box(s->geometry, lo, hi, &id);
-    } else if (strcmp(type, "mesh") == 0) {
-        static const char *const keys[] = {"type", "material", "wetness", "file", "translate", "scale", NULL};
-        const char *file;
-        soak_vec3 tr, sc = soak_v3(1, 1, 1);
-        st = sj_keys(c, o, p, keys);
-        if (st == SOAK_OK) st = sj_str(c, o, "file", p, 1, &file);
-        if (st == SOAK_OK) st = sj_vec3(c, o, "translate", p, 0, soak_v3(0, 0, 0), &tr);
-        if (st == SOAK_OK && cJSON_IsNumber(cJSON_GetObjectItemCaseSensitive(o, "scale"))) {
-            double k;
-            st = sj_num_gt(c, o, "scale", p, 0, 1e12, 1, 1, &k);
-            sc = soak_v3(k, k, k);
-        } else if (st == SOAK_OK) {
-            st = sj_vec3(c, o, "scale", p, 0, soak_v3(1, 1, 1), &sc);
-        }
-        if (st != SOAK_OK) return st;
-        sj_path(q, sizeof q, p, "scale");
-        if (!(sc.x > 0 && sc.y > 0 && sc.z > 0)) return sj_fail(c, SOAK_ERR_ARG, q, "must be > 0 on every axis");
-        sj_path(q, sizeof q, p, "file");
-        char full[2048], msg[2200];
-        st = sj_file(c, file, q, full, sizeof full);
-        if (st != SOAK_OK) return st;
-        const cJSON *wet = cJSON_GetObjectItemCaseSensitive(o, "wetness");
-        const cJSON *wtype = cJSON_IsObject(wet) ? cJSON_GetObjectItemCaseSensitive(wet, "type") : NULL;
-        int need_uv = cJSON_IsString(wtype) && strcmp(wtype->valuestring, "map") == 0;
-        soak_mesh mesh;
-        st = soak_mesh_load(full, need_uv, &mesh, msg, sizeof msg);
-        if (st != SOAK_OK) return sj_fail(c, st, q, "%s", msg);
-        double xf[12] = {sc.x, 0, 0, tr.x, 0, sc.y, 0, tr.y, 0, 0, sc.z, tr.z};
-        kind = SOAK_SHAPE_MESH;
-        st = soak_geometry_add_mesh(s->geometry, &mesh, xf, &id);
-        soak_mesh_free(&mesh);
-    } else {
+    const shape_type *shape = find_shape(type);
+    if (!shape) {
         sj_path(q, sizeof q, p, "type");
         return sj_fail(c, SOAK_ERR_PARSE, q, "unknown object type '%s' (accepted: sphere, quad, plane, box, mesh)", type);
     }
-    if (st != SOAK_OK) return sj_fail(c, st, p, "cannot add the shape (%s)", soak_status_str(st));
-    st = push_object(s, kind, id, mat);
-    if (st != SOAK_OK) return st;
-    const cJSON *w = cJSON_GetObjectItemCaseSensitive(o, "wetness");
-    if (w) {
-        sj_path(q, sizeof q, p, "wetness");
-        if (s->materials[mat].type != SOAK_MAT_WET && s->materials[mat].type != SOAK_MAT_MODEL)
-            return sj_fail(c, SOAK_ERR_ARG, q, "only objects with a \"wet\" or model material take a wetness");
-        st = scene_parse_wetness(c, w, q, &s->objects[s->n_objects - 1].wetness);
-    }
+    unsigned id = 0;
+    st = shape->add(c, o, p, &id);
+    if (st == SOAK_OK) st = push_object(s, shape->kind, id, mat);
+    if (st == SOAK_OK) st = parse_object_wetness(c, o, p, mat);
     return st;
 }
 

@@ -12,7 +12,6 @@
 #include "soak/preset.h"
 #include "soak/wetness.h"
 
-
 static void medium_majorant(soak_scene_medium *m)
 {
     double mj = soak_rgb_max(soak_rgb3(m->sigma_s.r + m->sigma_a.r, m->sigma_s.g + m->sigma_a.g, m->sigma_s.b + m->sigma_a.b));
@@ -267,135 +266,168 @@ static soak_status parse_ggx(scene_ctx *c, const cJSON *j, const char *path, soa
     return st;
 }
 
+/* A wet material's "film": the liquid layer (absent: water, k = 1, full coverage). */
+static soak_status parse_film(scene_ctx *c, const cJSON *film, const char *fp, soak_material *m)
+{
+    static const char *const fkeys[] = {"ior", "k", "thickness", "absorption", "coverage", NULL};
+    m->film_ior = SOAK_WATER_IOR;
+    m->film_k = 1;
+    m->film_coverage = 1;
+    if (!film) return SOAK_OK;
+    soak_status st = sj_keys(c, film, fp, fkeys);
+    if (st == SOAK_OK) st = sj_num(c, film, "ior", fp, 1, 3, 0, SOAK_WATER_IOR, &m->film_ior);
+    if (st == SOAK_OK) st = sj_num(c, film, "k", fp, 0.01, 100, 0, 1, &m->film_k);
+    if (st == SOAK_OK) st = sj_num(c, film, "thickness", fp, 0, 1e3, 0, 0, &m->film_thickness);
+    if (st == SOAK_OK) st = sj_rgb(c, film, "absorption", fp, 0, 1e9, 0, soak_rgb3(0, 0, 0), &m->film_absorption);
+    if (st == SOAK_OK) st = sj_num(c, film, "coverage", fp, 0, 1, 0, 1, &m->film_coverage);
+    return st;
+}
+
+/* A wet material's "base" (required): lambert, ggx or medium. */
+static soak_status parse_wet_base(scene_ctx *c, const cJSON *base, const char *bp, soak_material *m)
+{
+    if (!base) return sj_fail(c, SOAK_ERR_PARSE, bp, "missing (required)");
+    const char *bt;
+    soak_status st = sj_str(c, base, "type", bp, 1, &bt);
+    if (st != SOAK_OK) return st;
+    if (strcmp(bt, "lambert") == 0) {
+        static const char *const k[] = {"type", "albedo", NULL};
+        m->base = SOAK_BASE_LAMBERT;
+        st = sj_keys(c, base, bp, k);
+        if (st == SOAK_OK) st = sj_rgb(c, base, "albedo", bp, 0, 1, 1, soak_rgb3(0, 0, 0), &m->albedo);
+        return st;
+    }
+    if (strcmp(bt, "ggx") == 0) {
+        static const char *const k[] = {"type", "eta", "k", "roughness", NULL};
+        m->base = SOAK_BASE_GGX;
+        st = sj_keys(c, base, bp, k);
+        if (st == SOAK_OK) st = parse_ggx(c, base, bp, m);
+        return st;
+    }
+    if (strcmp(bt, "medium") == 0) {
+        m->base = SOAK_BASE_MEDIUM;
+        return parse_medium(c, base, bp, &m->medium, 1);
+    }
+    char tp[340];
+    sj_path(tp, sizeof tp, bp, "type");
+    return sj_fail(c, SOAK_ERR_PARSE, tp, "unknown base type '%s' (accepted: lambert, ggx, medium)", bt);
+}
+
+/* A wet material's "dry" medium (optional): the base medium's values where
+ * the object is dry, without its volume. */
+static soak_status parse_dry(scene_ctx *c, const cJSON *dry, const char *dp, soak_material *m)
+{
+    if (!dry) return SOAK_OK;
+    if (m->base != SOAK_BASE_MEDIUM) return sj_fail(c, SOAK_ERR_ARG, dp, "dry medium parameters need base.type \"medium\"");
+    m->dry_medium = m->medium;
+    m->dry_medium.volume = NULL;
+    soak_status st = parse_medium(c, dry, dp, &m->dry_medium, 0);
+    if (st != SOAK_OK) return st;
+    medium_majorant(&m->dry_medium);
+    m->has_dry = 1;
+    return SOAK_OK;
+}
+
 static soak_status parse_wet(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
 {
     static const char *const keys[] = {"type", "film", "base", "dry", NULL};
-    static const char *const fkeys[] = {"ior", "k", "thickness", "absorption", "coverage", NULL};
-    char fp[320], bp[320], dp[320], tp[340];
+    char fp[320], bp[320], dp[320];
     sj_path(fp, sizeof fp, path, "film");
     sj_path(bp, sizeof bp, path, "base");
     sj_path(dp, sizeof dp, path, "dry");
     soak_status st = sj_keys(c, j, path, keys);
     if (st != SOAK_OK) return st;
     m->type = SOAK_MAT_WET;
-    const cJSON *film = cJSON_GetObjectItemCaseSensitive(j, "film");
-    m->film_ior = SOAK_WATER_IOR;
-    m->film_k = 1;
-    m->film_coverage = 1;
-    if (film) {
-        st = sj_keys(c, film, fp, fkeys);
-        if (st == SOAK_OK) st = sj_num(c, film, "ior", fp, 1, 3, 0, SOAK_WATER_IOR, &m->film_ior);
-        if (st == SOAK_OK) st = sj_num(c, film, "k", fp, 0.01, 100, 0, 1, &m->film_k);
-        if (st == SOAK_OK) st = sj_num(c, film, "thickness", fp, 0, 1e3, 0, 0, &m->film_thickness);
-        if (st == SOAK_OK) st = sj_rgb(c, film, "absorption", fp, 0, 1e9, 0, soak_rgb3(0, 0, 0), &m->film_absorption);
-        if (st == SOAK_OK) st = sj_num(c, film, "coverage", fp, 0, 1, 0, 1, &m->film_coverage);
-        if (st != SOAK_OK) return st;
-    }
-    const cJSON *base = cJSON_GetObjectItemCaseSensitive(j, "base");
-    if (!base) return sj_fail(c, SOAK_ERR_PARSE, bp, "missing (required)");
-    const char *bt;
-    st = sj_str(c, base, "type", bp, 1, &bt);
+    st = parse_film(c, cJSON_GetObjectItemCaseSensitive(j, "film"), fp, m);
+    if (st == SOAK_OK) st = parse_wet_base(c, cJSON_GetObjectItemCaseSensitive(j, "base"), bp, m);
+    if (st == SOAK_OK) st = parse_dry(c, cJSON_GetObjectItemCaseSensitive(j, "dry"), dp, m);
     if (st != SOAK_OK) return st;
-    sj_path(tp, sizeof tp, bp, "type");
-    if (strcmp(bt, "lambert") == 0) {
-        static const char *const k[] = {"type", "albedo", NULL};
-        m->base = SOAK_BASE_LAMBERT;
-        st = sj_keys(c, base, bp, k);
-        if (st == SOAK_OK) st = sj_rgb(c, base, "albedo", bp, 0, 1, 1, soak_rgb3(0, 0, 0), &m->albedo);
-    } else if (strcmp(bt, "ggx") == 0) {
-        static const char *const k[] = {"type", "eta", "k", "roughness", NULL};
-        m->base = SOAK_BASE_GGX;
-        st = sj_keys(c, base, bp, k);
-        if (st == SOAK_OK) st = parse_ggx(c, base, bp, m);
-    } else if (strcmp(bt, "medium") == 0) {
-        m->base = SOAK_BASE_MEDIUM;
-        st = parse_medium(c, base, bp, &m->medium, 1);
-    } else {
-        return sj_fail(c, SOAK_ERR_PARSE, tp, "unknown base type '%s' (accepted: lambert, ggx, medium)", bt);
-    }
-    if (st != SOAK_OK) return st;
-    const cJSON *dry = cJSON_GetObjectItemCaseSensitive(j, "dry");
-    if (dry) {
-        if (m->base != SOAK_BASE_MEDIUM)
-            return sj_fail(c, SOAK_ERR_ARG, dp, "dry medium parameters need base.type \"medium\"");
-        m->dry_medium = m->medium;
-        m->dry_medium.volume = NULL;
-        st = parse_medium(c, dry, dp, &m->dry_medium, 0);
-        if (st != SOAK_OK) return st;
-        medium_majorant(&m->dry_medium);
-        m->has_dry = 1;
-    }
     if (m->base == SOAK_BASE_LAMBERT) model_view_lambert(m);
     if (m->base == SOAK_BASE_GGX) model_view_ggx(m);
     if (m->base != SOAK_BASE_MEDIUM) model_view_film(m);
     return SOAK_OK;
 }
 
-/* Preset + wetness through soak/wetness.h (steady state). Preset
- * coefficients are per mm; "unit_mm" is the scene length unit in mm. */
-static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
+/* What a preset material asks for. */
+typedef struct preset_request {
+    const char *name, *liquid, *model; /* liquid, model: NULL when absent */
+    double wetness, unit_mm;
+} preset_request;
+
+/* What the wetness chain made of the preset, kept past the preset file's lifetime. */
+typedef struct preset_chain {
+    soak_wet_params w;
+    soak_material_kind kind;
+    double ior;
+    soak_rgb n, k;
+} preset_chain;
+
+/* Loads the presets and evaluates the chain (steady state) for the
+ * request; sets m's model view. */
+static soak_status eval_preset(scene_ctx *c, const char *path, const preset_request *r, soak_material *m,
+                               preset_chain *out)
 {
-    static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", NULL};
-    const char *name, *liquid_name, *model_name;
-    double wet, unit_mm;
-    soak_status st = sj_keys(c, j, path, keys);
-    if (st == SOAK_OK) st = sj_str(c, j, "name", path, 1, &name);
-    if (st == SOAK_OK) st = sj_num(c, j, "wetness", path, 0, 1, 0, 0, &wet);
-    if (st == SOAK_OK) st = sj_str(c, j, "liquid", path, 0, &liquid_name);
-    if (st == SOAK_OK) st = sj_num_gt(c, j, "unit_mm", path, 0, 1e9, 0, 1000, &unit_mm);
-    if (st == SOAK_OK) st = sj_str(c, j, "model", path, 0, &model_name);
-    if (st != SOAK_OK) return st;
     char np[320], msg[1024];
     sj_path(np, sizeof np, path, "name");
     soak_preset_db *db = NULL;
-    st = soak_presets_load(NULL, &db, msg, sizeof msg);
+    soak_status st = soak_presets_load(NULL, &db, msg, sizeof msg);
     if (st != SOAK_OK) return sj_fail(c, st, np, "cannot load the presets: %s", msg);
-    const soak_preset *p = soak_presets_find(db, name);
-    const soak_liquid *liq = soak_presets_find_liquid(db, liquid_name ? liquid_name : "water");
+    const char *liquid = r->liquid ? r->liquid : "water";
+    const soak_preset *p = soak_presets_find(db, r->name);
+    const soak_liquid *liq = soak_presets_find_liquid(db, liquid);
     if (!p) {
-        soak_presets_free(db);
-        return sj_fail(c, SOAK_ERR_NOT_FOUND, np, "no preset named '%s' (see `soak materials`)", name);
-    }
-    if (!liq) {
-        soak_presets_free(db);
+        st = sj_fail(c, SOAK_ERR_NOT_FOUND, np, "no preset named '%s' (see `soak materials`)", r->name);
+    } else if (!liq) {
         sj_path(np, sizeof np, path, "liquid");
-        return sj_fail(c, SOAK_ERR_NOT_FOUND, np, "no liquid named '%s'", liquid_name ? liquid_name : "water");
+        st = sj_fail(c, SOAK_ERR_NOT_FOUND, np, "no liquid named '%s'", liquid);
+    } else {
+        soak_wet_input in = soak_wet_input_steady(p, r->wetness);
+        st = soak_wetness_eval(p, liq, &in, &out->w);
+        out->kind = p->kind;
+        out->ior = p->ior;
+        out->n = p->ior_n;
+        out->k = p->ior_k;
+        if (st == SOAK_OK)
+            preset_model_view(p, &out->w, r->unit_mm, m);
+        else
+            st = sj_fail(c, st, path, "wetness evaluation failed (%s)", soak_status_str(st));
     }
-    soak_wet_input in = soak_wet_input_steady(p, wet);
-    soak_wet_params w;
-    st = soak_wetness_eval(p, liq, &in, &w);
-    soak_material_kind kind = p->kind;
-    double ior = p->ior;
-    soak_rgb n = p->ior_n, k = p->ior_k;
-    if (st == SOAK_OK) preset_model_view(p, &w, unit_mm, m);
     soak_presets_free(db);
-    if (st != SOAK_OK) return sj_fail(c, st, path, "wetness evaluation failed (%s)", soak_status_str(st));
-    /* The chain's liquid-air interface (wetness.h step 5): the film over
-     * the coverage c and the pore water's surface (zero thickness) over
-     * porosity * fill of the rest (soak_wet_interface_area, the one
-     * owner of that area). One film of the chain's area; its
-     * thickness only where a film lies (the pore part differs by the
-     * absorption of a film thickness, < 1e-3 for clear liquids). */
-    m->type = SOAK_MAT_WET;
-    m->film_ior = w.film_ior;
+    return st;
+}
+
+/* The chain's liquid-air interface (wetness.h step 5): the film over the
+ * coverage c and the pore water's surface (zero thickness) over porosity *
+ * fill of the rest (soak_wet_interface_area, the one owner of that area).
+ * One film of the chain's area; its thickness only where a film lies (the
+ * pore part differs by the absorption of a film thickness, < 1e-3 for
+ * clear liquids). */
+static void preset_film(const soak_wet_params *w, double unit_mm, soak_material *m)
+{
+    m->film_ior = w->film_ior;
     m->film_k = 1;
-    m->film_coverage = soak_wet_interface_area(&w);
-    m->film_thickness = w.film_coverage > 0 ? w.film_thickness_m * 1000.0 / unit_mm : 0.0;
-    m->film_absorption = soak_rgb3(w.film_absorption_per_m.r * unit_mm / 1000.0, w.film_absorption_per_m.g * unit_mm / 1000.0,
-                                   w.film_absorption_per_m.b * unit_mm / 1000.0);
-    if (kind == SOAK_KIND_CONDUCTOR) {
+    m->film_coverage = soak_wet_interface_area(w);
+    m->film_thickness = w->film_coverage > 0 ? w->film_thickness_m * 1000.0 / unit_mm : 0.0;
+    m->film_absorption = soak_rgb3(w->film_absorption_per_m.r * unit_mm / 1000.0, w->film_absorption_per_m.g * unit_mm / 1000.0,
+                                   w->film_absorption_per_m.b * unit_mm / 1000.0);
+}
+
+static void preset_base(const preset_chain *pc, double unit_mm, soak_material *m)
+{
+    const soak_wet_params *w = &pc->w;
+    if (pc->kind == SOAK_KIND_CONDUCTOR) {
         m->base = SOAK_BASE_GGX;
-        m->eta = n;
-        m->k = k;
-        m->alpha = w.ggx_alpha;
-    } else if (kind != SOAK_KIND_THIN_SHEET) {
+        m->eta = pc->n;
+        m->k = pc->k;
+        m->alpha = w->ggx_alpha;
+    } else if (pc->kind != SOAK_KIND_THIN_SHEET) {
         /* Opaque dielectrics: the chain's base is a Lambertian surface of the
          * subsurface albedo (van de Hulst, index matched) under the liquid
          * interface; tracing the same medium under a smooth n = 1.5 boundary
          * would be a different model (1.5-2.7x darker dry, see
          * scenes/README.md). */
         m->base = SOAK_BASE_LAMBERT;
-        m->albedo = w.albedo_subsurface;
+        m->albedo = w->albedo_subsurface;
     } else {
         /* Thin sheets keep their traced medium (translucency) under a smooth
          * boundary of the fibres' index: an index-matched boundary would match
@@ -404,16 +436,37 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
          * sheets render black), so the sheet stays the slab it was; its
          * front-lit albedo is darker than the chain's (scenes/README.md). */
         m->base = SOAK_BASE_MEDIUM;
-        m->medium.sigma_s = soak_rgb3(w.sigma_s.r * unit_mm, w.sigma_s.g * unit_mm, w.sigma_s.b * unit_mm);
-        m->medium.sigma_a = soak_rgb3(w.sigma_a.r * unit_mm, w.sigma_a.g * unit_mm, w.sigma_a.b * unit_mm);
-        m->medium.phase = w.phase;
-        m->medium.ior = ior;
+        m->medium.sigma_s = soak_rgb3(w->sigma_s.r * unit_mm, w->sigma_s.g * unit_mm, w->sigma_s.b * unit_mm);
+        m->medium.sigma_a = soak_rgb3(w->sigma_a.r * unit_mm, w->sigma_a.g * unit_mm, w->sigma_a.b * unit_mm);
+        m->medium.phase = w->phase;
+        m->medium.ior = pc->ior;
         medium_majorant(&m->medium);
     }
-    if (!model_name) return SOAK_OK;
+}
+
+/* Preset + wetness through soak/wetness.h (steady state). Preset
+ * coefficients are per mm; "unit_mm" is the scene length unit in mm. */
+static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
+{
+    static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", NULL};
+    preset_request r;
+    soak_status st = sj_keys(c, j, path, keys);
+    if (st == SOAK_OK) st = sj_str(c, j, "name", path, 1, &r.name);
+    if (st == SOAK_OK) st = sj_num(c, j, "wetness", path, 0, 1, 0, 0, &r.wetness);
+    if (st == SOAK_OK) st = sj_str(c, j, "liquid", path, 0, &r.liquid);
+    if (st == SOAK_OK) st = sj_num_gt(c, j, "unit_mm", path, 0, 1e9, 0, 1000, &r.unit_mm);
+    if (st == SOAK_OK) st = sj_str(c, j, "model", path, 0, &r.model);
+    if (st != SOAK_OK) return st;
+    preset_chain pc;
+    st = eval_preset(c, path, &r, m, &pc);
+    if (st != SOAK_OK) return st;
+    m->type = SOAK_MAT_WET;
+    preset_film(&pc.w, r.unit_mm, m);
+    preset_base(&pc, r.unit_mm, m);
+    if (!r.model) return SOAK_OK;
     char mp[320];
     sj_path(mp, sizeof mp, path, "model");
-    return use_model(c, mp, model_name, m);
+    return use_model(c, mp, r.model, m);
 }
 
 soak_status scene_parse_material(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)

@@ -230,10 +230,15 @@ static soak_status parse_header(const cJSON *root, const char *path, int dims[3]
     return SOAK_OK;
 }
 
-static soak_status read_grid(const char *json_path, soak_volume *v, char *err, size_t errlen)
+/* What a grid header says, and where its payload is. */
+typedef struct grid_header {
+    int dims[3], map[SOAK_VOL_NCHANNELS], nch; /* map: file channel of each volume channel */
+    double size[3];
+    char raw[4096];
+} grid_header;
+
+static soak_status read_header(const char *json_path, grid_header *h, char *err, size_t errlen)
 {
-    if (!json_path || !v) return SOAK_ERR_NULL;
-    memset(v, 0, sizeof *v);
     char *text = read_text(json_path, err, errlen);
     if (!text) return SOAK_ERR_IO;
     cJSON *root = cJSON_Parse(text);
@@ -242,17 +247,20 @@ static soak_status read_grid(const char *json_path, soak_volume *v, char *err, s
         set_err(err, errlen, "%s: malformed JSON%s", json_path, "");
         return SOAK_ERR_PARSE;
     }
-    int dims[3], map[SOAK_VOL_NCHANNELS], nch = 0;
-    double size[3];
     const char *name = NULL;
-    soak_status st = parse_header(root, json_path, dims, size, map, &nch, &name, err, errlen);
-    char raw[4096];
-    if (st == SOAK_OK) data_path(json_path, name, raw, sizeof raw);
+    h->nch = 0;
+    soak_status st = parse_header(root, json_path, h->dims, h->size, h->map, &h->nch, &name, err, errlen);
+    if (st == SOAK_OK) data_path(json_path, name, h->raw, sizeof h->raw);
     cJSON_Delete(root);
-    if (st != SOAK_OK) return st;
+    return st;
+}
 
-    /* The payload's size is checked against the header before anything is
-     * allocated: memory is bounded by the file on disk. */
+/* Opens the payload (*f, to be closed by the caller) after checking it is a
+ * regular file of exactly the header's size: memory is bounded by the file
+ * on disk, before anything is allocated. */
+static soak_status open_payload(const grid_header *h, const char *json_path, FILE **f, char *err, size_t errlen)
+{
+    const char *raw = h->raw;
     struct stat sb;
     if (stat(raw, &sb) == 0 && !S_ISREG(sb.st_mode)) {
         if (err && errlen)
@@ -262,36 +270,45 @@ static soak_status read_grid(const char *json_path, soak_volume *v, char *err, s
                      json_path);
         return SOAK_ERR_IO;
     }
-    FILE *f = fopen(raw, "rb");
-    if (!f) {
+    *f = fopen(raw, "rb");
+    if (!*f) {
         /* The payload's name comes from the header: name both. */
         if (err && errlen)
             snprintf(err, errlen, "%s: cannot open the payload named by %s: %s", raw, json_path, strerror(errno));
         return SOAK_ERR_IO;
     }
-    size_t n = (size_t)dims[0] * (size_t)dims[1] * (size_t)dims[2];
-    long long want = (long long)n * nch * 4, have = fseek(f, 0, SEEK_END) == 0 ? (long long)ftell(f) : -1;
+    size_t n = (size_t)h->dims[0] * (size_t)h->dims[1] * (size_t)h->dims[2];
+    long long want = (long long)n * h->nch * 4, have = fseek(*f, 0, SEEK_END) == 0 ? (long long)ftell(*f) : -1;
     if (have != want) {
         char msg[256];
-        snprintf(msg, sizeof msg, "%lld bytes, but dims %dx%dx%d with %d channels of float32 need %lld", have, dims[0],
-                 dims[1], dims[2], nch, want);
+        snprintf(msg, sizeof msg, "%lld bytes, but dims %dx%dx%d with %d channels of float32 need %lld", have,
+                 h->dims[0], h->dims[1], h->dims[2], h->nch, want);
         if (err && errlen)
             snprintf(err, errlen, "%s: size does not match the header: %s (header %s)", raw, msg, json_path);
-        fclose(f);
         return SOAK_ERR_PARSE;
     }
-    st = soak_volume_alloc(v, dims[0], dims[1], dims[2], size);
-    if (st != SOAK_OK) {
+    return SOAK_OK;
+}
+
+static soak_status alloc_grid(const grid_header *h, const char *json_path, soak_volume *v, char *err, size_t errlen)
+{
+    soak_status st = soak_volume_alloc(v, h->dims[0], h->dims[1], h->dims[2], h->size);
+    if (st != SOAK_OK)
         set_err(err, errlen, "%s: dims: %s", json_path,
                 st == SOAK_ERR_NOMEM ? "out of memory for the grid" : "too many voxels (at most 2^31 / 10 in all)");
-        fclose(f);
-        return st;
-    }
+    return st;
+}
+
+/* Reads every channel the volume has from its place in the payload; values must be finite. */
+static soak_status read_channels(FILE *f, const grid_header *h, soak_volume *v, char *err, size_t errlen)
+{
+    const char *raw = h->raw;
+    size_t n = (size_t)h->dims[0] * (size_t)h->dims[1] * (size_t)h->dims[2];
     unsigned char *buf = malloc(n * 4);
-    st = buf ? SOAK_OK : SOAK_ERR_NOMEM;
+    soak_status st = buf ? SOAK_OK : SOAK_ERR_NOMEM;
     if (!buf) set_err(err, errlen, "%s: out of memory reading %s", raw, "the grid");
     for (int c = 0; c < SOAK_VOL_NCHANNELS && st == SOAK_OK; ++c) {
-        if (fseek(f, (long)((size_t)map[c] * n * 4), SEEK_SET) != 0 || fread(buf, 4, n, f) != n) {
+        if (fseek(f, (long)((size_t)h->map[c] * n * 4), SEEK_SET) != 0 || fread(buf, 4, n, f) != n) {
             set_err(err, errlen, "%s: read failed%s", raw, "");
             st = SOAK_ERR_IO;
             break;
@@ -308,7 +325,21 @@ static soak_status read_grid(const char *json_path, soak_volume *v, char *err, s
         }
     }
     free(buf);
-    fclose(f);
+    return st;
+}
+
+static soak_status read_grid(const char *json_path, soak_volume *v, char *err, size_t errlen)
+{
+    if (!json_path || !v) return SOAK_ERR_NULL;
+    memset(v, 0, sizeof *v);
+    grid_header h;
+    soak_status st = read_header(json_path, &h, err, errlen);
+    if (st != SOAK_OK) return st;
+    FILE *f = NULL;
+    st = open_payload(&h, json_path, &f, err, errlen);
+    if (st == SOAK_OK) st = alloc_grid(&h, json_path, v, err, errlen);
+    if (st == SOAK_OK) st = read_channels(f, &h, v, err, errlen);
+    if (f) fclose(f);
     if (st != SOAK_OK) soak_volume_free(v);
     return st;
 }

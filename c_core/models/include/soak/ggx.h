@@ -25,7 +25,7 @@
  * directions approach the horizon; where that exceeds the double range (both
  * cosines below ~1e-300, denormal) the checked BRDFs return SOAK_ERR_NUMERIC
  * rather than Inf. D, G1, G2 and the pdf stay finite for every valid input
- * (tests/c/test_stability.c).
+ * (tests/c/models/test_stability.c).
  *
  * Stability: other models (porous, ww) depend on this header. */
 #ifndef SOAK_GGX_H

@@ -1,7 +1,7 @@
 /* Jensen-Legakis-Dorsey two-layer surface (seed 000, Eq. 1-4): a smooth
  * liquid film (index n2) between air (n1) and a scattering material (n3).
  *
- * Readings and corrections of the seed (each tested in tests/c/test_jensen.c):
+ * Readings and corrections of the seed (each tested in tests/c/models/test_jensen.c):
  *  - Radiance divided by n^2 is invariant across a smooth interface (besides
  *    the 1 - F loss), so radiance carried by light crossing from medium a
  *    into medium b is multiplied by (n_b/n_a)^2 (1 - F). Eq. 1/2 print

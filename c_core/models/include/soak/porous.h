@@ -13,7 +13,7 @@
  * 3. soak_porous_ggx_*: our energy-conserving variant on a GGX base (see the
  *    comment above soak_porous_ggx_params).
  *
- * Corrections to the seeds (each is tested in tests/c/test_porous.c):
+ * Corrections to the seeds (each is tested in tests/c/models/test_porous.c):
  *  - G_p: seed 002 Eq. 1 prints Schlick's constant as k = 2 m^2 / pi; seed 001
  *    gives k = sqrt(2 m^2 / pi), Schlick's (1994) form for RMS slope m. We use
  *    the square root: Smith masking depends on the slope only through
@@ -69,7 +69,7 @@
  * incidence the albedo is 1 + a (ks_water - M), M = 2 int_0^1 G1(mu) mu dmu
  * >= 0.703 (its value at m = 1). ks_water <= 0.5 < 0.703 keeps the albedo
  * <= 1 (white furnace over k_d, k_s, m, porosity, s_p, fill, ks_water in
- * tests/c/test_stability.c); ks_water = 1 reflected up to 1.29. */
+ * tests/c/models/test_stability.c); ks_water = 1 reflected up to 1.29. */
 #define SOAK_POROUS_KS_WATER_MAX 0.5
 
 /* ---- building blocks ---- */
@@ -113,7 +113,7 @@ typedef enum soak_blinn_norm {
      * mirror of wi = +z about h, cos_o = 2 cos_h^2 - 1 and dw_o = 4 cos_h
      * dw_h, so A(n) = 8 pi int_{1/sqrt2}^1 c^(n+1) (2c^2 - 1) dc. The
      * albedo is then exactly 1 at normal incidence and falls towards
-     * grazing (measured for n in [0, 1e4], tests/c/test_stability.c), so
+     * grazing (measured for n in [0, 1e4], tests/c/models/test_stability.c), so
      * k_s is the fraction of light reflected specularly, as Merillou's
      * k_a = 1 - k_s - k_d requires. Default. (Was Hoffman's (n+8)/(8 pi),
      * SIGGRAPH 2010 course: an approximation of 1/A(n) whose albedo at
@@ -199,7 +199,7 @@ soak_status soak_porous_albedo_factor(const soak_porous_params *p, double fill, 
  * average of rho_eff) <= 1 for every direction, fill and porosity, because
  * rho_eff <= 1 and the normaliser 1 - E_s_avg is computed exactly for the
  * interpolated table. What remains is the table's own error, measured
- * against an independent quadrature at ~1e-6 (tests/c/test_porous.c).
+ * against an independent quadrature at ~1e-6 (tests/c/models/test_porous.c).
  * Reciprocal: every term is symmetric in (wi, wo). Porosity 0 makes fill
  * irrelevant. Light entering filled pores through the water surface is
  * taken as absorbed (the darkening of seed 002).

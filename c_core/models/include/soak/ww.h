@@ -114,7 +114,7 @@ soak_status soak_ww_sample(const soak_ww *m, soak_vec3 wo, double u0, double u1,
                            double *weight, double *pdf, int *is_delta);
 
 /* ---- Tri-Ace fast paths (ww_triace.c) ----
- * Accuracy against the exact model is measured in tests/c/test_ww.c. */
+ * Accuracy against the exact model is measured in tests/c/models/test_ww.c. */
 
 /* Seed 001 / Tri-Ace: F_bottom(n2, n3) = F0(n2, n3) (1 - F0(n2, 1)), the
  * normal-incidence value of (1 - F21) F23. n2: film index, n3: base index,
@@ -151,7 +151,7 @@ typedef struct soak_ww_triace {
  * SOAK_WW_TRIACE_N_MAX] (water 1.333, and the shipped coffee, cola, wine);
  * others return SOAK_ERR_ARG. The Fresnel terms (r0_top, fbottom, diffuse)
  * and inv_n2 use n_water; the refraction polynomial is seed 001's fit for
- * 1.33 at every accepted index. Its error (tests/c/test_ww.c, printed table):
+ * 1.33 at every accepted index. Its error (tests/c/models/test_ww.c, printed table):
  * at n_water = 1.333 the fast path equals the exact model at normal
  * incidence without absorption, and its largest relative error over the
  * 0..85 degree grid (already above 1 at grazing for n = 1.33) rises by at
@@ -169,9 +169,9 @@ soak_status soak_ww_triace_setup(const soak_ww *m, soak_ww_triace *fast);
  * No pow/exp; equals soak_ww_eval exactly at normal incidence without
  * absorption. Not reciprocal: Schlick T12 at cos_i but a constant exit
  * transmission (1 - F0(1.33, 1)) inside F_bottom, which is the dominant
- * error at grazing theta_o (see tests/c/test_ww.c table). Everything else is
+ * error at grazing theta_o (see tests/c/models/test_ww.c table). Everything else is
  * symmetric, so f(wi, wo) / f(wo, wi) = S(cos_i) / S(cos_o) exactly,
- * S(c) = 1 - (1 - c)^5. Measured (tests/c/test_stability.c, 2e5 pairs
+ * S(c) = 1 - (1 - c)^5. Measured (tests/c/models/test_stability.c, 2e5 pairs
  * uniform in solid angle, both polar angles <= 85 deg): 78 % of pairs
  * are more than 1 % off; the largest ratio is 1 / S(cos 85 deg) = 2.731.
  * Over the whole hemisphere the ratio is unbounded (S(0) = 0: f(wo, wi)

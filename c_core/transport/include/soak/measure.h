@@ -1,7 +1,7 @@
 /* Virtual gonio-reflectometer: reflectance and transmittance of canonical
  * configurations measured by tracing photons through the actual geometry and
  * media (soak/medium.h); no closed form is used. The analytic and numeric
- * references live in the tests (tests/c/test_measure_*.c).
+ * references live in the tests (tests/c/transport/test_measure_*.c).
  *
  * Geometry (infinite, plane-parallel; the top surface is z = 0, air above):
  *  - FILM: smooth liquid film of index ior over an opaque Lambertian base of

@@ -93,7 +93,7 @@ static void check_shipped(void)
         check_true("copper is a conductor", copper->kind == SOAK_KIND_CONDUCTOR);
         /* seed 000 paper: dry (0.05, -0.05, w 0.2), wet g2 -0.1 with w 0.1, w weighting the backward lobe.
          * The wet g1 (and sand's wet g) are calibrated against measurements:
-         * tests/c/test_calibration.c; copper's n, k and water's absorption
+         * tests/c/materials/test_calibration.c; copper's n, k and water's absorption
          * are checked against their measured tables there too. */
         check_close("paper dry g1", paper->phase_dry.g1, 0.05, 0);
         check_close("paper dry g2", paper->phase_dry.g2, -0.05, 0);

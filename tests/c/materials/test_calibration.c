@@ -156,7 +156,7 @@ static void check_sun(const soak_preset_db *db, const soak_liquid *water)
 static int read_riese(double (*rows)[11])
 {
     char path[1024];
-    const char *me = __FILE__, *cut = strstr(me, "tests/c/test_calibration.c");
+    const char *me = __FILE__, *cut = strstr(me, "tests/c/materials/test_calibration.c");
     if (!cut) return 0;
     snprintf(path, sizeof path, "%.*sc_core/data/measured/riese2018_rgb.csv", (int)(cut - me), me);
     FILE *f = fopen(path, "r");
