@@ -217,8 +217,8 @@ static void write_header(pov_out *o, const soak_export_header *h)
         POV_FORMAT_VERSION);
     out(o, "// materials: %s, FNV-1a 64 %s\n", h->materials_file, h->materials_hash);
     out(o, "// Physics: c_core/materials/include/soak/wetness.h; export contract:\n");
-    out(o, "// c_core/materials/include/soak/export.h; the mapping to POV-Ray's finish:\n");
-    out(o, "// c_core/materials/src/export_povray.c.\n");
+    out(o, "// c_core/export/include/soak/export.h; the mapping to POV-Ray's finish:\n");
+    out(o, "// c_core/export/src/export_povray.c.\n");
     out(o, "#ifndef(Soak_Materials_Inc_Temp)\n#declare Soak_Materials_Inc_Temp = version;\n#version 3.7;\n");
     out(o, "#ifdef(View_POV_Include_Stack)\n  #debug \"including soak_materials.inc\\n\"\n#end\n\n");
     out(o, "#declare Soak_Data_Generator = \"%s\";\n", h->generator);

@@ -289,7 +289,7 @@ static void add_header(json_ctx *j, cJSON *root, const soak_export_header *h)
         "depends on wetness and time only through L, so look the tables up at L.");
     str(j, notes, "units",
         "colours: linear RGB (Rec.709 primaries); lengths: m; coefficients: 1/m; roughness = sqrt(ggx_alpha).");
-    str(j, notes, "chain", "c_core/materials/include/soak/wetness.h (steps 1-6) and c_core/materials/include/soak/export.h");
+    str(j, notes, "chain", "c_core/materials/include/soak/wetness.h (steps 1-6) and c_core/export/include/soak/export.h");
 }
 
 soak_status soak_export_write_json(const soak_preset_db *db, FILE *out, char *err, size_t errlen)

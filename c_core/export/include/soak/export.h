@@ -90,7 +90,7 @@ typedef struct soak_export_target {
     soak_export_writer write;
 } soak_export_target;
 
-/* The table of targets (json, povray, blender, osl...). */
+/* The table of targets (json, povray, blender, osl..., osl-math). */
 const soak_export_target *soak_export_targets(int *count);
 const soak_export_target *soak_export_find_target(const char *name);
 
@@ -109,5 +109,8 @@ soak_status soak_export_write_osl(const soak_preset_db *db, FILE *out, char *err
 soak_status soak_export_write_osl_legacy(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 soak_status soak_export_write_osl_sheet(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 soak_status soak_export_write_osl_wetmap(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
+/* The shaders' arithmetic (c_core/export/src/soak_wet_math.h, the same for
+ * every preset file) with a generated-file banner. */
+soak_status soak_export_write_osl_math(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 
 #endif
