@@ -45,6 +45,10 @@ PATTERNS = [
 ]
 COMPILED = [(name, re.compile(p, re.IGNORECASE)) for name, p in PATTERNS]
 
+# A hand-written OSL shader of the self-test's temporary tree (the shipped
+# ones are all generated).
+CUSTOM_OSL = os.path.join("osl", "custom.osl")
+
 # One planted copy per pattern: (file it goes into, line, pattern it must trip).
 PLANTS = [
     ("povray/soak.inc", "#local Soak__X = min(max((Time - T0) * Soak__L_Inv, 0), 1);", 1),
@@ -54,9 +58,9 @@ PLANTS = [
     ("povray/soak.inc", "#local Soak__F = function(C) { F0 + (1 - F0) * pow(1 - C, 5) }", 4),
     ("blender_addon/soak/nodes.py", "f = f0 + (1.0 - f0) * (1.0 - cos_t) ** 5", 5),
     ("blender_addon/soak/nodes.py", "f = b.math(\"POWER\", b.math(\"SUBTRACT\", 1.0, cos_t), 5.0)", 6),
-    ("osl/custom.osl", "float rs = (c - eta * ct) / (c + eta * ct);", 7),
+    (CUSTOM_OSL, "float rs = (c - eta * ct) / (c + eta * ct);", 7),
     ("povray/soak.inc", "#local Soak__R0 = pow((N - 1) / (N + 1), 2);", 7),
-    ("osl/custom.osl", "float f = 0.5 * (rs * rs + rp * rp);", 8),
+    (CUSTOM_OSL, "float f = 0.5 * (rs * rs + rp * rp);", 8),
     ("blender_addon/soak/nodes.py", "p = min(max((t - t0) / t_fill, 0.0), 1.0)", 1),
 ]
 
