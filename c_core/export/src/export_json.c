@@ -5,8 +5,6 @@
  * (soak/json_writer.h) so that the same input gives the same bytes on every
  * machine. */
 #include <math.h>
-#include <stdlib.h>
-#include <string.h>
 
 #include "soak/export.h"
 #include "soak/film.h"
