@@ -10,3 +10,4 @@ soak=${1:-build/bin/soak}
 "$soak" export --target osl-legacy -o osl/soak_wet_surface_legacy.osl
 "$soak" export --target osl-sheet -o osl/soak_wet_sheet.osl
 "$soak" export --target osl-wetmap -o osl/soak_wetmap.osl
+"$soak" export --target osl-math -o osl/soak_wet_math.h

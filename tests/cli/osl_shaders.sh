@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# The shipped OSL shaders are what `soak export` writes today (stale check),
-# self-contained (Blender compiles Internal text blocks from a temporary
-# folder) and offer every preset and liquid of the preset file.
+# The shipped OSL shaders and osl/soak_wet_math.h are what `soak export` writes
+# today (stale check), self-contained (Blender compiles Internal text blocks
+# from a temporary folder) and offer every preset and liquid of the preset file.
 . "$(dirname "$0")/lib.bash"
 ROOT=${SOAK_ROOT:?}
 for pair in "osl:soak_wet_surface.osl" "osl-legacy:soak_wet_surface_legacy.osl" "osl-sheet:soak_wet_sheet.osl" \
-            "osl-wetmap:soak_wetmap.osl"; do
+            "osl-wetmap:soak_wetmap.osl" "osl-math:soak_wet_math.h"; do
   target=${pair%%:*} file=${pair#*:}
   expect_exit 0 "export --target $target" -- "$SOAK" export --target "$target" -o "$SOAK_TMP/$file"
   if cmp -s "$SOAK_TMP/$file" "$ROOT/osl/$file"; then ok "osl/$file is current"
@@ -13,11 +13,13 @@ for pair in "osl:soak_wet_surface.osl" "osl-legacy:soak_wet_surface_legacy.osl" 
   if grep -q '^ *#include' "$ROOT/osl/$file"; then bad "osl/$file has an #include"; else ok "osl/$file is self-contained"; fi
   grep -q "Generated\|GENERATED" "$ROOT/osl/$file" && ok "osl/$file says it is generated" || bad "osl/$file lacks the generated header"
 done
-# The inlined math is the header the C tests compile, byte for byte.
-want=$(sed -n '/^#ifndef SOAK_WET_MATH_H/,/^#endif/p' "$ROOT/osl/soak_wet_math.h")
-for file in soak_wet_surface.osl soak_wet_surface_legacy.osl soak_wet_sheet.osl soak_wetmap.osl; do
-  body=$(sed -n '/^#ifndef SOAK_WET_MATH_H/,/^#endif/p' "$ROOT/osl/$file")
-  [ -n "$want" ] && [ "$body" = "$want" ] && ok "$file: inlined math = osl/soak_wet_math.h" || bad "$file: inlined math differs from osl/soak_wet_math.h"
+# The inlined math is the core's header the C tests compile, whole and byte
+# for byte.
+core_math=c_core/export/src/soak_wet_math.h
+for file in soak_wet_surface.osl soak_wet_surface_legacy.osl soak_wet_sheet.osl soak_wetmap.osl soak_wet_math.h; do
+  if python3 -c 'import sys; m = open(sys.argv[1]).read(); sys.exit(0 if m and m in open(sys.argv[2]).read() else 1)' \
+       "$ROOT/$core_math" "$ROOT/osl/$file"; then ok "$file: inlined math = $core_math"
+  else bad "$file: inlined math differs from $core_math"; fi
 done
 sheets=$(grep -o 'string Preset = "[a-z_]*" \[\[ string widget = "popup", string options = "[^"]*"' "$ROOT/osl/soak_wet_sheet.osl" | sed 's/.*options = "//; s/"$//')
 want_sheets=$("$SOAK" materials | awk 'NR > 3 && NF > 5 && $1 ~ /^[a-z_]+$/ && /thin_sheet/ {print $1}' | paste -sd'|')

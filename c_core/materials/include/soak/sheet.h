@@ -21,7 +21,7 @@
  * and inside (soak_fresnel_dielectric_avg at n and 1/n; total internal
  * reflection included). n = 1 gives r_e = r_i = 0 and T_n = T. The sheet is
  * not backed; its error against traced slabs (index matched and n = 1.53)
- * is measured in tests/c/materials/test_export.c. */
+ * is measured in tests/c/export/test_export.c. */
 #ifndef SOAK_SHEET_H
 #define SOAK_SHEET_H
 

@@ -29,7 +29,9 @@
  *     (soak/povray_subsurface.h);
  *   - the wetness function for any base colour (soak_wet_params_for_base)
  *     on the nodes of soak_export_base_nodes, as <r,g,b> per (wetness, dry
- *     albedo) node.
+ *     albedo) node;
+ *   - the pore-filling schedule as a macro (Soak_Fill_Progress_Fn), the one
+ *     copy soak.inc's animation macros call.
  * Layout: flat arrays indexed by table t = preset * Soak_N_Liquids + liquid
  * (POV-Ray 3.7 has no dictionaries), with start/count arrays. Numbers are
  * printed with 7 significant digits: the same preset file gives the same
@@ -47,7 +49,7 @@
 
 #define POV_ROUGH_MIN 5e-4
 #define POV_ROUGH_MAX 1.0
-#define POV_FORMAT_VERSION 3
+#define POV_FORMAT_VERSION 4
 #define POV_SUBSURFACE_PIGMENT_MIN 1e-3 /* soak.inc's clamp of a subsurface pigment */
 
 enum { V_PIGMENT, V_REFLECT_METAL, V_SHEET_T, V_SIGMA_S, V_SIGMA_A, V_TRANSLUCENCY, V_COUNT };
@@ -217,8 +219,8 @@ static void write_header(pov_out *o, const soak_export_header *h)
         POV_FORMAT_VERSION);
     out(o, "// materials: %s, FNV-1a 64 %s\n", h->materials_file, h->materials_hash);
     out(o, "// Physics: c_core/materials/include/soak/wetness.h; export contract:\n");
-    out(o, "// c_core/materials/include/soak/export.h; the mapping to POV-Ray's finish:\n");
-    out(o, "// c_core/materials/src/export_povray.c.\n");
+    out(o, "// c_core/export/include/soak/export.h; the mapping to POV-Ray's finish:\n");
+    out(o, "// c_core/export/src/export_povray.c.\n");
     out(o, "#ifndef(Soak_Materials_Inc_Temp)\n#declare Soak_Materials_Inc_Temp = version;\n#version 3.7;\n");
     out(o, "#ifdef(View_POV_Include_Stack)\n  #debug \"including soak_materials.inc\\n\"\n#end\n\n");
     out(o, "#declare Soak_Data_Generator = \"%s\";\n", h->generator);
@@ -270,6 +272,26 @@ static void write_presets(pov_out *o, const soak_preset_db *db)
         if (i + 1 < nl) out(o, ", ");
     }
     out(o, "}\n\n");
+}
+
+/* soak_fill_fraction (soak/porous.h) in POV-Ray's function language, so that
+ * soak.inc's animation macros derive no schedule of their own. The macro
+ * returns a function of the elapsed time, which the callers compute from
+ * their own start times (a T0 function, a start map). */
+static void write_schedule(pov_out *o)
+{
+    out(o, "// The pore-filling schedule (soak_fill_fraction, c_core/models/src/porous.c): the\n");
+    out(o, "// progress P of a point whose liquid started arriving Elapsed = time - t0 ago,\n");
+    out(o, "// P = clamp(Elapsed / T_Fill, 0, 1), right-continuous: a step to 1 at Elapsed = 0\n");
+    out(o, "// when T_Fill = 0. Soak_Fill_Progress_Fn(T_Fill) is that function of Elapsed.\n");
+    out(o, "#macro Soak_Fill_Progress_Fn(T_Fill)\n");
+    out(o, "  #if (T_Fill > 0)\n");
+    out(o, "    #local Soak__L_Inv = 1 / T_Fill;\n");
+    out(o, "    function(Soak__Elapsed) { min(max(Soak__Elapsed * Soak__L_Inv, 0), 1) }\n");
+    out(o, "  #else\n");
+    out(o, "    function(Soak__Elapsed) { select(Soak__Elapsed, 0, 1) }\n");
+    out(o, "  #end\n");
+    out(o, "#end\n\n");
 }
 
 static void write_index(pov_out *o, const char *name, const int *v, int n)
@@ -385,6 +407,7 @@ soak_status soak_export_write_povray(const soak_preset_db *db, FILE *f, char *er
         pov_out o = {f, 0};
         write_header(&o, &h);
         write_presets(&o, db);
+        write_schedule(&o);
         write_tables(&o, tabs, nt);
         out(&o, "\n#version Soak_Materials_Inc_Temp;\n#end // Soak_Materials_Inc_Temp\n");
         if (o.bad) {

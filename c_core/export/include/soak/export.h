@@ -16,10 +16,10 @@
  *    roughness, phase; coefficients in 1/m within that tolerance relative;
  *    thin-sheet transmittance as 0.1 ln T: interpolate ln T).
  *
- * 2. The wetness function for ANY base colour (soak_wet_params_for_base):
- *    the preset's class (porosity, phase change, extinction, film, liquid)
- *    with its dry albedo replaced by the user's colour, channel by channel.
- *    Tabulated over (dry albedo, wetness) by soak_export_base_nodes, with
+ * 2. The wetness function for ANY base colour (soak_wet_params_for_base,
+ *    soak/base_colour.h): the preset's class (porosity, phase change,
+ *    extinction, film, liquid) with its dry albedo replaced by the user's
+ *    colour, channel by channel. Tabulated over (dry albedo, wetness) by soak_export_base_nodes, with
  *    bilinear interpolation within SOAK_EXPORT_BASE_TOL of the core.
  *
  * Steady state: the tables are at progress 1 (soak_wet_input_steady). The
@@ -33,6 +33,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
+#include "soak/base_colour.h"
 #include "soak/preset.h"
 #include "soak/status.h"
 #include "soak/wetness.h"
@@ -50,15 +51,6 @@
  * the preset's default. *n receives the count (<= max). */
 soak_status soak_export_knots(const soak_preset *preset, const soak_liquid *liquid, double film_thickness_m,
                               double *knots, int max, int *n);
-
-/* soak_wetness_eval for the preset's class with its dry albedo replaced by
- * dry (each channel in [0,1]). Dielectrics: the dry medium is re-derived
- * from the new albedo (soak_preset_derive). Conductors: dry is read as the
- * normal-incidence reflectance in air and mapped to n, k per channel by
- * Gulbrandsen 2014 (JCGT 3(4), "Artist friendly metallic Fresnel") with the
- * preset's own edge tint, then covered by the film as usual. */
-soak_status soak_wet_params_for_base(const soak_preset *preset, const soak_liquid *liquid, const soak_wet_input *in,
-                                     soak_rgb dry, soak_wet_params *out);
 
 /* Nodes of the base-colour table: dry albedos a_j (increasing, 0 .. 1)
  * and wetness knots w_i, so that bilinear interpolation of
@@ -90,7 +82,7 @@ typedef struct soak_export_target {
     soak_export_writer write;
 } soak_export_target;
 
-/* The table of targets (json, povray, blender, osl...). */
+/* The table of targets (json, povray, blender, osl..., osl-math). */
 const soak_export_target *soak_export_targets(int *count);
 const soak_export_target *soak_export_find_target(const char *name);
 
@@ -109,5 +101,8 @@ soak_status soak_export_write_osl(const soak_preset_db *db, FILE *out, char *err
 soak_status soak_export_write_osl_legacy(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 soak_status soak_export_write_osl_sheet(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 soak_status soak_export_write_osl_wetmap(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
+/* The shaders' arithmetic (c_core/export/src/soak_wet_math.h, the same for
+ * every preset file) with a generated-file banner. */
+soak_status soak_export_write_osl_math(const soak_preset_db *db, FILE *out, char *err, size_t errlen);
 
 #endif

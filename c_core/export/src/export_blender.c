@@ -16,17 +16,24 @@
  * A second image holds per-row parameters (roughness, film coverage, ...).
  * The writer refines both grids until bilinear interpolation stays within
  * half of SOAK_EXPORT_BASE_TOL of the core at cell midpoints, and writes the
- * worst error it then finds at cell centres and quarter points. */
+ * worst error it then finds at cell centres and quarter points. JSON through
+ * soak/json_writer.h: 6 significant digits (the images are 32-bit float; the
+ * tolerance is 5e-3), 10 for the node programs' constants. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "soak/export.h"
+#include "soak/json_writer.h"
 #include "soak/sheet.h"
 #include "soak/wet_specular.h"
 
 #define BL_FORMAT "soak-blender"
 #define BL_FORMAT_VERSION 3
+#define BL_DIGITS 6             /* significant digits of pixels and facts */
+#define BL_ZERO 5e-13           /* written as 0 below this */
+#define BL_PROGRAM_DIGITS 10    /* node program constants: positions of rows */
+#define BL_PROGRAM_ZERO 5e-16
 #define BL_MAX_COLS 257
 #define BL_MAX_ROWS 257
 #define BL_PARAM_COLS 4 /* see param_pixel */
@@ -200,34 +207,6 @@ static soak_status bilinear_error(const bl_grid *g, double *err)
     return SOAK_OK;
 }
 
-/* Deterministic numbers: 6 significant digits, no "-0". */
-static void put_num(FILE *out, double x)
-{
-    if (fabs(x) < 5e-13) x = 0.0;
-    fprintf(out, "%.6g", x);
-}
-
-static void put_str(FILE *out, const char *s)
-{
-    fputc('"', out);
-    for (; s && *s; ++s) {
-        if (*s == '"' || *s == '\\') fputc('\\', out);
-        if ((unsigned char)*s < 0x20) fprintf(out, "\\u%04x", (unsigned char)*s);
-        else fputc(*s, out);
-    }
-    fputc('"', out);
-}
-
-static void put_rgb(FILE *out, soak_rgb c)
-{
-    fputc('[', out);
-    for (int i = 0; i < 3; ++i) {
-        if (i) fputc(',', out);
-        put_num(out, soak_rgb_at(c, i));
-    }
-    fputc(']', out);
-}
-
 /* Node programs: the coordinate warps and the fill schedule as data, so the
  * add-on derives no formula. A program is a list of Blender Math node
  * operations [op, a, b, c, clamp]; an argument is a number, the program's
@@ -240,38 +219,32 @@ typedef struct bl_op {
     int nargs, clamp;
 } bl_op;
 
-static void put_prog_num(FILE *out, double x)
+static void add_program(soak_json *j, cJSON *parent, const char *key, const bl_op *ops, int n)
 {
-    if (fabs(x) < 5e-16) x = 0.0;
-    fprintf(out, "%.10g", x);
-}
-
-static void put_program(FILE *out, const char *key, const bl_op *ops, int n)
-{
-    fprintf(out, "\"%s\": [", key);
-    for (int i = 0; i < n; ++i) {
-        fprintf(out, "%s[\"%s\"", i ? ", " : "", ops[i].op);
+    soak_json constants = soak_json_writer(BL_PROGRAM_DIGITS, BL_PROGRAM_ZERO);
+    cJSON *program = soak_json_array(j, parent, key);
+    for (int i = 0; program && i < n; ++i) {
+        cJSON *op = soak_json_array(j, program, NULL);
+        soak_json_str(j, op, NULL, ops[i].op);
         for (int k = 0; k < ops[i].nargs; ++k) {
-            fputs(", ", out);
-            if (ops[i].ref[k]) put_str(out, ops[i].ref[k]);
-            else put_prog_num(out, ops[i].num[k]);
+            if (ops[i].ref[k]) soak_json_str(j, op, NULL, ops[i].ref[k]);
+            else soak_json_num(&constants, op, NULL, ops[i].num[k]);
         }
-        fputs(ops[i].clamp ? ", true]" : ", false]", out);
+        soak_json_bool(j, op, NULL, ops[i].clamp);
     }
-    fputc(']', out);
+    if (!constants.ok) j->ok = 0;
 }
 
 /* Column position t = j/(columns-1) of dry albedo x: t = 1 - sqrt(1 - x)
  * (col_albedo inverted). Row position t = r/(rows-1) of delivered liquid x
  * (row_liquid inverted): sqrt(x/w_sat) over the rows below saturation plus
  * (x - w_sat)/(1 - w_sat) over the rows above. */
-static void put_coordinate_programs(FILE *out, const bl_grid *g)
+static void add_coordinate_programs(soak_json *j, cJSON *table, const bl_grid *g)
 {
     const bl_op col[] = {{"SUBTRACT", {NULL, "x"}, {1.0}, 2, 0},
                          {"SQRT", {"#0"}, {0.0}, 1, 0},
                          {"MULTIPLY_ADD", {"#1"}, {0.0, -1.0, 1.0}, 3, 0}};
-    put_program(out, "column_program", col, 3);
-    fputs(",\n      ", out);
+    add_program(j, table, "column_program", col, 3);
     double n = g->n1 + g->n2, ws = g->w_sat;
     if (g->n1 > 0) {
         const bl_op row[] = {{"MULTIPLY", {"x"}, {0.0, 1.0 / ws}, 2, 1},
@@ -279,10 +252,10 @@ static void put_coordinate_programs(FILE *out, const bl_grid *g)
                              {"MULTIPLY_ADD", {"x"}, {0.0, 1.0 / (1.0 - ws), -ws / (1.0 - ws)}, 3, 1},
                              {"MULTIPLY", {"#2"}, {0.0, g->n2 / n}, 2, 0},
                              {"MULTIPLY_ADD", {"#1", NULL, "#3"}, {0.0, g->n1 / n, 0.0}, 3, 0}};
-        put_program(out, "row_program", row, 5);
+        add_program(j, table, "row_program", row, 5);
     } else {
         const bl_op row[] = {{"MULTIPLY_ADD", {"x"}, {0.0, 1.0 / (1.0 - ws), -ws / (1.0 - ws)}, 3, 1}};
-        put_program(out, "row_program", row, 1);
+        add_program(j, table, "row_program", row, 1);
     }
 }
 
@@ -291,48 +264,39 @@ static void put_coordinate_programs(FILE *out, const bl_grid *g)
  * fill time is the step to 1 at start_time. Written as
  * clamp((time - start_time + d) / (fill_time + d)) with d = 1e-9 s: 1 at
  * start_time for a zero fill time, off by d / fill_time otherwise. */
-static void put_schedule_program(FILE *out)
+static void add_schedule_program(soak_json *j, cJSON *root)
 {
     const bl_op ops[] = {{"SUBTRACT", {"time", "start_time"}, {0.0}, 2, 0},
                          {"ADD", {"#0"}, {0.0, 1e-9}, 2, 0},
                          {"ADD", {"fill_time"}, {0.0, 1e-9}, 2, 0},
                          {"DIVIDE", {"#1", "#2"}, {0.0}, 2, 1}};
-    put_program(out, "schedule_program", ops, 4);
+    add_program(j, root, "schedule_program", ops, 4);
 }
 
-static soak_status write_pixels(FILE *out, const bl_grid *g)
+static soak_status add_pixels(soak_json *j, cJSON *table, const bl_grid *g)
 {
     int rows = grid_rows(g);
     double px[BL_PARAM_COLS * 3];
-    fputs("      \"albedo\": [\n", out);
+    cJSON *albedo = soak_json_array(j, table, "albedo");
     for (int r = 0; r < rows; ++r) {
-        fputs("        [", out);
-        for (int j = 0; j < g->na; ++j) {
-            soak_status st = albedo_pixel(g, col_albedo(g, j), row_liquid(g, r), px);
+        cJSON *row = soak_json_array(j, albedo, NULL);
+        for (int col = 0; col < g->na; ++col) {
+            soak_status st = albedo_pixel(g, col_albedo(g, col), row_liquid(g, r), px);
             if (st != SOAK_OK) return st;
-            for (int c = 0; c < 3; ++c) {
-                if (j || c) fputc(',', out);
-                put_num(out, px[c]);
-            }
+            for (int c = 0; c < 3; ++c) soak_json_num(j, row, NULL, px[c]);
         }
-        fputs(r + 1 < rows ? "],\n" : "]\n", out);
     }
-    fputs("      ],\n      \"params\": [\n", out);
+    cJSON *params = soak_json_array(j, table, "params");
     for (int r = 0; r < rows; ++r) {
         soak_status st = param_pixel(g, row_liquid(g, r), px);
         if (st != SOAK_OK) return st;
-        fputs("        [", out);
-        for (int k = 0; k < BL_PARAM_COLS * 3; ++k) {
-            if (k) fputc(',', out);
-            put_num(out, px[k]);
-        }
-        fputs(r + 1 < rows ? "],\n" : "]\n", out);
+        cJSON *row = soak_json_array(j, params, NULL);
+        for (int k = 0; k < BL_PARAM_COLS * 3; ++k) soak_json_num(j, row, NULL, px[k]);
     }
-    fputs("      ]\n", out);
-    return SOAK_OK;
+    return j->ok ? SOAK_OK : SOAK_ERR_NOMEM;
 }
 
-static soak_status write_table(FILE *out, const soak_preset *p, const soak_liquid *l, int last)
+static soak_status add_table(soak_json *j, cJSON *liquids, const soak_preset *p, const soak_liquid *l)
 {
     bl_grid g = {p, l, soak_material_kind_porous(p->kind) ? p->porosity : 0.0, 17, 0, 1};
     if (g.w_sat > 0.0) g.n1 = 4;
@@ -340,82 +304,61 @@ static soak_status write_table(FILE *out, const soak_preset *p, const soak_liqui
     double err = 0.0;
     if (st == SOAK_OK) st = bilinear_error(&g, &err);
     if (st != SOAK_OK) return st;
-    fputs("     ", out);
-    put_str(out, l->name);
-    fprintf(out, ": {\n      \"columns\": %d, \"rows_below\": %d, \"rows_above\": %d, \"saturation\": ", g.na, g.n1,
-            g.n2);
-    put_num(out, g.w_sat);
-    fputs(", \"max_error\": ", out);
-    put_num(out, err);
-    fputs(",\n      ", out);
-    put_coordinate_programs(out, &g);
-    fputs(",\n", out);
-    st = write_pixels(out, &g);
-    fputs(last ? "     }\n" : "     },\n", out);
-    return st;
+    cJSON *table = soak_json_object(j, liquids, l->name);
+    soak_json_int(j, table, "columns", g.na);
+    soak_json_int(j, table, "rows_below", g.n1);
+    soak_json_int(j, table, "rows_above", g.n2);
+    soak_json_num(j, table, "saturation", g.w_sat);
+    soak_json_num(j, table, "max_error", err);
+    add_coordinate_programs(j, table, &g);
+    return add_pixels(j, table, &g);
 }
 
-static soak_status write_material(FILE *out, const soak_preset_db *db, const soak_preset *p, int last, char *err,
-                                  size_t errlen)
+static soak_status add_material(soak_json *j, cJSON *materials, const soak_preset_db *db, const soak_preset *p,
+                                char *err, size_t errlen)
 {
-    fputs("  {\"name\": ", out);
-    put_str(out, p->name);
-    fputs(", \"display_name\": ", out);
-    put_str(out, p->display_name);
-    fputs(", \"kind\": ", out);
-    put_str(out, soak_material_kind_name(p->kind));
-    fputs(",\n   \"dry_albedo\": ", out);
-    put_rgb(out, p->albedo);
-    fputs(", \"roughness_dry\": ", out);
-    put_num(out, sqrt(p->ggx_alpha_dry));
-    fputs(", \"ior\": ", out);
-    put_num(out, p->ior);
-    fputs(", \"porosity\": ", out);
-    put_num(out, p->porosity);
-    fputs(", \"t_fill\": ", out);
-    put_num(out, p->t_fill);
-    fputs(", \"sheet_thickness_m\": ", out);
-    put_num(out, 1e-3 * p->thickness_mm);
-    fputs(",\n   \"liquids\": {\n", out);
-    int nl = soak_presets_liquid_count(db);
-    for (int i = 0; i < nl; ++i) {
+    cJSON *m = soak_json_object(j, materials, NULL);
+    soak_json_str(j, m, "name", p->name);
+    soak_json_str(j, m, "display_name", p->display_name);
+    soak_json_str(j, m, "kind", soak_material_kind_name(p->kind));
+    soak_json_rgb(j, m, "dry_albedo", p->albedo);
+    soak_json_num(j, m, "roughness_dry", sqrt(p->ggx_alpha_dry));
+    soak_json_num(j, m, "ior", p->ior);
+    soak_json_num(j, m, "porosity", p->porosity);
+    soak_json_num(j, m, "t_fill", p->t_fill);
+    soak_json_num(j, m, "sheet_thickness_m", 1e-3 * p->thickness_mm);
+    cJSON *liquids = soak_json_object(j, m, "liquids");
+    for (int i = 0; i < soak_presets_liquid_count(db); ++i) {
         const soak_liquid *l = soak_presets_liquid_at(db, i);
-        soak_status st = write_table(out, p, l, i + 1 == nl);
+        soak_status st = add_table(j, liquids, p, l);
         if (st != SOAK_OK) {
             snprintf(err, errlen, "preset '%s', liquid '%s': %s", p->name, l->name, soak_status_str(st));
             return st;
         }
     }
-    fputs(last ? "   }}\n" : "   }},\n", out);
     return SOAK_OK;
 }
 
-static void write_header(FILE *out, const soak_export_header *h)
+static void add_header(soak_json *j, cJSON *root, const soak_export_header *h)
 {
-    fputs("{\n \"format\": \"" BL_FORMAT "\", \"format_version\": ", out);
-    fprintf(out, "%d", BL_FORMAT_VERSION);
-    fputs(", \"generator\": ", out);
-    put_str(out, h->generator);
-    fputs(",\n \"materials_file\": ", out);
-    put_str(out, h->materials_file);
-    fputs(", \"materials_hash\": ", out);
-    put_str(out, h->materials_hash);
-    fputs(", \"tolerance\": ", out);
-    put_num(out, SOAK_EXPORT_BASE_TOL);
-    fputs(",\n \"layout\": ", out);
-    put_str(out,
-            "per material and liquid: albedo[row][3*column+channel] and params[row][3*pixel+channel]. Column j: "
-            "s = j/(columns-1), dry albedo a = 1-(1-s)^2. Row r: delivered liquid L = saturation*(r/rows_below)^2 "
-            "for r <= rows_below, else saturation+(1-saturation)*(r-rows_below)/rows_above. Channel c of the "
-            "albedo pixel is the wet albedo of channel c (under a coat of the liquid's IOR weighted by the film "
-            "coverage) for dry albedo a. params pixels: 0 = (roughness, film coverage, water specular weight), "
-            "1 = (pore fill, specular weight, 0), 2 = thin-sheet transmittance, 3 = (the base's own specular under the "
-            "liquid over its dry value, the liquid mirror's weight = interface area, apparent roughness: conductors "
-            "seen through the film; see soak/wet_specular.h). Interpolate bilinearly between "
-            "pixel centres; max_error is the worst error of that against the core.");
-    fputs(",\n ", out);
-    put_schedule_program(out);
-    fputs(",\n \"liquids\": [\n", out);
+    soak_json_str(j, root, "format", BL_FORMAT);
+    soak_json_int(j, root, "format_version", BL_FORMAT_VERSION);
+    soak_json_str(j, root, "generator", h->generator);
+    soak_json_str(j, root, "materials_file", h->materials_file);
+    soak_json_str(j, root, "materials_hash", h->materials_hash);
+    soak_json_num(j, root, "tolerance", SOAK_EXPORT_BASE_TOL);
+    soak_json_str(j, root, "layout",
+                  "per material and liquid: albedo[row][3*column+channel] and params[row][3*pixel+channel]. Column "
+                  "j: s = j/(columns-1), dry albedo a = 1-(1-s)^2. Row r: delivered liquid L = "
+                  "saturation*(r/rows_below)^2 for r <= rows_below, else "
+                  "saturation+(1-saturation)*(r-rows_below)/rows_above. Channel c of the albedo pixel is the wet "
+                  "albedo of channel c (under a coat of the liquid's IOR weighted by the film coverage) for dry "
+                  "albedo a. params pixels: 0 = (roughness, film coverage, water specular weight), 1 = (pore fill, "
+                  "specular weight, 0), 2 = thin-sheet transmittance, 3 = (the base's own specular under the liquid "
+                  "over its dry value, the liquid mirror's weight = interface area, apparent roughness: conductors "
+                  "seen through the film; see soak/wet_specular.h). Interpolate bilinearly between pixel centres; "
+                  "max_error is the worst error of that against the core.");
+    add_schedule_program(j, root);
 }
 
 soak_status soak_export_write_blender(const soak_preset_db *db, FILE *out, char *err, size_t errlen)
@@ -427,25 +370,23 @@ soak_status soak_export_write_blender(const soak_preset_db *db, FILE *out, char 
         snprintf(err, errlen, "%s: cannot read the preset file to hash it", soak_presets_path(db));
         return st;
     }
-    write_header(out, &h);
-    int nl = soak_presets_liquid_count(db), np = soak_presets_count(db);
-    for (int i = 0; i < nl; ++i) {
+    cJSON *root = cJSON_CreateObject();
+    if (!root) return SOAK_ERR_NOMEM;
+    soak_json j = soak_json_writer(BL_DIGITS, BL_ZERO);
+    add_header(&j, root, &h);
+    cJSON *liquids = soak_json_array(&j, root, "liquids");
+    for (int i = 0; i < soak_presets_liquid_count(db); ++i) {
         const soak_liquid *l = soak_presets_liquid_at(db, i);
-        fputs("  {\"name\": ", out);
-        put_str(out, l->name);
-        fputs(", \"display_name\": ", out);
-        put_str(out, l->display_name);
-        fputs(", \"ior\": ", out);
-        put_num(out, l->ior);
-        fputs(i + 1 < nl ? "},\n" : "}\n", out);
+        cJSON *o = soak_json_object(&j, liquids, NULL);
+        soak_json_str(&j, o, "name", l->name);
+        soak_json_str(&j, o, "display_name", l->display_name);
+        soak_json_num(&j, o, "ior", l->ior);
     }
-    fputs(" ],\n \"materials\": [\n", out);
-    for (int i = 0; st == SOAK_OK && i < np; ++i) st = write_material(out, db, soak_presets_at(db, i), i + 1 == np, err, errlen);
-    if (st != SOAK_OK) return st;
-    fputs(" ]\n}\n", out);
-    if (ferror(out)) {
-        snprintf(err, errlen, "write failed");
-        return SOAK_ERR_IO;
-    }
-    return SOAK_OK;
+    cJSON *materials = soak_json_array(&j, root, "materials");
+    for (int i = 0; st == SOAK_OK && j.ok && i < soak_presets_count(db); ++i)
+        st = add_material(&j, materials, db, soak_presets_at(db, i), err, errlen);
+    if (st == SOAK_OK) st = soak_json_write(&j, root, out);
+    cJSON_Delete(root);
+    if (st == SOAK_ERR_IO) snprintf(err, errlen, "write failed");
+    return st;
 }

@@ -1,5 +1,5 @@
 /* The flat tables the OSL shaders carry (export_osl.c), shared with the C
- * test that evaluates them through osl/soak_wet_math.h against the core.
+ * test that evaluates them through soak_wet_math.h against the core.
  * Index k = kept preset * n_liquids + liquid. */
 #ifndef SOAK_EXPORT_OSL_TABLES_H
 #define SOAK_EXPORT_OSL_TABLES_H

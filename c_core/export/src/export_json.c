@@ -1,71 +1,18 @@
 /* soak export --target json: the generic interface for front ends
  * (schema: c_core/data/export.schema.json; contract: soak/export.h).
  * Column-oriented tables (one array per quantity, one entry per knot), SI
- * units named in the keys, numbers rounded to 7 significant digits so that
- * the same input gives the same bytes on every machine. */
-#include <cjson/cJSON.h>
+ * units named in the keys, numbers rounded to 7 significant digits
+ * (soak/json_writer.h) so that the same input gives the same bytes on every
+ * machine. */
 #include <math.h>
-#include <stdlib.h>
-#include <string.h>
 
 #include "soak/export.h"
 #include "soak/film.h"
 #include "soak/fresnel.h"
+#include "soak/json_writer.h"
 #include "soak/sheet.h"
 
-typedef struct json_ctx {
-    int ok;
-} json_ctx;
-
-static double round7(double x)
-{
-    char buf[32];
-    snprintf(buf, sizeof buf, "%.7g", x);
-    return strtod(buf, NULL);
-}
-
-static void num(json_ctx *j, cJSON *o, const char *k, double v)
-{
-    if (!cJSON_AddNumberToObject(o, k, round7(v))) j->ok = 0;
-}
-
-static void str(json_ctx *j, cJSON *o, const char *k, const char *v)
-{
-    if (!cJSON_AddStringToObject(o, k, v ? v : "")) j->ok = 0;
-}
-
-static cJSON *arr(json_ctx *j, cJSON *o, const char *k)
-{
-    cJSON *a = cJSON_AddArrayToObject(o, k);
-    if (!a) j->ok = 0;
-    return a;
-}
-
-static void push(json_ctx *j, cJSON *a, double v)
-{
-    cJSON *n = cJSON_CreateNumber(round7(v));
-    if (!a || !n || !cJSON_AddItemToArray(a, n)) {
-        cJSON_Delete(n);
-        j->ok = 0;
-    }
-}
-
-static void push_rgb(json_ctx *j, cJSON *a, soak_rgb c)
-{
-    cJSON *t = cJSON_CreateArray();
-    if (!a || !t || !cJSON_AddItemToArray(a, t)) {
-        cJSON_Delete(t);
-        j->ok = 0;
-        return;
-    }
-    for (int i = 0; i < 3; ++i) push(j, t, soak_rgb_at(c, i));
-}
-
-static void rgb(json_ctx *j, cJSON *o, const char *k, soak_rgb c)
-{
-    cJSON *a = arr(j, o, k);
-    for (int i = 0; a && i < 3; ++i) push(j, a, soak_rgb_at(c, i));
-}
+#define JSON_DIGITS 7
 
 static soak_rgb rgb_scale(soak_rgb c, double s) { return (soak_rgb){c.r * s, c.g * s, c.b * s}; }
 
@@ -101,7 +48,7 @@ static int column_applies(int c, soak_material_kind kind)
     return 1;
 }
 
-static void push_row(json_ctx *j, cJSON *cols[C_COUNT], const soak_wet_params *p, const soak_rgb *sheet_t)
+static void push_row(soak_json *j, cJSON *cols[C_COUNT], const soak_wet_params *p, const soak_rgb *sheet_t)
 {
     double scalars[C_COUNT] = {0};
     scalars[C_WETNESS] = p->wetness;
@@ -118,31 +65,31 @@ static void push_row(json_ctx *j, cJSON *cols[C_COUNT], const soak_wet_params *p
     for (int c = 0; c < C_COUNT; ++c) {
         if (!cols[c]) continue;
         switch (c) {
-        case C_ALBEDO: push_rgb(j, cols[c], p->albedo); break;
-        case C_ALBEDO_TOTAL: push_rgb(j, cols[c], p->albedo_total); break;
-        case C_ALBEDO_SUB: push_rgb(j, cols[c], p->albedo_subsurface); break;
-        case C_ALBEDO_FILM: push_rgb(j, cols[c], p->albedo_film); break;
-        case C_OMEGA: push_rgb(j, cols[c], p->omega); break;
-        case C_SIGMA_S: push_rgb(j, cols[c], rgb_scale(p->sigma_s, 1000.0)); break;
-        case C_SIGMA_A: push_rgb(j, cols[c], rgb_scale(p->sigma_a, 1000.0)); break;
-        case C_MFP: push_rgb(j, cols[c], mean_free_path_m(p->sigma_s, p->sigma_a)); break;
-        case C_SHEET_T: push_rgb(j, cols[c], *sheet_t); break;
-        default: push(j, cols[c], scalars[c]);
+        case C_ALBEDO: soak_json_rgb(j, cols[c], NULL, p->albedo); break;
+        case C_ALBEDO_TOTAL: soak_json_rgb(j, cols[c], NULL, p->albedo_total); break;
+        case C_ALBEDO_SUB: soak_json_rgb(j, cols[c], NULL, p->albedo_subsurface); break;
+        case C_ALBEDO_FILM: soak_json_rgb(j, cols[c], NULL, p->albedo_film); break;
+        case C_OMEGA: soak_json_rgb(j, cols[c], NULL, p->omega); break;
+        case C_SIGMA_S: soak_json_rgb(j, cols[c], NULL, rgb_scale(p->sigma_s, 1000.0)); break;
+        case C_SIGMA_A: soak_json_rgb(j, cols[c], NULL, rgb_scale(p->sigma_a, 1000.0)); break;
+        case C_MFP: soak_json_rgb(j, cols[c], NULL, mean_free_path_m(p->sigma_s, p->sigma_a)); break;
+        case C_SHEET_T: soak_json_rgb(j, cols[c], NULL, *sheet_t); break;
+        default: soak_json_num(j, cols[c], NULL, scalars[c]);
         }
     }
 }
 
-static soak_status add_knot_table(json_ctx *j, cJSON *o, const soak_preset *p, const soak_liquid *l)
+static soak_status add_knot_table(soak_json *j, cJSON *o, const soak_preset *p, const soak_liquid *l)
 {
     double knots[SOAK_EXPORT_KNOTS_MAX];
     int n = 0;
     soak_status st = soak_export_knots(p, l, -1.0, knots, SOAK_EXPORT_KNOTS_MAX, &n);
     if (st != SOAK_OK) return st;
-    cJSON *t = cJSON_AddObjectToObject(o, "knots");
+    cJSON *t = soak_json_object(j, o, "knots");
     if (!t) return SOAK_ERR_NOMEM;
     cJSON *cols[C_COUNT] = {0};
     for (int c = 0; c < C_COUNT; ++c)
-        if (column_applies(c, p->kind)) cols[c] = arr(j, t, col_names[c]);
+        if (column_applies(c, p->kind)) cols[c] = soak_json_array(j, t, col_names[c]);
     for (int i = 0; st == SOAK_OK && i < n; ++i) {
         soak_wet_input in = soak_wet_input_steady(p, knots[i]);
         soak_wet_params w;
@@ -156,38 +103,32 @@ static soak_status add_knot_table(json_ctx *j, cJSON *o, const soak_preset *p, c
 
 /* ---- the wetness function for any base colour ------------------------------ */
 
-static soak_status add_base_table(json_ctx *j, cJSON *o, const soak_preset *p, const soak_liquid *l)
+static soak_status add_base_table(soak_json *j, cJSON *o, const soak_preset *p, const soak_liquid *l)
 {
     double a[SOAK_EXPORT_KNOTS_MAX], w[SOAK_EXPORT_KNOTS_MAX];
     int na = 0, nw = 0;
     soak_status st = soak_export_base_nodes(p, l, a, SOAK_EXPORT_KNOTS_MAX, &na, w, SOAK_EXPORT_KNOTS_MAX, &nw);
     if (st != SOAK_OK) return st;
-    cJSON *t = cJSON_AddObjectToObject(o, "base_colour");
+    cJSON *t = soak_json_object(j, o, "base_colour");
     if (!t) return SOAK_ERR_NOMEM;
-    num(j, t, "tolerance", SOAK_EXPORT_BASE_TOL);
-    cJSON *ja = arr(j, t, "dry_albedo"), *jw = arr(j, t, "wetness");
-    for (int i = 0; i < na; ++i) push(j, ja, a[i]);
-    for (int i = 0; i < nw; ++i) push(j, jw, w[i]);
+    soak_json_num(j, t, "tolerance", SOAK_EXPORT_BASE_TOL);
+    cJSON *ja = soak_json_array(j, t, "dry_albedo"), *jw = soak_json_array(j, t, "wetness");
+    for (int i = 0; i < na; ++i) soak_json_num(j, ja, NULL, a[i]);
+    for (int i = 0; i < nw; ++i) soak_json_num(j, jw, NULL, w[i]);
     const char *keys[2] = {"albedo", "albedo_total"};
     for (int k = 0; st == SOAK_OK && k < 2; ++k) {
-        cJSON *per_channel = arr(j, t, keys[k]);
+        cJSON *per_channel = soak_json_array(j, t, keys[k]);
         for (int c = 0; st == SOAK_OK && c < 3; ++c) {
-            cJSON *rows = cJSON_CreateArray();
-            if (!rows || !cJSON_AddItemToArray(per_channel, rows)) {
-                cJSON_Delete(rows);
-                return SOAK_ERR_NOMEM;
-            }
+            cJSON *rows = soak_json_array(j, per_channel, NULL);
+            if (!rows) return SOAK_ERR_NOMEM;
             for (int iw = 0; st == SOAK_OK && iw < nw; ++iw) {
-                cJSON *row = cJSON_CreateArray();
-                if (!row || !cJSON_AddItemToArray(rows, row)) {
-                    cJSON_Delete(row);
-                    return SOAK_ERR_NOMEM;
-                }
+                cJSON *row = soak_json_array(j, rows, NULL);
+                if (!row) return SOAK_ERR_NOMEM;
                 soak_wet_input in = soak_wet_input_steady(p, w[iw]);
                 for (int ia = 0; st == SOAK_OK && ia < na; ++ia) {
                     soak_wet_params out;
                     st = soak_wet_params_for_base(p, l, &in, (soak_rgb){a[ia], a[ia], a[ia]}, &out);
-                    if (st == SOAK_OK) push(j, row, soak_rgb_at(k ? out.albedo_total : out.albedo, c));
+                    if (st == SOAK_OK) soak_json_num(j, row, NULL, soak_rgb_at(k ? out.albedo_total : out.albedo, c));
                 }
             }
         }
@@ -197,43 +138,40 @@ static soak_status add_base_table(json_ctx *j, cJSON *o, const soak_preset *p, c
 
 /* ---- materials and liquids ---------------------------------------------------- */
 
-static soak_status add_material(json_ctx *j, cJSON *list, const soak_preset_db *db, const soak_preset *p)
+static soak_status add_material(soak_json *j, cJSON *list, const soak_preset_db *db, const soak_preset *p)
 {
-    cJSON *o = cJSON_CreateObject();
-    if (!o || !cJSON_AddItemToArray(list, o)) {
-        cJSON_Delete(o);
-        return SOAK_ERR_NOMEM;
-    }
+    cJSON *o = soak_json_object(j, list, NULL);
+    if (!o) return SOAK_ERR_NOMEM;
     const int conductor = p->kind == SOAK_KIND_CONDUCTOR;
     const int porous = soak_material_kind_porous(p->kind);
-    str(j, o, "name", p->name);
-    str(j, o, "display_name", p->display_name);
-    str(j, o, "kind", soak_material_kind_name(p->kind));
-    rgb(j, o, "dry_albedo", p->albedo);
-    num(j, o, "ggx_alpha_dry", p->ggx_alpha_dry);
-    num(j, o, "ggx_alpha_wet", p->ggx_alpha_wet);
+    soak_json_str(j, o, "name", p->name);
+    soak_json_str(j, o, "display_name", p->display_name);
+    soak_json_str(j, o, "kind", soak_material_kind_name(p->kind));
+    soak_json_rgb(j, o, "dry_albedo", p->albedo);
+    soak_json_num(j, o, "ggx_alpha_dry", p->ggx_alpha_dry);
+    soak_json_num(j, o, "ggx_alpha_wet", p->ggx_alpha_wet);
     if (conductor) {
-        rgb(j, o, "ior_n", p->ior_n);
-        rgb(j, o, "ior_k", p->ior_k);
+        soak_json_rgb(j, o, "ior_n", p->ior_n);
+        soak_json_rgb(j, o, "ior_k", p->ior_k);
     } else {
-        num(j, o, "ior", p->ior);
+        soak_json_num(j, o, "ior", p->ior);
     }
-    num(j, o, "porosity", p->porosity);
-    num(j, o, "saturation_wetness", porous ? p->porosity : 0.0);
-    num(j, o, "t_fill", p->t_fill);
-    num(j, o, "film_thickness_m", 1e-3 * p->film_thickness_mm);
-    num(j, o, "sheet_thickness_m", 1e-3 * p->thickness_mm);
-    cJSON *tables = cJSON_AddObjectToObject(o, "liquids");
+    soak_json_num(j, o, "porosity", p->porosity);
+    soak_json_num(j, o, "saturation_wetness", porous ? p->porosity : 0.0);
+    soak_json_num(j, o, "t_fill", p->t_fill);
+    soak_json_num(j, o, "film_thickness_m", 1e-3 * p->film_thickness_mm);
+    soak_json_num(j, o, "sheet_thickness_m", 1e-3 * p->thickness_mm);
+    cJSON *tables = soak_json_object(j, o, "liquids");
     if (!tables) return SOAK_ERR_NOMEM;
     soak_status st = SOAK_OK;
     for (int i = 0; st == SOAK_OK && i < soak_presets_liquid_count(db); ++i) {
         const soak_liquid *l = soak_presets_liquid_at(db, i);
-        cJSON *t = cJSON_AddObjectToObject(tables, l->name);
+        cJSON *t = soak_json_object(j, tables, l->name);
         if (!t) return SOAK_ERR_NOMEM;
         if (conductor) {
             /* the metal seen from inside the liquid: relative complex index */
-            rgb(j, t, "ior_n_under_liquid", rgb_scale(p->ior_n, 1.0 / l->ior));
-            rgb(j, t, "ior_k_under_liquid", rgb_scale(p->ior_k, 1.0 / l->ior));
+            soak_json_rgb(j, t, "ior_n_under_liquid", rgb_scale(p->ior_n, 1.0 / l->ior));
+            soak_json_rgb(j, t, "ior_k_under_liquid", rgb_scale(p->ior_k, 1.0 / l->ior));
         }
         st = add_knot_table(j, t, p, l);
         if (st == SOAK_OK) st = add_base_table(j, t, p, l);
@@ -241,55 +179,49 @@ static soak_status add_material(json_ctx *j, cJSON *list, const soak_preset_db *
     return st != SOAK_OK ? st : (j->ok ? SOAK_OK : SOAK_ERR_NOMEM);
 }
 
-static soak_status add_liquid(json_ctx *j, cJSON *list, const soak_liquid *l)
+static soak_status add_liquid(soak_json *j, cJSON *list, const soak_liquid *l)
 {
-    cJSON *o = cJSON_CreateObject();
-    if (!o || !cJSON_AddItemToArray(list, o)) {
-        cJSON_Delete(o);
-        return SOAK_ERR_NOMEM;
-    }
-    str(j, o, "name", l->name);
-    str(j, o, "display_name", l->display_name);
-    num(j, o, "ior", l->ior);
-    rgb(j, o, "sigma_a_per_m", rgb_scale(l->sigma_a, 1000.0));
-    rgb(j, o, "sigma_s_per_m", rgb_scale(l->sigma_s, 1000.0));
+    cJSON *o = soak_json_object(j, list, NULL);
+    if (!o) return SOAK_ERR_NOMEM;
+    soak_json_str(j, o, "name", l->name);
+    soak_json_str(j, o, "display_name", l->display_name);
+    soak_json_num(j, o, "ior", l->ior);
+    soak_json_rgb(j, o, "sigma_a_per_m", rgb_scale(l->sigma_a, 1000.0));
+    soak_json_rgb(j, o, "sigma_s_per_m", rgb_scale(l->sigma_s, 1000.0));
     double f0 = 0.0, hemi = 0.0;
     soak_status st = soak_fresnel_r0(l->ior, 0.0, &f0);
     soak_film film = {l->ior, 0.0, 0.0};
     if (st == SOAK_OK) st = soak_film_albedo_diffuse(&film, 0.0, &hemi);
     if (st != SOAK_OK) return st;
-    num(j, o, "film_normal_reflectance", f0);
-    num(j, o, "film_hemispherical_reflectance", hemi);
-    str(j, o, "source", l->source);
+    soak_json_num(j, o, "film_normal_reflectance", f0);
+    soak_json_num(j, o, "film_hemispherical_reflectance", hemi);
+    soak_json_str(j, o, "source", l->source);
     return j->ok ? SOAK_OK : SOAK_ERR_NOMEM;
 }
 
-static void add_header(json_ctx *j, cJSON *root, const soak_export_header *h)
+static void add_header(soak_json *j, cJSON *root, const soak_export_header *h)
 {
-    str(j, root, "format", SOAK_EXPORT_FORMAT);
-    if (!cJSON_AddNumberToObject(root, "format_version", h->format_version)) j->ok = 0;
-    str(j, root, "generator", h->generator);
-    str(j, root, "materials_file", h->materials_file);
-    str(j, root, "materials_hash", h->materials_hash);
-    num(j, root, "knot_tolerance", SOAK_EXPORT_KNOT_TOL);
-    num(j, root, "base_colour_tolerance", SOAK_EXPORT_BASE_TOL);
-    cJSON *notes = cJSON_AddObjectToObject(root, "notes");
-    if (!notes) {
-        j->ok = 0;
-        return;
-    }
-    str(j, notes, "interpolation",
+    soak_json_str(j, root, "format", SOAK_EXPORT_FORMAT);
+    soak_json_int(j, root, "format_version", h->format_version);
+    soak_json_str(j, root, "generator", h->generator);
+    soak_json_str(j, root, "materials_file", h->materials_file);
+    soak_json_str(j, root, "materials_hash", h->materials_hash);
+    soak_json_num(j, root, "knot_tolerance", SOAK_EXPORT_KNOT_TOL);
+    soak_json_num(j, root, "base_colour_tolerance", SOAK_EXPORT_BASE_TOL);
+    cJSON *notes = soak_json_object(j, root, "notes");
+    if (!notes) return;
+    soak_json_str(j, notes, "interpolation",
         "materials[].liquids[L].knots: one array per quantity over the wetness knots (non-uniform, including "
         "the saturation wetness where the pores are full and a film starts); interpolate linearly in wetness. "
         "base_colour: the wetness function for any dry base colour, per channel [channel][wetness][dry_albedo]; "
         "interpolate bilinearly.");
-    str(j, notes, "drying",
+    soak_json_str(j, notes, "drying",
         "Tables are at steady state. The pore-filling schedule (Hnat et al. 2006) only scales the delivered "
         "liquid: L = wetness * clamp((time - t0) / t_fill, 0, 1) (a step at t0 when t_fill = 0); every quantity "
         "depends on wetness and time only through L, so look the tables up at L.");
-    str(j, notes, "units",
+    soak_json_str(j, notes, "units",
         "colours: linear RGB (Rec.709 primaries); lengths: m; coefficients: 1/m; roughness = sqrt(ggx_alpha).");
-    str(j, notes, "chain", "c_core/materials/include/soak/wetness.h (steps 1-6) and c_core/materials/include/soak/export.h");
+    soak_json_str(j, notes, "chain", "c_core/materials/include/soak/wetness.h (steps 1-6) and c_core/export/include/soak/export.h");
 }
 
 soak_status soak_export_write_json(const soak_preset_db *db, FILE *out, char *err, size_t errlen)
@@ -303,25 +235,17 @@ soak_status soak_export_write_json(const soak_preset_db *db, FILE *out, char *er
     }
     cJSON *root = cJSON_CreateObject();
     if (!root) return SOAK_ERR_NOMEM;
-    json_ctx j = {1};
+    soak_json j = soak_json_writer(JSON_DIGITS, 0.0);
     add_header(&j, root, &h);
-    cJSON *liquids = arr(&j, root, "liquids"), *materials = arr(&j, root, "materials");
+    cJSON *liquids = soak_json_array(&j, root, "liquids"), *materials = soak_json_array(&j, root, "materials");
     for (int i = 0; st == SOAK_OK && j.ok && i < soak_presets_liquid_count(db); ++i)
         st = add_liquid(&j, liquids, soak_presets_liquid_at(db, i));
     for (int i = 0; st == SOAK_OK && j.ok && i < soak_presets_count(db); ++i) {
         st = add_material(&j, materials, db, soak_presets_at(db, i));
         if (st != SOAK_OK) snprintf(err, errlen, "preset '%s': %s", soak_presets_at(db, i)->name, soak_status_str(st));
     }
-    if (st == SOAK_OK && !j.ok) st = SOAK_ERR_NOMEM;
-    char *text = st == SOAK_OK ? cJSON_Print(root) : NULL;
+    if (st == SOAK_OK) st = soak_json_write(&j, root, out);
     cJSON_Delete(root);
-    if (st != SOAK_OK) return st;
-    if (!text) return SOAK_ERR_NOMEM;
-    int bad = fputs(text, out) < 0 || fputc('\n', out) == EOF;
-    free(text);
-    if (bad) {
-        snprintf(err, errlen, "write failed");
-        return SOAK_ERR_IO;
-    }
-    return SOAK_OK;
+    if (st == SOAK_ERR_IO) snprintf(err, errlen, "write failed");
+    return st;
 }

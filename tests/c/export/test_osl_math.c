@@ -1,4 +1,5 @@
-/* The OSL shaders' math (osl/soak_wet_math.h, compiled here as C) on the
+/* The OSL shaders' math (c_core/export/src/soak_wet_math.h, the source of
+ * osl/soak_wet_math.h and of the shaders' inlined copy, compiled here as C) on the
  * tables the shaders carry (export_osl.c) against the core itself:
  *  - the pore-filling schedule = soak_wetness_eval's delivered liquid;
  *  - knot lookups of albedo, interface coverage, roughness and sheet

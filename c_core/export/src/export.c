@@ -24,6 +24,8 @@ static const soak_export_target targets[] = {
      "soak_wet_sheet.osl", soak_export_write_osl_sheet},
     {"osl-wetmap", "OSL wet-map / drying shader (osl/soak_wetmap.osl)", "soak_wetmap.osl",
      soak_export_write_osl_wetmap},
+    {"osl-math", "the OSL shaders' arithmetic as a header for your own shaders (osl/soak_wet_math.h)",
+     "soak_wet_math.h", soak_export_write_osl_math},
 };
 
 const soak_export_target *soak_export_targets(int *count)
