@@ -3,7 +3,7 @@
  * fails when this copy is stale. The shipped shaders inline the same text. */
 /* soak_wet_math.h: the arithmetic of Soak's OSL shaders, written in the
  * common subset of C and OSL so that one text serves both. Its one source is
- * c_core/export/src/soak_wet_math.h: the C tests (tests/c/test_osl_math.c)
+ * c_core/export/src/soak_wet_math.h: the C tests (tests/c/export/test_osl_math.c)
  * compile it and check it against the core, `soak export --target osl` (and
  * osl-legacy, osl-sheet, osl-wetmap) inlines it into the shipped,
  * self-contained shaders, and `soak export --target osl-math` writes it to
