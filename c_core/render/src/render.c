@@ -225,8 +225,9 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
     int W = opt->width > 0 ? opt->width : scene->width, H = opt->height > 0 ? opt->height : scene->height;
     int spp = opt->spp > 0 ? opt->spp : scene->spp;
     int threads = opt->threads;
-    if (!(W >= 1 && W <= 16384 && H >= 1 && H <= 16384 && spp >= 1 && spp <= 10000000 && threads >= 1 && threads <= 256) ||
-        !soak_in_range(opt->time_limit, 0, 1e9) || opt->max_depth < 0) {
+    if (!(W >= 1 && W <= SOAK_RENDER_MAX_SIZE && H >= 1 && H <= SOAK_RENDER_MAX_SIZE && spp >= 1 &&
+          spp <= SOAK_RENDER_MAX_SPP && threads >= 1 && threads <= SOAK_RENDER_MAX_THREADS) ||
+        !soak_in_range(opt->time_limit, 0, SOAK_RENDER_MAX_TIME) || opt->max_depth < 0) {
         if (err && errlen) snprintf(err, errlen, "render options out of range");
         return SOAK_ERR_ARG;
     }
