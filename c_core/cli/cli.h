@@ -33,6 +33,9 @@ int soak_cmd_export(int argc, char **argv);
 int soak_cmd_report(int argc, char **argv);
 int soak_cmd_advise(int argc, char **argv);
 
+/* The smallest tolerance of soak advise --tol and soak render --auto-model:
+ * the library takes any tol in (0, SOAK_ADVISE_MAX_TOL]. */
+#define CLI_ADVISE_MIN_TOL 1e-9
 struct soak_advice;
 /* The table of `soak advise` (also printed by `soak render --auto-model`). */
 void cli_advise_print(FILE *f, const struct soak_advice *a, int n, double tol);

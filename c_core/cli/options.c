@@ -160,6 +160,7 @@ int cli_opts_parse(const cli_spec *spec, const cli_opt_table *tables, int n_tabl
 }
 
 /* ---- --help ---- */
+#define HELP_LABEL_MIN 18 /* the help column of short tables */
 #define HELP_LABEL_MAX 24 /* longer labels put their help on the next line */
 
 static int listed(const cli_opt *o) { return o->help && o->kind != CLI_OPT_REJECT && o->kind != CLI_OPT_HEADING; }
@@ -191,7 +192,7 @@ static void print_help_text(FILE *out, const cli_opt *o, int column)
 void cli_opts_help(FILE *out, const cli_opt_table *tables, int n_tables)
 {
     char label[128];
-    int width = 0;
+    int width = HELP_LABEL_MIN;
     for (int t = 0; t < n_tables; ++t)
         for (size_t k = 0; k < tables[t].n; ++k) {
             int n = listed(&tables[t].opts[k]) ? label_of(&tables[t].opts[k], label, sizeof label) : 0;

@@ -225,22 +225,22 @@ static void test_errors(void)
 }
 
 static const char help_text[] =
-    "  --d D            a number, 0.5..2\n"
-    "  --i N            whole, -3..7\n"
-    "  --seed S         into a uint64_t\n"
-    "  --paths N        into a long long\n"
-    "  --size N         1..100\n"
-    "  -n, --name NAME  a string\n"
-    "                   on two lines\n"
-    "  --flag           stores 5\n"
-    "  --rgb V|R,G,B    colour\n"
-    "  --dims NX,NY,NZ  voxels\n"
+    "  --d D               a number, 0.5..2\n"
+    "  --i N               whole, -3..7\n"
+    "  --seed S            into a uint64_t\n"
+    "  --paths N           into a long long\n"
+    "  --size N            1..100\n"
+    "  -n, --name NAME     a string\n"
+    "                      on two lines\n"
+    "  --flag              stores 5\n"
+    "  --rgb V|R,G,B       colour\n"
+    "  --dims NX,NY,NZ     voxels\n"
     "choices:\n"
-    "  --mode a|b|c     one of three\n"
-    "  --even N         an even number\n"
-    "  --list           stops\n"
+    "  --mode a|b|c        one of three\n"
+    "  --even N            an even number\n"
+    "  --list              stops\n"
     "  --a-very-long-option-name\n"
-    "                   its help goes below\n";
+    "                      its help goes below\n";
 
 static void test_help(void)
 {
