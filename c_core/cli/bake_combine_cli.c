@@ -24,7 +24,8 @@ typedef struct combine_job {
 
 #define F(field) CLI_FIELD(combine_job, field)
 #define VALUE(name, field, help_)                                                                                      \
-    {name, NULL, CLI_OPT_DOUBLE, .lo = -COMBINE_MAX_VALUE, .hi = COMBINE_MAX_VALUE, F(field), .meta = "V", .help = help_}
+    {name, NULL, CLI_OPT_DOUBLE, .lo = -COMBINE_MAX_VALUE, .hi = COMBINE_MAX_VALUE, F(field), .meta = "V",           \
+     .help = help_}
 static const cli_opt combine_opts[] = {
     VALUE("--lo", lo, "clamp: the low end (default 0)"),
     VALUE("--hi", hi, "clamp: the high end (default 1)"),

@@ -22,7 +22,8 @@ static const cli_choice modes[] = {{"schedule", SOAK_DRYING_SCHEDULE, 0}, {"diff
 
 #define F(field) CLI_FIELD(drying_job, field)
 static const cli_opt drying_opts[] = {
-    {"--mode", NULL, CLI_OPT_CHOICE, .choices = modes, F(p.mode), .meta = "MODE", .help = "schedule (default) or diffusion"},
+    {"--mode", NULL, CLI_OPT_CHOICE, .choices = modes, F(p.mode), .meta = "MODE",
+     .help = "schedule (default) or diffusion"},
     {"--threshold", NULL, CLI_OPT_DOUBLE, .lo = -SOAK_DRYING_MAX_THRESHOLD, .hi = SOAK_DRYING_MAX_THRESHOLD,
      F(p.threshold), .meta = "V", .help = "mask level above which a texel is wet (default 0.5)"},
     {"--t-fill", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 1, F(p.t_fill), .meta = "F",

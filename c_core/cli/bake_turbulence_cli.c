@@ -22,13 +22,15 @@ static const cli_opt turb_opts[] = {
     {"--z", NULL, CLI_OPT_DOUBLE, .lo = -SOAK_NOISE_MAX_Z, .hi = SOAK_NOISE_MAX_Z, F(z0), SEEN_3D, .meta = "Z",
      .help = "slice of the 3D noise (switches to 3D noise)"},
     {"--evolve", NULL, CLI_OPT_DOUBLE, .lo = -SOAK_NOISE_MAX_Z, .hi = SOAK_NOISE_MAX_Z, F(evolve), SEEN_3D,
-     .meta = "R", .help = "3D noise moving R octave-0 cells per time unit (animation):\nthe slice at time T is z = Z + R T"},
+     .meta = "R",
+     .help = "3D noise moving R octave-0 cells per time unit (animation):\nthe slice at time T is z = Z + R T"},
 };
 #undef F
 #undef SEEN_3D
 
 /* The shared options (bake_opts o), the noise (p = &j->p) and the kind's. */
-#define TURB_TABLES(o, j, p) {BAKE_IMAGE_TABLE(o), BAKE_NOISE_TABLE(p), CLI_TABLE(turb_opts, (j)), BAKE_SEQUENCE_TABLE(o)}
+#define TURB_TABLES(o, j, p)                                                                                           \
+    {BAKE_IMAGE_TABLE(o), BAKE_NOISE_TABLE(p), CLI_TABLE(turb_opts, (j)), BAKE_SEQUENCE_TABLE(o)}
 
 static void usage(FILE *out)
 {

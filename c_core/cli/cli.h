@@ -1,5 +1,7 @@
 /* Shared pieces of the `soak` command-line tool. Each subcommand lives in
- * its own cmd_<name>.c and is listed in main.c's table. Every subcommand:
+ * its own cmd_<name>.c (the bake kinds in bake_<kind>_cli.c), is listed in
+ * main.c's table and reads its options through a table (below). Every
+ * subcommand:
  *  - prints usage with an example on --help / -h and exits 0;
  *  - names the offending argument in every error and exits 2 for bad usage,
  *    1 for failures while working;

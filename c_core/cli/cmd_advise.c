@@ -45,7 +45,8 @@ static const cli_opt advise_opts[] = {
     {"--samples", NULL, CLI_OPT_INT, .ilo = SOAK_ADVISE_MIN_SAMPLES, .ihi = SOAK_ADVISE_MAX_SAMPLES, F(o.samples),
      .meta = "N", .help = "albedo samples per state and hit, %R (default 256)"},
     {"--seed", NULL, CLI_OPT_INT, .ilo = 0, .ihi = INT32_MAX, F(o.seed), .meta = "S", .help = "(default 1)"},
-    {"--all", NULL, CLI_OPT_FLAG, .flag = 1, F(all), .help = "also every model's predicted error and cost per material"},
+    {"--all", NULL, CLI_OPT_FLAG, .flag = 1, F(all),
+     .help = "also every model's predicted error and cost per material"},
 };
 #undef F
 

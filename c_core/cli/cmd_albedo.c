@@ -218,7 +218,8 @@ static void print_albedos(const opts *o, const soak_preset *p, const soak_liquid
     }
     printf("interface area    %.6f\n", soak_wet_interface_area(w));
     printf("ggx alpha         %.6f\n", w->ggx_alpha);
-    if (p->kind == SOAK_KIND_THIN_SHEET) printf("sheet transmit.   %.6f %.6f %.6f\n", r->sheet.r, r->sheet.g, r->sheet.b);
+    if (p->kind == SOAK_KIND_THIN_SHEET)
+        printf("sheet transmit.   %.6f %.6f %.6f\n", r->sheet.r, r->sheet.g, r->sheet.b);
 }
 
 static int run_preset(const opts *o)

@@ -84,7 +84,8 @@ static int read_tau(const char *cmd, const cli_opt *o, const char *v, void *dst)
 }
 
 static const cli_choice quantities[] = {
-    {"R", SOAK_MEASURE_R, 0}, {"T", SOAK_MEASURE_T, 0}, {"r", SOAK_MEASURE_R, 1}, {"t", SOAK_MEASURE_T, 1}, {NULL, 0, 0}};
+    {"R", SOAK_MEASURE_R, 0}, {"T", SOAK_MEASURE_T, 0}, {"r", SOAK_MEASURE_R, 1}, {"t", SOAK_MEASURE_T, 1},
+    {NULL, 0, 0}};
 static const cli_choice channels[] = {{"r", 0, 0}, {"g", 1, 0}, {"b", 2, 0}, {NULL, 0, 0}};
 
 #define F(field) CLI_FIELD(measure_args, field)
@@ -184,27 +185,63 @@ static int parse_args(int argc, char **argv, measure_args *a)
     return -1;
 }
 
+/* --material mode: the preset replaces the medium and film options. */
+static int check_preset_mode(measure_args *a)
+{
+    soak_measure_setup *s = &a->setup;
+    if (!a->material || !a->have_wetness) {
+        cli_error(CMD, "%s: a preset needs both --material NAME and --wetness W",
+                  a->material ? "--wetness" : "--material");
+        return 0;
+    }
+    if (a->have_albedo || a->have_tau || a->have_g || a->have_g1 || a->have_g2 || a->have_w || a->have_base ||
+        a->have_base_alpha) {
+        cli_error(CMD, "--material: replaces --albedo/--g*/--tau/--base-albedo/--film-*; give one or the other");
+        return 0;
+    }
+    if (!a->have_config) s->config = SOAK_MEASURE_HALFSPACE;
+    if (s->quantity == SOAK_MEASURE_T && s->config != SOAK_MEASURE_SLAB) {
+        cli_error(CMD, "--quantity T: only a slab transmits");
+        return 0;
+    }
+    return 1; /* the rest is checked once the preset is loaded */
+}
+
+/* The options each configuration needs and refuses. */
+static int check_config(measure_args *a)
+{
+    soak_measure_setup *s = &a->setup;
+    if (s->config == SOAK_MEASURE_FILM) {
+        if (!a->have_base) {
+            cli_error(CMD, "--base-albedo is required for --config film");
+            return 0;
+        }
+        if (!a->have_ior) s->ior = SOAK_WATER_IOR;
+        if (a->have_albedo || a->have_tau || a->have_g || a->have_g1) {
+            cli_error(CMD, "--albedo/--tau/--g*: not used by --config film (it has no scattering medium)");
+            return 0;
+        }
+        return 1;
+    }
+    if (!a->have_albedo) {
+        cli_error(CMD, "--albedo is required for --config %s", s->config == SOAK_MEASURE_SLAB ? "slab" : "halfspace");
+        return 0;
+    }
+    if (s->config == SOAK_MEASURE_SLAB && !a->have_tau) {
+        cli_error(CMD, "--tau is required for --config slab");
+        return 0;
+    }
+    if (s->config == SOAK_MEASURE_HALFSPACE && a->have_tau) {
+        cli_error(CMD, "--tau: a half-space has no thickness (use --config slab)");
+        return 0;
+    }
+    return 1;
+}
+
 static int check_combination(measure_args *a)
 {
     soak_measure_setup *s = &a->setup;
-    if (a->material || a->have_wetness || a->have_channel || a->liquid) {
-        if (!a->material || !a->have_wetness) {
-            cli_error(CMD, "%s: a preset needs both --material NAME and --wetness W",
-                      a->material ? "--wetness" : "--material");
-            return 0;
-        }
-        if (a->have_albedo || a->have_tau || a->have_g || a->have_g1 || a->have_g2 || a->have_w || a->have_base ||
-            a->have_base_alpha) {
-            cli_error(CMD, "--material: replaces --albedo/--g*/--tau/--base-albedo/--film-*; give one or the other");
-            return 0;
-        }
-        if (!a->have_config) s->config = SOAK_MEASURE_HALFSPACE;
-        if (s->quantity == SOAK_MEASURE_T && s->config != SOAK_MEASURE_SLAB) {
-            cli_error(CMD, "--quantity T: only a slab transmits");
-            return 0;
-        }
-        return 1; /* the rest is checked once the preset is loaded */
-    }
+    if (a->material || a->have_wetness || a->have_channel || a->liquid) return check_preset_mode(a);
     if (!a->have_config) {
         cli_error(CMD, "--config is required (film, halfspace or slab)");
         return 0;
@@ -217,31 +254,7 @@ static int check_combination(measure_args *a)
         cli_error(CMD, "--g1/--g2/--w: the two-term phase function needs all three");
         return 0;
     }
-    if (s->config == SOAK_MEASURE_FILM) {
-        if (!a->have_base) {
-            cli_error(CMD, "--base-albedo is required for --config film");
-            return 0;
-        }
-        if (!a->have_ior) s->ior = SOAK_WATER_IOR;
-        if (a->have_albedo || a->have_tau || a->have_g || a->have_g1) {
-            cli_error(CMD, "--albedo/--tau/--g*: not used by --config film (it has no scattering medium)");
-            return 0;
-        }
-    } else {
-        if (!a->have_albedo) {
-            cli_error(CMD, "--albedo is required for --config %s",
-                      s->config == SOAK_MEASURE_SLAB ? "slab" : "halfspace");
-            return 0;
-        }
-        if (s->config == SOAK_MEASURE_SLAB && !a->have_tau) {
-            cli_error(CMD, "--tau is required for --config slab");
-            return 0;
-        }
-        if (s->config == SOAK_MEASURE_HALFSPACE && a->have_tau) {
-            cli_error(CMD, "--tau: a half-space has no thickness (use --config slab)");
-            return 0;
-        }
-    }
+    if (!check_config(a)) return 0;
     if (s->quantity == SOAK_MEASURE_T && s->config != SOAK_MEASURE_SLAB) {
         cli_error(CMD, "--quantity T: only a slab transmits");
         return 0;

@@ -292,8 +292,8 @@ int soak_cmd_render(int argc, char **argv)
     if (rc != SOAK_EXIT_OK) return rc;
     if (!a.quiet) print_stats(&a, &stats);
     if (interrupted) {
-        fprintf(stderr, "soak render: interrupted; wrote the %d..%d samples per pixel done so far to %s\n", stats.min_spp,
-                stats.max_spp, a.out_path);
+        fprintf(stderr, "soak render: interrupted; wrote the %d..%d samples per pixel done so far to %s\n",
+                stats.min_spp, stats.max_spp, a.out_path);
         return 130;
     }
     return SOAK_EXIT_OK;

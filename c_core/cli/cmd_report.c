@@ -47,7 +47,8 @@ static const cli_opt report_opts[] = {
     {"--seed", NULL, CLI_OPT_INT, .ilo = 0, .ihi = INT32_MAX, F(seed), .meta = "S",
      .help = "base seed (default 1); each cell's seed derives from it"},
     {"--quick", NULL, CLI_OPT_FLAG, .flag = 1, F(quick),
-     .help = "subset: presets sand, marble, copper; water; 0 and 60 degrees\n(the same values as the full grid's cells)"},
+     .help = "subset: presets sand, marble, copper; water; 0 and 60 degrees\n"
+             "(the same values as the full grid's cells)"},
     {"--no-cost", NULL, CLI_OPT_FLAG, .flag = 1, F(no_cost), .help = "leave the timings out (zeros)"},
     {"--callgrind", NULL, CLI_OPT_STRING, F(callgrind), .meta = "PATH",
      .help = "instruction counts per evaluation (TSV: model, Ir) from\n"

@@ -46,7 +46,8 @@ static const cli_choice modes[] = {{"a", 1, 0}, {"b", 2, 0}, {"B", 2, 1}, {"c", 
 
 #define F(field) CLI_FIELD(t_opts, field)
 static const cli_opt table[] = {
-    {"--d", NULL, CLI_OPT_DOUBLE, .lo = 0.5, .hi = 2, F(d), CLI_SEEN(t_opts, seen_d), .meta = "D", .help = "a number, %R"},
+    {"--d", NULL, CLI_OPT_DOUBLE, .lo = 0.5, .hi = 2, F(d), CLI_SEEN(t_opts, seen_d), .meta = "D",
+     .help = "a number, %R"},
     {"--i", NULL, CLI_OPT_INT, .ilo = -3, .ihi = 7, F(i), .meta = "N", .help = "whole, %R"},
     {"--seed", NULL, CLI_OPT_INT, .ilo = 0, .ihi = INT64_MAX, F(seed), .meta = "S", .help = "into a uint64_t"},
     {"--paths", NULL, CLI_OPT_INT, .ilo = 1, .ihi = 1000000000000L, F(paths), .meta = "N", .help = "into a long long"},
