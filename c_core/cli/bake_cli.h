@@ -25,12 +25,11 @@ int soak_bake_drying_main(int argc, char **argv);
 int soak_bake_combine_main(int argc, char **argv);
 
 /* ---- shared option handling of the 2D kinds (bake_cli_common.c) ----
- * Options every kind accepts: -o/--output PATH, --width N, --height N
- * (1..16384), --seed N, --threads N (1..64, default: every core), --float
- * (32-bit EXR instead of half), --frames A-B with a printf pattern in the
- * output (wet.%04d.exr), --time T, --frame-time DT and --frame-origin F
- * (default A): frame f is baked at time T + (f - F) DT, the same double for
- * a given f whatever --frames range it is baked in (bake_frame_time). */
+ * The options every kind shares are the tables below. An image sequence is
+ * --frames A-B with a printf pattern in the output (wet.%04d.exr); frame f
+ * is baked at time T + (f - F) DT (--time, --frame-time, --frame-origin,
+ * default A), the same double for a given f whatever --frames range it is
+ * baked in (bake_frame_time). */
 #define BAKE_MAX_INPUTS 16 /* input images of one bake */
 
 typedef struct bake_opts {

@@ -1,6 +1,7 @@
 /* The option tables of cli.h: one reader of argv and one printer of the
  * options part of --help for every command. */
 #include <limits.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -43,9 +44,9 @@ static int bad_field(const char *cmd, const cli_opt *o)
     return 0;
 }
 
-/* Whole numbers go into int or 64-bit fields (int, long, long long,
- * uint64_t: the value is never negative there); memcpy keeps the types
- * apart. */
+/* Whole numbers go into int or 64-bit fields (int, long, long long, or
+ * uint64_t with a range from 0); memcpy keeps the types apart. */
+_Static_assert(sizeof(long) == sizeof(int64_t), "64-bit fields are filled from a long");
 static int store_whole(const char *cmd, const cli_opt *o, void *dst, long v)
 {
     if (o->size == sizeof(int) && v >= INT_MIN && v <= INT_MAX) {
@@ -97,14 +98,17 @@ static int read_value(const char *cmd, const cli_opt *o, const char *text, void 
         memcpy(field_of(dst, o), &text, sizeof text);
         return 1;
     case CLI_OPT_DOUBLE:
+        if (o->size != sizeof(double)) break;
         return cli_parse_double(cmd, o->name, text, o->lo, o->hi, (double *)field_of(dst, o));
     case CLI_OPT_INT:
         return cli_parse_int(cmd, o->name, text, o->ilo, o->ihi, &v) && store_whole(cmd, o, dst, v);
     case CLI_OPT_SIZE:
         return cli_parse_size(cmd, o->name, text, o->ihi, &v) && store_whole(cmd, o, dst, v);
     case CLI_OPT_RGB:
+        if (o->size != sizeof(soak_rgb)) break;
         return cli_parse_rgb(cmd, o->name, text, o->lo, o->hi, (soak_rgb *)field_of(dst, o));
     case CLI_OPT_DIMS:
+        if (o->size != 3 * sizeof(long)) break;
         return cli_parse_dims(cmd, o->name, text, o->ihi, o->hi, (long *)field_of(dst, o));
     case CLI_OPT_CHOICE:
         return read_choice(cmd, o, text, dst);

@@ -62,6 +62,7 @@ static const cli_opt table[] = {
     {"--list", NULL, CLI_OPT_ACTION, .parse = run_list, .help = "stops"},
     {"--old", NULL, CLI_OPT_REJECT, .help = "does not apply here"},
     {"--hidden", NULL, CLI_OPT_FLAG, .flag = 1, F(listed)},
+    {"--bad", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 1, F(i)}, /* a table that does not match its struct */
     {"--a-very-long-option-name", NULL, CLI_OPT_FLAG, .flag = 1, F(listed), .help = "its help goes below"},
 };
 #undef F
@@ -198,6 +199,7 @@ static const error_case errors[] = {
     {"--flag=1", 2, "soak t: unknown option '--flag=1' (see t --help)\n"},
     {"--dd 1", 2, "soak t: unknown option '--dd' (see t --help)\n"},
     {"--old=3", 2, "soak t: option --old=3 does not apply here\n"},
+    {"--bad 0.5", 2, "soak t: --bad: internal error: its table gives a field of 4 bytes\n"},
     {"a b c", 2, "soak t: unexpected argument 'c': two at most\n"},
     {"--d 1 --bogus --d 3", 2, "soak t: unknown option '--bogus' (see t --help)\n"},
     {"--list --bogus", 0, ""},
