@@ -13,6 +13,9 @@ typedef struct turb_job {
     int width, height;
 } turb_job;
 
+/* A rate, not bounded by the library: a frame's z (SOAK_NOISE_MAX_Z) is. */
+#define TURB_MAX_EVOLVE 1e6
+
 #define F(field) CLI_FIELD(turb_job, field)
 #define SEEN_3D CLI_SEEN(turb_job, p.use_3d)
 static const cli_opt turb_opts[] = {
@@ -21,7 +24,7 @@ static const cli_opt turb_opts[] = {
      .help = "periodic across the image edges (cell counts rounded per octave)"},
     {"--z", NULL, CLI_OPT_DOUBLE, .lo = -SOAK_NOISE_MAX_Z, .hi = SOAK_NOISE_MAX_Z, F(z0), SEEN_3D, .meta = "Z",
      .help = "slice of the 3D noise (switches to 3D noise)"},
-    {"--evolve", NULL, CLI_OPT_DOUBLE, .lo = -SOAK_NOISE_MAX_Z, .hi = SOAK_NOISE_MAX_Z, F(evolve), SEEN_3D,
+    {"--evolve", NULL, CLI_OPT_DOUBLE, .lo = -TURB_MAX_EVOLVE, .hi = TURB_MAX_EVOLVE, F(evolve), SEEN_3D,
      .meta = "R",
      .help = "3D noise moving R octave-0 cells per time unit (animation):\nthe slice at time T is z = Z + R T"},
 };
