@@ -9,6 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "cli.h"
 #include "soak/bake.h"
 
 /* Implemented in bake_volume_cli.c: parameter volumes (soak bake volume). */
@@ -24,12 +25,11 @@ int soak_bake_drying_main(int argc, char **argv);
 int soak_bake_combine_main(int argc, char **argv);
 
 /* ---- shared option handling of the 2D kinds (bake_cli_common.c) ----
- * Options every kind accepts: -o/--output PATH, --width N, --height N
- * (1..16384), --seed N, --threads N (1..64, default: every core), --float
- * (32-bit EXR instead of half), --frames A-B with a printf pattern in the
- * output (wet.%04d.exr), --time T, --frame-time DT and --frame-origin F
- * (default A): frame f is baked at time T + (f - F) DT, the same double for
- * a given f whatever --frames range it is baked in (bake_frame_time). */
+ * The options every kind shares are the tables below. An image sequence is
+ * --frames A-B with a printf pattern in the output (wet.%04d.exr); frame f
+ * is baked at time T + (f - F) DT (--time, --frame-time, --frame-origin,
+ * default A), the same double for a given f whatever --frames range it is
+ * baked in (bake_frame_time). */
 #define BAKE_MAX_INPUTS 16 /* input images of one bake */
 
 typedef struct bake_opts {
@@ -43,7 +43,6 @@ typedef struct bake_opts {
     int have_frames;
     long first, last;
     double time, frame_time;
-    int have_time;
     long origin; /* --frame-origin: the frame baked at `time` */
     int have_origin;
 } bake_opts;
@@ -51,9 +50,27 @@ typedef struct bake_opts {
 /* Defaults: 1024 x 1024, seed 0, time and frame_time as given. */
 void bake_opts_init(bake_opts *o, const char *cmd, double time, double frame_time);
 
-/* 1 if argv[*i] was a shared option (consumed, *i advanced past its value),
- * 0 if it is not one, -1 after printing an error about it (exit 2). */
-int bake_opts_parse(bake_opts *o, int argc, char **argv, int *i);
+/* The shared options as tables of bake_opts (cli.h): every kind reads
+ * -o, --width, --height, --seed and --threads; the kinds that bake image
+ * sequences also --float, --frames, --time, --frame-time, --frame-origin. */
+extern const cli_opt bake_image_opts[];
+extern const size_t bake_image_opts_n;
+extern const cli_opt bake_sequence_opts[];
+extern const size_t bake_sequence_opts_n;
+#define BAKE_IMAGE_TABLE(dst) {bake_image_opts, bake_image_opts_n, (dst)}
+#define BAKE_SEQUENCE_TABLE(dst) {bake_sequence_opts, bake_sequence_opts_n, (dst)}
+/* The noise of soak bake turbulence and soak bake volume, a table of
+ * soak_turbulence_params: --turbulence, --octaves, --frequency,
+ * --lacunarity, --gain, --threshold, --softness. */
+extern const cli_opt bake_noise_opts[];
+extern const size_t bake_noise_opts_n;
+#define BAKE_NOISE_TABLE(dst) {bake_noise_opts, bake_noise_opts_n, (dst)}
+/* The floor of the kinds' "(0, max]" settings (frequencies, periods,
+ * lengths): the library takes anything above 0. */
+#define BAKE_MIN_POSITIVE 1e-6
+
+/* "unknown option 'X' (see --help)", usage printed on --help. */
+#define BAKE_SPEC(cmd, usage, positional, ctx) {(cmd), "option", "--help", (usage), (positional), (ctx)}
 
 /* Checks -o, the frames/pattern agreement and every output path against
  * every input (inputs may be patterns expanded per frame) and the output

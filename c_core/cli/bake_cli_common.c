@@ -1,6 +1,7 @@
 /* Option handling, output checks, frame loop and progress shared by the 2D
  * `soak bake` kinds. */
 #include <errno.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,6 +11,8 @@
 
 #define MAX_FRAMES 100000
 #define MAX_FRAME_NUMBER 9999999
+#define BAKE_MAX_TIME 1e9       /* |--time| */
+#define BAKE_MAX_FRAME_TIME 1e6
 
 void bake_opts_init(bake_opts *o, const char *cmd, double time, double frame_time)
 {
@@ -20,8 +23,10 @@ void bake_opts_init(bake_opts *o, const char *cmd, double time, double frame_tim
     o->frame_time = frame_time;
 }
 
-static int parse_frames(bake_opts *o, const char *text)
+static int read_frames(const char *cmd, const cli_opt *opt, const char *text, void *dst)
 {
+    (void)opt;
+    bake_opts *o = dst;
     char *end = NULL;
     errno = 0;
     long a = strtol(text, &end, 10), b = a;
@@ -32,9 +37,9 @@ static int parse_frames(bake_opts *o, const char *text)
     }
     if (end == text || *end != '\0' || errno == ERANGE || a < 0 || b < a || b > MAX_FRAME_NUMBER ||
         b - a >= MAX_FRAMES) {
-        cli_error(o->cmd, "--frames: expected A-B with 0 <= A <= B <= %d and at most %d frames, got '%s'",
+        cli_error(cmd, "--frames: expected A-B with 0 <= A <= B <= %d and at most %d frames, got '%s'",
                   MAX_FRAME_NUMBER, MAX_FRAMES, text);
-        return -1;
+        return 0;
     }
     o->first = a;
     o->last = b;
@@ -42,51 +47,57 @@ static int parse_frames(bake_opts *o, const char *text)
     return 1;
 }
 
-int bake_opts_parse(bake_opts *o, int argc, char **argv, int *i)
-{
-    const char *a = argv[*i], *v;
-    long n;
-    if (cli_is(a, "-o") || cli_is(a, "--output")) {
-        if (!(v = cli_value(o->cmd, argc, argv, i))) return -1;
-        o->output = v;
-    } else if (cli_is(a, "--width") || cli_is(a, "--height")) {
-        int w = cli_is(a, "--width");
-        if (!(v = cli_value(o->cmd, argc, argv, i)) ||
-            !cli_parse_size(o->cmd, w ? "--width" : "--height", v, SOAK_BAKE_MAX_SIZE, &n))
-            return -1;
-        if (w) o->width = n, o->have_width = 1;
-        else o->height = n, o->have_height = 1;
-    } else if (cli_is(a, "--seed")) {
-        if (!(v = cli_value(o->cmd, argc, argv, i)) || !cli_parse_int(o->cmd, "--seed", v, 0, 0x7fffffffffffffffL, &n))
-            return -1;
-        o->seed = (uint64_t)n;
-    } else if (cli_is(a, "--threads")) {
-        if (!(v = cli_value(o->cmd, argc, argv, i)) ||
-            !cli_parse_int(o->cmd, "--threads", v, 1, SOAK_BAKE_MAX_THREADS, &o->threads))
-            return -1;
-    } else if (cli_is(a, "--float")) {
-        o->float_exr = 1;
-    } else if (cli_is(a, "--frames")) {
-        if (!(v = cli_value(o->cmd, argc, argv, i))) return -1;
-        return parse_frames(o, v);
-    } else if (cli_is(a, "--time")) {
-        if (!(v = cli_value(o->cmd, argc, argv, i)) || !cli_parse_double(o->cmd, "--time", v, -1e9, 1e9, &o->time))
-            return -1;
-        o->have_time = 1;
-    } else if (cli_is(a, "--frame-time")) {
-        if (!(v = cli_value(o->cmd, argc, argv, i)) ||
-            !cli_parse_double(o->cmd, "--frame-time", v, 0, 1e6, &o->frame_time))
-            return -1;
-    } else if (cli_is(a, "--frame-origin")) {
-        if (!(v = cli_value(o->cmd, argc, argv, i)) ||
-            !cli_parse_int(o->cmd, "--frame-origin", v, 0, MAX_FRAME_NUMBER, &o->origin))
-            return -1;
-        o->have_origin = 1;
-    } else {
-        return 0;
-    }
-    return 1;
-}
+#define F(field) CLI_FIELD(bake_opts, field)
+const cli_opt bake_image_opts[] = {
+    {"--output", "-o", CLI_OPT_STRING, F(output), .meta = "PATH",
+     .help = "output map: .exr (half), .png/.tif (16-bit linear), .tx"},
+    {"--width", NULL, CLI_OPT_SIZE, .ihi = SOAK_BAKE_MAX_SIZE, F(width), CLI_SEEN(bake_opts, have_width),
+     .meta = "N", .help = "image width, %R (default 1024)"},
+    {"--height", NULL, CLI_OPT_SIZE, .ihi = SOAK_BAKE_MAX_SIZE, F(height), CLI_SEEN(bake_opts, have_height),
+     .meta = "N", .help = "image height, %R (default 1024)"},
+    {"--seed", NULL, CLI_OPT_INT, .ilo = 0, .ihi = INT64_MAX, F(seed), .meta = "N",
+     .help = "seed (default 0); same seed, same map on any thread count"},
+    {"--threads", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_BAKE_MAX_THREADS, F(threads), .meta = "N",
+     .help = "worker threads, %R (default: every core)"},
+};
+const size_t bake_image_opts_n = sizeof bake_image_opts / sizeof bake_image_opts[0];
+
+const cli_opt bake_sequence_opts[] = {
+    {"--float", NULL, CLI_OPT_FLAG, .flag = 1, F(float_exr), .help = "32-bit EXR instead of half"},
+    {"--frames", NULL, CLI_OPT_CUSTOM, .parse = read_frames, .meta = "A-B",
+     .help = "image sequence; -o must hold a pattern such as wet.%04d.exr"},
+    {"--time", NULL, CLI_OPT_DOUBLE, .lo = -BAKE_MAX_TIME, .hi = BAKE_MAX_TIME, F(time), .meta = "T",
+     .help = "time of frame F (default above)"},
+    {"--frame-time", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = BAKE_MAX_FRAME_TIME, F(frame_time), .meta = "DT",
+     .help = "time between frames (default above): frame f is at T + (f-F) DT"},
+    {"--frame-origin", NULL, CLI_OPT_INT, .ilo = 0, .ihi = MAX_FRAME_NUMBER, F(origin),
+     CLI_SEEN(bake_opts, have_origin), .meta = "F",
+     .help = "frame baked at time T (default A); give the sequence's first\n"
+             "frame to bake it in chunks (--frames 11-20 ...) that equal one run"},
+};
+const size_t bake_sequence_opts_n = sizeof bake_sequence_opts / sizeof bake_sequence_opts[0];
+#undef F
+
+#define N(field) CLI_FIELD(soak_turbulence_params, field)
+const cli_opt bake_noise_opts[] = {
+    {"--turbulence", NULL, CLI_OPT_FLAG, .flag = SOAK_NOISE_TURBULENCE, N(sum),
+     .help = "sum of |noise| (turbulence) instead of noise (fBm)"},
+    {"--octaves", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_NOISE_MAX_OCTAVES, N(octaves), .meta = "N",
+     .help = "%R (default 6)"},
+    {"--frequency", NULL, CLI_OPT_DOUBLE, .lo = BAKE_MIN_POSITIVE, .hi = SOAK_NOISE_MAX_FREQUENCY, N(frequency),
+     .meta = "F", .help = "noise cells across the width (a volume: across SX) at octave 0\n(default 4)"},
+    {"--lacunarity", NULL, CLI_OPT_DOUBLE, .lo = 1, .hi = SOAK_NOISE_MAX_LACUNARITY, N(lacunarity), .meta = "L",
+     .help = "frequency ratio between octaves, %R (default 2)"},
+    {"--gain", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 1, N(gain), .meta = "G",
+     .help = "amplitude ratio between octaves, %R (default 0.5)"},
+    {"--threshold", NULL, CLI_OPT_DOUBLE, .lo = -SOAK_NOISE_MAX_THRESHOLD, .hi = SOAK_NOISE_MAX_THRESHOLD, N(threshold),
+     CLI_SEEN(soak_turbulence_params, thresholded), .meta = "T",
+     .help = "output smoothstep(T - S, T + S, value) instead of the value"},
+    {"--softness", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = SOAK_NOISE_MAX_SOFTNESS, N(softness), .meta = "S",
+     .help = "half width of that transition, 0 = hard edge (default 0.1)"},
+};
+const size_t bake_noise_opts_n = sizeof bake_noise_opts / sizeof bake_noise_opts[0];
+#undef N
 
 /* Path of frame f for a pattern, or the path itself when it has no
  * conversion. */

@@ -7,6 +7,42 @@
 
 #define CMD "bake combine"
 
+typedef struct combine_job {
+    const bake_opts *o;
+    const char *op;
+    const char *inputs[BAKE_MAX_INPUTS];
+    int n_inputs;
+    double lo, hi, sigma, in_lo, in_hi, out_lo, out_hi;
+    int wrap, clamp;
+} combine_job;
+
+/* Map values: any finite number (the CLI's bound of "finite"). */
+#define COMBINE_MAX_VALUE 1e30
+/* --sigma's floor (the library takes any sigma > 0): the kernel is the
+ * identity well before it. */
+#define COMBINE_MIN_SIGMA 1e-3
+
+#define F(field) CLI_FIELD(combine_job, field)
+#define VALUE(name, field, help_)                                                                                      \
+    {name, NULL, CLI_OPT_DOUBLE, .lo = -COMBINE_MAX_VALUE, .hi = COMBINE_MAX_VALUE, F(field), .meta = "V",           \
+     .help = help_}
+static const cli_opt combine_opts[] = {
+    VALUE("--lo", lo, "clamp: the low end (default 0)"),
+    VALUE("--hi", hi, "clamp: the high end (default 1)"),
+    {"--sigma", NULL, CLI_OPT_DOUBLE, .lo = COMBINE_MIN_SIGMA, .hi = SOAK_BLUR_MAX_SIGMA, F(sigma), .meta = "S",
+     .help = "blur: Gaussian sigma, %R pixels (default 1)"},
+    {"--wrap", NULL, CLI_OPT_FLAG, .flag = 1, F(wrap), .help = "blur: wrap around the edges (tileable maps)"},
+    VALUE("--in-lo", in_lo, "remap: input value mapped to --out-lo (default 0)"),
+    VALUE("--in-hi", in_hi, "remap: input value mapped to --out-hi (default 1)"),
+    VALUE("--out-lo", out_lo, "remap: (default 0)"),
+    VALUE("--out-hi", out_hi, "remap: (default 1)"),
+    {"--clamp", NULL, CLI_OPT_FLAG, .flag = 1, F(clamp), .help = "remap: clamp to the output range"},
+};
+#undef VALUE
+#undef F
+
+#define COMBINE_TABLES(o, j) {BAKE_IMAGE_TABLE(o), CLI_TABLE(combine_opts, (j)), BAKE_SEQUENCE_TABLE(o)}
+
 static void usage(FILE *out)
 {
     fprintf(out,
@@ -17,26 +53,32 @@ static void usage(FILE *out)
             "  blur                         one input, separable Gaussian of --sigma pixels\n"
             "                               (edges clamp; --wrap for tileable maps)\n"
             "  remap                        one input, [--in-lo, --in-hi] -> [--out-lo, --out-hi]\n"
-            "                               linearly (defaults 0..1 -> 0..1), --clamp to the output range\n\n"
-            "options:\n"
-            "  -o, --output PATH     .exr (half; --float for 32-bit), .png/.tif (16-bit linear), .tx\n"
-            "  --width N, --height N optional check: the inputs must have this size\n"
-            "  --threads N           worker threads (default: every core)\n"
-            "  --frames A-B          sequences: inputs and -o may hold a pattern such as wet.%%04d.exr\n"
-            "  --seed N, --time T, --frame-time DT, --frame-origin F  accepted for uniformity; unused\n\n"
-            "example:\n"
-            "  soak bake combine max waves.exr puddles.exr -o wet.exr\n"
-            "  soak bake combine blur wet.exr --sigma 2.5 -o wet_soft.exr\n");
+            "                               linearly (defaults 0..1 -> 0..1), --clamp to the output range\n"
+            "--width and --height are an optional check: the inputs must have this size. --frames\n"
+            "bakes sequences: inputs and -o may hold a pattern such as wet.%%04d.exr. --seed,\n"
+            "--time, --frame-time and --frame-origin are accepted for uniformity; unused.\n\n"
+            "options:\n");
+    const cli_opt_table tables[] = COMBINE_TABLES(NULL, NULL);
+    cli_opts_help(out, tables, sizeof tables / sizeof tables[0]);
+    fprintf(out, "\nexample:\n"
+                 "  soak bake combine max waves.exr puddles.exr -o wet.exr\n"
+                 "  soak bake combine blur wet.exr --sigma 2.5 -o wet_soft.exr\n");
 }
 
-typedef struct combine_job {
-    const bake_opts *o;
-    const char *op;
-    const char *inputs[BAKE_MAX_INPUTS];
-    int n_inputs;
-    double lo, hi, sigma, in_lo, in_hi, out_lo, out_hi;
-    int wrap, clamp;
-} combine_job;
+/* OP, then the inputs. */
+static int op_or_input(void *ctx, const char *arg)
+{
+    combine_job *j = ctx;
+    if (!j->op) {
+        j->op = arg;
+    } else if (j->n_inputs < BAKE_MAX_INPUTS) {
+        j->inputs[j->n_inputs++] = arg;
+    } else {
+        cli_error(CMD, "at most %d inputs", BAKE_MAX_INPUTS);
+        return 0;
+    }
+    return 1;
+}
 
 static const char *const binary_ops[] = {"max", "min", "multiply", "add"};
 
@@ -106,79 +148,42 @@ static soak_status frame(void *vctx, int f, double time, const soak_bake_exec *e
     return st;
 }
 
-typedef struct num_opt {
-    const char *name;
-    double *dst;
-} num_opt;
+/* OP and its inputs and settings agree. Returns 0 or the exit code. */
+static int validate(const combine_job *j)
+{
+    if (!j->op) {
+        cli_error(CMD, "missing OP: max, min, multiply, add, clamp, blur or remap (see --help)");
+        return SOAK_EXIT_USAGE;
+    }
+    int binary = binary_op(j->op) >= 0;
+    if (!binary && strcmp(j->op, "clamp") != 0 && strcmp(j->op, "blur") != 0 && strcmp(j->op, "remap") != 0) {
+        cli_error(CMD, "unknown OP '%s': expected max, min, multiply, add, clamp, blur or remap", j->op);
+        return SOAK_EXIT_USAGE;
+    }
+    if (binary ? j->n_inputs < 2 : j->n_inputs != 1) {
+        cli_error(CMD, "%s takes %s, got %d", j->op, binary ? "two or more inputs" : "exactly one input", j->n_inputs);
+        return SOAK_EXIT_USAGE;
+    }
+    if (strcmp(j->op, "clamp") == 0 && !(j->lo <= j->hi)) {
+        cli_error(CMD, "--lo (%g) must be <= --hi (%g)", j->lo, j->hi);
+        return SOAK_EXIT_USAGE;
+    }
+    if (strcmp(j->op, "remap") == 0 && j->in_lo == j->in_hi) {
+        cli_error(CMD, "--in-lo and --in-hi must differ (both %g)", j->in_lo);
+        return SOAK_EXIT_USAGE;
+    }
+    return 0;
+}
 
 int soak_bake_combine_main(int argc, char **argv)
 {
     bake_opts o;
     bake_opts_init(&o, CMD, 0, 1);
-    combine_job j;
-    memset(&j, 0, sizeof j);
-    j.o = &o;
-    j.lo = 0, j.hi = 1, j.sigma = 1, j.in_lo = 0, j.in_hi = 1, j.out_lo = 0, j.out_hi = 1;
-    const num_opt nums[] = {{"--lo", &j.lo},       {"--hi", &j.hi},         {"--sigma", &j.sigma},
-                            {"--in-lo", &j.in_lo}, {"--in-hi", &j.in_hi},   {"--out-lo", &j.out_lo},
-                            {"--out-hi", &j.out_hi}};
-    for (int i = 1; i < argc; ++i) {
-        const char *a = argv[i], *v;
-        int r = bake_opts_parse(&o, argc, argv, &i);
-        if (r < 0) return SOAK_EXIT_USAGE;
-        if (r > 0) continue;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            usage(stdout);
-            return SOAK_EXIT_OK;
-        } else if (cli_is(a, "--wrap")) {
-            j.wrap = 1;
-        } else if (cli_is(a, "--clamp")) {
-            j.clamp = 1;
-        } else if (a[0] == '-' && a[1] != '\0') {
-            int matched = 0;
-            for (size_t k = 0; k < sizeof nums / sizeof nums[0] && !matched; ++k) {
-                if (!cli_is(a, nums[k].name)) continue;
-                matched = 1;
-                double lo = strcmp(nums[k].name, "--sigma") == 0 ? 1e-3 : -1e30;
-                double hi = strcmp(nums[k].name, "--sigma") == 0 ? 1000 : 1e30;
-                if (!(v = cli_value(CMD, argc, argv, &i)) || !cli_parse_double(CMD, nums[k].name, v, lo, hi, nums[k].dst))
-                    return SOAK_EXIT_USAGE;
-            }
-            if (!matched) {
-                cli_error(CMD, "unknown option '%s' (see --help)", a);
-                return SOAK_EXIT_USAGE;
-            }
-        } else if (!j.op) {
-            j.op = a;
-        } else if (j.n_inputs < BAKE_MAX_INPUTS) {
-            j.inputs[j.n_inputs++] = a;
-        } else {
-            cli_error(CMD, "at most %d inputs", BAKE_MAX_INPUTS);
-            return SOAK_EXIT_USAGE;
-        }
-    }
-    if (!j.op) {
-        cli_error(CMD, "missing OP: max, min, multiply, add, clamp, blur or remap (see --help)");
-        return SOAK_EXIT_USAGE;
-    }
-    int binary = binary_op(j.op) >= 0;
-    if (!binary && strcmp(j.op, "clamp") != 0 && strcmp(j.op, "blur") != 0 && strcmp(j.op, "remap") != 0) {
-        cli_error(CMD, "unknown OP '%s': expected max, min, multiply, add, clamp, blur or remap", j.op);
-        return SOAK_EXIT_USAGE;
-    }
-    if (binary ? j.n_inputs < 2 : j.n_inputs != 1) {
-        cli_error(CMD, "%s takes %s, got %d", j.op, binary ? "two or more inputs" : "exactly one input", j.n_inputs);
-        return SOAK_EXIT_USAGE;
-    }
-    if (strcmp(j.op, "clamp") == 0 && !(j.lo <= j.hi)) {
-        cli_error(CMD, "--lo (%g) must be <= --hi (%g)", j.lo, j.hi);
-        return SOAK_EXIT_USAGE;
-    }
-    if (strcmp(j.op, "remap") == 0 && j.in_lo == j.in_hi) {
-        cli_error(CMD, "--in-lo and --in-hi must differ (both %g)", j.in_lo);
-        return SOAK_EXIT_USAGE;
-    }
-    int rc = bake_opts_check(&o, j.inputs, j.n_inputs);
-    if (rc) return rc;
+    combine_job j = {.o = &o, .lo = 0, .hi = 1, .sigma = 1, .in_lo = 0, .in_hi = 1, .out_lo = 0, .out_hi = 1};
+    const cli_spec spec = BAKE_SPEC(CMD, usage, op_or_input, &j);
+    const cli_opt_table tables[] = COMBINE_TABLES(&o, &j);
+    int rc = cli_opts_parse(&spec, tables, sizeof tables / sizeof tables[0], argc, argv);
+    if (rc >= 0) return rc;
+    if ((rc = validate(&j)) != 0 || (rc = bake_opts_check(&o, j.inputs, j.n_inputs)) != 0) return rc;
     return bake_run(&o, frame, &j);
 }

@@ -12,6 +12,91 @@
 
 #define CMD "bake rain"
 
+typedef struct rain_args {
+    soak_rain_params p;
+    int have_dir, up_axis;
+    const char *mesh_path, *exposure_path, *water_path;
+} rain_args;
+
+/* Rain direction components: any finite vector (normalised by the bake). */
+#define RAIN_MAX_COMPONENT 1e6
+/* --drop-size's floor: the library takes any diameter > 0. */
+#define RAIN_MIN_DROP 1e-6
+/* --saturation's floor: the library takes any depth > 0. */
+#define RAIN_MIN_SATURATION 1e-9
+
+static int read_rain_dir(const char *cmd, const cli_opt *o, const char *text, void *dst)
+{
+    rain_args *a = dst;
+    char buf[256];
+    snprintf(buf, sizeof buf, "%s", text);
+    char *c1 = strchr(buf, ','), *c2 = c1 ? strchr(c1 + 1, ',') : NULL;
+    if (!c1 || !c2 || strchr(c2 + 1, ',')) {
+        cli_error(cmd, "%s: expected X,Y,Z, got '%s'", o->name, text);
+        return 0;
+    }
+    *c1 = *c2 = '\0';
+    double v[3];
+    if (!cli_parse_double(cmd, o->name, buf, o->lo, o->hi, &v[0]) ||
+        !cli_parse_double(cmd, o->name, c1 + 1, o->lo, o->hi, &v[1]) ||
+        !cli_parse_double(cmd, o->name, c2 + 1, o->lo, o->hi, &v[2]))
+        return 0;
+    a->p.rain_dir = soak_v3(v[0], v[1], v[2]);
+    return 1;
+}
+
+static const cli_choice skies[] = {{"rain", SOAK_RAIN_SKY_RAIN, 0}, {"hemisphere", SOAK_RAIN_SKY_HEMISPHERE, 0},
+                                   {NULL, 0, 0}};
+/* Axis k of x, y, z, then -x, -y, -z. */
+static const cli_choice axes[] = {{"x", 0, 0},  {"y", 1, 0},  {"z", 2, 0}, {"-x", 3, 0},
+                                  {"-y", 4, 0}, {"-z", 5, 0}, {NULL, 0, 0}};
+
+#define F(field) CLI_FIELD(rain_args, field)
+static const cli_opt rain_opts[] = {
+    {"--exposure", NULL, CLI_OPT_STRING, F(exposure_path), .meta = "PATH",
+     .help = "also write the sky exposure (1 = open horizontal surface)"},
+    {"--water", NULL, CLI_OPT_STRING, F(water_path), .meta = "PATH", .help = "also write the water depth (m)"},
+    {"--rays", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RAIN_MAX_RAYS, F(p.rays), .meta = "N",
+     .help = "rays per texel, %R (default 64)"},
+    {"--sky", NULL, CLI_OPT_CHOICE, .choices = skies, F(p.sky), .meta = "rain|hemisphere",
+     .help = "rain cone (default) or cosine hemisphere (ambient occlusion)"},
+    {"--up", NULL, CLI_OPT_CHOICE, .choices = axes, F(up_axis), .meta = "x|y|z|-x|-y|-z",
+     .help = "world up axis (default y, the OBJ/glTF convention)"},
+    {"--rain-dir", NULL, CLI_OPT_CUSTOM, .parse = read_rain_dir, .lo = -RAIN_MAX_COMPONENT, .hi = RAIN_MAX_COMPONENT,
+     CLI_SEEN(rain_args, have_dir), .meta = "X,Y,Z", .help = "direction the rain comes from (default: up)"},
+    {"--spread", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = SOAK_RAIN_MAX_SPREAD, F(p.spread_deg), .meta = "DEG",
+     .help = "rain cone half-angle, %R (default 10)"},
+    {"--duration", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = SOAK_RAIN_MAX_DURATION, F(p.duration), .meta = "S",
+     .help = "seconds of rain, 0 = exposure only (default 600)"},
+    {"--steps", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RAIN_MAX_STEPS, F(p.steps), .meta = "N",
+     .help = "time steps, %R (default 32)"},
+    {"--rainfall", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = SOAK_RAIN_MAX_RATE, F(p.rainfall_mm_h), .meta = "MM_H",
+     .help = "rainfall, %R mm/h (default 10)"},
+    {"--drop-size", NULL, CLI_OPT_DOUBLE, .lo = RAIN_MIN_DROP, .hi = SOAK_RAIN_MAX_DROP, F(p.drop_diameter),
+     .meta = "M", .help = "drop diameter, m (default 0.002)"},
+    {"--splat", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = SOAK_RAIN_MAX_SPLAT, F(p.splat_radius), .meta = "M",
+     .help = "splat kernel standard deviation, m (default 0.002)"},
+    {"--evaporation", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = SOAK_RAIN_MAX_RATE, F(p.evaporation_mm_h), .meta = "MM_H",
+     .help = "evaporation, %R mm/h (default 0.5)"},
+    {"--retention", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = SOAK_RAIN_MAX_RETENTION, F(p.retention), .meta = "M",
+     .help = "film kept on a flat surface, m (default 0.0002)"},
+    {"--saturation", NULL, CLI_OPT_DOUBLE, .lo = RAIN_MIN_SATURATION, .hi = SOAK_RAIN_MAX_SATURATION,
+     F(p.saturation_depth), .meta = "M", .help = "depth giving wetness 1 - 1/e, m (default 0.0002)"},
+    {"--flow-iterations", NULL, CLI_OPT_INT, .ilo = 0, .ihi = SOAK_RAIN_MAX_STEPS, F(p.flow_iterations), .meta = "N",
+     .help = "routing sweeps per step, %R (default 16)"},
+    {"--gutter", NULL, CLI_OPT_INT, .ilo = 0, .ihi = SOAK_RAIN_MAX_GUTTER, F(p.gutter), .meta = "N",
+     .help = "texels of padding around UV islands, %R (default 4)"},
+    /* A rain bake is one image. */
+    {"--frames", NULL, CLI_OPT_REJECT, .help = "does not apply to rain bakes"},
+    {"--time", NULL, CLI_OPT_REJECT, .help = "does not apply to rain bakes"},
+    {"--frame-time", NULL, CLI_OPT_REJECT, .help = "does not apply to rain bakes"},
+    {"--frame-origin", NULL, CLI_OPT_REJECT, .help = "does not apply to rain bakes"},
+    {"--float", NULL, CLI_OPT_REJECT, .help = "does not apply to rain bakes"},
+};
+#undef F
+
+#define RAIN_TABLES(o, a) {BAKE_IMAGE_TABLE(o), CLI_TABLE(rain_opts, (a))}
+
 static void usage(FILE *out)
 {
     fprintf(out,
@@ -20,63 +105,25 @@ static void usage(FILE *out)
             "resolution: per-texel sky exposure by ray casting through the mesh (Embree), drop\n"
             "impacts as a Poisson process with a splat kernel, evaporation, and downhill flow\n"
             "that fills concave upward-facing regions (puddles). Lengths in the mesh unit\n"
-            "(metres), times in seconds. Same seed, same bytes, on any number of threads.\n\n"
-            "options:\n"
-            "  -o, --output PATH     wetness map (.exr/.png/.tif/.tx), w = 1 - exp(-depth/saturation)\n"
-            "  --exposure PATH       also write the sky exposure (1 = open horizontal surface)\n"
-            "  --water PATH          also write the water depth (m)\n"
-            "  --width N, --height N texture size, 1..16384 (default 1024)\n"
-            "  --rays N              rays per texel (default 64)\n"
-            "  --sky rain|hemisphere rain cone (default) or cosine hemisphere (ambient occlusion)\n"
-            "  --up x|y|z|-x|-y|-z   world up axis (default y, the OBJ/glTF convention)\n"
-            "  --rain-dir X,Y,Z      direction the rain comes from (default: up)\n"
-            "  --spread DEG          rain cone half-angle, 0..89 (default 10)\n"
-            "  --duration S          seconds of rain, 0 = exposure only (default 600)\n"
-            "  --steps N             time steps (default 32)\n"
-            "  --rainfall MM_H       rainfall, mm/h (default 10)\n"
-            "  --drop-size M         drop diameter, m (default 0.002)\n"
-            "  --splat M             splat kernel standard deviation, m (default 0.002)\n"
-            "  --evaporation MM_H    evaporation, mm/h (default 0.5)\n"
-            "  --retention M         film kept on a flat surface, m (default 0.0002)\n"
-            "  --saturation M        depth giving wetness 1 - 1/e, m (default 0.0002)\n"
-            "  --flow-iterations N   routing sweeps per step (default 16)\n"
-            "  --gutter N            texels of padding around UV islands (default 4)\n"
-            "  --seed N, --threads N\n\n"
-            "example:\n"
-            "  soak bake rain statue.glb --width 2048 --height 2048 --rays 64 --duration 1800 \\\n"
-            "       --exposure exposure.exr -o rain_wet.exr\n");
+            "(metres), times in seconds. Same seed, same bytes, on any number of threads.\n"
+            "-o is the wetness map, w = 1 - exp(-depth/saturation).\n\n"
+            "options:\n");
+    const cli_opt_table tables[] = RAIN_TABLES(NULL, NULL);
+    cli_opts_help(out, tables, sizeof tables / sizeof tables[0]);
+    fprintf(out, "\nexample:\n"
+                 "  soak bake rain statue.glb --width 2048 --height 2048 --rays 64 --duration 1800 \\\n"
+                 "       --exposure exposure.exr -o rain_wet.exr\n");
 }
 
-static int parse_vec(const char *opt, const char *text, soak_vec3 *out)
+static int mesh_arg(void *ctx, const char *arg)
 {
-    char buf[256];
-    snprintf(buf, sizeof buf, "%s", text);
-    char *c1 = strchr(buf, ','), *c2 = c1 ? strchr(c1 + 1, ',') : NULL;
-    if (!c1 || !c2 || strchr(c2 + 1, ',')) {
-        cli_error(CMD, "%s: expected X,Y,Z, got '%s'", opt, text);
+    rain_args *a = ctx;
+    if (a->mesh_path) {
+        cli_error(CMD, "unexpected argument '%s' (one mesh only)", arg);
         return 0;
     }
-    *c1 = *c2 = '\0';
-    double v[3];
-    if (!cli_parse_double(CMD, opt, buf, -1e6, 1e6, &v[0]) || !cli_parse_double(CMD, opt, c1 + 1, -1e6, 1e6, &v[1]) ||
-        !cli_parse_double(CMD, opt, c2 + 1, -1e6, 1e6, &v[2]))
-        return 0;
-    *out = soak_v3(v[0], v[1], v[2]);
+    a->mesh_path = arg;
     return 1;
-}
-
-static int parse_axis(const char *text, soak_vec3 *out)
-{
-    static const char *const names[] = {"x", "y", "z", "-x", "-y", "-z"};
-    for (int k = 0; k < 6; ++k)
-        if (!strcmp(text, names[k])) {
-            double s = k < 3 ? 1.0 : -1.0;
-            int a = k % 3;
-            *out = soak_v3(a == 0 ? s : 0, a == 1 ? s : 0, a == 2 ? s : 0);
-            return 1;
-        }
-    cli_error(CMD, "--up: expected x, y, z, -x, -y or -z, got '%s'", text);
-    return 0;
 }
 
 static void on_progress(void *user, double fraction)
@@ -102,119 +149,41 @@ static int write_outputs(const char *const *paths, const soak_image *const *imgs
     return st == SOAK_OK ? SOAK_EXIT_OK : bake_fail(CMD, st, err);
 }
 
-int soak_bake_rain_main(int argc, char **argv)
+/* Returns -1 to go on, else the exit code. */
+static int parse_args(int argc, char **argv, rain_args *a, bake_opts *o)
 {
-    soak_rain_params p;
-    soak_rain_defaults(&p);
-    p.up = soak_v3(0, 1, 0);
-    int have_dir = 0;
-    const char *mesh_path = NULL, *exposure_path = NULL, *water_path = NULL;
-    bake_opts o;
-    bake_opts_init(&o, CMD, 0, 0);
-    for (int i = 1; i < argc; ++i) {
-        const char *a = argv[i], *v;
-        long n;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            usage(stdout);
-            return SOAK_EXIT_OK;
-        }
-        if (cli_is(a, "--frames") || cli_is(a, "--time") || cli_is(a, "--frame-time") || cli_is(a, "--frame-origin") ||
-            cli_is(a, "--float")) {
-            cli_error(CMD, "option %s does not apply to rain bakes", a);
-            return SOAK_EXIT_USAGE;
-        }
-        int r = bake_opts_parse(&o, argc, argv, &i);
-        if (r < 0) return SOAK_EXIT_USAGE;
-        if (r > 0) continue;
-#define NEED_VALUE                                                                                                     \
-    if (!(v = cli_value(CMD, argc, argv, &i))) return SOAK_EXIT_USAGE
-        if (cli_is(a, "--exposure")) {
-            NEED_VALUE;
-            exposure_path = v;
-        } else if (cli_is(a, "--water")) {
-            NEED_VALUE;
-            water_path = v;
-        } else if (cli_is(a, "--rays")) {
-            NEED_VALUE;
-            if (!cli_parse_int(CMD, "--rays", v, 1, 65536, &n)) return SOAK_EXIT_USAGE;
-            p.rays = (int)n;
-        } else if (cli_is(a, "--sky")) {
-            NEED_VALUE;
-            if (!strcmp(v, "rain")) p.sky = SOAK_RAIN_SKY_RAIN;
-            else if (!strcmp(v, "hemisphere")) p.sky = SOAK_RAIN_SKY_HEMISPHERE;
-            else {
-                cli_error(CMD, "--sky: expected rain or hemisphere, got '%s'", v);
-                return SOAK_EXIT_USAGE;
-            }
-        } else if (cli_is(a, "--up")) {
-            NEED_VALUE;
-            if (!parse_axis(v, &p.up)) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--rain-dir")) {
-            NEED_VALUE;
-            if (!parse_vec("--rain-dir", v, &p.rain_dir)) return SOAK_EXIT_USAGE;
-            have_dir = 1;
-        } else if (cli_is(a, "--spread")) {
-            NEED_VALUE;
-            if (!cli_parse_double(CMD, "--spread", v, 0, 89, &p.spread_deg)) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--duration")) {
-            NEED_VALUE;
-            if (!cli_parse_double(CMD, "--duration", v, 0, 1e7, &p.duration)) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--steps")) {
-            NEED_VALUE;
-            if (!cli_parse_int(CMD, "--steps", v, 1, 100000, &n)) return SOAK_EXIT_USAGE;
-            p.steps = (int)n;
-        } else if (cli_is(a, "--rainfall")) {
-            NEED_VALUE;
-            if (!cli_parse_double(CMD, "--rainfall", v, 0, 1000, &p.rainfall_mm_h)) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--drop-size")) {
-            NEED_VALUE;
-            if (!cli_parse_double(CMD, "--drop-size", v, 1e-6, 0.01, &p.drop_diameter)) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--splat")) {
-            NEED_VALUE;
-            if (!cli_parse_double(CMD, "--splat", v, 0, 1, &p.splat_radius)) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--evaporation")) {
-            NEED_VALUE;
-            if (!cli_parse_double(CMD, "--evaporation", v, 0, 1000, &p.evaporation_mm_h)) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--retention")) {
-            NEED_VALUE;
-            if (!cli_parse_double(CMD, "--retention", v, 0, 0.1, &p.retention)) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--saturation")) {
-            NEED_VALUE;
-            if (!cli_parse_double(CMD, "--saturation", v, 1e-9, 1, &p.saturation_depth)) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--flow-iterations")) {
-            NEED_VALUE;
-            if (!cli_parse_int(CMD, "--flow-iterations", v, 0, 100000, &n)) return SOAK_EXIT_USAGE;
-            p.flow_iterations = (int)n;
-        } else if (cli_is(a, "--gutter")) {
-            NEED_VALUE;
-            if (!cli_parse_int(CMD, "--gutter", v, 0, 64, &n)) return SOAK_EXIT_USAGE;
-            p.gutter = (int)n;
-        } else if (a[0] == '-' && a[1] != '\0') {
-            cli_error(CMD, "unknown option '%s' (see --help)", a);
-            return SOAK_EXIT_USAGE;
-        } else if (!mesh_path) {
-            mesh_path = a;
-        } else {
-            cli_error(CMD, "unexpected argument '%s' (one mesh only)", a);
-            return SOAK_EXIT_USAGE;
-        }
-#undef NEED_VALUE
-    }
-    if (!mesh_path) {
+    memset(a, 0, sizeof *a);
+    soak_rain_defaults(&a->p);
+    a->up_axis = 1;
+    bake_opts_init(o, CMD, 0, 0);
+    const cli_spec spec = BAKE_SPEC(CMD, usage, mesh_arg, a);
+    const cli_opt_table tables[] = RAIN_TABLES(o, a);
+    int rc = cli_opts_parse(&spec, tables, sizeof tables / sizeof tables[0], argc, argv);
+    if (rc >= 0) return rc;
+    if (!a->mesh_path) {
         cli_error(CMD, "a MESH file is required (see --help)");
         return SOAK_EXIT_USAGE;
     }
-    if (!have_dir) p.rain_dir = p.up;
-    p.seed = o.seed;
-    if (soak_v3_dot(p.rain_dir, p.up) <= 1e-6 * soak_v3_len(p.rain_dir)) {
+    double s = a->up_axis < 3 ? 1.0 : -1.0;
+    int k = a->up_axis % 3;
+    a->p.up = soak_v3(k == 0 ? s : 0, k == 1 ? s : 0, k == 2 ? s : 0);
+    if (!a->have_dir) a->p.rain_dir = a->p.up;
+    a->p.seed = o->seed;
+    if (soak_v3_dot(a->p.rain_dir, a->p.up) <= 1e-6 * soak_v3_len(a->p.rain_dir)) {
         cli_error(CMD, "--rain-dir: the rain must come from above (positive component along --up)");
         return SOAK_EXIT_USAGE;
     }
-    const char *inputs[1] = {mesh_path};
-    const char *extra[2] = {exposure_path, water_path};
-    int rc = bake_opts_check(&o, inputs, 1);
-    if (rc) return rc;
-    for (int k = 0; k < 2; ++k) {
+    return -1;
+}
+
+/* -o, --exposure and --water: writable, not the mesh, not each other.
+ * Returns 0 or the exit code. */
+static int check_outputs(const rain_args *a, const bake_opts *o)
+{
+    const char *inputs[1] = {a->mesh_path};
+    const char *extra[2] = {a->exposure_path, a->water_path};
+    int rc = bake_opts_check(o, inputs, 1);
+    for (int k = 0; k < 2 && !rc; ++k) {
         if (!extra[k]) continue;
         char err[4352];
         soak_status st = soak_bake_check_output(extra[k], inputs, 1, err, sizeof err);
@@ -222,34 +191,47 @@ int soak_bake_rain_main(int argc, char **argv)
             cli_error(CMD, "%s: %s", k ? "--water" : "--exposure", err);
             return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
         }
-        if (soak_path_same(extra[k], o.output) || (k == 1 && exposure_path && soak_path_same(extra[1], extra[0]))) {
+        if (soak_path_same(extra[k], o->output) || (k == 1 && a->exposure_path && soak_path_same(extra[1], extra[0]))) {
             cli_error(CMD, "%s: same file as another output", k ? "--water" : "--exposure");
             return SOAK_EXIT_USAGE;
         }
     }
+    return rc;
+}
 
+/* Loads the mesh and bakes it into res. */
+static soak_status bake(const rain_args *a, const bake_opts *o, soak_rain_result *res)
+{
     char err[4352] = "";
     soak_mesh mesh;
-    soak_status st = soak_mesh_load(mesh_path, 1, &mesh, err, sizeof err);
+    soak_status st = soak_mesh_load(a->mesh_path, 1, &mesh, err, sizeof err);
     if (st != SOAK_OK) {
         cli_error(CMD, "%s", err[0] ? err : soak_status_str(st));
-        return SOAK_EXIT_FAIL;
+        return st;
     }
     cli_progress bar;
     cli_progress_start(&bar, CMD, 1.0);
-    soak_bake_exec exec = {(int)o.threads, on_progress, &bar};
-    soak_rain_result res;
-    st = soak_bake_rain(&mesh, (int)o.width, (int)o.height, &p, &exec, &res, err, sizeof err);
+    soak_bake_exec exec = {(int)o->threads, on_progress, &bar};
+    st = soak_bake_rain(&mesh, (int)o->width, (int)o->height, &a->p, &exec, res, err, sizeof err);
     cli_progress_finish(&bar);
     soak_mesh_free(&mesh);
-    if (st != SOAK_OK) {
-        cli_error(CMD, "%s: %s", mesh_path, err[0] ? err : soak_status_str(st));
-        return SOAK_EXIT_FAIL;
-    }
-    const char *paths[3] = {o.output, exposure_path, water_path};
+    if (st != SOAK_OK) cli_error(CMD, "%s: %s", a->mesh_path, err[0] ? err : soak_status_str(st));
+    return st;
+}
+
+int soak_bake_rain_main(int argc, char **argv)
+{
+    rain_args a;
+    bake_opts o;
+    int rc = parse_args(argc, argv, &a, &o);
+    if (rc >= 0) return rc;
+    if ((rc = check_outputs(&a, &o)) != 0) return rc;
+    soak_rain_result res;
+    if (bake(&a, &o, &res) != SOAK_OK) return SOAK_EXIT_FAIL;
+    const char *paths[3] = {o.output, a.exposure_path, a.water_path};
     const soak_image *imgs[3] = {&res.wetness, &res.exposure, &res.water};
     rc = write_outputs(paths, imgs, 3);
     soak_rain_result_free(&res);
-    if (rc == SOAK_EXIT_OK) printf("%s: %ldx%ld rain wetness from %s\n", o.output, o.width, o.height, mesh_path);
+    if (rc == SOAK_EXIT_OK) printf("%s: %ldx%ld rain wetness from %s\n", o.output, o.width, o.height, a.mesh_path);
     return rc;
 }

@@ -1,5 +1,6 @@
 /* soak bake volume: 3D parameter volumes for subsurface scattering of wet
  * materials (model in soak/bake_volume.h). */
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,6 +14,130 @@
 
 #define CMD "bake volume"
 #define TABLE_ROWS 257 /* preset wetness table rows: steps of 1/256 in wetness */
+
+typedef struct vol_args {
+    const char *output, *map, *material, *liquid, *materials;
+    int fmt_vdb, fmt_grid, fmt_df3;
+    long dims[3];
+    double size[3], depth, wetness;
+    int unit_mm;
+    int have_depth, have_wetness, noise, bits;
+    long threads;
+    soak_vol_turbulence turb;
+    int have_dry_s, have_dry_a, have_wet_s, have_wet_a, have_raw;
+    soak_vol_medium dry, wet;
+} vol_args;
+
+/* The box's extent and the penetration depth, in --unit. */
+#define VOL_MIN_SIZE 1e-9
+#define VOL_MAX_SIZE 1e9
+/* A raw medium's phase lobes (the library's HG limit is SOAK_HG_G_MAX). */
+#define VOL_MAX_G 0.999
+/* soak_volume_alloc's cap: 2^31 floats over every channel. */
+#define VOL_MAX_VOXELS ((double)((1L << 31) / SOAK_VOL_NCHANNELS))
+
+static int read_size(const char *cmd, const cli_opt *o, const char *text, void *dst)
+{
+    double *out = ((vol_args *)dst)->size;
+    soak_rgb c;
+    const char *c1 = strchr(text, ','), *c2 = c1 ? strchr(c1 + 1, ',') : NULL;
+    if (!c2 || strchr(c2 + 1, ',')) {
+        cli_error(cmd, "%s: expected three comma-separated values, got '%s'", o->name, text);
+        return 0;
+    }
+    if (!cli_parse_rgb(cmd, o->name, text, o->lo, o->hi, &c)) return 0;
+    out[0] = c.r, out[1] = c.g, out[2] = c.b;
+    return 1;
+}
+
+static int read_formats(const char *cmd, const cli_opt *o, const char *text, void *dst)
+{
+    (void)o;
+    vol_args *a = dst;
+    char buf[256], *parts[4];
+    int n = cli_split_commas(text, buf, sizeof buf, parts, 3);
+    a->fmt_vdb = a->fmt_grid = a->fmt_df3 = 0;
+    for (int k = 0; k < n && k < 3; ++k) {
+        if (strcmp(parts[k], "vdb") == 0) a->fmt_vdb = 1;
+        else if (strcmp(parts[k], "grid") == 0) a->fmt_grid = 1;
+        else if (strcmp(parts[k], "df3") == 0) a->fmt_df3 = 1;
+        else {
+            cli_error(cmd, "--format: unknown format '%s' (expected vdb, grid, df3)", parts[k]);
+            return 0;
+        }
+    }
+    if (n > 3) {
+        cli_error(cmd, "--format: at most three formats, got '%s'", text);
+        return 0;
+    }
+    return 1;
+}
+
+static int read_bits(const char *cmd, const cli_opt *o, const char *text, void *dst)
+{
+    long n;
+    if (!cli_parse_int(cmd, o->name, text, 8, 32, &n) || (n != 8 && n != 16 && n != 32)) {
+        cli_error(cmd, "--df3-bits: expected 8, 16 or 32, got '%s'", text);
+        return 0;
+    }
+    ((vol_args *)dst)->bits = (int)n;
+    return 1;
+}
+
+static const cli_choice units[] = {{"mm", 1, 0}, {"cm", 10, 0}, {"m", 1000, 0}, {NULL, 0, 0}};
+
+#define F(field) CLI_FIELD(vol_args, field)
+#define SEEN(field) CLI_SEEN(vol_args, field)
+#define SIGMA(name, field, seen, help_)                                                                                \
+    {name, NULL, CLI_OPT_RGB, .lo = 0, .hi = SOAK_VOL_SIGMA_MAX, F(field), SEEN(seen), .meta = "V|R,G,B", .help = help_}
+#define LOBE(name, field, lo_, hi_, meta_, help_)                                                                      \
+    {name, NULL, CLI_OPT_DOUBLE, .lo = lo_, .hi = hi_, F(field), SEEN(have_raw), .meta = meta_, .help = help_}
+static const cli_opt volume_opts[] = {
+    {"--output", "-o", CLI_OPT_STRING, F(output), .meta = "PREFIX", .help = "output prefix (folder must exist)"},
+    {"--format", NULL, CLI_OPT_CUSTOM, .parse = read_formats, .meta = "LIST",
+     .help = "comma list of vdb, grid, df3 (default: all three; vdb if built with OpenVDB)"},
+    {"--dims", NULL, CLI_OPT_DIMS, .ihi = SOAK_VOLUME_MAX_DIM, .hi = VOL_MAX_VOXELS, F(dims), .meta = "NX,NY,NZ",
+     .help = "voxels, %R each (default 64,64,32)"},
+    {"--size", NULL, CLI_OPT_CUSTOM, .parse = read_size, .lo = VOL_MIN_SIZE, .hi = VOL_MAX_SIZE, .meta = "SX,SY,SZ",
+     .help = "box extent in --unit (default 0.1,0.1,0.05)"},
+    {"--unit", NULL, CLI_OPT_CHOICE, .choices = units, F(unit_mm), .meta = "mm|cm|m",
+     .help = "length unit of --size, --depth and of the sigma values (default m)"},
+    {"--depth", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = VOL_MAX_SIZE, F(depth), SEEN(have_depth), .meta = "D",
+     .help = "penetration depth (default SZ/2)"},
+    {"--map", NULL, CLI_OPT_STRING, F(map), .meta = "IMAGE",
+     .help = "surface wetness map on the top face (column 0 at x=0, top row at y=SY)"},
+    {"--wetness", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 1, F(wetness), SEEN(have_wetness), .meta = "W",
+     .help = "uniform surface wetness %R (default 1, without --map)"},
+    {"--noise", NULL, CLI_OPT_FLAG, .flag = 1, F(noise),
+     .help = "3D noise wetness instead (seed 000's turbulence wetness),\nset by --seed and the noise options below"},
+    {"--seed", NULL, CLI_OPT_INT, .ilo = 0, .ihi = INT64_MAX, F(turb.params.seed), .meta = "N",
+     .help = "noise seed (default 0)"},
+    {"--material", NULL, CLI_OPT_STRING, F(material), .meta = "NAME",
+     .help = "preset (soak materials) soaked with --liquid NAME (default water)"},
+    {"--liquid", NULL, CLI_OPT_STRING, F(liquid), .meta = "NAME", .help = "the liquid of --material"},
+    {"--materials", NULL, CLI_OPT_STRING, F(materials), .meta = "FILE", .help = "another presets file"},
+    {"--df3-bits", NULL, CLI_OPT_CUSTOM, .parse = read_bits, .meta = "8|16|32", .help = "df3 value size (default 16)"},
+    {"--threads", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_BAKE_MAX_THREADS, F(threads), .meta = "N",
+     .help = "worker threads, %R (default: every core)"},
+    {"", NULL, CLI_OPT_HEADING, .help = "raw parameters instead of a preset (phase defaults: seed 000's paper):"},
+    SIGMA("--dry-sigma-s", dry.sigma_s, have_dry_s, "dry scattering coefficient per --unit (without --material)"),
+    SIGMA("--dry-sigma-a", dry.sigma_a, have_dry_a, "dry absorption coefficient per --unit (without --material)"),
+    LOBE("--dry-g1", dry.g1, -VOL_MAX_G, VOL_MAX_G, "G", "first HG lobe of the dry phase, %R (default 0.05)"),
+    LOBE("--dry-g2", dry.g2, -VOL_MAX_G, VOL_MAX_G, "G", "second lobe, %R (default -0.05)"),
+    LOBE("--dry-w", dry.w, 0, 1, "W", "weight of the first lobe, %R (default 0.2)"),
+    SIGMA("--wet-sigma-s", wet.sigma_s, have_wet_s, "wet scattering coefficient (default: the dry one)"),
+    SIGMA("--wet-sigma-a", wet.sigma_a, have_wet_a, "wet absorption coefficient (default: the dry one)"),
+    LOBE("--wet-g1", wet.g1, -VOL_MAX_G, VOL_MAX_G, "G", "first HG lobe of the wet phase, %R (default 0.8)"),
+    LOBE("--wet-g2", wet.g2, -VOL_MAX_G, VOL_MAX_G, "G", "second lobe, %R (default -0.1)"),
+    LOBE("--wet-w", wet.w, 0, 1, "W", "weight of the first lobe, %R (default 0.1)"),
+    {"", NULL, CLI_OPT_HEADING, .help = "noise (with --noise):"},
+};
+#undef SIGMA
+#undef LOBE
+#undef F
+#undef SEEN
+
+#define VOLUME_TABLES(a, turb) {CLI_TABLE(volume_opts, (a)), BAKE_NOISE_TABLE(turb)}
 
 static void usage(FILE *out)
 {
@@ -28,167 +153,13 @@ static void usage(FILE *out)
             "  PREFIX.vdb                  OpenVDB float grids density, sigma_s, sigma_a, sigma_s_r.., g1, g2, w, wetness\n"
             "  PREFIX.json + PREFIX.raw    soak grid for the reference tracer (float32, documented in the .json)\n"
             "  PREFIX_<channel>.df3        POV-Ray density files, + PREFIX_df3.json (scales) and PREFIX.inc\n\n"
-            "options:\n"
-            "  -o, --output PREFIX   output prefix (folder must exist)\n"
-            "  --format LIST         comma list of vdb, grid, df3 (default: all three; vdb if built with OpenVDB)\n"
-            "  --dims NX,NY,NZ       voxels, 1..4096 each (default 64,64,32)\n"
-            "  --size SX,SY,SZ       box extent in --unit (default 0.1,0.1,0.05)\n"
-            "  --unit mm|cm|m        length unit of --size, --depth and of the sigma values (default m)\n"
-            "  --depth D             penetration depth (default SZ/2)\n"
-            "  --map IMAGE           surface wetness map on the top face (column 0 at x=0, top row at y=SY)\n"
-            "  --wetness W           uniform surface wetness 0..1 (default 1, without --map)\n"
-            "  --noise               3D noise wetness instead (seed 000's turbulence wetness);\n"
-            "                        with --seed N, --turbulence, --octaves N, --frequency F (cells per SX),\n"
-            "                        --lacunarity L, --gain G, --threshold T, --softness S\n"
-            "  --material NAME       preset (soak materials) soaked with --liquid NAME (default water);\n"
-            "                        --materials FILE selects another presets file\n"
-            "  --dry-sigma-s V|R,G,B --dry-sigma-a V|R,G,B --dry-g1 G --dry-g2 G --dry-w W\n"
-            "  --wet-sigma-s ..      --wet-sigma-a ..      --wet-g1 G --wet-g2 G --wet-w W\n"
-            "                        raw parameters instead of a preset (sigma per --unit); wet values\n"
-            "                        default to the dry ones; g1/g2/w default to seed 000's paper\n"
-            "                        (dry 0.05, -0.05, 0.2; wet 0.8, -0.1, 0.1)\n"
-            "  --df3-bits 8|16|32    df3 value size (default 16)\n"
-            "  --threads N           worker threads (default: every core)\n\n"
-            "examples:\n"
-            "  soak bake volume --material sand --map wet.png --size 0.2,0.2,0.05 --depth 0.01 -o vol/sand\n"
-            "  soak bake volume --dry-sigma-s 120 --dry-sigma-a 2 --wet-g1 0.8 --noise --seed 3 \\\n"
-            "       --format vdb,df3 --dims 128,128,32 -o vol/beach\n");
-}
-
-typedef struct vol_args {
-    const char *output, *map, *material, *liquid, *materials;
-    int fmt_vdb, fmt_grid, fmt_df3;
-    long dims[3];
-    double size[3], unit_mm, depth, wetness;
-    int have_depth, have_wetness, noise, bits;
-    long threads;
-    soak_vol_turbulence turb;
-    int have_dry_s, have_dry_a, have_wet_s, have_wet_a, have_raw;
-    soak_vol_medium dry, wet;
-    int wet_phase_set[3];
-} vol_args;
-
-static int parse_triple(const char *opt, const char *text, double lo, double hi, double out[3])
-{
-    soak_rgb c;
-    const char *c1 = strchr(text, ','), *c2 = c1 ? strchr(c1 + 1, ',') : NULL;
-    if (!c2 || strchr(c2 + 1, ',')) {
-        cli_error(CMD, "%s: expected three comma-separated values, got '%s'", opt, text);
-        return 0;
-    }
-    if (!cli_parse_rgb(CMD, opt, text, lo, hi, &c)) return 0;
-    out[0] = c.r, out[1] = c.g, out[2] = c.b;
-    return 1;
-}
-
-static int parse_formats(vol_args *a, const char *text)
-{
-    char buf[256], *parts[4];
-    int n = cli_split_commas(text, buf, sizeof buf, parts, 3);
-    a->fmt_vdb = a->fmt_grid = a->fmt_df3 = 0;
-    for (int k = 0; k < n && k < 3; ++k) {
-        if (strcmp(parts[k], "vdb") == 0) a->fmt_vdb = 1;
-        else if (strcmp(parts[k], "grid") == 0) a->fmt_grid = 1;
-        else if (strcmp(parts[k], "df3") == 0) a->fmt_df3 = 1;
-        else {
-            cli_error(CMD, "--format: unknown format '%s' (expected vdb, grid, df3)", parts[k]);
-            return 0;
-        }
-    }
-    if (n > 3) {
-        cli_error(CMD, "--format: at most three formats, got '%s'", text);
-        return 0;
-    }
-    return 1;
-}
-
-/* Options with one value. Returns 1 consumed, 0 not ours, -1 error. */
-static int parse_valued(vol_args *a, int argc, char **argv, int *i)
-{
-    const char *o = argv[*i], *v;
-    static const char *const names[] = {"-o", "--output", "--format", "--dims", "--size", "--unit", "--depth", "--map",
-                                        "--wetness", "--material", "--liquid", "--materials", "--df3-bits", "--threads",
-                                        "--seed", "--octaves", "--frequency", "--lacunarity", "--gain", "--threshold",
-                                        "--softness", "--dry-sigma-s", "--dry-sigma-a", "--dry-g1", "--dry-g2",
-                                        "--dry-w", "--wet-sigma-s", "--wet-sigma-a", "--wet-g1", "--wet-g2", "--wet-w"};
-    const char *name = NULL;
-    for (size_t k = 0; k < sizeof names / sizeof names[0] && !name; ++k)
-        if (cli_is(o, names[k])) name = names[k];
-    if (!name) return 0;
-    if (!(v = cli_value(CMD, argc, argv, i))) return -1;
-    long n;
-    double d;
-    soak_turbulence_params *t = &a->turb.params;
-    if (!strcmp(name, "-o") || !strcmp(name, "--output")) a->output = v;
-    else if (!strcmp(name, "--format")) return parse_formats(a, v) ? 1 : -1;
-    else if (!strcmp(name, "--dims")) {
-        /* soak_volume_alloc's cap: 2^31 floats over every channel */
-        if (!cli_parse_dims(CMD, name, v, SOAK_VOLUME_MAX_DIM, (double)((1L << 31) / SOAK_VOL_NCHANNELS), a->dims))
-            return -1;
-    } else if (!strcmp(name, "--size")) {
-        if (!parse_triple(name, v, 1e-9, 1e9, a->size)) return -1;
-    } else if (!strcmp(name, "--unit")) {
-        if (!strcmp(v, "mm")) a->unit_mm = 1;
-        else if (!strcmp(v, "cm")) a->unit_mm = 10;
-        else if (!strcmp(v, "m")) a->unit_mm = 1000;
-        else {
-            cli_error(CMD, "--unit: expected mm, cm or m, got '%s'", v);
-            return -1;
-        }
-    } else if (!strcmp(name, "--depth")) {
-        if (!cli_parse_double(CMD, name, v, 0, 1e9, &a->depth)) return -1;
-        a->have_depth = 1;
-    } else if (!strcmp(name, "--map")) a->map = v;
-    else if (!strcmp(name, "--wetness")) {
-        if (!cli_parse_double(CMD, name, v, 0, 1, &a->wetness)) return -1;
-        a->have_wetness = 1;
-    } else if (!strcmp(name, "--material")) a->material = v;
-    else if (!strcmp(name, "--liquid")) a->liquid = v;
-    else if (!strcmp(name, "--materials")) a->materials = v;
-    else if (!strcmp(name, "--df3-bits")) {
-        if (!cli_parse_int(CMD, name, v, 8, 32, &n) || (n != 8 && n != 16 && n != 32)) {
-            cli_error(CMD, "--df3-bits: expected 8, 16 or 32, got '%s'", v);
-            return -1;
-        }
-        a->bits = (int)n;
-    } else if (!strcmp(name, "--threads")) {
-        if (!cli_parse_int(CMD, name, v, 1, SOAK_BAKE_MAX_THREADS, &a->threads)) return -1;
-    } else if (!strcmp(name, "--seed")) {
-        if (!cli_parse_int(CMD, name, v, 0, 0x7fffffffffffffffL, &n)) return -1;
-        t->seed = (uint64_t)n;
-    } else if (!strcmp(name, "--octaves")) {
-        if (!cli_parse_int(CMD, name, v, 1, 24, &n)) return -1;
-        t->octaves = (int)n;
-    } else if (!strcmp(name, "--frequency")) {
-        if (!cli_parse_double(CMD, name, v, 1e-6, 8192, &t->frequency)) return -1;
-    } else if (!strcmp(name, "--lacunarity")) {
-        if (!cli_parse_double(CMD, name, v, 1, 16, &t->lacunarity)) return -1;
-    } else if (!strcmp(name, "--gain")) {
-        if (!cli_parse_double(CMD, name, v, 0, 1, &t->gain)) return -1;
-    } else if (!strcmp(name, "--threshold")) {
-        if (!cli_parse_double(CMD, name, v, -2, 2, &t->threshold)) return -1;
-        t->thresholded = 1;
-    } else if (!strcmp(name, "--softness")) {
-        if (!cli_parse_double(CMD, name, v, 0, 2, &t->softness)) return -1;
-    } else {
-        /* raw medium parameters */
-        int wet = !strncmp(name, "--wet-", 6);
-        soak_vol_medium *m = wet ? &a->wet : &a->dry;
-        const char *field = name + 6;
-        a->have_raw = 1;
-        if (!strcmp(field, "sigma-s") || !strcmp(field, "sigma-a")) {
-            int s = field[6] == 's';
-            if (!cli_parse_rgb(CMD, name, v, 0, SOAK_VOL_SIGMA_MAX, s ? &m->sigma_s : &m->sigma_a)) return -1;
-            if (wet) *(s ? &a->have_wet_s : &a->have_wet_a) = 1;
-            else *(s ? &a->have_dry_s : &a->have_dry_a) = 1;
-        } else {
-            int k = !strcmp(field, "g1") ? 0 : (!strcmp(field, "g2") ? 1 : 2);
-            double lo = k == 2 ? 0.0 : -0.999, hi = k == 2 ? 1.0 : 0.999;
-            if (!cli_parse_double(CMD, name, v, lo, hi, &d)) return -1;
-            *(k == 0 ? &m->g1 : (k == 1 ? &m->g2 : &m->w)) = d;
-        }
-    }
-    return 1;
+            "options:\n");
+    const cli_opt_table tables[] = VOLUME_TABLES(NULL, NULL);
+    cli_opts_help(out, tables, sizeof tables / sizeof tables[0]);
+    fprintf(out, "\nexamples:\n"
+                 "  soak bake volume --material sand --map wet.png --size 0.2,0.2,0.05 --depth 0.01 -o vol/sand\n"
+                 "  soak bake volume --dry-sigma-s 120 --dry-sigma-a 2 --wet-g1 0.8 --noise --seed 3 \\\n"
+                 "       --format vdb,df3 --dims 128,128,32 -o vol/beach\n");
 }
 
 static void defaults(vol_args *a)
@@ -208,6 +179,17 @@ static void defaults(vol_args *a)
     /* seed 000 sec. 4.1, wet paper */
     a->dry.g1 = 0.05, a->dry.g2 = -0.05, a->dry.w = 0.2;
     a->wet.g1 = 0.8, a->wet.g2 = -0.1, a->wet.w = 0.1;
+}
+
+/* Returns -1 to go on, else the exit code. */
+static int parse_args(int argc, char **argv, vol_args *a)
+{
+    defaults(a);
+    const cli_spec spec = BAKE_SPEC(CMD, usage, NULL, NULL);
+    const cli_opt_table tables[] = VOLUME_TABLES(a, &a->turb.params);
+    int rc = cli_opts_parse(&spec, tables, sizeof tables / sizeof tables[0], argc, argv);
+    a->have_raw |= a->have_dry_s || a->have_dry_a || a->have_wet_s || a->have_wet_a;
+    return rc;
 }
 
 typedef struct progress_ctx {
@@ -347,98 +329,84 @@ static int validate(vol_args *a)
     return 1;
 }
 
+/* What a bake holds: the wetness table, the map and the volume. */
+typedef struct vol_work {
+    soak_vol_medium *rows;
+    int n_rows;
+    soak_image map;
+    soak_volume v;
+} vol_work;
+
+/* Rows, map and the allocated volume. Returns 0 or the exit code. */
+static int prepare(const vol_args *a, vol_work *w)
+{
+    int rc = build_rows(a, &w->rows, &w->n_rows);
+    if (rc) return rc;
+    char err[4352] = "";
+    if (a->map && soak_image_read(a->map, &w->map, err, sizeof err) != SOAK_OK) {
+        cli_error(CMD, "--map: %s", err);
+        return SOAK_EXIT_FAIL;
+    }
+    soak_status st = soak_volume_alloc(&w->v, (int)a->dims[0], (int)a->dims[1], (int)a->dims[2], a->size);
+    if (st != SOAK_OK) {
+        cli_error(CMD, "--dims %ldx%ldx%ld: %s", a->dims[0], a->dims[1], a->dims[2],
+                  st == SOAK_ERR_NOMEM ? "out of memory" : "too many voxels (at most 2^31 / 10)");
+        return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
+    }
+    return 0;
+}
+
+static int bake(vol_args *a, vol_work *w)
+{
+    soak_volume_source src = {a->map ? &w->map : NULL, a->wetness, a->depth,
+                              a->noise ? soak_vol_turbulence_wetness : NULL, &a->turb};
+    progress_ctx prog;
+    cli_progress_start(&prog.bar, CMD, 1.0);
+    soak_bake_exec exec = {(int)a->threads, on_progress, &prog};
+    soak_status st = soak_volume_bake(&w->v, w->rows, w->n_rows, &src, &exec);
+    cli_progress_finish(&prog.bar);
+    if (st == SOAK_OK) return 0;
+    cli_error(CMD, "%s", st == SOAK_ERR_ARG && a->map ? "--map: the map holds NaN values" : soak_status_str(st));
+    return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
+}
+
+/* Every format is staged, then all are renamed together: a failure keeps
+ * every previous output and leaves no new file. */
+static int write_formats(const vol_args *a, const vol_work *w)
+{
+    soak_staged stage;
+    soak_staged_init(&stage);
+    char path[4352], err[4352] = "";
+    soak_status st = SOAK_OK;
+    if (a->fmt_vdb) {
+        snprintf(path, sizeof path, "%s.vdb", a->output);
+        st = soak_volume_stage_vdb(&stage, &w->v, path, err, sizeof err);
+    }
+    if (st == SOAK_OK && a->fmt_grid)
+        st = soak_volume_stage_grid(&stage, &w->v, a->output, w->rows, w->n_rows, a->depth, err, sizeof err);
+    if (st == SOAK_OK && a->fmt_df3) st = soak_volume_stage_df3(&stage, &w->v, a->output, a->bits, err, sizeof err);
+    if (st != SOAK_OK) {
+        soak_staged_abort(&stage);
+        return bake_fail(CMD, st, err);
+    }
+    if ((st = soak_staged_commit(&stage, err, sizeof err)) != SOAK_OK) return bake_fail(CMD, st, err);
+    printf("%s: %dx%dx%d voxels,%s%s%s\n", a->output, w->v.nx, w->v.ny, w->v.nz, a->fmt_vdb ? " vdb" : "",
+           a->fmt_grid ? " grid" : "", a->fmt_df3 ? " df3" : "");
+    return 0;
+}
+
 int soak_bake_volume_main(int argc, char **argv)
 {
     vol_args a;
-    defaults(&a);
-    for (int i = 1; i < argc; ++i) {
-        const char *o = argv[i];
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            usage(stdout);
-            return SOAK_EXIT_OK;
-        }
-        if (!strcmp(o, "--noise")) {
-            a.noise = 1;
-            continue;
-        }
-        if (!strcmp(o, "--turbulence")) {
-            a.turb.params.sum = SOAK_NOISE_TURBULENCE;
-            continue;
-        }
-        int r = parse_valued(&a, argc, argv, &i);
-        if (r < 0) return SOAK_EXIT_USAGE;
-        if (r == 0) {
-            cli_error(CMD, "unknown option '%s' (see --help)", o);
-            return SOAK_EXIT_USAGE;
-        }
-    }
+    int rc = parse_args(argc, argv, &a);
+    if (rc >= 0) return rc;
     if (!validate(&a)) return SOAK_EXIT_USAGE;
-    int rc = check_outputs(&a);
-    if (rc) return rc;
-
-    soak_vol_medium *rows = NULL;
-    int n_rows = 0;
-    rc = build_rows(&a, &rows, &n_rows);
-    if (rc) {
-        free(rows);
-        return rc;
-    }
-    char err[4352] = "";
-    soak_image map = {0, 0, 0, NULL};
-    soak_status st = SOAK_OK;
-    if (a.map && (st = soak_image_read(a.map, &map, err, sizeof err)) != SOAK_OK) {
-        cli_error(CMD, "--map: %s", err);
-        free(rows);
-        return SOAK_EXIT_FAIL;
-    }
-    soak_volume v;
-    st = soak_volume_alloc(&v, (int)a.dims[0], (int)a.dims[1], (int)a.dims[2], a.size);
-    if (st != SOAK_OK) {
-        cli_error(CMD, "--dims %ldx%ldx%ld: %s", a.dims[0], a.dims[1], a.dims[2],
-                  st == SOAK_ERR_NOMEM ? "out of memory" : "too many voxels (at most 2^31 / 10)");
-        soak_image_free(&map);
-        free(rows);
-        return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
-    }
-    soak_volume_source src = {a.map ? &map : NULL, a.wetness, a.depth,
-                              a.noise ? soak_vol_turbulence_wetness : NULL, &a.turb};
-    progress_ctx prog;
-    cli_progress_start(&prog.bar, CMD, 1.0);
-    soak_bake_exec exec = {(int)a.threads, on_progress, &prog};
-    st = soak_volume_bake(&v, rows, n_rows, &src, &exec);
-    cli_progress_finish(&prog.bar);
-    if (st != SOAK_OK) {
-        cli_error(CMD, "%s", st == SOAK_ERR_ARG && a.map ? "--map: the map holds NaN values" : soak_status_str(st));
-        rc = st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
-    }
-    /* Every format is staged, then all are renamed together: a failure
-     * keeps every previous output and leaves no new file. */
-    soak_staged stage;
-    soak_staged_init(&stage);
-    char path[4352];
-    if (!rc && a.fmt_vdb) {
-        snprintf(path, sizeof path, "%s.vdb", a.output);
-        st = soak_volume_stage_vdb(&stage, &v, path, err, sizeof err);
-        if (st != SOAK_OK) rc = bake_fail(CMD, st, err);
-    }
-    if (!rc && a.fmt_grid) {
-        st = soak_volume_stage_grid(&stage, &v, a.output, rows, n_rows, a.depth, err, sizeof err);
-        if (st != SOAK_OK) rc = bake_fail(CMD, st, err);
-    }
-    if (!rc && a.fmt_df3) {
-        st = soak_volume_stage_df3(&stage, &v, a.output, a.bits, err, sizeof err);
-        if (st != SOAK_OK) rc = bake_fail(CMD, st, err);
-    }
-    if (rc) {
-        soak_staged_abort(&stage);
-    } else if ((st = soak_staged_commit(&stage, err, sizeof err)) != SOAK_OK) {
-        rc = bake_fail(CMD, st, err);
-    } else {
-        printf("%s: %dx%dx%d voxels,%s%s%s\n", a.output, v.nx, v.ny, v.nz, a.fmt_vdb ? " vdb" : "",
-               a.fmt_grid ? " grid" : "", a.fmt_df3 ? " df3" : "");
-    }
-    soak_volume_free(&v);
-    soak_image_free(&map);
-    free(rows);
+    if ((rc = check_outputs(&a)) != 0) return rc;
+    vol_work w;
+    memset(&w, 0, sizeof w);
+    if ((rc = prepare(&a, &w)) == 0 && (rc = bake(&a, &w)) == 0) rc = write_formats(&a, &w);
+    soak_volume_free(&w.v);
+    soak_image_free(&w.map);
+    free(w.rows);
     return rc;
 }

@@ -2,6 +2,7 @@
  * tolerance (soak/advise.h). */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,6 +12,43 @@
 #include "soak/scene.h"
 
 static const char *CMD = "advise";
+
+typedef struct advise_args {
+    const char *scene_path;
+    double tol;
+    int all;
+    soak_advise_options o;
+} advise_args;
+
+/* --grid WxH: both sides in [1, SOAK_ADVISE_MAX_GRID]. */
+static int read_grid(const char *cmd, const cli_opt *opt, const char *text, void *dst)
+{
+    (void)opt;
+    advise_args *a = dst;
+    int w, h;
+    char tail;
+    if (sscanf(text, "%dx%d%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > SOAK_ADVISE_MAX_GRID ||
+        h > SOAK_ADVISE_MAX_GRID) {
+        cli_error(cmd, "--grid: expected WxH with W, H in [1, %d], got '%s'", SOAK_ADVISE_MAX_GRID, text);
+        return 0;
+    }
+    a->o.grid_w = w;
+    a->o.grid_h = h;
+    return 1;
+}
+
+#define F(field) CLI_FIELD(advise_args, field)
+static const cli_opt advise_opts[] = {
+    {"--tol", NULL, CLI_OPT_DOUBLE, .lo = CLI_ADVISE_MIN_TOL, .hi = SOAK_ADVISE_MAX_TOL, F(tol), .meta = "T",
+     .help = "relative RMS error allowed, %R (0.02 = 2 %; required)"},
+    {"--grid", NULL, CLI_OPT_CUSTOM, .parse = read_grid, .meta = "WxH", .help = "primary rays (default 32x24)"},
+    {"--samples", NULL, CLI_OPT_INT, .ilo = SOAK_ADVISE_MIN_SAMPLES, .ihi = SOAK_ADVISE_MAX_SAMPLES, F(o.samples),
+     .meta = "N", .help = "albedo samples per state and hit, %R (default 256)"},
+    {"--seed", NULL, CLI_OPT_INT, .ilo = 0, .ihi = INT32_MAX, F(o.seed), .meta = "S", .help = "(default 1)"},
+    {"--all", NULL, CLI_OPT_FLAG, .flag = 1, F(all),
+     .help = "also every model's predicted error and cost per material"},
+};
+#undef F
 
 static void usage(FILE *out)
 {
@@ -24,16 +62,25 @@ static void usage(FILE *out)
             "the speed-up of one shading (eval + sample). `soak render --auto-model T`\n"
             "renders with these choices. Kept: dielectrics, emitters, subsurface media (no\n"
             "model renders them) and materials the camera does not see.\n\n"
-            "options:\n"
-            "  --tol T             relative RMS error allowed, (0, 10] (0.02 = 2 %%; required)\n"
-            "  --grid WxH          primary rays (default 32x24)\n"
-            "  --samples N         albedo samples per state and hit, [16, 1e6] (default 256)\n"
-            "  --seed S            (default 1)\n"
-            "  --all               also every model's predicted error and cost per material\n\n"
-            "output: one line per material: name, choice (or 'full'), predicted error,\n"
+            "options:\n");
+    const cli_opt_table tables[] = {CLI_TABLE(advise_opts, NULL)};
+    cli_opts_help(out, tables, 1);
+    fprintf(out,
+            "\noutput: one line per material: name, choice (or 'full'), predicted error,\n"
             "speed-up, visible hits, mean wetness and viewing cosine, note.\n\n"
             "example:\n"
             "  soak advise scenes/default_wet_dry.json --tol 0.02\n");
+}
+
+static int scene_arg(void *ctx, const char *arg)
+{
+    advise_args *a = ctx;
+    if (a->scene_path) {
+        cli_error(CMD, "unexpected argument '%s': only one scene file", arg);
+        return 0;
+    }
+    a->scene_path = arg;
+    return 1;
 }
 
 void cli_advise_print(FILE *f, const soak_advice *a, int n, double tol)
@@ -49,86 +96,62 @@ void cli_advise_print(FILE *f, const soak_advice *a, int n, double tol)
     }
 }
 
-int soak_cmd_advise(int argc, char **argv)
+/* Returns -1 to go on, else the exit code. */
+static int parse_args(int argc, char **argv, advise_args *a)
 {
-    const char *scene_path = NULL;
-    double tol = -1;
-    int all = 0;
-    soak_advise_options o;
-    soak_advise_options_default(&o);
-    for (int i = 1; i < argc; ++i) {
-        const char *a = argv[i], *v;
-        long n;
-        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
-            usage(stdout);
-            return SOAK_EXIT_OK;
-        } else if (strcmp(a, "--all") == 0) {
-            all = 1;
-        } else if (cli_is(a, "--tol")) {
-            if (!(v = cli_value(CMD, argc, argv, &i)) || !cli_parse_double(CMD, "--tol", v, 1e-9, 10, &tol))
-                return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--samples")) {
-            if (!(v = cli_value(CMD, argc, argv, &i)) || !cli_parse_int(CMD, "--samples", v, 16, 1000000, &n))
-                return SOAK_EXIT_USAGE;
-            o.samples = (int)n;
-        } else if (cli_is(a, "--seed")) {
-            if (!(v = cli_value(CMD, argc, argv, &i)) || !cli_parse_int(CMD, "--seed", v, 0, 2147483647L, &n))
-                return SOAK_EXIT_USAGE;
-            o.seed = (uint64_t)n;
-        } else if (cli_is(a, "--grid")) {
-            int w, h;
-            char tail;
-            if (!(v = cli_value(CMD, argc, argv, &i))) return SOAK_EXIT_USAGE;
-            if (sscanf(v, "%dx%d%c", &w, &h, &tail) != 2 || w < 1 || h < 1 || w > 1024 || h > 1024) {
-                cli_error(CMD, "--grid: expected WxH with W, H in [1, 1024], got '%s'", v);
-                return SOAK_EXIT_USAGE;
-            }
-            o.grid_w = w;
-            o.grid_h = h;
-        } else if (a[0] == '-' && a[1] != '\0') {
-            cli_error(CMD, "unknown option '%s' (see soak advise --help)", a);
-            return SOAK_EXIT_USAGE;
-        } else if (!scene_path) {
-            scene_path = a;
-        } else {
-            cli_error(CMD, "unexpected argument '%s': only one scene file", a);
-            return SOAK_EXIT_USAGE;
-        }
-    }
-    if (!scene_path) {
+    memset(a, 0, sizeof *a);
+    a->tol = -1;
+    soak_advise_options_default(&a->o);
+    const cli_spec spec = {CMD, "option", "soak advise --help", usage, scene_arg, a};
+    const cli_opt_table tables[] = {CLI_TABLE(advise_opts, a)};
+    int rc = cli_opts_parse(&spec, tables, 1, argc, argv);
+    if (rc >= 0) return rc;
+    if (!a->scene_path) {
         cli_error(CMD, "SCENE.json: missing scene file (see soak advise --help)");
         return SOAK_EXIT_USAGE;
     }
-    if (tol < 0) {
+    if (a->tol < 0) {
         cli_error(CMD, "--tol: missing (the relative error allowed, e.g. --tol 0.02)");
         return SOAK_EXIT_USAGE;
     }
+    return -1;
+}
+
+/* --all: every model tried, per material. */
+static void print_tried(const soak_advice *adv, int n)
+{
+    printf("\n%-16s %-14s %9s %10s\n", "material", "model", "error", "shading ns");
+    for (int i = 0; i < n; ++i) {
+        printf("%-16s %-14s %9s %10.0f\n", adv[i].material, "full", "0", adv[i].full_ns);
+        for (int k = 0; k < adv[i].n_tried; ++k)
+            printf("%-16s %-14s %8.2f%% %10.0f\n", adv[i].material, adv[i].tried[k].model->name,
+                   100 * adv[i].tried[k].error, adv[i].tried[k].ns);
+    }
+}
+
+int soak_cmd_advise(int argc, char **argv)
+{
+    advise_args a;
+    int rc = parse_args(argc, argv, &a);
+    if (rc >= 0) return rc;
     soak_scene scene;
     char err[4096];
-    if (soak_scene_load(scene_path, &scene, err, sizeof err) != SOAK_OK) {
+    if (soak_scene_load(a.scene_path, &scene, err, sizeof err) != SOAK_OK) {
         cli_error(CMD, "%s", err);
         return SOAK_EXIT_FAIL;
     }
     soak_advice *adv = NULL;
     int n = 0;
     err[0] = '\0';
-    soak_status st = soak_advise_scene(&scene, tol, &o, &adv, &n, err, sizeof err);
+    soak_status st = soak_advise_scene(&scene, a.tol, &a.o, &adv, &n, err, sizeof err);
     soak_scene_free(&scene);
     if (st != SOAK_OK) {
         cli_error(CMD, "%s", err[0] ? err : soak_status_str(st));
         return SOAK_EXIT_FAIL;
     }
-    printf("# %s\n", scene_path);
-    cli_advise_print(stdout, adv, n, tol);
-    if (all) {
-        printf("\n%-16s %-14s %9s %10s\n", "material", "model", "error", "shading ns");
-        for (int i = 0; i < n; ++i) {
-            printf("%-16s %-14s %9s %10.0f\n", adv[i].material, "full", "0", adv[i].full_ns);
-            for (int k = 0; k < adv[i].n_tried; ++k)
-                printf("%-16s %-14s %8.2f%% %10.0f\n", adv[i].material, adv[i].tried[k].model->name,
-                       100 * adv[i].tried[k].error, adv[i].tried[k].ns);
-        }
-    }
+    printf("# %s\n", a.scene_path);
+    cli_advise_print(stdout, adv, n, a.tol);
+    if (a.all) print_tried(adv, n);
     free(adv);
     return SOAK_EXIT_OK;
 }

@@ -23,6 +23,22 @@
 #define SWATCH 96
 #define N_WET 5
 
+typedef struct demo_args {
+    const char *dir, *materials, *scene;
+    int quick;
+} demo_args;
+
+#define F(field) CLI_FIELD(demo_args, field)
+static const cli_opt demo_opts[] = {
+    {"--out", NULL, CLI_OPT_STRING, F(dir), .meta = "DIR", .help = "output folder (default out/demo)"},
+    {"--quick", NULL, CLI_OPT_FLAG, .flag = 1, F(quick), .help = "lower the render's samples (used by the tests)"},
+    {"--materials", NULL, CLI_OPT_STRING, F(materials), .meta = "FILE",
+     .help = "preset file (default: $SOAK_MATERIALS, else the shipped one)"},
+    {"--scene", NULL, CLI_OPT_STRING, F(scene), .meta = "SCENE.json",
+     .help = "scene to render (default scenes/default_wet_dry.json)"},
+};
+#undef F
+
 static void usage(FILE *out)
 {
     fprintf(out,
@@ -31,9 +47,11 @@ static void usage(FILE *out)
             "  albedo_table.csv   dry and wet albedo of every preset (also printed)\n"
             "  swatches.png       each preset lit from the upper left at wetness 0, .25, .5, .75, 1\n"
             "  wetmap_*.exr/.png  baked wet maps (turbulence and border-first drying)\n"
-            "  render_wet_dry.exr/.png  the default scene (scenes/default_wet_dry.json), 64 spp\n"
-            "--quick lowers the render's samples (used by the tests).\n\n"
-            "example:\n  soak demo --out out/demo\n");
+            "  render_wet_dry.exr/.png  the default scene (scenes/default_wet_dry.json), 64 spp\n\n"
+            "options:\n");
+    const cli_opt_table tables[] = {CLI_TABLE(demo_opts, NULL)};
+    cli_opts_help(out, tables, 1);
+    fprintf(out, "\nexample:\n  soak demo --out out/demo\n");
 }
 
 static int make_dir(const char *cmd, const char *path)
@@ -86,81 +104,85 @@ static void draw_swatch(soak_image *img, int x0, int y0, const soak_wet_params *
         }
 }
 
-static int write_table_and_swatches(const char *cmd, const soak_preset_db *db, const char *dir)
+/* The swatch row of preset i (wetness 0 .. 1) and its line of the table
+ * and of the CSV. */
+static int preset_row(const char *cmd, const soak_preset *p, const soak_liquid *water, int i, soak_image *sheet,
+                      FILE *csv)
+{
+    soak_wet_params dry = {0}, wet = {0};
+    for (int k = 0; k < N_WET; ++k) {
+        soak_wet_input in = soak_wet_input_steady(p, k / (double)(N_WET - 1));
+        soak_wet_params w;
+        soak_status st = soak_wetness_eval(p, water, &in, &w);
+        if (st != SOAK_OK) {
+            cli_error(cmd, "preset '%s': wetness mapping failed: %s", p->name, soak_status_str(st));
+            return 0;
+        }
+        if (k == 0) dry = w;
+        if (k == N_WET - 1) wet = w;
+        draw_swatch(sheet, k * SWATCH, i * SWATCH, &w, p->kind == SOAK_KIND_CONDUCTOR);
+    }
+    /* Diffuse albedo (what darkens) and the film's specular share of the
+     * total hemispherical reflectance (what makes wet surfaces glossy). */
+    double ld = 0.2126 * dry.albedo.r + 0.7152 * dry.albedo.g + 0.0722 * dry.albedo.b;
+    double lw = 0.2126 * wet.albedo.r + 0.7152 * wet.albedo.g + 0.0722 * wet.albedo.b;
+    double spec = 0.2126 * (wet.albedo_total.r - wet.albedo.r) + 0.7152 * (wet.albedo_total.g - wet.albedo.g) +
+                  0.0722 * (wet.albedo_total.b - wet.albedo.b);
+    double ratio = ld > 0 ? lw / ld : 1.0;
+    printf("%-12s %-21s (%.3f, %.3f, %.3f)   (%.3f, %.3f, %.3f)   %7.2f   %9.3f\n", p->name,
+           soak_material_kind_name(p->kind), dry.albedo.r, dry.albedo.g, dry.albedo.b, wet.albedo.r, wet.albedo.g,
+           wet.albedo.b, ratio, spec);
+    fprintf(csv, "%s,%s,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n", p->name, soak_material_kind_name(p->kind),
+            dry.albedo.r, dry.albedo.g, dry.albedo.b, wet.albedo.r, wet.albedo.g, wet.albedo.b, ratio, spec);
+    return 1;
+}
+
+/* Every preset's row into the open CSV and the sheet. */
+static int fill_table(const char *cmd, const soak_preset_db *db, soak_image *sheet, FILE *csv)
 {
     const soak_liquid *water = soak_presets_find_liquid(db, "water");
-    int n = soak_presets_count(db);
-    char path[4096], err[4352];
-    snprintf(path, sizeof path, "%s/albedo_table.csv", dir);
-    /* The table and the swatch sheet are replaced together (soak/staged.h). */
-    soak_staged stage;
-    soak_staged_init(&stage);
-    FILE *csv = NULL;
-    if (soak_staged_open(&stage, path, &csv, err, sizeof err) != SOAK_OK) {
-        soak_staged_abort(&stage);
-        cli_error(cmd, "%s", err);
-        return 0;
-    }
     fprintf(csv, "material,kind,dry_r,dry_g,dry_b,wet_r,wet_g,wet_b,wet_over_dry,film_specular\n");
     printf("%-12s %-21s %-23s %-23s %-7s %s\n", "material", "kind", "dry albedo (RGB)", "wet albedo (w=1)", "wet/dry",
            "film spec");
-    soak_image sheet;
-    if (soak_image_alloc(&sheet, SWATCH * N_WET, SWATCH * n, 3) != SOAK_OK) {
-        fclose(csv);
-        soak_staged_abort(&stage);
-        cli_error(cmd, "out of memory for the swatch sheet");
-        return 0;
-    }
-    int ok = 1;
-    for (int i = 0; i < n && ok; ++i) {
-        const soak_preset *p = soak_presets_at(db, i);
-        soak_wet_params dry = {0}, wet = {0};
-        for (int k = 0; k < N_WET; ++k) {
-            soak_wet_input in = soak_wet_input_steady(p, k / (double)(N_WET - 1));
-            soak_wet_params w;
-            soak_status st = soak_wetness_eval(p, water, &in, &w);
-            if (st != SOAK_OK) {
-                cli_error(cmd, "preset '%s': wetness mapping failed: %s", p->name, soak_status_str(st));
-                ok = 0;
-                break;
-            }
-            if (k == 0) dry = w;
-            if (k == N_WET - 1) wet = w;
-            draw_swatch(&sheet, k * SWATCH, i * SWATCH, &w, p->kind == SOAK_KIND_CONDUCTOR);
-        }
-        if (!ok) break;
-        /* Diffuse albedo (what darkens) and the film's specular share of the
-         * total hemispherical reflectance (what makes wet surfaces glossy). */
-        double ld = 0.2126 * dry.albedo.r + 0.7152 * dry.albedo.g + 0.0722 * dry.albedo.b;
-        double lw = 0.2126 * wet.albedo.r + 0.7152 * wet.albedo.g + 0.0722 * wet.albedo.b;
-        double spec = 0.2126 * (wet.albedo_total.r - wet.albedo.r) + 0.7152 * (wet.albedo_total.g - wet.albedo.g) +
-                      0.0722 * (wet.albedo_total.b - wet.albedo.b);
-        double ratio = ld > 0 ? lw / ld : 1.0;
-        printf("%-12s %-21s (%.3f, %.3f, %.3f)   (%.3f, %.3f, %.3f)   %7.2f   %9.3f\n", p->name,
-               soak_material_kind_name(p->kind), dry.albedo.r, dry.albedo.g, dry.albedo.b, wet.albedo.r, wet.albedo.g,
-               wet.albedo.b, ratio, spec);
-        fprintf(csv, "%s,%s,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n", p->name, soak_material_kind_name(p->kind),
-                dry.albedo.r, dry.albedo.g, dry.albedo.b, wet.albedo.r, wet.albedo.g, wet.albedo.b, ratio, spec);
-    }
-    soak_status st = soak_staged_close(csv, path, err, sizeof err);
-    char sheet_path[4096];
+    for (int i = 0; i < soak_presets_count(db); ++i)
+        if (!preset_row(cmd, soak_presets_at(db, i), water, i, sheet, csv)) return 0;
+    return 1;
+}
+
+/* The table and the swatch sheet are replaced together (soak/staged.h):
+ * both are staged, then committed, or neither is. */
+static int write_table_and_swatches(const char *cmd, const soak_preset_db *db, const char *dir)
+{
+    char path[4096], sheet_path[4096], err[4352] = "";
+    snprintf(path, sizeof path, "%s/albedo_table.csv", dir);
     snprintf(sheet_path, sizeof sheet_path, "%s/swatches.png", dir);
-    soak_image_write_opts opts = {SOAK_TONE_SRGB, SOAK_PIXEL_UINT8};
-    if (ok && st == SOAK_OK) st = soak_image_stage(&stage, sheet_path, &sheet, &opts, err, sizeof err);
-    soak_image_free(&sheet);
-    if (!ok || st != SOAK_OK) {
-        soak_staged_abort(&stage);
-        if (ok) cli_error(cmd, "%s", err);
-        return 0;
+    soak_staged stage;
+    soak_staged_init(&stage);
+    FILE *csv = NULL;
+    soak_image sheet = {0};
+    soak_status st = soak_staged_open(&stage, path, &csv, err, sizeof err);
+    int ok = st == SOAK_OK;
+    if (ok && soak_image_alloc(&sheet, SWATCH * N_WET, SWATCH * soak_presets_count(db), 3) != SOAK_OK) {
+        fclose(csv);
+        csv = NULL;
+        snprintf(err, sizeof err, "out of memory for the swatch sheet");
+        ok = 0;
     }
-    if ((st = soak_staged_commit(&stage, err, sizeof err)) != SOAK_OK) {
-        cli_error(cmd, "%s", err);
+    int rows = ok && fill_table(cmd, db, &sheet, csv);
+    if (csv) st = soak_staged_close(csv, path, err, sizeof err);
+    soak_image_write_opts opts = {SOAK_TONE_SRGB, SOAK_PIXEL_UINT8};
+    if (rows && st == SOAK_OK) st = soak_image_stage(&stage, sheet_path, &sheet, &opts, err, sizeof err);
+    soak_image_free(&sheet);
+    if (rows && st == SOAK_OK) st = soak_staged_commit(&stage, err, sizeof err);
+    else soak_staged_abort(&stage);
+    if (!rows || st != SOAK_OK) {
+        if (!ok || (rows && st != SOAK_OK)) cli_error(cmd, "%s", err);
         return 0;
     }
     printf("(diffuse albedo under diffuse light; wet = fully wet with a water film; wet/dry = luminance ratio;\n"
            " film spec = hemispherical specular reflectance the film adds)\n");
-    snprintf(path, sizeof path, "%s", sheet_path);
-    printf("wrote %s/albedo_table.csv and %s (rows: presets in table order; columns: wetness 0 .. 1)\n", dir, path);
+    printf("wrote %s/albedo_table.csv and %s (rows: presets in table order; columns: wetness 0 .. 1)\n", dir,
+           sheet_path);
     return 1;
 }
 
@@ -262,44 +284,28 @@ static int check_before_writing(const char *cmd, const char *dir, const char *ma
 
 int soak_cmd_demo(int argc, char **argv)
 {
-    const char *cmd = "demo", *dir = "out/demo", *materials = NULL;
-    const char *scene = SOAK_SCENES_DIR "/default_wet_dry.json";
-    int quick = 0;
-    for (int i = 1; i < argc; ++i) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            usage(stdout);
-            return SOAK_EXIT_OK;
-        } else if (cli_is(argv[i], "--out")) {
-            if (!(dir = cli_value(cmd, argc, argv, &i))) return SOAK_EXIT_USAGE;
-        } else if (cli_is(argv[i], "--materials")) {
-            if (!(materials = cli_value(cmd, argc, argv, &i))) return SOAK_EXIT_USAGE;
-        } else if (cli_is(argv[i], "--scene")) {
-            if (!(scene = cli_value(cmd, argc, argv, &i))) return SOAK_EXIT_USAGE;
-        } else if (!strcmp(argv[i], "--quick")) {
-            quick = 1;
-        } else {
-            cli_error(cmd, "unknown option '%s' (see 'soak demo --help')", argv[i]);
-            return SOAK_EXIT_USAGE;
-        }
-    }
-    if (!materials) materials = soak_presets_default_path();
+    const char *cmd = "demo";
+    demo_args a = {.dir = "out/demo", .scene = SOAK_SCENES_DIR "/default_wet_dry.json"};
+    const cli_spec spec = {cmd, "option", "'soak demo --help'", usage, NULL, NULL};
+    const cli_opt_table tables[] = {CLI_TABLE(demo_opts, &a)};
+    int rc = cli_opts_parse(&spec, tables, 1, argc, argv);
+    if (rc >= 0) return rc;
+    if (!a.materials) a.materials = soak_presets_default_path();
     soak_preset_db *db = NULL;
     char err[2048];
-    if (soak_presets_load(materials, &db, err, sizeof err) != SOAK_OK) {
+    if (soak_presets_load(a.materials, &db, err, sizeof err) != SOAK_OK) {
         cli_error(cmd, "%s", err);
         return SOAK_EXIT_FAIL;
     }
-    int rc = check_before_writing(cmd, dir, materials, scene);
-    if (rc || !make_dir(cmd, dir)) {
+    rc = check_before_writing(cmd, a.dir, a.materials, a.scene);
+    if (rc || !make_dir(cmd, a.dir)) {
         soak_presets_free(db);
         return rc ? rc : SOAK_EXIT_FAIL;
     }
-    printf("== wet vs dry albedo of every preset (%s)\n", materials);
-    int ok = write_table_and_swatches(cmd, db, dir);
+    printf("== wet vs dry albedo of every preset (%s)\n", a.materials);
+    int ok = write_table_and_swatches(cmd, db, a.dir);
     soak_presets_free(db);
-    if (!ok) return SOAK_EXIT_FAIL;
-    if (!bake_maps(cmd, dir)) return SOAK_EXIT_FAIL;
-    if (!render_scene(cmd, dir, scene, quick)) return SOAK_EXIT_FAIL;
-    printf("\ndemo finished: open %s/\n", dir);
+    if (!ok || !bake_maps(cmd, a.dir) || !render_scene(cmd, a.dir, a.scene, a.quick)) return SOAK_EXIT_FAIL;
+    printf("\ndemo finished: open %s/\n", a.dir);
     return SOAK_EXIT_OK;
 }

@@ -10,6 +10,32 @@
 
 static const char *CMD = "export";
 
+typedef struct export_args {
+    const char *target, *output, *file;
+} export_args;
+
+static int read_output(const char *cmd, const cli_opt *o, const char *text, void *dst)
+{
+    (void)o;
+    if (!text[0]) {
+        cli_error(cmd, "-o: empty file name");
+        return 0;
+    }
+    ((export_args *)dst)->output = text;
+    return 1;
+}
+
+#define F(field) CLI_FIELD(export_args, field)
+static const cli_opt export_opts[] = {
+    {"--target", NULL, CLI_OPT_STRING, F(target), .meta = "NAME", .help = "one of the targets below (required)"},
+    {"--output", "-o", CLI_OPT_CUSTOM, .parse = read_output, .meta = "FILE",
+     .help = "where to write (default: stdout); written to a temporary\n"
+             "file and renamed, so a failure leaves FILE untouched"},
+    {"--materials", NULL, CLI_OPT_STRING, F(file), .meta = "FILE",
+     .help = "preset file (default: $SOAK_MATERIALS, else the shipped\ndata/materials.json)"},
+};
+#undef F
+
 static void usage(FILE *out)
 {
     fprintf(out,
@@ -18,74 +44,65 @@ static void usage(FILE *out)
             "one preset file: per preset and liquid, the wetness -> parameter tables\n"
             "(non-uniform knots that include each preset's saturation point), and the\n"
             "wetness function for any base colour. Same input, same bytes.\n\n"
-            "options:\n"
-            "  --target NAME     one of:\n");
+            "options:\n");
+    const cli_opt_table tables[] = {CLI_TABLE(export_opts, NULL)};
+    cli_opts_help(out, tables, 1);
+    fprintf(out, "\ntargets:\n");
     int n = 0;
     const soak_export_target *t = soak_export_targets(&n);
-    for (int i = 0; i < n; ++i) fprintf(out, "                      %-8s %s\n", t[i].name, t[i].summary);
-    fprintf(out,
-            "  -o, --output FILE where to write (default: stdout); written to a temporary\n"
-            "                    file and renamed, so a failure leaves FILE untouched\n"
-            "  --materials FILE  preset file (default: $SOAK_MATERIALS, else the shipped\n"
-            "                    data/materials.json)\n\n"
-            "examples:\n"
-            "  soak export --target json -o soak_export.json\n"
-            "  soak export --target povray -o povray/soak_materials.inc\n");
+    for (int i = 0; i < n; ++i) fprintf(out, "  %-8s %s\n", t[i].name, t[i].summary);
+    fprintf(out, "\nexamples:\n"
+                 "  soak export --target json -o soak_export.json\n"
+                 "  soak export --target povray -o povray/soak_materials.inc\n");
+}
+
+/* Returns -1 with *target found, else the exit code. */
+static int parse_args(int argc, char **argv, export_args *a, const soak_export_target **target)
+{
+    memset(a, 0, sizeof *a);
+    const cli_spec spec = {CMD, "argument", "'soak export --help'", usage, NULL, NULL};
+    const cli_opt_table tables[] = {CLI_TABLE(export_opts, a)};
+    int rc = cli_opts_parse(&spec, tables, 1, argc, argv);
+    if (rc >= 0) return rc;
+    if (!a->target) {
+        cli_error(CMD, "--target is required (see 'soak export --help')");
+        return SOAK_EXIT_USAGE;
+    }
+    if (!(*target = soak_export_find_target(a->target))) {
+        cli_error(CMD, "--target: unknown target '%s' (see 'soak export --help')", a->target);
+        return SOAK_EXIT_USAGE;
+    }
+    return -1;
 }
 
 int soak_cmd_export(int argc, char **argv)
 {
-    const char *target_name = NULL, *output = NULL, *file = NULL;
-    for (int i = 1; i < argc; ++i) {
-        const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            usage(stdout);
-            return SOAK_EXIT_OK;
-        } else if (cli_is(a, "--target")) {
-            if (!(target_name = cli_value(CMD, argc, argv, &i))) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--output") || strcmp(a, "-o") == 0) {
-            if (!(output = cli_value(CMD, argc, argv, &i))) return SOAK_EXIT_USAGE;
-            if (!output[0]) {
-                cli_error(CMD, "-o: empty file name");
-                return SOAK_EXIT_USAGE;
-            }
-        } else if (cli_is(a, "--materials")) {
-            if (!(file = cli_value(CMD, argc, argv, &i))) return SOAK_EXIT_USAGE;
-        } else {
-            cli_error(CMD, "unknown argument '%s' (see 'soak export --help')", a);
-            return SOAK_EXIT_USAGE;
-        }
-    }
-    if (!target_name) {
-        cli_error(CMD, "--target is required (see 'soak export --help')");
-        return SOAK_EXIT_USAGE;
-    }
-    const soak_export_target *target = soak_export_find_target(target_name);
-    if (!target) {
-        cli_error(CMD, "--target: unknown target '%s' (see 'soak export --help')", target_name);
-        return SOAK_EXIT_USAGE;
-    }
+    export_args a;
+    const soak_export_target *target = NULL;
+    int rc = parse_args(argc, argv, &a, &target);
+    if (rc >= 0) return rc;
     char err[4352] = "";
-    if (output && strcmp(output, "-") != 0) {
-        const char *inputs[1] = {file ? file : soak_presets_default_path()};
-        if (soak_io_check_output("-o", output, inputs, 1, err, sizeof err) != SOAK_OK) {
+    int to_file = a.output && strcmp(a.output, "-") != 0;
+    if (to_file) {
+        const char *inputs[1] = {a.file ? a.file : soak_presets_default_path()};
+        if (soak_io_check_output("-o", a.output, inputs, 1, err, sizeof err) != SOAK_OK) {
             cli_error(CMD, "%s (--materials or $SOAK_MATERIALS)", err);
             return SOAK_EXIT_USAGE;
         }
     }
     soak_preset_db *db = NULL;
-    soak_status st = soak_presets_load(file, &db, err, sizeof err);
+    soak_status st = soak_presets_load(a.file, &db, err, sizeof err);
     if (st != SOAK_OK) {
         cli_error(CMD, "%s", err[0] ? err : soak_status_str(st));
         return SOAK_EXIT_FAIL;
     }
     err[0] = '\0';
-    st = soak_export_run(target, db, output, err, sizeof err);
+    st = soak_export_run(target, db, a.output, err, sizeof err);
     soak_presets_free(db);
     if (st != SOAK_OK) {
-        cli_error(CMD, "--target %s: %s", target_name, err[0] ? err : soak_status_str(st));
+        cli_error(CMD, "--target %s: %s", a.target, err[0] ? err : soak_status_str(st));
         return SOAK_EXIT_FAIL;
     }
-    if (output && strcmp(output, "-") != 0) fprintf(stderr, "soak export: wrote %s\n", output);
+    if (to_file) fprintf(stderr, "soak export: wrote %s\n", a.output);
     return SOAK_EXIT_OK;
 }

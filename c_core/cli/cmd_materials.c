@@ -10,6 +10,28 @@
 
 static const char *CMD = "materials";
 
+typedef struct materials_args {
+    const char *liquid, *file;
+    int json;
+    long table;
+} materials_args;
+
+#define F(field) CLI_FIELD(materials_args, field)
+static const cli_opt materials_opts[] = {
+    {"--json", NULL, CLI_OPT_FLAG, .flag = 1, F(json),
+     .help = "print every preset and liquid with all fields, sources\n"
+             "and derived sigma_s/sigma_a (1/mm) as JSON on stdout"},
+    {"--table", NULL, CLI_OPT_INT, .ilo = 2, .ihi = SOAK_WET_TABLE_MAX, F(table), .meta = "N",
+     .help = "add N rows (N in %R) at wetness i/(N-1) per preset: the\n"
+             "parameter table front ends interpolate (in the JSON with\n"
+             "--json, else printed as text); the curves have a kink\n"
+             "where the pores saturate, so use 17 rows or more"},
+    {"--liquid", NULL, CLI_OPT_STRING, F(liquid), .meta = "NAME", .help = "liquid for the wet values (default water)"},
+    {"--materials", NULL, CLI_OPT_STRING, F(file), .meta = "FILE",
+     .help = "preset file (default: $SOAK_MATERIALS, else the shipped\ndata/materials.json)"},
+};
+#undef F
+
 static void usage(FILE *out)
 {
     fprintf(out,
@@ -20,25 +42,18 @@ static void usage(FILE *out)
             "for presets calibrated against a published measurement the measured\n"
             "ratio +- its spread beside the model's ratio at the measured sample's dry\n"
             "albedo (docs/calibration.md; the measurement is for water).\n\n"
-            "options:\n"
-            "  --json            print every preset and liquid with all fields, sources\n"
-            "                    and derived sigma_s/sigma_a (1/mm) as JSON on stdout\n"
-            "  --table N         add N rows (N >= 2) at wetness i/(N-1) per preset: the\n"
-            "                    parameter table front ends interpolate (in the JSON with\n"
-            "                    --json, else printed as text); the curves have a kink\n"
-            "                    where the pores saturate, so use 17 rows or more\n"
-            "  --liquid NAME     liquid for the wet values (default water)\n"
-            "  --materials FILE  preset file (default: $SOAK_MATERIALS, else the shipped\n"
-            "                    data/materials.json)\n\n"
-            "examples:\n"
-            "  soak materials\n"
-            "  soak materials --json --table 17 > presets.json\n");
+            "options:\n");
+    const cli_opt_table tables[] = {CLI_TABLE(materials_opts, NULL)};
+    cli_opts_help(out, tables, 1);
+    fprintf(out, "\nexamples:\n"
+                 "  soak materials\n"
+                 "  soak materials --json --table 17 > presets.json\n");
 }
 
 static void print_rgb(soak_rgb c) { printf("%6.3f %6.3f %6.3f", c.r, c.g, c.b); }
 
 /* The chain's wet/dry ratio at the measured sample's grey dry albedo (the
- * comparison of docs/calibration.md and tests/c/test_calibration.c). */
+ * comparison of docs/calibration.md and tests/c/materials/test_calibration.c). */
 static soak_status measured_model_ratio(const soak_preset *p, const soak_liquid *liq, double *ratio)
 {
     soak_preset q = *p;
@@ -150,62 +165,43 @@ static void list_liquids(const soak_preset_db *db)
     fprintf(stderr, "\n");
 }
 
+static int print_json(const soak_preset_db *db, const materials_args *a)
+{
+    char *text = NULL;
+    soak_status st = soak_wetness_export_json(db, a->liquid, (int)a->table, &text);
+    if (st != SOAK_OK) {
+        cli_error(CMD, "JSON export failed: %s", soak_status_str(st));
+        return SOAK_EXIT_FAIL;
+    }
+    fputs(text, stdout);
+    fputc('\n', stdout);
+    free(text);
+    return SOAK_EXIT_OK;
+}
+
 int soak_cmd_materials(int argc, char **argv)
 {
-    int json = 0;
-    long table = 0;
-    const char *liquid = "water", *file = NULL;
-    for (int i = 1; i < argc; ++i) {
-        const char *a = argv[i];
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            usage(stdout);
-            return SOAK_EXIT_OK;
-        } else if (strcmp(a, "--json") == 0) {
-            json = 1;
-        } else if (cli_is(a, "--table")) {
-            const char *v = cli_value(CMD, argc, argv, &i);
-            if (!v || !cli_parse_int(CMD, "--table", v, 2, SOAK_WET_TABLE_MAX, &table)) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--liquid")) {
-            if (!(liquid = cli_value(CMD, argc, argv, &i))) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--materials")) {
-            if (!(file = cli_value(CMD, argc, argv, &i))) return SOAK_EXIT_USAGE;
-        } else {
-            cli_error(CMD, "unknown argument '%s' (see 'soak materials --help')", a);
-            return SOAK_EXIT_USAGE;
-        }
-    }
-
+    materials_args a = {.liquid = "water"};
+    const cli_spec spec = {CMD, "argument", "'soak materials --help'", usage, NULL, NULL};
+    const cli_opt_table tables[] = {CLI_TABLE(materials_opts, &a)};
+    int rc = cli_opts_parse(&spec, tables, 1, argc, argv);
+    if (rc >= 0) return rc;
     char err[1024];
     soak_preset_db *db = NULL;
-    soak_status st = soak_presets_load(file, &db, err, sizeof err);
+    soak_status st = soak_presets_load(a.file, &db, err, sizeof err);
     if (st != SOAK_OK) {
         cli_error(CMD, "%s", err[0] ? err : soak_status_str(st));
         return SOAK_EXIT_FAIL;
     }
-    const soak_liquid *liq = soak_presets_find_liquid(db, liquid);
+    const soak_liquid *liq = soak_presets_find_liquid(db, a.liquid);
     if (!liq) {
-        cli_error(CMD, "--liquid: unknown liquid '%s'", liquid);
+        cli_error(CMD, "--liquid: unknown liquid '%s'", a.liquid);
         list_liquids(db);
-        soak_presets_free(db);
-        return SOAK_EXIT_USAGE;
-    }
-
-    int rc = SOAK_EXIT_OK;
-    if (json) {
-        char *text = NULL;
-        st = soak_wetness_export_json(db, liquid, (int)table, &text);
-        if (st != SOAK_OK) {
-            cli_error(CMD, "JSON export failed: %s", soak_status_str(st));
-            rc = SOAK_EXIT_FAIL;
-        } else {
-            fputs(text, stdout);
-            fputc('\n', stdout);
-            free(text);
-        }
-    } else if (table) {
-        rc = print_tables(db, liq, (int)table);
+        rc = SOAK_EXIT_USAGE;
+    } else if (a.json) {
+        rc = print_json(db, &a);
     } else {
-        rc = print_summary(db, liq);
+        rc = a.table ? print_tables(db, liq, (int)a.table) : print_summary(db, liq);
     }
     soak_presets_free(db);
     if (rc == SOAK_EXIT_OK && fflush(stdout) != 0) {

@@ -1,6 +1,7 @@
 /* soak render: the reference path tracer on a JSON scene (scenes/README.md). */
 #define _POSIX_C_SOURCE 200809L
 #include <signal.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +15,7 @@
 #include "soak/render.h"
 #include "soak/scene.h"
 
+static const char *const CMD = "render";
 static volatile sig_atomic_t interrupted = 0;
 
 /* Memory of a render per pixel: the sums (3 doubles) and sample count (an
@@ -27,6 +29,44 @@ static void on_sigint(int sig)
     interrupted = 1;
 }
 
+typedef struct render_args {
+    const char *scene_path, *out_path;
+    long spp, threads, seed, width, height, max_depth;
+    double time_limit, auto_tol;
+    int quiet;
+} render_args;
+
+/* --time's floor: 0 would mean no limit, which is leaving --time out. */
+#define RENDER_MIN_TIME 0.001
+
+#define F(field) CLI_FIELD(render_args, field)
+static const cli_opt render_opts[] = {
+    {"--output", "-o", CLI_OPT_STRING, F(out_path), .meta = "FILE",
+     .help = "output image (required; never one of the scene's inputs)"},
+    {"--spp", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RENDER_MAX_SPP, F(spp), .meta = "N",
+     .help = "samples per pixel, %R (default: the scene's render.spp)"},
+    {"--threads", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RENDER_MAX_THREADS, F(threads), .meta = "N",
+     .help = "worker threads, %R (default: the number of CPUs)"},
+    {"--seed", NULL, CLI_OPT_INT, .ilo = 0, .ihi = INT32_MAX, F(seed), .meta = "S",
+     .help = "random seed (default 1); same seed + spp -> identical pixels"},
+    {"--time", NULL, CLI_OPT_DOUBLE, .lo = RENDER_MIN_TIME, .hi = SOAK_RENDER_MAX_TIME, F(time_limit), .meta = "T",
+     .help = "stop after T seconds and keep what is done"},
+    {"--width", NULL, CLI_OPT_SIZE, .ihi = SOAK_RENDER_MAX_SIZE, F(width), .meta = "W",
+     .help = "image width, %R (default: the scene's render.width)"},
+    {"--height", NULL, CLI_OPT_SIZE, .ihi = SOAK_RENDER_MAX_SIZE, F(height), .meta = "H",
+     .help = "image height, %R (default: the scene's render.height); a render takes\n"
+             "52 bytes per pixel and is refused above 4096 MiB (about 9000^2)"},
+    {"--max-depth", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RENDER_MAX_DEPTH, F(max_depth), .meta = "N",
+     .help = "path length cap, %R (default: the scene's render.max_depth)"},
+    {"--auto-model", NULL, CLI_OPT_DOUBLE, .lo = CLI_ADVISE_MIN_TOL, .hi = SOAK_ADVISE_MAX_TOL, F(auto_tol),
+     .meta = "T",
+     .help = "render each material through the cheapest model within a\n"
+             "relative error T of its full description (soak advise;\n"
+             "the choices are printed on stderr)"},
+    {"--quiet", "-q", CLI_OPT_FLAG, .flag = 1, F(quiet), .help = "no statistics on stdout"},
+};
+#undef F
+
 static void usage(FILE *out)
 {
     fprintf(out,
@@ -36,21 +76,22 @@ static void usage(FILE *out)
             "subsurface random walk. EXR/HDR/TIFF outputs hold linear float radiance; PNG/JPEG are\n"
             "tone mapped: multiplied by 2^exposure (camera.exposure), then the sRGB curve, clamped\n"
             "to [0,1]. Ctrl-C stops early, writes the samples taken so far and exits 130.\n\n"
-            "options:\n"
-            "  -o, --output FILE   output image (required; never one of the scene's inputs)\n"
-            "  --spp N             samples per pixel (default: the scene's render.spp)\n"
-            "  --threads N         worker threads (default: the number of CPUs)\n"
-            "  --seed S            random seed (default 1); same seed + spp -> identical pixels\n"
-            "  --time T            stop after T seconds and keep what is done\n"
-            "  --width W --height H  image size (default: the scene's render.width/height); a render\n"
-            "                      takes 52 bytes per pixel and is refused above 4096 MiB (about 9000^2)\n"
-            "  --max-depth N       path length cap (default: the scene's render.max_depth)\n"
-            "  --auto-model T      render each material through the cheapest model within a\n"
-            "                      relative error T of its full description (soak advise;\n"
-            "                      the choices are printed on stderr)\n"
-            "  -q, --quiet         no statistics on stdout\n\n"
-            "example:\n"
-            "  soak render scenes/default_wet_dry.json -o wet_dry.png --spp 32 --threads 2\n");
+            "options:\n");
+    const cli_opt_table tables[] = {CLI_TABLE(render_opts, NULL)};
+    cli_opts_help(out, tables, 1);
+    fprintf(out, "\nexample:\n"
+                 "  soak render scenes/default_wet_dry.json -o wet_dry.png --spp 32 --threads 2\n");
+}
+
+static int scene_arg(void *ctx, const char *arg)
+{
+    render_args *a = ctx;
+    if (a->scene_path) {
+        cli_error(CMD, "unexpected argument '%s': only one scene file", arg);
+        return 0;
+    }
+    a->scene_path = arg;
+    return 1;
 }
 
 static int has_ext(const char *path, const char *ext)
@@ -65,189 +106,194 @@ static void progress_cb(void *ctx, double fraction)
 }
 
 /* --auto-model: soak advise's choices applied to the scene. */
-static soak_status auto_model(const char *scene_path, soak_scene *scene, double tol)
+static soak_status auto_model(soak_scene *scene, double tol)
 {
     soak_advice *adv = NULL;
     int n = 0;
     char err[4096] = "";
     soak_status st = soak_advise_scene(scene, tol, NULL, &adv, &n, err, sizeof err);
     if (st == SOAK_OK) st = soak_advise_apply(scene, adv, n, err, sizeof err);
-    if (st != SOAK_OK) cli_error("render", "--auto-model: %s", err[0] ? err : soak_status_str(st));
+    if (st != SOAK_OK) cli_error(CMD, "--auto-model: %s", err[0] ? err : soak_status_str(st));
     else cli_advise_print(stderr, adv, n, tol);
     free(adv);
-    (void)scene_path;
     return st;
 }
 
-int soak_cmd_render(int argc, char **argv)
+/* Returns -1 to go on, else the exit code. */
+static int parse_args(int argc, char **argv, render_args *a)
 {
-    const char *cmd = "render", *scene_path = NULL, *out_path = NULL;
-    long spp = 0, threads = sysconf(_SC_NPROCESSORS_ONLN), width = 0, height = 0, max_depth = 0, seed = 1;
-    double time_limit = 0, auto_tol = 0;
-    int quiet = 0;
-    if (threads < 1) threads = 1;
-    for (int i = 1; i < argc; ++i) {
-        const char *a = argv[i], *v;
-        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
-            usage(stdout);
-            return SOAK_EXIT_OK;
-        } else if (strcmp(a, "-o") == 0 || cli_is(a, "--output")) {
-            if (!(out_path = cli_value(cmd, argc, argv, &i))) return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--spp")) {
-            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_int(cmd, "--spp", v, 1, 10000000, &spp))
-                return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--threads")) {
-            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_int(cmd, "--threads", v, 1, 256, &threads))
-                return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--seed")) {
-            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_int(cmd, "--seed", v, 0, 2147483647L, &seed))
-                return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--time")) {
-            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_double(cmd, "--time", v, 0.001, 1e9, &time_limit))
-                return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--width")) {
-            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_size(cmd, "--width", v, CLI_MAX_IMAGE_SIDE, &width))
-                return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--height")) {
-            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_size(cmd, "--height", v, CLI_MAX_IMAGE_SIDE, &height))
-                return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--max-depth")) {
-            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_int(cmd, "--max-depth", v, 1, 100000, &max_depth))
-                return SOAK_EXIT_USAGE;
-        } else if (cli_is(a, "--auto-model")) {
-            if (!(v = cli_value(cmd, argc, argv, &i)) || !cli_parse_double(cmd, "--auto-model", v, 1e-9, 10, &auto_tol))
-                return SOAK_EXIT_USAGE;
-        } else if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {
-            quiet = 1;
-        } else if (a[0] == '-' && a[1] != '\0') {
-            cli_error(cmd, "unknown option '%s' (see soak render --help)", a);
-            return SOAK_EXIT_USAGE;
-        } else if (!scene_path) {
-            scene_path = a;
-        } else {
-            cli_error(cmd, "unexpected argument '%s': only one scene file", a);
-            return SOAK_EXIT_USAGE;
-        }
-    }
-    if (!scene_path) {
-        cli_error(cmd, "SCENE.json: missing scene file (see soak render --help)");
+    memset(a, 0, sizeof *a);
+    a->threads = sysconf(_SC_NPROCESSORS_ONLN);
+    if (a->threads < 1) a->threads = 1;
+    a->seed = 1;
+    const cli_spec spec = {"render", "option", "soak render --help", usage, scene_arg, a};
+    const cli_opt_table tables[] = {CLI_TABLE(render_opts, a)};
+    int rc = cli_opts_parse(&spec, tables, 1, argc, argv);
+    if (rc >= 0) return rc;
+    if (!a->scene_path) {
+        cli_error(CMD, "SCENE.json: missing scene file (see soak render --help)");
         return SOAK_EXIT_USAGE;
     }
-    if (!out_path) {
-        cli_error(cmd, "-o: missing output image (.exr or .png)");
+    if (!a->out_path) {
+        cli_error(CMD, "-o: missing output image (.exr or .png)");
         return SOAK_EXIT_USAGE;
     }
+    return -1;
+}
+
+/* -o: not the scene, a writable folder, a known extension (*toned: an 8/16
+ * bit format). Returns -1 to go on, else the exit code. */
+static int check_output(const render_args *a, int *toned)
+{
     char err[4096];
-    if (soak_io_check_output("-o", out_path, &scene_path, 1, err, sizeof err) != SOAK_OK) {
-        cli_error(cmd, "%s (the scene file)", err);
+    if (soak_io_check_output("-o", a->out_path, &a->scene_path, 1, err, sizeof err) != SOAK_OK) {
+        cli_error(CMD, "%s (the scene file)", err);
         return SOAK_EXIT_USAGE;
     }
-    soak_status pst = soak_path_check_writable(out_path, err, sizeof err);
+    soak_status pst = soak_path_check_writable(a->out_path, err, sizeof err);
     if (pst == SOAK_ERR_ARG) {
-        cli_error(cmd, "-o: %s", err);
+        cli_error(CMD, "-o: %s", err);
         return SOAK_EXIT_USAGE;
     }
-    int linear = has_ext(out_path, ".exr") || has_ext(out_path, ".hdr") || has_ext(out_path, ".tif") ||
-                 has_ext(out_path, ".tiff");
-    int toned = has_ext(out_path, ".png") || has_ext(out_path, ".jpg") || has_ext(out_path, ".jpeg");
-    if (!linear && !toned) {
-        cli_error(cmd, "-o %s: unsupported extension (use .exr, .hdr, .tif, .png or .jpg)", out_path);
+    const char *out = a->out_path;
+    int linear = has_ext(out, ".exr") || has_ext(out, ".hdr") || has_ext(out, ".tif") || has_ext(out, ".tiff");
+    *toned = has_ext(out, ".png") || has_ext(out, ".jpg") || has_ext(out, ".jpeg");
+    if (!linear && !*toned) {
+        cli_error(CMD, "-o %s: unsupported extension (use .exr, .hdr, .tif, .png or .jpg)", out);
         return SOAK_EXIT_USAGE;
     }
     if (pst != SOAK_OK) {
-        cli_error(cmd, "-o %s: %s", out_path, err);
+        cli_error(CMD, "-o %s: %s", out, err);
         return SOAK_EXIT_FAIL;
     }
-    soak_scene scene;
-    soak_status st = soak_scene_load(scene_path, &scene, err, sizeof err);
-    if (st != SOAK_OK) {
-        cli_error(cmd, "%s", err);
-        return SOAK_EXIT_FAIL;
-    }
+    return -1;
+}
+
+/* The output is none of the files the scene reads. */
+static soak_status guard_inputs(const render_args *a, const soak_scene *scene, char *err, size_t errlen)
+{
     soak_io_guard guard;
     soak_io_guard_init(&guard);
-    st = soak_io_guard_output(&guard, "-o", out_path);
-    if (st == SOAK_OK) st = soak_io_guard_input(&guard, "scene file", scene_path);
-    for (int i = 0; i < scene.n_inputs && st == SOAK_OK; ++i) st = soak_io_guard_input(&guard, "file of the scene", scene.inputs[i]);
-    if (st == SOAK_OK) st = soak_io_guard_check(&guard, err, sizeof err);
+    soak_status st = soak_io_guard_output(&guard, "-o", a->out_path);
+    if (st == SOAK_OK) st = soak_io_guard_input(&guard, "scene file", a->scene_path);
+    for (int i = 0; i < scene->n_inputs && st == SOAK_OK; ++i)
+        st = soak_io_guard_input(&guard, "file of the scene", scene->inputs[i]);
+    if (st == SOAK_OK) st = soak_io_guard_check(&guard, err, errlen);
     soak_io_guard_free(&guard);
-    if (st != SOAK_OK) {
-        cli_error(cmd, "%s", st == SOAK_ERR_ARG ? err : soak_status_str(st));
-        soak_scene_free(&scene);
-        return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
-    }
-    if (auto_tol > 0 && auto_model(scene_path, &scene, auto_tol) != SOAK_OK) {
-        soak_scene_free(&scene);
+    return st;
+}
+
+/* Loads the scene, checks its files against -o, applies --auto-model and
+ * the memory limit. Returns -1 with the scene loaded, else the exit code
+ * with nothing to free. */
+static int load_scene(const render_args *a, soak_scene *scene)
+{
+    char err[4096];
+    if (soak_scene_load(a->scene_path, scene, err, sizeof err) != SOAK_OK) {
+        cli_error(CMD, "%s", err);
         return SOAK_EXIT_FAIL;
     }
-
-    int W = width > 0 ? (int)width : scene.width, H = height > 0 ? (int)height : scene.height;
+    int rc = -1;
+    soak_status st = guard_inputs(a, scene, err, sizeof err);
+    int W = a->width > 0 ? (int)a->width : scene->width, H = a->height > 0 ? (int)a->height : scene->height;
     double need_mib = (double)W * H * RENDER_BYTES_PER_PIXEL / 1048576.0;
-    if (need_mib > RENDER_MAX_MIB) {
-        cli_error(cmd, "a %dx%d render needs %.0f MiB (%d bytes per pixel); the limit is %d MiB", W, H, need_mib,
+    if (st != SOAK_OK) {
+        cli_error(CMD, "%s", st == SOAK_ERR_ARG ? err : soak_status_str(st));
+        rc = st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
+    } else if (a->auto_tol > 0 && auto_model(scene, a->auto_tol) != SOAK_OK) {
+        rc = SOAK_EXIT_FAIL;
+    } else if (need_mib > RENDER_MAX_MIB) {
+        cli_error(CMD, "a %dx%d render needs %.0f MiB (%d bytes per pixel); the limit is %d MiB", W, H, need_mib,
                   RENDER_BYTES_PER_PIXEL, RENDER_MAX_MIB);
-        soak_scene_free(&scene);
-        return SOAK_EXIT_USAGE;
+        rc = SOAK_EXIT_USAGE;
     }
+    if (rc >= 0) soak_scene_free(scene);
+    return rc;
+}
+
+/* Traces the image with Ctrl-C stopping it early; *exposure is the
+ * camera's, for tone mapping. Frees the scene. */
+static soak_status trace(const render_args *a, soak_scene *scene, soak_image *img, soak_render_stats *stats,
+                         double *exposure)
+{
     struct sigaction sa, old;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_sigint;
     sigemptyset(&sa.sa_mask);
     sigaction(SIGINT, &sa, &old);
-
     soak_render_options opt;
     soak_render_options_default(&opt);
-    opt.width = (int)width;
-    opt.height = (int)height;
-    opt.spp = (int)spp;
-    opt.threads = (int)threads;
-    opt.seed = (uint64_t)seed;
-    opt.time_limit = time_limit;
-    opt.max_depth = (int)max_depth;
+    opt.width = (int)a->width;
+    opt.height = (int)a->height;
+    opt.spp = (int)a->spp;
+    opt.threads = (int)a->threads;
+    opt.seed = (uint64_t)a->seed;
+    opt.time_limit = a->time_limit;
+    opt.max_depth = (int)a->max_depth;
     opt.cancel = &interrupted;
-    char label[96];
-    snprintf(label, sizeof label, "render %dx%d, %d spp", width > 0 ? (int)width : scene.width,
-             height > 0 ? (int)height : scene.height, spp > 0 ? (int)spp : scene.spp);
+    char label[96], err[4096] = "";
+    snprintf(label, sizeof label, "render %dx%d, %d spp", a->width > 0 ? (int)a->width : scene->width,
+             a->height > 0 ? (int)a->height : scene->height, a->spp > 0 ? (int)a->spp : scene->spp);
     cli_progress prog;
     cli_progress_start(&prog, label, 1.0);
     opt.progress = progress_cb;
     opt.progress_ctx = &prog;
-    soak_image img = {0};
-    soak_render_stats stats;
-    st = soak_render(&scene, &opt, &img, &stats, err, sizeof err);
+    soak_status st = soak_render(scene, &opt, img, stats, err, sizeof err);
     cli_progress_finish(&prog);
     sigaction(SIGINT, &old, NULL);
-    double exposure = scene.camera.exposure;
-    soak_scene_free(&scene);
-    if (st != SOAK_OK) {
-        cli_error(cmd, "%s: render failed: %s", scene_path, err[0] ? err : soak_status_str(st));
-        return SOAK_EXIT_FAIL;
-    }
+    *exposure = scene->camera.exposure;
+    soak_scene_free(scene);
+    if (st != SOAK_OK) cli_error(CMD, "%s: render failed: %s", a->scene_path, err[0] ? err : soak_status_str(st));
+    return st;
+}
+
+static soak_status write_image(const render_args *a, soak_image *img, int toned, double exposure)
+{
+    char err[4096];
     soak_image_write_opts wo = {SOAK_TONE_LINEAR, SOAK_PIXEL_FLOAT};
     if (toned) {
-        soak_render_expose(&img, exposure);
+        soak_render_expose(img, exposure);
         wo.tone = SOAK_TONE_SRGB;
         wo.pixel_type = SOAK_PIXEL_AUTO;
     }
-    st = soak_image_write(out_path, &img, &wo, err, sizeof err);
+    soak_status st = soak_image_write(a->out_path, img, &wo, err, sizeof err);
+    if (st != SOAK_OK) cli_error(CMD, "-o %s: %s", a->out_path, err);
+    return st;
+}
+
+static void print_stats(const render_args *a, const soak_render_stats *stats)
+{
+    double secs = stats->seconds > 0 ? stats->seconds : 1e-9;
+    printf("wrote %s\n", a->out_path);
+    printf("samples per pixel: %d..%d%s\n", stats->min_spp, stats->max_spp,
+           stats->stopped_early ? " (stopped early)" : "");
+    printf("paths: %lld (%.0f paths/s)\n", stats->paths, stats->paths / secs);
+    printf("rays: %lld (%.0f rays/s)\n", stats->rays, stats->rays / secs);
+    printf("capped paths: %lld, leaked medium paths: %lld, NaN paths: %lld, geometry errors: %lld\n", stats->capped,
+           stats->leaked, stats->nan_paths, stats->geometry_errors);
+    printf("time: %.2f s with %ld threads\n", stats->seconds, a->threads);
+}
+
+int soak_cmd_render(int argc, char **argv)
+{
+    render_args a;
+    int toned = 0, rc = parse_args(argc, argv, &a);
+    if (rc < 0) rc = check_output(&a, &toned);
+    soak_scene scene;
+    if (rc < 0) rc = load_scene(&a, &scene);
+    if (rc >= 0) return rc;
+    soak_image img = {0};
+    soak_render_stats stats;
+    double exposure = 0;
+    rc = SOAK_EXIT_FAIL;
+    if (trace(&a, &scene, &img, &stats, &exposure) == SOAK_OK && write_image(&a, &img, toned, exposure) == SOAK_OK)
+        rc = SOAK_EXIT_OK;
     soak_image_free(&img);
-    if (st != SOAK_OK) {
-        cli_error(cmd, "-o %s: %s", out_path, err);
-        return SOAK_EXIT_FAIL;
-    }
-    if (!quiet) {
-        double secs = stats.seconds > 0 ? stats.seconds : 1e-9;
-        printf("wrote %s\n", out_path);
-        printf("samples per pixel: %d..%d%s\n", stats.min_spp, stats.max_spp, stats.stopped_early ? " (stopped early)" : "");
-        printf("paths: %lld (%.0f paths/s)\n", stats.paths, stats.paths / secs);
-        printf("rays: %lld (%.0f rays/s)\n", stats.rays, stats.rays / secs);
-        printf("capped paths: %lld, leaked medium paths: %lld, NaN paths: %lld, geometry errors: %lld\n", stats.capped,
-               stats.leaked, stats.nan_paths, stats.geometry_errors);
-        printf("time: %.2f s with %ld threads\n", stats.seconds, threads);
-    }
+    if (rc != SOAK_EXIT_OK) return rc;
+    if (!a.quiet) print_stats(&a, &stats);
     if (interrupted) {
-        fprintf(stderr, "soak render: interrupted; wrote the %d..%d samples per pixel done so far to %s\n", stats.min_spp,
-                stats.max_spp, out_path);
+        fprintf(stderr, "soak render: interrupted; wrote the %d..%d samples per pixel done so far to %s\n",
+                stats.min_spp, stats.max_spp, a.out_path);
         return 130;
     }
     return SOAK_EXIT_OK;

@@ -3,6 +3,7 @@
  * writes docs/ACCURACY.md and docs/accuracy/report.json. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,6 +25,44 @@ static const char *const LIQUIDS[] = {"water", "red_wine"};
 #define N_LIQUIDS 2
 static const char *const QUICK_PRESETS[] = {"sand", "marble", "copper"};
 #define N_QUICK 3
+/* The report's own ranges, narrower than soak_material_albedo's 1..1e8
+ * samples. */
+#define REPORT_MIN_SAMPLES 16
+#define REPORT_MAX_SAMPLES 10000000
+#define REPORT_MAX_EVALS 1000000000
+
+typedef struct report_args {
+    const char *markdown, *json, *callgrind, *model, *material;
+    long samples, evals;
+    unsigned long long seed;
+    int quick, no_cost, cost_only;
+} report_args;
+
+#define F(field) CLI_FIELD(report_args, field)
+static const cli_opt report_opts[] = {
+    {"--markdown", NULL, CLI_OPT_STRING, F(markdown), .meta = "PATH", .help = "tables (default docs/ACCURACY.md)"},
+    {"--json", NULL, CLI_OPT_STRING, F(json), .meta = "PATH", .help = "values (default docs/accuracy/report.json)"},
+    {"--samples", NULL, CLI_OPT_INT, .ilo = REPORT_MIN_SAMPLES, .ihi = REPORT_MAX_SAMPLES, F(samples),
+     .meta = "N", .help = "Monte Carlo samples per state and cell, %R (default 2048)"},
+    {"--seed", NULL, CLI_OPT_INT, .ilo = 0, .ihi = INT32_MAX, F(seed), .meta = "S",
+     .help = "base seed (default 1); each cell's seed derives from it"},
+    {"--quick", NULL, CLI_OPT_FLAG, .flag = 1, F(quick),
+     .help = "subset: presets sand, marble, copper; water; 0 and 60 degrees\n"
+             "(the same values as the full grid's cells)"},
+    {"--no-cost", NULL, CLI_OPT_FLAG, .flag = 1, F(no_cost), .help = "leave the timings out (zeros)"},
+    {"--callgrind", NULL, CLI_OPT_STRING, F(callgrind), .meta = "PATH",
+     .help = "instruction counts per evaluation (TSV: model, Ir) from\n"
+             "scripts/accuracy_report.sh, shown beside the timings"},
+    {"--cost-only", NULL, CLI_OPT_FLAG, .flag = 1, F(cost_only),
+     .help = "run --evals evaluations of --model on --material's wet\n"
+             "state and print a checksum (for valgrind --tool=callgrind)"},
+    {"--model", NULL, CLI_OPT_STRING, F(model), .meta = "NAME",
+     .help = "(--cost-only) a model of `soak eval --list`, or full"},
+    {"--material", NULL, CLI_OPT_STRING, F(material), .meta = "NAME", .help = "(--cost-only) preset (default sand)"},
+    {"--evals", NULL, CLI_OPT_INT, .ilo = 0, .ihi = REPORT_MAX_EVALS, F(evals), .meta = "N",
+     .help = "(--cost-only) evaluations, %R (default 100000)"},
+};
+#undef F
 
 static void usage(FILE *out)
 {
@@ -36,75 +75,24 @@ static void usage(FILE *out)
             "the directional albedo as the renderer shades the material (Monte Carlo with\n"
             "the renderer's own BSDF sampling, fixed seeds: reproducible). Writes the\n"
             "tables (Markdown) and the values (JSON) together, or neither.\n\n"
-            "options:\n"
-            "  --markdown PATH     tables (default docs/ACCURACY.md)\n"
-            "  --json PATH         values (default docs/accuracy/report.json)\n"
-            "  --samples N         Monte Carlo samples per state and cell, [16, 1e7] (default 2048)\n"
-            "  --seed S            base seed (default 1); each cell's seed derives from it\n"
-            "  --quick             subset: presets sand, marble, copper; water; 0 and 60 degrees\n"
-            "                      (the same values as the full grid's cells)\n"
-            "  --no-cost           leave the timings out (zeros)\n"
-            "  --callgrind PATH    instruction counts per evaluation (TSV: model, Ir) from\n"
-            "                      scripts/accuracy_report.sh, shown beside the timings\n"
-            "  --cost-only         run --evals evaluations of --model on --material's wet\n"
-            "                      state and print a checksum (for valgrind --tool=callgrind)\n"
-            "  --model NAME        (--cost-only) a model of `soak eval --list`, or full\n"
-            "  --material NAME     (--cost-only) preset (default sand)\n"
-            "  --evals N           (--cost-only) evaluations, [0, 1e9] (default 100000)\n\n"
-            "examples:\n"
-            "  soak report\n"
-            "  soak report --quick --json /tmp/quick.json --markdown /tmp/quick.md\n"
-            "  scripts/accuracy_report.sh build/c_core/soak   # + callgrind and plots\n");
+            "options:\n");
+    const cli_opt_table tables[] = {CLI_TABLE(report_opts, NULL)};
+    cli_opts_help(out, tables, 1);
+    fprintf(out, "\nexamples:\n"
+                 "  soak report\n"
+                 "  soak report --quick --json /tmp/quick.json --markdown /tmp/quick.md\n"
+                 "  scripts/accuracy_report.sh build/c_core/soak   # + callgrind and plots\n");
 }
 
-typedef struct report_args {
-    const char *markdown, *json, *callgrind, *model, *material;
-    long samples, evals;
-    unsigned long long seed;
-    int quick, no_cost, cost_only;
-} report_args;
-
+/* Returns -1 to go on, else the exit code. */
 static int parse_args(int argc, char **argv, report_args *a)
 {
-    memset(a, 0, sizeof *a);
-    a->markdown = "docs/ACCURACY.md";
-    a->json = "docs/accuracy/report.json";
-    a->samples = 2048;
-    a->seed = 1;
-    a->evals = 100000;
-    a->material = "sand";
-    for (int i = 1; i < argc; ++i) {
-        const char *arg = argv[i], *v;
-        long n;
-        if (strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0) {
-            usage(stdout);
-            return -1;
-        } else if (strcmp(arg, "--quick") == 0) a->quick = 1;
-        else if (strcmp(arg, "--no-cost") == 0) a->no_cost = 1;
-        else if (strcmp(arg, "--cost-only") == 0) a->cost_only = 1;
-        else if (cli_is(arg, "--markdown") || cli_is(arg, "--json") || cli_is(arg, "--callgrind") ||
-                 cli_is(arg, "--model") || cli_is(arg, "--material")) {
-            if (!(v = cli_value(CMD, argc, argv, &i))) return SOAK_EXIT_USAGE;
-            if (cli_is(arg, "--markdown")) a->markdown = v;
-            else if (cli_is(arg, "--json")) a->json = v;
-            else if (cli_is(arg, "--callgrind")) a->callgrind = v;
-            else if (cli_is(arg, "--model")) a->model = v;
-            else a->material = v;
-        } else if (cli_is(arg, "--samples")) {
-            if (!(v = cli_value(CMD, argc, argv, &i)) || !cli_parse_int(CMD, "--samples", v, 16, 10000000, &a->samples))
-                return SOAK_EXIT_USAGE;
-        } else if (cli_is(arg, "--evals")) {
-            if (!(v = cli_value(CMD, argc, argv, &i)) || !cli_parse_int(CMD, "--evals", v, 0, 1000000000, &a->evals))
-                return SOAK_EXIT_USAGE;
-        } else if (cli_is(arg, "--seed")) {
-            if (!(v = cli_value(CMD, argc, argv, &i)) || !cli_parse_int(CMD, "--seed", v, 0, 2147483647L, &n))
-                return SOAK_EXIT_USAGE;
-            a->seed = (unsigned long long)n;
-        } else {
-            cli_error(CMD, "unknown option '%s' (see 'soak report --help')", arg);
-            return SOAK_EXIT_USAGE;
-        }
-    }
+    *a = (report_args){.markdown = "docs/ACCURACY.md", .json = "docs/accuracy/report.json", .samples = 2048,
+                       .seed = 1, .evals = 100000, .material = "sand"};
+    const cli_spec spec = {CMD, "option", "'soak report --help'", usage, NULL, NULL};
+    const cli_opt_table tables[] = {CLI_TABLE(report_opts, a)};
+    int rc = cli_opts_parse(&spec, tables, 1, argc, argv);
+    if (rc >= 0) return rc;
     if (a->cost_only && !a->model) {
         cli_error(CMD, "--cost-only needs --model NAME (a model of `soak eval --list`, or full)");
         return SOAK_EXIT_USAGE;
@@ -117,7 +105,7 @@ static int parse_args(int argc, char **argv, report_args *a)
         cli_error(CMD, "--model: no model named '%s' (see `soak eval --list`)", a->model);
         return SOAK_EXIT_USAGE;
     }
-    return SOAK_EXIT_OK;
+    return -1;
 }
 
 /* ---- The grid ---- */
@@ -400,7 +388,8 @@ static void write_json(FILE *f, const report_args *a, const report *r)
     fprintf(f, "\n  ]\n}\n");
 }
 
-static void write_markdown(FILE *f, const report_args *a, const report *r)
+/* Title and what the numbers are. */
+static void md_intro(FILE *f, const report_args *a)
 {
     fprintf(f,
             "# Accuracy and cost of Soak's models\n\n"
@@ -434,6 +423,11 @@ static void write_markdown(FILE *f, const report_args *a, const report *r)
             "  whole walk through it); *Ir/eval*: valgrind callgrind instructions per eval\n"
             "  (scripts/accuracy_report.sh). Timings are from one machine; never asserted.\n\n",
             a->samples);
+}
+
+/* Every model against the full material. */
+static void md_models(FILE *f, const report *r)
+{
     fprintf(f, "## Models\n\n![error vs cost](accuracy/pareto.png)\n\n");
     fprintf(f, "| model | fast path of | cells (n/a) | rel. mean | rel. worst | abs. mean | abs. worst | wet/dry mean | "
                "wet/dry worst | MC noise | eval ns | sample ns | Ir/eval | worst cell |\n");
@@ -455,6 +449,10 @@ static void write_markdown(FILE *f, const report_args *a, const report *r)
     }
     fprintf(f, "\nA model is *n/a* on a cell when its set-up rejects the preset's parameters\n"
                "(e.g. `ggx-conductor` on a dielectric) or the material has no model view.\n\n");
+}
+
+static void md_fast_paths(FILE *f, const report *r)
+{
     fprintf(f, "## Fast paths against their exact model\n\n| fast path | exact | cells | rel. mean | rel. worst | "
                "wet/dry mean | wet/dry worst | eval speed-up |\n|---|---|---|---|---|---|---|---|\n");
     for (int k = 1; k < r->n_models; ++k) {
@@ -465,6 +463,10 @@ static void write_markdown(FILE *f, const report_args *a, const report *r)
                 s.cells, 100 * s.mean_rel, 100 * s.worst_rel, s.mean_ratio, s.worst_ratio,
                 r->eval_ns[k] > 0 ? r->eval_ns[j] / r->eval_ns[k] : 0.0);
     }
+}
+
+static void md_reading(FILE *f)
+{
     fprintf(f, "\n## Reading the numbers\n\n"
                "- The full material of a dielectric preset is what the tracer renders: a Lambert\n"
                "  base with no dry specular lobe, under the liquid's smooth film. Models with a\n"
@@ -488,6 +490,11 @@ static void write_markdown(FILE *f, const report_args *a, const report *r)
                "  sample what the path pays per bounce. The full material's cost is that of the\n"
                "  closed-form film over Lambert (dielectric presets); over a GGX base the film is\n"
                "  traced (a walk per sample, no eval), so its eval column leaves the conductors out.\n\n");
+}
+
+/* Mean relative error per preset and model. */
+static void md_per_preset(FILE *f, const report *r)
+{
     fprintf(f, "## Per preset (relative error, mean over wetness, angles and liquids)\n\n| preset |");
     for (int k = 1; k < r->n_models; ++k) fprintf(f, " %s |", model_name(r, k));
     fprintf(f, "\n|---|");
@@ -516,6 +523,10 @@ static void write_markdown(FILE *f, const report_args *a, const report *r)
         }
         fprintf(f, "\n");
     }
+}
+
+static void md_not_traced(FILE *f, const report *r)
+{
     fprintf(f, "\n## Not traced here\n\n");
     fprintf(f, "- Thin sheets (");
     for (int i = 0; i < r->n_skipped; ++i) fprintf(f, "%s%s", i ? ", " : "", r->skipped[i]);
@@ -528,6 +539,16 @@ static void write_markdown(FILE *f, const report_args *a, const report *r)
                "- Angular shape: R integrates over the lighting hemisphere; a model with the\n"
                "  right albedo and a wrong lobe shape scores well here (see `soak advise`, which\n"
                "  measures rendered images).\n");
+}
+
+static void write_markdown(FILE *f, const report_args *a, const report *r)
+{
+    md_intro(f, a);
+    md_models(f, r);
+    md_fast_paths(f, r);
+    md_reading(f);
+    md_per_preset(f, r);
+    md_not_traced(f, r);
 }
 
 static int write_outputs(const report_args *a, const report *r)
@@ -582,8 +603,7 @@ int soak_cmd_report(int argc, char **argv)
 {
     report_args a;
     int rc = parse_args(argc, argv, &a);
-    if (rc < 0) return SOAK_EXIT_OK;
-    if (rc != SOAK_EXIT_OK) return rc;
+    if (rc >= 0) return rc;
     if (a.cost_only) return cost_only(&a);
     char err[1024];
     if (soak_output_path_check(a.json, err, sizeof err) != SOAK_OK || soak_output_path_check(a.markdown, err, sizeof err) != SOAK_OK) {

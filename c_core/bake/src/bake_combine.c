@@ -134,7 +134,7 @@ soak_status soak_map_blur(const soak_image *in, double sigma, int wrap, const so
     if (!out) return SOAK_ERR_NULL;
     soak_status st = check_image(in);
     if (st != SOAK_OK) return st;
-    if (!soak_in_range(sigma, 1e-6, 1000) || soak_bake_threads(exec) == 0) return SOAK_ERR_ARG;
+    if (!soak_in_range(sigma, 1e-6, SOAK_BLUR_MAX_SIGMA) || soak_bake_threads(exec) == 0) return SOAK_ERR_ARG;
     int radius = (int)ceil(3 * sigma);
     double *w = malloc(sizeof(double) * (2 * radius + 1));
     double *tmp = malloc(sizeof(double) * count(in));

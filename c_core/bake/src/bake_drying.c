@@ -113,11 +113,13 @@ soak_status soak_drying_check(const soak_drying_params *p)
 {
     if (!p) return SOAK_ERR_NULL;
     if (!(p->mode == SOAK_DRYING_SCHEDULE || p->mode == SOAK_DRYING_DIFFUSION)) return SOAK_ERR_ARG;
-    if (!soak_in_range(p->threshold, -1e6, 1e6) || !soak_in_range(p->time, 0, 1e12) ||
-        !soak_in_range(p->t_fill, 0, 1) || !soak_in_range(p->noise_amount, 0, 1) ||
-        !soak_in_range(p->noise_frequency, 1e-9, 8192) || !(p->noise_octaves >= 1 && p->noise_octaves <= 24) ||
-        !soak_in_range(p->drying_time, 1e-300, 1e12) || !soak_in_range(p->diffusion_length, 0, 1e6) ||
-        !(p->steps >= 1 && p->steps <= 100000))
+    if (!soak_in_range(p->threshold, -SOAK_DRYING_MAX_THRESHOLD, SOAK_DRYING_MAX_THRESHOLD) ||
+        !soak_in_range(p->time, 0, SOAK_DRYING_MAX_TIME) || !soak_in_range(p->t_fill, 0, 1) ||
+        !soak_in_range(p->noise_amount, 0, 1) || !soak_in_range(p->noise_frequency, 1e-9, SOAK_NOISE_MAX_FREQUENCY) ||
+        !(p->noise_octaves >= 1 && p->noise_octaves <= SOAK_NOISE_MAX_OCTAVES) ||
+        !soak_in_range(p->drying_time, 1e-300, SOAK_DRYING_MAX_TIME) ||
+        !soak_in_range(p->diffusion_length, 0, SOAK_DRYING_MAX_LENGTH) ||
+        !(p->steps >= 1 && p->steps <= SOAK_DRYING_MAX_STEPS))
         return SOAK_ERR_ARG;
     return SOAK_OK;
 }

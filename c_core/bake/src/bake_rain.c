@@ -40,16 +40,20 @@ static int unit_ok(soak_vec3 v)
 soak_status soak_rain_check(const soak_rain_params *p)
 {
     if (!p) return SOAK_ERR_NULL;
-    if (!(p->rays >= 1 && p->rays <= 65536) || !(p->steps >= 1 && p->steps <= 100000) ||
-        !(p->flow_iterations >= 0 && p->flow_iterations <= 100000) || !(p->gutter >= 0 && p->gutter <= 64) ||
+    if (!(p->rays >= 1 && p->rays <= SOAK_RAIN_MAX_RAYS) || !(p->steps >= 1 && p->steps <= SOAK_RAIN_MAX_STEPS) ||
+        !(p->flow_iterations >= 0 && p->flow_iterations <= SOAK_RAIN_MAX_STEPS) ||
+        !(p->gutter >= 0 && p->gutter <= SOAK_RAIN_MAX_GUTTER) ||
         (p->sky != SOAK_RAIN_SKY_RAIN && p->sky != SOAK_RAIN_SKY_HEMISPHERE))
         return SOAK_ERR_ARG;
     if (!unit_ok(p->up) || !unit_ok(p->rain_dir)) return SOAK_ERR_ARG;
     if (!(soak_v3_dot(soak_v3_norm(p->up), soak_v3_norm(p->rain_dir)) > 1e-6)) return SOAK_ERR_ARG;
-    if (!soak_in_range(p->spread_deg, 0, 89) || !soak_in_range(p->duration, 0, 1e7) ||
-        !soak_in_range(p->rainfall_mm_h, 0, 1000) || !(p->drop_diameter > 0 && p->drop_diameter <= 0.01) ||
-        !soak_in_range(p->splat_radius, 0, 1) || !soak_in_range(p->evaporation_mm_h, 0, 1000) ||
-        !soak_in_range(p->retention, 0, 0.1) || !(p->saturation_depth > 0 && p->saturation_depth <= 1))
+    if (!soak_in_range(p->spread_deg, 0, SOAK_RAIN_MAX_SPREAD) || !soak_in_range(p->duration, 0, SOAK_RAIN_MAX_DURATION) ||
+        !soak_in_range(p->rainfall_mm_h, 0, SOAK_RAIN_MAX_RATE) ||
+        !(p->drop_diameter > 0 && p->drop_diameter <= SOAK_RAIN_MAX_DROP) ||
+        !soak_in_range(p->splat_radius, 0, SOAK_RAIN_MAX_SPLAT) ||
+        !soak_in_range(p->evaporation_mm_h, 0, SOAK_RAIN_MAX_RATE) ||
+        !soak_in_range(p->retention, 0, SOAK_RAIN_MAX_RETENTION) ||
+        !(p->saturation_depth > 0 && p->saturation_depth <= SOAK_RAIN_MAX_SATURATION))
         return SOAK_ERR_ARG;
     return SOAK_OK;
 }

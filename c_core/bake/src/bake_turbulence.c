@@ -164,10 +164,12 @@ soak_status soak_turbulence_check(const soak_turbulence_params *p)
 {
     if (!p) return SOAK_ERR_NULL;
     if (!(p->sum == SOAK_NOISE_FBM || p->sum == SOAK_NOISE_TURBULENCE)) return SOAK_ERR_ARG;
-    if (!(p->octaves >= 1 && p->octaves <= 24)) return SOAK_ERR_ARG;
-    if (!soak_in_range(p->frequency, 1e-9, 8192) || !soak_in_range(p->lacunarity, 1, 16) ||
-        !soak_in_range(p->gain, 0, 1) || !soak_in_range(p->z, -1e6, 1e6) || !soak_in_range(p->threshold, -2, 2) ||
-        !soak_in_range(p->softness, 0, 2))
+    if (!(p->octaves >= 1 && p->octaves <= SOAK_NOISE_MAX_OCTAVES)) return SOAK_ERR_ARG;
+    if (!soak_in_range(p->frequency, 1e-9, SOAK_NOISE_MAX_FREQUENCY) ||
+        !soak_in_range(p->lacunarity, 1, SOAK_NOISE_MAX_LACUNARITY) || !soak_in_range(p->gain, 0, 1) ||
+        !soak_in_range(p->z, -SOAK_NOISE_MAX_Z, SOAK_NOISE_MAX_Z) ||
+        !soak_in_range(p->threshold, -SOAK_NOISE_MAX_THRESHOLD, SOAK_NOISE_MAX_THRESHOLD) ||
+        !soak_in_range(p->softness, 0, SOAK_NOISE_MAX_SOFTNESS))
         return SOAK_ERR_ARG;
     double top = pow(p->lacunarity, p->octaves - 1);
     /* Keep every lattice index inside int32: at most MAX_TOP_CELLS cells

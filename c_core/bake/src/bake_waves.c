@@ -22,8 +22,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-#define MAX_WAVES 64
-#define MAX_FRONT_OCTAVES 16
 
 void soak_waves_defaults(soak_waves_params *p)
 {
@@ -48,14 +46,17 @@ void soak_waves_defaults(soak_waves_params *p)
 soak_status soak_waves_check(const soak_waves_params *p)
 {
     if (!p) return SOAK_ERR_NULL;
-    if (!(p->waves >= 1 && p->waves <= MAX_WAVES) || !(p->front_octaves >= 1 && p->front_octaves <= MAX_FRONT_OCTAVES))
+    if (!(p->waves >= 1 && p->waves <= SOAK_WAVES_MAX_WAVES) ||
+        !(p->front_octaves >= 1 && p->front_octaves <= SOAK_WAVES_MAX_FRONT_OCTAVES))
         return SOAK_ERR_ARG;
-    if (!soak_in_range(p->direction_deg, -3600, 3600) || !soak_in_range(p->shore, -10, 10) ||
-        !soak_in_range(p->reach_min, 0, 10) || !soak_in_range(p->reach_max, p->reach_min, 10) ||
-        !soak_in_range(p->period, 1e-9, 1e6) || !soak_in_range(p->dry_time, 1e-9, 1e9) ||
-        !soak_in_range(p->dry_length, 1e-9, 100) || !soak_in_range(p->fringe, 1e-9, 100) ||
-        !soak_in_range(p->front_amplitude, 0, 10) || !soak_in_range(p->front_frequency, 1e-9, 4096) ||
-        !soak_in_range(p->edge, 0, 10) || !soak_in_range(p->time, -1e12, 1e12))
+    const double len = SOAK_WAVES_MAX_LENGTH, dry_len = SOAK_WAVES_MAX_DRY_LENGTH;
+    if (!soak_in_range(p->direction_deg, -SOAK_WAVES_MAX_DIRECTION, SOAK_WAVES_MAX_DIRECTION) ||
+        !soak_in_range(p->shore, -len, len) || !soak_in_range(p->reach_min, 0, len) ||
+        !soak_in_range(p->reach_max, p->reach_min, len) || !soak_in_range(p->period, 1e-9, SOAK_WAVES_MAX_PERIOD) ||
+        !soak_in_range(p->dry_time, 1e-9, SOAK_WAVES_MAX_DRY_TIME) || !soak_in_range(p->dry_length, 1e-9, dry_len) ||
+        !soak_in_range(p->fringe, 1e-9, dry_len) || !soak_in_range(p->front_amplitude, 0, len) ||
+        !soak_in_range(p->front_frequency, 1e-9, SOAK_WAVES_MAX_FRONT_FREQUENCY) || !soak_in_range(p->edge, 0, len) ||
+        !soak_in_range(p->time, -1e12, 1e12))
         return SOAK_ERR_ARG;
     /* Wave indices must fit in int32. */
     if (!(fabs(p->time / p->period) <= 1e9)) return SOAK_ERR_ARG;
@@ -72,7 +73,7 @@ typedef struct wave_set {
     double nx, ny; /* inland unit direction */
     double norm;   /* 1 / sum of fBm octave weights */
     int n;
-    wave w[MAX_WAVES];
+    wave w[SOAK_WAVES_MAX_WAVES];
 } wave_set;
 
 static void make_set(const soak_waves_params *p, wave_set *S)

@@ -36,10 +36,6 @@
 
 #include "soak/fresnel.h"
 
-#define FILM_N_MIN 1.0
-#define FILM_N_MAX 3.0
-#define FILM_ALPHA_MAX 1e6
-#define FILM_THICKNESS_MAX 1e3
 #define GRADE_LEVELS 10
 
 /* 12-point Gauss-Legendre on [-1,1], positive half. */
@@ -51,8 +47,8 @@ static const double gl_w[6] = {0.24914704581340279, 0.23349253653835481, 0.20316
 soak_status soak_film_validate(const soak_film *film)
 {
     if (!film) return SOAK_ERR_NULL;
-    if (!soak_in_range(film->n, FILM_N_MIN, FILM_N_MAX) || !soak_in_range(film->alpha, 0.0, FILM_ALPHA_MAX) ||
-        !soak_in_range(film->thickness, 0.0, FILM_THICKNESS_MAX))
+    if (!soak_in_range(film->n, SOAK_FILM_MIN_N, SOAK_FILM_MAX_N) || !soak_in_range(film->alpha, 0.0, SOAK_FILM_MAX_ALPHA) ||
+        !soak_in_range(film->thickness, 0.0, SOAK_FILM_MAX_THICKNESS))
         return SOAK_ERR_ARG;
     return SOAK_OK;
 }
@@ -167,7 +163,7 @@ soak_status soak_film_setup(const soak_film *film, soak_film_ctx *ctx)
 /* A context not made by soak_film_setup (or corrupted) is rejected cheaply. */
 static int ctx_ok(const soak_film_ctx *c)
 {
-    return soak_in_range(c->n, FILM_N_MIN, FILM_N_MAX) && soak_in_range(c->tau, 0.0, FILM_ALPHA_MAX * FILM_THICKNESS_MAX) &&
+    return soak_in_range(c->n, SOAK_FILM_MIN_N, SOAK_FILM_MAX_N) && soak_in_range(c->tau, 0.0, SOAK_FILM_MAX_ALPHA * SOAK_FILM_MAX_THICKNESS) &&
            soak_in_range(c->escape, 0.0, 1.0) && soak_in_range(c->ret, 0.0, 1.0) && soak_in_range(c->spec_avg, 0.0, 1.0);
 }
 

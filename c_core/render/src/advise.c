@@ -244,8 +244,9 @@ soak_status soak_advise_scene(const soak_scene *scene, double tol, const soak_ad
     soak_advise_options o;
     if (opt) o = *opt;
     else soak_advise_options_default(&o);
-    if (!(tol > 0 && tol <= 10) || !(o.grid_w >= 1 && o.grid_w <= 1024) || !(o.grid_h >= 1 && o.grid_h <= 1024) ||
-        !(o.max_hits >= 1 && o.max_hits <= 4096) || !(o.samples >= 16 && o.samples <= 1000000) ||
+    if (!(tol > 0 && tol <= SOAK_ADVISE_MAX_TOL) || !(o.grid_w >= 1 && o.grid_w <= SOAK_ADVISE_MAX_GRID) ||
+        !(o.grid_h >= 1 && o.grid_h <= SOAK_ADVISE_MAX_GRID) || !(o.max_hits >= 1 && o.max_hits <= 4096) ||
+        !(o.samples >= SOAK_ADVISE_MIN_SAMPLES && o.samples <= SOAK_ADVISE_MAX_SAMPLES) ||
         !(o.cost_rounds >= 1 && o.cost_rounds <= 100000))
         return SOAK_ERR_ARG;
     int nmat = scene->n_materials;

@@ -260,8 +260,9 @@ static soak_status check_options(const soak_scene *scene, const soak_render_opti
     *W = w;
     *H = h;
     *spp = n;
-    if (!(w >= 1 && w <= 16384 && h >= 1 && h <= 16384 && n >= 1 && n <= 10000000 && threads >= 1 && threads <= 256) ||
-        !soak_in_range(opt->time_limit, 0, 1e9) || opt->max_depth < 0) {
+    if (!(w >= 1 && w <= SOAK_RENDER_MAX_SIZE && h >= 1 && h <= SOAK_RENDER_MAX_SIZE && n >= 1 &&
+          n <= SOAK_RENDER_MAX_SPP && threads >= 1 && threads <= SOAK_RENDER_MAX_THREADS) ||
+        !soak_in_range(opt->time_limit, 0, SOAK_RENDER_MAX_TIME) || opt->max_depth < 0) {
         if (err && errlen) snprintf(err, errlen, "render options out of range");
         return SOAK_ERR_ARG;
     }

@@ -2,6 +2,7 @@
  * environment, lights and objects. Materials and wetness: scene_material.c. */
 #define _POSIX_C_SOURCE 200809L
 #include "soak/scene.h"
+#include "soak/render.h"
 
 #include <errno.h>
 #include <math.h>
@@ -201,10 +202,10 @@ static soak_status parse_render(scene_ctx *c, const cJSON *j)
         if (st == SOAK_OK) st = sj_num(c, j, "caustic_radius", "render", 0, 1e12, 0, 0, &rad);
         if (st == SOAK_OK && np > 0 && !(rad > 0))
             return sj_fail(c, SOAK_ERR_ARG, "render.caustic_radius", "must be > 0 when render.caustic_photons is set");
-        if (st == SOAK_OK) st = sj_num(c, j, "width", "render", 1, 16384, 0, 256, &w);
-        if (st == SOAK_OK) st = sj_num(c, j, "height", "render", 1, 16384, 0, 192, &h);
-        if (st == SOAK_OK) st = sj_num(c, j, "spp", "render", 1, 1e7, 0, 16, &spp);
-        if (st == SOAK_OK) st = sj_num(c, j, "max_depth", "render", 1, 1e5, 0, 256, &md);
+        if (st == SOAK_OK) st = sj_num(c, j, "width", "render", 1, SOAK_RENDER_MAX_SIZE, 0, 256, &w);
+        if (st == SOAK_OK) st = sj_num(c, j, "height", "render", 1, SOAK_RENDER_MAX_SIZE, 0, 192, &h);
+        if (st == SOAK_OK) st = sj_num(c, j, "spp", "render", 1, SOAK_RENDER_MAX_SPP, 0, 16, &spp);
+        if (st == SOAK_OK) st = sj_num(c, j, "max_depth", "render", 1, SOAK_RENDER_MAX_DEPTH, 0, 256, &md);
         if (st == SOAK_OK) st = whole(c, "render.width", w);
         if (st == SOAK_OK) st = whole(c, "render.height", h);
         if (st == SOAK_OK) st = whole(c, "render.spp", spp);

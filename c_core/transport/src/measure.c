@@ -8,6 +8,7 @@
 #include <stdatomic.h>
 #include <stdlib.h>
 
+#include "soak/film.h"
 #include "soak/fresnel.h"
 #include "soak/medium.h"
 #include "soak/rng.h"
@@ -47,18 +48,19 @@ soak_status soak_measure_validate(const soak_measure_setup *s)
     if (s->quantity == SOAK_MEASURE_T && s->config != SOAK_MEASURE_SLAB) return SOAK_ERR_ARG;
     if (s->diffuse_incidence != 0 && s->diffuse_incidence != 1) return SOAK_ERR_ARG;
     if (!s->diffuse_incidence && !(s->cos_incidence > 0.0 && s->cos_incidence <= 1.0)) return SOAK_ERR_ARG;
-    if (!soak_in_range(s->ior, 1.0, 3.0)) return SOAK_ERR_ARG;
-    if (s->paths < 1 || s->paths > 1000000000000LL || s->threads < 1 || s->threads > 256 || s->max_events < 1)
+    if (!soak_in_range(s->ior, SOAK_MEASURE_MIN_IOR, SOAK_MEASURE_MAX_IOR)) return SOAK_ERR_ARG;
+    if (s->paths < 1 || s->paths > SOAK_MEASURE_MAX_PATHS || s->threads < 1 || s->threads > SOAK_MEASURE_MAX_THREADS ||
+        s->max_events < 1)
         return SOAK_ERR_ARG;
     if (s->roulette != 0 && s->roulette != 1) return SOAK_ERR_ARG;
     if (s->config == SOAK_MEASURE_FILM) {
-        if (!soak_in_range(s->base_albedo, 0.0, 1.0) || !soak_in_range(s->film_alpha, 0.0, 1e6) ||
-            !soak_in_range(s->film_thickness, 0.0, 1e3))
+        if (!soak_in_range(s->base_albedo, 0.0, 1.0) || !soak_in_range(s->film_alpha, 0.0, SOAK_FILM_MAX_ALPHA) ||
+            !soak_in_range(s->film_thickness, 0.0, SOAK_FILM_MAX_THICKNESS))
             return SOAK_ERR_ARG;
         return SOAK_OK;
     }
     if (!soak_in_range(s->albedo, 0.0, 1.0)) return SOAK_ERR_ARG;
-    if (s->config == SOAK_MEASURE_SLAB && !(s->tau > 0.0 && s->tau <= 1e6)) return SOAK_ERR_ARG;
+    if (s->config == SOAK_MEASURE_SLAB && !(s->tau > 0.0 && s->tau <= SOAK_MEASURE_MAX_TAU)) return SOAK_ERR_ARG;
     return soak_hg2_validate(&s->phase);
 }
 

@@ -97,6 +97,15 @@ typedef enum soak_noise_sum {
     SOAK_NOISE_TURBULENCE /* sum_o gain^o |noise(lacunarity^o p)| (Perlin 1985) */
 } soak_noise_sum;
 
+/* Limits of soak_turbulence_params (soak_turbulence_check); the drying
+ * noise shares the octaves and frequency limits. */
+#define SOAK_NOISE_MAX_OCTAVES 24
+#define SOAK_NOISE_MAX_FREQUENCY 8192
+#define SOAK_NOISE_MAX_LACUNARITY 16
+#define SOAK_NOISE_MAX_Z 1e6
+#define SOAK_NOISE_MAX_THRESHOLD 2 /* threshold in [-max, max] */
+#define SOAK_NOISE_MAX_SOFTNESS 2
+
 typedef struct soak_turbulence_params {
     uint64_t seed;
     soak_noise_sum sum;
@@ -136,6 +145,16 @@ soak_status soak_bake_turbulence(const soak_turbulence_params *p, int width, int
  * origin; s = signed distance inland from the still-water line. Wave j
  * (any integer) arrives at time j*period and runs up to reach_j (hashed in
  * [reach_min, reach_max]) plus an fBm displacement along the shore. */
+/* Limits of soak_waves_params (soak_waves_check). */
+#define SOAK_WAVES_MAX_WAVES 64
+#define SOAK_WAVES_MAX_FRONT_OCTAVES 16
+#define SOAK_WAVES_MAX_DIRECTION 3600     /* degrees, either way */
+#define SOAK_WAVES_MAX_LENGTH 10          /* |shore|, reach, front amplitude, edge */
+#define SOAK_WAVES_MAX_PERIOD 1e6
+#define SOAK_WAVES_MAX_DRY_TIME 1e9
+#define SOAK_WAVES_MAX_DRY_LENGTH 100     /* dry length, fringe */
+#define SOAK_WAVES_MAX_FRONT_FREQUENCY 4096
+
 typedef struct soak_waves_params {
     uint64_t seed;
     int waves;              /* waves still visible, 1..64 */
@@ -180,6 +199,13 @@ typedef enum soak_drying_mode {
     SOAK_DRYING_SCHEDULE = 0, /* Hnat et al. 2006 pore schedule, borders first */
     SOAK_DRYING_DIFFUSION     /* evaporation + lateral capillary diffusion, implicit */
 } soak_drying_mode;
+
+/* Limits of soak_drying_params (soak_drying_check); its noise has the
+ * turbulence's octaves and frequency limits. */
+#define SOAK_DRYING_MAX_THRESHOLD 1e6 /* threshold in [-max, max] */
+#define SOAK_DRYING_MAX_TIME 1e12     /* time, drying_time */
+#define SOAK_DRYING_MAX_LENGTH 1e6    /* diffusion_length, pixels */
+#define SOAK_DRYING_MAX_STEPS 100000
 
 typedef struct soak_drying_params {
     soak_drying_mode mode;
@@ -239,7 +265,8 @@ soak_status soak_map_clamp(const soak_image *in, double lo, double hi, soak_imag
  * clamped to the output range if clamp. */
 soak_status soak_map_remap(const soak_image *in, double in_lo, double in_hi, double out_lo, double out_hi, int clamp,
                            soak_image *out);
-/* Separable Gaussian, sigma in (0, 1000] pixels, kernel radius ceil(3 sigma),
+#define SOAK_BLUR_MAX_SIGMA 1000 /* pixels */
+/* Separable Gaussian, sigma in (0, SOAK_BLUR_MAX_SIGMA], kernel radius ceil(3 sigma),
  * normalised weights; edges clamp, or wrap when wrap (tileable maps). */
 soak_status soak_map_blur(const soak_image *in, double sigma, int wrap, const soak_bake_exec *exec, soak_image *out);
 

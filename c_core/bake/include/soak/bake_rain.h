@@ -70,6 +70,18 @@ typedef enum soak_rain_sky {
     SOAK_RAIN_SKY_HEMISPHERE  /* cosine-weighted hemisphere about n (ambient occlusion) */
 } soak_rain_sky;
 
+/* Limits of soak_rain_params (soak_rain_check). */
+#define SOAK_RAIN_MAX_RAYS 65536
+#define SOAK_RAIN_MAX_SPREAD 89      /* degrees */
+#define SOAK_RAIN_MAX_DURATION 1e7   /* s */
+#define SOAK_RAIN_MAX_STEPS 100000   /* time steps, flow iterations */
+#define SOAK_RAIN_MAX_RATE 1000      /* rainfall, evaporation, mm/h */
+#define SOAK_RAIN_MAX_DROP 0.01      /* drop diameter, m */
+#define SOAK_RAIN_MAX_SPLAT 1        /* m */
+#define SOAK_RAIN_MAX_RETENTION 0.1  /* m */
+#define SOAK_RAIN_MAX_SATURATION 1   /* m */
+#define SOAK_RAIN_MAX_GUTTER 64      /* texels */
+
 typedef struct soak_rain_params {
     uint64_t seed;
     int rays;               /* rays per texel, 1..65536 */

@@ -21,10 +21,15 @@
 #include "soak/status.h"
 #include "soak/vec.h"
 
+#define SOAK_FILM_MIN_N 1.0
+#define SOAK_FILM_MAX_N 3.0
+#define SOAK_FILM_MAX_ALPHA 1e6     /* 1/m */
+#define SOAK_FILM_MAX_THICKNESS 1e3 /* m */
+
 typedef struct soak_film {
-    double n;         /* film index relative to the air above, [1, 3] */
-    double alpha;     /* absorption coefficient of the liquid, 1/m, [0, 1e6] */
-    double thickness; /* film thickness, m, [0, 1e3]; 0 = no absorption */
+    double n;         /* film index relative to the air above, [SOAK_FILM_MIN_N, SOAK_FILM_MAX_N] */
+    double alpha;     /* absorption coefficient of the liquid, 1/m, [0, SOAK_FILM_MAX_ALPHA] */
+    double thickness; /* film thickness, m, [0, SOAK_FILM_MAX_THICKNESS]; 0 = no absorption */
 } soak_film;
 
 soak_status soak_film_validate(const soak_film *film);

@@ -26,11 +26,15 @@
 #include "soak/status.h"
 
 #define SOAK_ADVISE_MAX_MODELS 32
+#define SOAK_ADVISE_MAX_TOL 10 /* tol in (0, 10] */
+#define SOAK_ADVISE_MAX_GRID 1024
+#define SOAK_ADVISE_MIN_SAMPLES 16
+#define SOAK_ADVISE_MAX_SAMPLES 1000000
 
 typedef struct soak_advise_options {
-    int grid_w, grid_h; /* primary rays, [1, 1024] each (default 32 x 24) */
+    int grid_w, grid_h; /* primary rays, [1, SOAK_ADVISE_MAX_GRID] each (default 32 x 24) */
     int max_hits;       /* hits used per material, [1, 4096] (default 32) */
-    int samples;        /* albedo samples per state and hit, [16, 1e6] (default 256) */
+    int samples;        /* albedo samples per state and hit, [SOAK_ADVISE_MIN_SAMPLES, SOAK_ADVISE_MAX_SAMPLES] (default 256) */
     uint64_t seed;      /* default 1 */
     int cost_rounds;    /* rounds of 64 evaluations per cost measurement (default 50) */
 } soak_advise_options;
@@ -53,7 +57,7 @@ typedef struct soak_advice {
 } soak_advice;
 
 /* One entry per material of the scene (emitters included, kept), in the
- * scene's order; *advice is malloc'd (free()). tol in (0, 10]. */
+ * scene's order; *advice is malloc'd (free()). tol in (0, SOAK_ADVISE_MAX_TOL]. */
 soak_status soak_advise_scene(const soak_scene *scene, double tol, const soak_advise_options *opt, soak_advice **advice,
                               int *n, char *err, size_t errlen);
 

@@ -31,6 +31,14 @@
 #include "soak/scene.h"
 #include "soak/status.h"
 
+/* Limits of soak_render_options and of a scene's "render" block (scene.c);
+ * `soak render` takes its option ranges from here. */
+#define SOAK_RENDER_MAX_SIZE 16384    /* width, height */
+#define SOAK_RENDER_MAX_SPP 10000000  /* samples per pixel */
+#define SOAK_RENDER_MAX_DEPTH 100000  /* path length */
+#define SOAK_RENDER_MAX_THREADS 256
+#define SOAK_RENDER_MAX_TIME 1e9      /* time_limit, seconds */
+
 typedef struct soak_render_options {
     int width, height;   /* 0: the scene's */
     int spp;             /* samples per pixel; 0: the scene's */

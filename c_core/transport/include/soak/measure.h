@@ -40,6 +40,14 @@ typedef enum soak_measure_quantity {
     SOAK_MEASURE_T  /* transmittance (SLAB only) */
 } soak_measure_quantity;
 
+/* Limits of soak_measure_setup (soak_measure_validate); `soak measure` takes
+ * its option ranges from here and from soak/film.h. */
+#define SOAK_MEASURE_MIN_IOR 1.0
+#define SOAK_MEASURE_MAX_IOR 3.0
+#define SOAK_MEASURE_MAX_TAU 1e6
+#define SOAK_MEASURE_MAX_PATHS 1000000000000LL
+#define SOAK_MEASURE_MAX_THREADS 256
+
 typedef struct soak_measure_setup {
     soak_measure_config config;
     soak_measure_quantity quantity;
