@@ -304,23 +304,15 @@ static void write_index(pov_out *o, const char *name, const int *v, int n)
     out(o, "\n}\n");
 }
 
-static void write_tables(pov_out *o, pov_table *tabs, int nt)
+/* The per-knot tables: scalars and vectors of every table, indexed by
+ * Soak_K_Start/Soak_K_Count. */
+static void write_knot_tables(pov_out *o, const pov_table *tabs, int nt, int *start, int *count)
 {
-    int *start = malloc((size_t)nt * 4 * sizeof *start);
-    if (!start) {
-        o->bad = 1;
-        return;
-    }
-    int *count = start + nt, *bstart = start + 2 * nt, *ws = start + 3 * nt;
-    int total = 0, btotal = 0, wtotal = 0;
+    int total = 0;
     for (int t = 0; t < nt; ++t) {
         start[t] = total;
         count[t] = tabs[t].n;
         total += tabs[t].n;
-        bstart[t] = btotal;
-        btotal += tabs[t].na * tabs[t].nw;
-        ws[t] = wtotal;
-        wtotal += tabs[t].na + tabs[t].nw;
     }
     out(o, "// Knot tables: table t = preset * Soak_N_Liquids + liquid; knots\n");
     out(o, "// Soak_K_Start[t] .. Soak_K_Start[t] + Soak_K_Count[t] - 1; interpolate linearly in wetness.\n");
@@ -344,45 +336,61 @@ static void write_tables(pov_out *o, pov_table *tabs, int nt)
             }
         out(o, "\n}\n");
     }
+}
+
+/* The nodes and values of the any-base-colour tables (dry albedo x wetness).
+ * idx: 4 nt ints of scratch for the index arrays. */
+static void write_base_tables(pov_out *o, const pov_table *tabs, int nt, int *idx)
+{
+    int *node_start = idx, *value_start = idx + nt, *n_albedo = idx + 2 * nt, *n_wet = idx + 3 * nt;
+    int nodes = 0, values = 0;
+    for (int t = 0; t < nt; ++t) {
+        node_start[t] = nodes;
+        nodes += tabs[t].na + tabs[t].nw;
+        value_start[t] = values;
+        values += tabs[t].na * tabs[t].nw;
+        n_albedo[t] = tabs[t].na;
+        n_wet[t] = tabs[t].nw;
+    }
     out(o, "\n// The wetness function for any base colour: per table t, dry-albedo nodes\n");
     out(o, "// Soak_B_Nodes[Soak_B_Node_Start[t] + j], j < Soak_B_N_Albedo[t], then wetness nodes\n");
     out(o, "// Soak_B_Nodes[Soak_B_Node_Start[t] + Soak_B_N_Albedo[t] + i], i < Soak_B_N_Wet[t];\n");
     out(o, "// value <r,g,b> = wet diffuse albedo of a grey dry albedo a_j at w_i (channel k: dry\n");
     out(o, "// albedo a_j in channel k) at Soak_B_Value[Soak_B_Value_Start[t] + i * Soak_B_N_Albedo[t] + j].\n");
-    write_index(o, "Soak_B_Node_Start", ws, nt);
-    int *na = malloc((size_t)nt * 2 * sizeof *na);
-    if (!na) {
-        free(start);
-        o->bad = 1;
-        return;
-    }
-    for (int t = 0; t < nt; ++t) {
-        na[t] = tabs[t].na;
-        na[nt + t] = tabs[t].nw;
-    }
-    write_index(o, "Soak_B_N_Albedo", na, nt);
-    write_index(o, "Soak_B_N_Wet", na + nt, nt);
-    write_index(o, "Soak_B_Value_Start", bstart, nt);
-    free(na);
-    out(o, "#declare Soak_B_Nodes = array[%d] {\n  ", wtotal);
+    write_index(o, "Soak_B_Node_Start", node_start, nt);
+    write_index(o, "Soak_B_N_Albedo", n_albedo, nt);
+    write_index(o, "Soak_B_N_Wet", n_wet, nt);
+    write_index(o, "Soak_B_Value_Start", value_start, nt);
+    out(o, "#declare Soak_B_Nodes = array[%d] {\n  ", nodes);
     for (int t = 0, i = 0; t < nt; ++t) {
         for (int j = 0; j < tabs[t].na; ++j, ++i) {
             num(o, tabs[t].a[j]);
-            sep(o, i, wtotal, 10);
+            sep(o, i, nodes, 10);
         }
         for (int j = 0; j < tabs[t].nw; ++j, ++i) {
             num(o, tabs[t].w[j]);
-            sep(o, i, wtotal, 10);
+            sep(o, i, nodes, 10);
         }
     }
-    out(o, "\n}\n#declare Soak_B_Value = array[%d] {\n  ", btotal);
+    out(o, "\n}\n#declare Soak_B_Value = array[%d] {\n  ", values);
     for (int t = 0, i = 0; t < nt; ++t)
         for (int k = 0; k < tabs[t].na * tabs[t].nw; ++k, ++i) {
             vec(o, tabs[t].base[k]);
-            sep(o, i, btotal, 3);
+            sep(o, i, values, 3);
         }
     out(o, "\n}\n");
-    free(start);
+}
+
+static void write_tables(pov_out *o, pov_table *tabs, int nt)
+{
+    int *idx = malloc((size_t)nt * 4 * sizeof *idx);
+    if (!idx) {
+        o->bad = 1;
+        return;
+    }
+    write_knot_tables(o, tabs, nt, idx, idx + nt);
+    write_base_tables(o, tabs, nt, idx);
+    free(idx);
 }
 
 soak_status soak_export_write_povray(const soak_preset_db *db, FILE *f, char *err, size_t errlen)
