@@ -10,6 +10,7 @@
 #include "soak/film.h"
 #include "soak/fresnel.h"
 #include "soak/json_writer.h"
+#include "soak/preset_json.h"
 #include "soak/sheet.h"
 
 #define JSON_DIGITS 7
@@ -143,21 +144,7 @@ static soak_status add_material(soak_json *j, cJSON *list, const soak_preset_db 
     cJSON *o = soak_json_object(j, list, NULL);
     if (!o) return SOAK_ERR_NOMEM;
     const int conductor = p->kind == SOAK_KIND_CONDUCTOR;
-    const int porous = soak_material_kind_porous(p->kind);
-    soak_json_str(j, o, "name", p->name);
-    soak_json_str(j, o, "display_name", p->display_name);
-    soak_json_str(j, o, "kind", soak_material_kind_name(p->kind));
-    soak_json_rgb(j, o, "dry_albedo", p->albedo);
-    soak_json_num(j, o, "ggx_alpha_dry", p->ggx_alpha_dry);
-    soak_json_num(j, o, "ggx_alpha_wet", p->ggx_alpha_wet);
-    if (conductor) {
-        soak_json_rgb(j, o, "ior_n", p->ior_n);
-        soak_json_rgb(j, o, "ior_k", p->ior_k);
-    } else {
-        soak_json_num(j, o, "ior", p->ior);
-    }
-    soak_json_num(j, o, "porosity", p->porosity);
-    soak_json_num(j, o, "saturation_wetness", porous ? p->porosity : 0.0);
+    soak_json_preset_optics(j, o, p, "dry_albedo", 0);
     soak_json_num(j, o, "t_fill", p->t_fill);
     soak_json_num(j, o, "film_thickness_m", 1e-3 * p->film_thickness_mm);
     soak_json_num(j, o, "sheet_thickness_m", 1e-3 * p->thickness_mm);

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "soak/json_writer.h"
+#include "soak/preset_json.h"
 #include "soak/wetness.h"
 
 static void add_phase(soak_json *j, cJSON *o, const char *key, const soak_hg2 *ph)
@@ -50,23 +51,7 @@ static soak_status add_material(soak_json *j, cJSON *arr, const soak_preset *p, 
     if (!o) return SOAK_ERR_NOMEM;
     const int conductor = p->kind == SOAK_KIND_CONDUCTOR;
     const int porous = soak_material_kind_porous(p->kind);
-    soak_json_str(j, o, "name", p->name);
-    soak_json_str(j, o, "display_name", p->display_name);
-    soak_json_str(j, o, "kind", soak_material_kind_name(p->kind));
-    soak_json_rgb(j, o, "albedo", p->albedo);
-    soak_json_str(j, o, "albedo_source", p->albedo_source);
-    soak_json_num(j, o, "ggx_alpha_dry", p->ggx_alpha_dry);
-    soak_json_num(j, o, "ggx_alpha_wet", p->ggx_alpha_wet);
-    soak_json_str(j, o, "roughness_source", p->roughness_source);
-    if (conductor) {
-        soak_json_rgb(j, o, "ior_n", p->ior_n);
-        soak_json_rgb(j, o, "ior_k", p->ior_k);
-    } else {
-        soak_json_num(j, o, "ior", p->ior);
-    }
-    soak_json_str(j, o, "ior_source", p->ior_source);
-    soak_json_num(j, o, "porosity", p->porosity);
-    soak_json_num(j, o, "saturation_wetness", porous ? p->porosity : 0.0);
+    soak_json_preset_optics(j, o, p, "albedo", 1);
     soak_json_num(j, o, "s_p", p->s_p);
     if (porous) soak_json_str(j, o, "porosity_source", p->porosity_source);
     if (!conductor) {
