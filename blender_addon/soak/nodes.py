@@ -758,6 +758,17 @@ def _connect_specular_metal(tree, gn, bsdf, settings):
         tint.default_value = (1.0, 1.0, 1.0, 1.0)
 
 
+def _undo_conductor_metal(bsdf, restore, settings):
+    """Leaving a conductor preset: the Metallic that _metal_for_conductor set
+    goes back to the user's dry value (the restore record holds it)."""
+    met = compat.principled_input(bsdf, "metallic")
+    if met is None or met.is_linked or data.material(settings.preset)["kind"] == "conductor":
+        return
+    rec = restore["inputs"].get(met.identifier)
+    if rec is not None and not rec["links"] and rec["value"] == 0.0 and met.default_value == 1.0:
+        met.default_value = 0.0
+
+
 def _set_ref(n, key):
     n[REF_KEY] = key
     return key
@@ -1075,6 +1086,7 @@ def _rebuild(mat, gn, settings):
         gn.inputs["Fill Time"].default_value = m["t_fill"]
     if bsdf is not None:
         before = _bsdf_state(bsdf)
+        _undo_conductor_metal(bsdf, restore, settings)
         connect_outputs(tree, gn, bsdf, settings)
         has_sheet = bool(_sheet_pair(tree, bsdf))
         if m["kind"] == "thin_sheet" and not has_sheet and bsdf.outputs[0].is_linked:

@@ -661,6 +661,18 @@ def test_metal_preset(ob):
         check(bpy.ops.soak.make_dry() == {"FINISHED"}, "make_dry after the copper preset")
         got = b.inputs["Metallic"].default_value
         check(abs(got - start) < 1e-6, f"Make Dry after the copper preset: Metallic {got}, want {start}")
+    # copper, then sand after Make Wet: the Metallic copper set goes back
+    mat = textured_material("Metal switch")
+    use(ob, mat)
+    b = mat.node_tree.nodes["Principled BSDF"]
+    mat.soak.preset = "copper"
+    check(bpy.ops.soak.make_wet() == {"FINISHED"}, "make_wet with the copper preset (switch)")
+    mat.soak.preset = "sand"
+    got = b.inputs["Metallic"].default_value
+    check(got == 0.0, f"copper -> sand after Make Wet: Metallic {got}, want the dry 0")
+    check(bsdf_fed_by_group(mat)["Base Color"], "copper -> sand: the group no longer feeds the BSDF")
+    bpy.ops.soak.make_dry()
+    check(b.inputs["Metallic"].default_value == 0.0, "Make Dry after copper -> sand: Metallic not 0")
     mat = textured_material("Metal sand")
     use(ob, mat)
     check(bpy.ops.soak.make_wet() == {"FINISHED"}, "make_wet with the sand preset")
