@@ -33,23 +33,32 @@ static soak_rgb mean_free_path_m(soak_rgb ss, soak_rgb sa)
 
 enum col_id {
     C_WETNESS, C_FILL, C_COVERAGE, C_ALBEDO, C_ALBEDO_TOTAL, C_ALBEDO_SUB, C_ALBEDO_FILM, C_ALPHA, C_ROUGHNESS,
-    C_SPEC_W, C_WATER_SPEC_W, C_G1, C_G2, C_W, C_MEAN_COS, C_OMEGA, C_SIGMA_S, C_SIGMA_A, C_MFP, C_SHEET_T, C_COUNT
+    C_SPEC_W, C_WATER_SPEC_W, C_G1, C_G2, C_W, C_MEAN_COS, C_OMEGA, C_SIGMA_S, C_SIGMA_A, C_MFP, C_SHEET_T, C_VIEW,
+    C_COUNT
 };
 
 static const char *const col_names[C_COUNT] = {
     "wetness", "pore_fill", "film_coverage", "albedo", "albedo_total", "albedo_subsurface", "albedo_film",
     "ggx_alpha", "roughness", "specular_weight", "water_specular_weight", "phase_g1", "phase_g2", "phase_w",
     "mean_cosine", "single_scattering_albedo", "sigma_s_per_m", "sigma_a_per_m", "mean_free_path_m",
-    "sheet_transmittance"};
+    "sheet_transmittance", "view_factor"};
 
 static int column_applies(int c, soak_material_kind kind)
 {
+    if (c == C_VIEW) return 1; /* conductors: all ones (normal-incidence model) */
     if (kind == SOAK_KIND_CONDUCTOR && c >= C_G1) return 0;
     if (c == C_SHEET_T) return kind == SOAK_KIND_THIN_SHEET;
     return 1;
 }
 
-static void push_row(soak_json *j, cJSON *cols[C_COUNT], const soak_wet_params *p, const soak_rgb *sheet_t)
+static void push_view(soak_json *j, cJSON *col, const soak_rgb view[SOAK_EXPORT_VIEW_N])
+{
+    cJSON *row = soak_json_array(j, col, NULL);
+    for (int i = 0; row && i < SOAK_EXPORT_VIEW_N; ++i) soak_json_rgb(j, row, NULL, view[i]);
+}
+
+static void push_row(soak_json *j, cJSON *cols[C_COUNT], const soak_wet_params *p, const soak_rgb *sheet_t,
+                     const soak_rgb view[SOAK_EXPORT_VIEW_N])
 {
     double scalars[C_COUNT] = {0};
     scalars[C_WETNESS] = p->wetness;
@@ -75,6 +84,7 @@ static void push_row(soak_json *j, cJSON *cols[C_COUNT], const soak_wet_params *
         case C_SIGMA_A: soak_json_rgb(j, cols[c], NULL, rgb_scale(p->sigma_a, 1000.0)); break;
         case C_MFP: soak_json_rgb(j, cols[c], NULL, mean_free_path_m(p->sigma_s, p->sigma_a)); break;
         case C_SHEET_T: soak_json_rgb(j, cols[c], NULL, *sheet_t); break;
+        case C_VIEW: push_view(j, cols[c], view); break;
         default: soak_json_num(j, cols[c], NULL, scalars[c]);
         }
     }
@@ -94,10 +104,11 @@ static soak_status add_knot_table(soak_json *j, cJSON *o, const soak_preset *p, 
     for (int i = 0; st == SOAK_OK && i < n; ++i) {
         soak_wet_input in = soak_wet_input_steady(p, knots[i]);
         soak_wet_params w;
-        soak_rgb sheet_t = {0, 0, 0};
+        soak_rgb sheet_t = {0, 0, 0}, view[SOAK_EXPORT_VIEW_N];
         st = soak_wetness_eval(p, l, &in, &w);
         if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &sheet_t);
-        if (st == SOAK_OK) push_row(j, cols, &w, &sheet_t);
+        if (st == SOAK_OK) st = soak_export_view_factors(p, l, &w, view);
+        if (st == SOAK_OK) push_row(j, cols, &w, &sheet_t, view);
     }
     return st;
 }
@@ -195,13 +206,18 @@ static void add_header(soak_json *j, cJSON *root, const soak_export_header *h)
     soak_json_str(j, root, "materials_hash", h->materials_hash);
     soak_json_num(j, root, "knot_tolerance", SOAK_EXPORT_KNOT_TOL);
     soak_json_num(j, root, "base_colour_tolerance", SOAK_EXPORT_BASE_TOL);
+    cJSON *view_cos = soak_json_array(j, root, "view_cos");
+    for (int i = 0; view_cos && i < SOAK_EXPORT_VIEW_N; ++i) soak_json_num(j, view_cos, NULL, (double)i / (SOAK_EXPORT_VIEW_N - 1));
     cJSON *notes = soak_json_object(j, root, "notes");
     if (!notes) return;
     soak_json_str(j, notes, "interpolation",
         "materials[].liquids[L].knots: one array per quantity over the wetness knots (non-uniform, including "
         "the saturation wetness where the pores are full and a film starts); interpolate linearly in wetness. "
         "base_colour: the wetness function for any dry base colour, per channel [channel][wetness][dry_albedo]; "
-        "interpolate bilinearly.");
+        "interpolate bilinearly. knots.view_factor: per knot, the factor on the colour seen along a view "
+        "direction with cos(view zenith) = view_cos[i] under uniform light (soak_wetness_view_factor: the liquid "
+        "interface's angular transmission towards the viewer; cosine-weighted mean 1); interpolate linearly in "
+        "view_cos and wetness.");
     soak_json_str(j, notes, "drying",
         "Tables are at steady state. The pore-filling schedule (Hnat et al. 2006) only scales the delivered "
         "liquid: L = wetness * clamp((time - t0) / t_fill, 0, 1) (a step at t0 when t_fill = 0); every quantity "

@@ -17,7 +17,7 @@
 
 /* ---- the quantities a front end interpolates ---------------------------- */
 
-enum { MAX_Q = 40 };
+enum { MAX_Q = 40, VIEW_PAIRS = 9 };
 
 /* Quantities in [0, ~1] compared absolutely; coefficients (1/m, thousands)
  * relative to their magnitude, as export.h states. */
@@ -67,13 +67,40 @@ static soak_status eval_at(const knot_ctx *k, double w, double *q, int *nq)
     soak_status st = soak_wetness_eval(k->preset, k->liquid, &in, &p);
     if (st != SOAK_OK) return st;
     *nq = quantities(&p, k->preset->kind == SOAK_KIND_THIN_SHEET ? k->preset->thickness_mm : 0.0, k->preset->ior, q);
+    /* the view factor at 0, 60 and 75.5 deg, after the albedo it multiplies:
+     * q[*nq ..] = 9 albedos, then 9 factors (VIEW_PAIRS) */
+    const double views[3] = {1.0, 0.5, 0.25};
+    for (int v = 0; v < 3; ++v) {
+        soak_rgb f;
+        st = soak_wetness_view_factor(k->preset, k->liquid, &p, views[v], &f);
+        if (st != SOAK_OK) return st;
+        for (int c = 0; c < 3; ++c) {
+            q[*nq + 3 * v + c] = soak_rgb_at(p.albedo, c);
+            q[*nq + VIEW_PAIRS + 3 * v + c] = soak_rgb_at(f, c);
+        }
+    }
     return SOAK_OK;
+}
+
+/* A front end multiplies the interpolated albedo by the interpolated view
+ * factor: the error that counts is that product's, not the factor's alone
+ * (where the albedo vanishes, under a black coffee film, a steep factor
+ * multiplies nothing). */
+static double view_error(const double *qa, const double *qb, const double *qm, double t)
+{
+    double worst = 0.0;
+    for (int j = 0; j < VIEW_PAIRS; ++j) {
+        double albedo = qa[j] + (qb[j] - qa[j]) * t;
+        double factor = qa[VIEW_PAIRS + j] + (qb[VIEW_PAIRS + j] - qa[VIEW_PAIRS + j]) * t;
+        worst = fmax(worst, fabs(albedo * factor - qm[j] * qm[VIEW_PAIRS + j]));
+    }
+    return worst;
 }
 
 /* Largest error of linear interpolation over [a, b] at PROBES points. */
 static soak_status interval_error(const knot_ctx *k, double a, double b, double *err)
 {
-    double qa[MAX_Q], qb[MAX_Q], qm[MAX_Q];
+    double qa[MAX_Q + 2 * VIEW_PAIRS], qb[MAX_Q + 2 * VIEW_PAIRS], qm[MAX_Q + 2 * VIEW_PAIRS];
     int n = 0;
     soak_status st = eval_at(k, a, qa, &n);
     if (st == SOAK_OK) st = eval_at(k, b, qb, &n);
@@ -85,6 +112,7 @@ static soak_status interval_error(const knot_ctx *k, double a, double b, double 
             double e = fabs(qa[j] + (qb[j] - qa[j]) * t - qm[j]);
             if (e > *err) *err = e;
         }
+        if (st == SOAK_OK) *err = fmax(*err, view_error(qa + n, qb + n, qm + n, t));
     }
     return st;
 }
@@ -272,4 +300,14 @@ soak_status soak_export_base_nodes(const soak_preset *preset, const soak_liquid 
     *n_albedo = na;
     *n_wet = nw;
     return SOAK_OK;
+}
+
+soak_status soak_export_view_factors(const soak_preset *preset, const soak_liquid *liquid, const soak_wet_params *w,
+                                     soak_rgb out[SOAK_EXPORT_VIEW_N])
+{
+    if (!out) return SOAK_ERR_NULL;
+    soak_status st = SOAK_OK;
+    for (int i = 0; st == SOAK_OK && i < SOAK_EXPORT_VIEW_N; ++i)
+        st = soak_wetness_view_factor(preset, liquid, w, (double)i / (SOAK_EXPORT_VIEW_N - 1), &out[i]);
+    return st;
 }

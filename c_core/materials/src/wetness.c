@@ -234,6 +234,21 @@ soak_status soak_wetness_albedo_sun(const soak_preset *p, const soak_liquid *l, 
     return SOAK_OK;
 }
 
+soak_status soak_wetness_view_factor(const soak_preset *p, const soak_liquid *l, const soak_wet_params *w,
+                                     double cos_o, soak_rgb *factor)
+{
+    if (!factor) return SOAK_ERR_NULL;
+    soak_rgb dir, dir_total;
+    soak_status st = soak_wetness_albedo_sun(p, l, w, cos_o, &dir, &dir_total);
+    if (st != SOAK_OK) return st;
+    for (int i = 0; i < 3; ++i) {
+        const double hemi = soak_rgb_at(w->albedo, i);
+        /* below 1e-12 the ratio is rounding noise; a black colour stays black whatever the factor */
+        soak_rgb_set(factor, i, hemi > 1e-12 ? soak_rgb_at(dir, i) / hemi : 1.0);
+    }
+    return SOAK_OK;
+}
+
 soak_status soak_wetness_measured_ratio(const soak_preset *p, const soak_liquid *l, double wetness, double *ratio)
 {
     if (!p || !l || !ratio) return SOAK_ERR_NULL;

@@ -59,6 +59,15 @@ soak_status soak_export_knots(const soak_preset *preset, const soak_liquid *liqu
 soak_status soak_export_base_nodes(const soak_preset *preset, const soak_liquid *liquid, double *albedo_nodes,
                                    int max_albedo, int *n_albedo, double *wet_knots, int max_wet, int *n_wet);
 
+/* The view factor (soak_wetness_view_factor) on a fixed grid of view
+ * angles, cos(view zenith) = i / (SOAK_EXPORT_VIEW_N - 1), for the state w of
+ * (preset, liquid): out[i]. Front ends multiply their hemispherical colour by
+ * it, interpolated linearly in cos, to follow the liquid interface's angular
+ * transmission towards the viewer. */
+#define SOAK_EXPORT_VIEW_N 17
+soak_status soak_export_view_factors(const soak_preset *preset, const soak_liquid *liquid, const soak_wet_params *w,
+                                     soak_rgb out[SOAK_EXPORT_VIEW_N]);
+
 /* Header facts every target writes: generator, format version, preset file
  * name (basename only: no absolute path) and its 64-bit FNV-1a hash. */
 typedef struct soak_export_header {

@@ -154,6 +154,19 @@ soak_status soak_wetness_eval(const soak_preset *preset, const soak_liquid *liqu
 soak_status soak_wetness_albedo_sun(const soak_preset *preset, const soak_liquid *liquid, const soak_wet_params *w,
                                     double cos_i, soak_rgb *albedo, soak_rgb *albedo_total);
 
+/* The view factor: how the diffuse colour seen along a view direction at
+ * cos_o = cos(view zenith) in [0, 1] differs from the hemispherical albedo,
+ * under uniform diffuse light. By reciprocity that radiance factor is the
+ * directional-hemispherical albedo at cos_o (soak_wetness_albedo_sun's
+ * albedo, without the mirror), so factor = albedo_sun(cos_o) / albedo per
+ * channel (1 where the albedo is 0). Its cosine-weighted mean over the
+ * hemisphere is 1; 1 everywhere when dry (no interface) and for conductors
+ * (normal-incidence model). A front end whose diffuse colour cannot follow
+ * the light's angle can still follow the viewer's: colour x factor removes
+ * the out-going half of the interface's angular transmission. */
+soak_status soak_wetness_view_factor(const soak_preset *preset, const soak_liquid *liquid, const soak_wet_params *w,
+                                     double cos_o, soak_rgb *factor);
+
 /* The wet/dry ratio a measurement of preset->measured group would see at
  * wetness w: the preset re-based on the sample's grey dry albedo, evaluated
  * in steady state and under the measurement's light (a sun at
