@@ -116,4 +116,24 @@ SOAK_FN soak_base_lookup(SOAK_ARR(a), int aoff, int na, SOAK_ARR(w), int woff, i
     return lo + (hi - lo) * tw;
 }
 
+/* The view factor (soak_export_view_factors): the colour seen along a view
+ * over the hemispherical one, bilinear over the knots x[xoff..] (n) and the
+ * view cosines j / (SOAK_VIEW_N - 1); values of one channel at
+ * f[foff + (i SOAK_VIEW_N + j) 3]. A diffuse closure cannot follow the
+ * light's angle; its weight can follow the viewer's. */
+#define SOAK_VIEW_N 17
+SOAK_FN soak_view_lookup(SOAK_ARR(x), int xoff, int n, float v, SOAK_ARR(f), int foff, float cos_view)
+{
+    int i = soak_cell(x, xoff, n, v);
+    float t = soak_cell_t(x, xoff, i, v);
+    float u = soak_clamp01(cos_view) * (SOAK_VIEW_N - 1);
+    int j = 0;
+    while (j < SOAK_VIEW_N - 2 && u > j + 1) j += 1;
+    float s = u - j;
+    int r0 = foff + (i * SOAK_VIEW_N + j) * 3, r1 = r0 + SOAK_VIEW_N * 3;
+    float lo = f[r0] + (f[r0 + 3] - f[r0]) * s;
+    float hi = f[r1] + (f[r1 + 3] - f[r1]) * s;
+    return lo + (hi - lo) * t;
+}
+
 #endif

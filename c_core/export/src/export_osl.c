@@ -45,7 +45,7 @@ static int fl_rgb(soak_float_list *l, soak_rgb c) { return fl_push(l, c.r) && fl
 void soak_osl_tables_free(soak_osl_tables *t)
 {
     if (!t) return;
-    soak_float_list *f[] = {&t->kw, &t->ka, &t->kc, &t->kr, &t->kt, &t->ba, &t->bw, &t->bg};
+    soak_float_list *f[] = {&t->kw, &t->ka, &t->kc, &t->kr, &t->kt, &t->kv, &t->ba, &t->bw, &t->bg};
     soak_int_list *i[] = {&t->preset, &t->kind, &t->k_off, &t->k_n, &t->ba_off, &t->ba_n, &t->bw_off, &t->bw_n, &t->bg_off};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k) free(f[k]->v);
     for (size_t k = 0; k < sizeof i / sizeof i[0]; ++k) free(i[k]->v);
@@ -67,10 +67,13 @@ static soak_status add_knots(soak_osl_tables *t, const soak_preset *p, const soa
     for (int i = 0; i < n; ++i) {
         soak_wet_input in = soak_wet_input_steady(p, knots[i]);
         soak_wet_params w;
-        soak_rgb sheet = {0, 0, 0};
+        soak_rgb sheet = {0, 0, 0}, view[SOAK_EXPORT_VIEW_N];
         st = soak_wetness_eval(p, l, &in, &w);
         if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &sheet);
+        if (st == SOAK_OK) st = soak_export_view_factors(p, l, &w, view);
         if (st != SOAK_OK) return st;
+        for (int v = 0; v < SOAK_EXPORT_VIEW_N; ++v)
+            if (!fl_rgb(&t->kv, view[v])) return SOAK_ERR_NOMEM;
         double interface = soak_wet_interface_area(&w);
         soak_rgb log_sheet = {log(fmax(sheet.r, SHEET_T_MIN)), log(fmax(sheet.g, SHEET_T_MIN)),
                               log(fmax(sheet.b, SHEET_T_MIN))};
@@ -243,6 +246,7 @@ static void put_tables(FILE *out, const soak_preset_db *db, const soak_osl_table
     put_floats(out, "KC", &t->kc);
     put_floats(out, "KR", &t->kr);
     put_floats(out, "KT", &t->kt);
+    put_floats(out, "KV", &t->kv);
     put_ints(out, "K_OFF", &t->k_off);
     put_ints(out, "K_N", &t->k_n);
     put_floats(out, "BA", &t->ba);
@@ -276,7 +280,13 @@ static void put_lookup(FILE *out, const soak_osl_tables *t, osl_variant v)
           "    Coverage = soak_interp(KW, K_OFF[k], K_N[k], L, KC, K_OFF[k], 1);\n"
           "    Roughness = soak_interp(KW, K_OFF[k], K_N[k], L, KR, K_OFF[k], 1);\n"
           "    // Cycles' reflection() is a perfect mirror without Fresnel: weight it here\n"
-          "    float mirror = Coverage * soak_fresnel(abs(dot(normalize(I), normalize(Normal))), LIQUID_IOR[li]);\n",
+          "    float cos_view = abs(dot(normalize(I), normalize(Normal)));\n"
+          "    float mirror = Coverage * soak_fresnel(cos_view, LIQUID_IOR[li]);\n"
+          "    // the liquid interface's transmission towards the viewer (the light's side a\n"
+          "    // diffuse closure cannot follow): the weight of the diffuse closure\n"
+          "    color View = 1;\n"
+          "    for (int c = 0; c < 3; c += 1)\n"
+          "        View[c] = soak_view_lookup(KW, K_OFF[k], K_N[k], L, KV, 3 * SOAK_VIEW_N * K_OFF[k] + c, cos_view);\n",
           out);
 }
 
@@ -284,7 +294,7 @@ static void put_closure(FILE *out, osl_variant v)
 {
     if (v == OSL_SHEET) {
         fputs("    for (int c = 0; c < 3; c += 1) Transmittance[c] = soak_interp_log(KW, K_OFF[k], K_N[k], L, KT, 3 * K_OFF[k] + c, 3);\n"
-              "    BSDF = WetColor * diffuse(Normal) + Transmittance * translucent(Normal) + mirror * reflection(Normal);\n"
+              "    BSDF = WetColor * View * diffuse(Normal) + Transmittance * translucent(Normal) + mirror * reflection(Normal);\n"
               "}\n",
               out);
         return;
@@ -301,7 +311,7 @@ static void put_closure(FILE *out, osl_variant v)
           "        // the diffuse albedo under the liquid interface (porous darkening and the\n"
           "        // interface's total internal reflection are in WetColor), the interface's\n"
           "        // Fresnel mirror over its area\n"
-          "        BSDF = WetColor * diffuse(Normal) + mirror * reflection(Normal);\n"
+          "        BSDF = WetColor * View * diffuse(Normal) + mirror * reflection(Normal);\n"
           "        if (KIND[pi] == 2) {\n"
           "            color T = 0;\n"
           "            for (int c = 0; c < 3; c += 1) T[c] = soak_interp_log(KW, K_OFF[k], K_N[k], L, KT, 3 * K_OFF[k] + c, 3);\n"

@@ -125,8 +125,8 @@ static void test_view_knots(const soak_preset *p, const soak_liquid *l)
     soak_rgb va[SOAK_EXPORT_VIEW_N], vb[SOAK_EXPORT_VIEW_N];
     double worst = 0.0;
     soak_status st = SOAK_OK;
-    for (int s = 0; st == SOAK_OK && s <= 400; ++s) {
-        const double w = s / 400.0;
+    for (int s = 0; st == SOAK_OK && s <= 200; ++s) {
+        const double w = s / 200.0;
         int cell = 0;
         while (cell + 2 < n && w > knots[cell + 1]) ++cell;
         if (cell != seg) {
@@ -136,7 +136,7 @@ static void test_view_knots(const soak_preset *p, const soak_liquid *l)
         }
         if (st == SOAK_OK) st = knot_state(p, l, w, &wm, NULL);
         const double t = (w - knots[cell]) / (knots[cell + 1] - knots[cell]);
-        for (double deg = 0; st == SOAK_OK && deg <= VIEW_MAX_DEG; deg += 5) {
+        for (double deg = 0; st == SOAK_OK && deg <= VIEW_MAX_DEG; deg += 7.5) {
             const double mu = cos(deg * SOAK_PI / 180);
             soak_rgb dir, total;
             st = soak_wetness_albedo_sun(p, l, &wm, mu, &dir, &total);

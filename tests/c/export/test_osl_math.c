@@ -7,6 +7,9 @@
  *    export's knot tolerance (plus float rounding);
  *  - the base-colour lookup = soak_wet_params_for_base within the base
  *    tolerance, at points between the nodes;
+ *  - the diffuse closure's weight along a view, WetColor x View, = the
+ *    core's directional albedo (soak_wetness_albedo_sun, reciprocity) within
+ *    the knot tolerance, views 0-75 deg;
  *  - the Fresnel weight of the liquid's mirror = soak_fresnel_dielectric
  *    (both directions, total internal reflection, no interface). */
 #include <math.h>
@@ -16,6 +19,7 @@
 #include "export_osl_tables.h"
 #include "soak/fresnel.h"
 #include "soak/sheet.h"
+#include "soak/wetness.h"
 #include "soak_wet_math.h"
 
 #define FLOAT_EPS 1e-5 /* the shader's tables are single precision */
@@ -116,6 +120,41 @@ static void test_tables(const soak_preset_db *db, const soak_osl_tables *t)
                 exp(10.0 * SOAK_EXPORT_KNOT_TOL) - 1.0 + FLOAT_EPS);
 }
 
+_Static_assert(SOAK_VIEW_N == SOAK_EXPORT_VIEW_N, "the shaders' view grid is the export's");
+
+static void test_view(const soak_preset_db *db, const soak_osl_tables *t)
+{
+    double worst = 0.0;
+    soak_status st = SOAK_OK;
+    for (int pi = 0; pi < t->n_presets; ++pi) {
+        const soak_preset *p = soak_presets_at(db, t->preset.v[pi]);
+        for (int li = 0; li < t->n_liquids && st == SOAK_OK; ++li) {
+            const soak_liquid *l = soak_presets_liquid_at(db, li);
+            const int k = pi * t->n_liquids + li, off = t->k_off.v[k], n = t->k_n.v[k];
+            for (int s = 0; s <= 60 && st == SOAK_OK; ++s) {
+                const double L = (s + 0.29) / 60.29;
+                soak_wet_input in = soak_wet_input_steady(p, L);
+                soak_wet_params w;
+                if ((st = soak_wetness_eval(p, l, &in, &w)) != SOAK_OK) break;
+                for (double deg = 0.0; deg <= 75.001 && st == SOAK_OK; deg += 7.5) {
+                    const double mu = cos(deg * SOAK_PI / 180);
+                    soak_rgb dir, total;
+                    if ((st = soak_wetness_albedo_sun(p, l, &w, mu, &dir, &total)) != SOAK_OK) break;
+                    for (int c = 0; c < 3; ++c) {
+                        float colour = soak_interp(t->kw.v, off, n, (float)L, t->ka.v, 3 * off + c, 3);
+                        float view = soak_view_lookup(t->kw.v, off, n, (float)L, t->kv.v, 3 * SOAK_VIEW_N * off + c,
+                                                      (float)mu);
+                        worst = fmax(worst, fabs(colour * view - soak_rgb_at(dir, c)));
+                    }
+                }
+            }
+        }
+    }
+    check_status("core evaluations (view)", st, SOAK_OK);
+    check_close("shader WetColor x View vs the core's directional albedo (views to 75 deg)", worst, 0.0,
+                SOAK_EXPORT_KNOT_TOL + FLOAT_EPS);
+}
+
 int main(void)
 {
     soak_preset_db *db = NULL;
@@ -128,6 +167,7 @@ int main(void)
         test_schedule(soak_presets_at(db, 0), soak_presets_liquid_at(db, 0));
         test_fresnel();
         test_tables(db, &t);
+        test_view(db, &t);
         soak_osl_tables_free(&t);
     }
     /* soak_wet_sheet.osl's tables: the thin sheets only, the same values */
