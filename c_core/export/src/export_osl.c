@@ -69,7 +69,7 @@ static soak_status add_knots(soak_osl_tables *t, const soak_preset *p, const soa
         soak_wet_params w;
         soak_rgb sheet = {0, 0, 0};
         st = soak_wetness_eval(p, l, &in, &w);
-        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &sheet);
+        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_m, p->ior, &sheet);
         if (st != SOAK_OK) return st;
         double interface = soak_wet_interface_area(&w);
         soak_rgb log_sheet = {log(fmax(sheet.r, SHEET_T_MIN)), log(fmax(sheet.g, SHEET_T_MIN)),
