@@ -29,8 +29,9 @@
  *
  * Units: the file gives extinction sigma_t and liquid sigma_a/sigma_s in
  * 1/mm and thicknesses in mm (its keys say so); the loader converts them
- * once (soak/units.h) and every field below is in SI, m and 1/m. Albedo is linear RGB: the diffuse albedo for dielectrics, the
- * normal-incidence reflectance F0 for conductors (checked against n, k).
+ * once (soak/units.h) and every field below is in SI, m and 1/m. Albedo is
+ * linear RGB: the diffuse albedo for dielectrics, the normal-incidence
+ * reflectance F0 for conductors (checked against n, k).
  *
  * Derived on load: the single-scattering albedo omega of the dry medium by
  * inverting the dry albedo with van de Hulst's formula (soak/vdhulst.h) at
@@ -155,8 +156,8 @@ const soak_preset *soak_presets_find(const soak_preset_db *db, const char *name)
 
 /* Recomputes the derived fields (omega_dry, sigma_s_dry_per_m,
  * sigma_a_dry_per_m) of a preset built or edited by hand from albedo,
- * phase_dry and sigma_t_per_m; the
- * loader calls it. Conductors: the derived fields are set to zero. */
+ * phase_dry and sigma_t_per_m; the loader calls it. Conductors: the derived
+ * fields are set to zero. */
 soak_status soak_preset_derive(soak_preset *preset);
 
 int soak_presets_liquid_count(const soak_preset_db *db);
