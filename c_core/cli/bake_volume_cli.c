@@ -11,6 +11,7 @@
 #include "soak/staged.h"
 #include "soak/bake_volume.h"
 #include "soak/preset.h"
+#include "soak/units.h"
 
 #define CMD "bake volume"
 #define TABLE_ROWS 257 /* preset wetness table rows: steps of 1/256 in wetness */
@@ -275,7 +276,7 @@ static int build_rows(const vol_args *a, soak_vol_medium **rows, int *n_rows)
         } else {
             *rows = malloc(TABLE_ROWS * sizeof **rows);
             *n_rows = TABLE_ROWS;
-            st = *rows ? soak_vol_rows_from_preset(p, l, a->unit_mm, TABLE_ROWS, *rows) : SOAK_ERR_NOMEM;
+            st = *rows ? soak_vol_rows_from_preset(p, l, soak_m_from_mm(a->unit_mm), TABLE_ROWS, *rows) : SOAK_ERR_NOMEM;
             if (st != SOAK_OK) {
                 cli_error(CMD, "--material '%s': wetness table failed: %s", a->material, soak_status_str(st));
                 rc = SOAK_EXIT_FAIL;

@@ -190,7 +190,7 @@ static int compute(const opts *o, const soak_preset *p, const soak_liquid *l, we
     double cos_sun = o->sun_zenith >= 90.0 ? 0.0 : cos(o->sun_zenith * (SOAK_PI / 180.0));
     if (st == SOAK_OK && o->has_sun) st = soak_wetness_albedo_sun(p, l, &r->w, cos_sun, &r->sun, &r->sun_total);
     if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET)
-        st = soak_sheet_transmittance(&r->w, p->thickness_mm, p->ior, &r->sheet);
+        st = soak_sheet_transmittance(&r->w, p->thickness_m, p->ior, &r->sheet);
     if (st != SOAK_OK) {
         cli_error(CMD, "material %s, wetness %g: wetness mapping failed: %s", p->name, o->wetness, soak_status_str(st));
         return SOAK_EXIT_FAIL;

@@ -321,7 +321,7 @@ static int preset_setup(measure_args *a, const soak_preset *p, const soak_wet_pa
     s->phase = wp->phase;
     if (!a->have_ior) s->ior = 1.0;
     if (s->config == SOAK_MEASURE_SLAB) {
-        s->tau = soak_rgb_at(p->sigma_t, c) * p->thickness_mm;
+        s->tau = soak_rgb_at(p->sigma_t_per_m, c) * p->thickness_m;
         if (!(s->tau > 0.0 && s->tau <= SOAK_MEASURE_MAX_TAU)) {
             cli_error(CMD, "--config slab: preset '%s' is not a thin sheet (no finite thickness)", a->material);
             rc = SOAK_EXIT_USAGE;

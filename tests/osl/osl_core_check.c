@@ -83,7 +83,7 @@ static int check_row(const soak_preset_db *db, const row *r, worst *w)
     note(w, &w->roughness, fabs(r->roughness - sqrt(o.ggx_alpha)), KNOT_TOL + FLOAT_EPS, r, "Roughness");
     if (p->kind == SOAK_KIND_THIN_SHEET && strcmp(r->shader, "soak_wet_sheet") == 0 && !r->use_base) {
         soak_rgb t;
-        if (soak_sheet_transmittance(&o, p->thickness_mm, p->ior, &t) != SOAK_OK) return 0;
+        if (soak_sheet_transmittance(&o, p->thickness_m, p->ior, &t) != SOAK_OK) return 0;
         for (int c = 0; c < 3; ++c) {
             double ref = soak_rgb_at(t, c);
             if (ref <= SHEET_FLOOR) {

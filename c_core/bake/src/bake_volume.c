@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "soak/hg.h"
+#include "soak/units.h"
 #include "soak/wetness.h"
 
 /* Antiderivative of p from 0 to d: P(d) = d - delta (t^3 - t^4/2), t = d/delta,
@@ -77,18 +78,18 @@ static soak_status column_wetness(const soak_volume *v, const soak_image *img, i
     return SOAK_OK;
 }
 
-soak_status soak_vol_rows_from_preset(const soak_preset *preset, const soak_liquid *liquid, double unit_mm,
+soak_status soak_vol_rows_from_preset(const soak_preset *preset, const soak_liquid *liquid, double m_per_unit,
                                       int n_rows, soak_vol_medium *rows)
 {
     if (!preset || !liquid || !rows) return SOAK_ERR_NULL;
-    if (!soak_in_range(unit_mm, 1e-9, 1e9) || n_rows < 2 || n_rows > SOAK_VOL_ROWS_MAX) return SOAK_ERR_ARG;
+    if (!soak_in_range(m_per_unit, 1e-12, 1e6) || n_rows < 2 || n_rows > SOAK_VOL_ROWS_MAX) return SOAK_ERR_ARG;
     if (preset->kind == SOAK_KIND_CONDUCTOR) return SOAK_ERR_ARG;
     soak_wet_params *t = malloc((size_t)n_rows * sizeof *t);
     if (!t) return SOAK_ERR_NOMEM;
     soak_status st = soak_wetness_table(preset, liquid, n_rows, -1.0, t);
     for (int i = 0; i < n_rows && st == SOAK_OK; ++i) {
-        rows[i].sigma_s = soak_rgb3(t[i].sigma_s.r * unit_mm, t[i].sigma_s.g * unit_mm, t[i].sigma_s.b * unit_mm);
-        rows[i].sigma_a = soak_rgb3(t[i].sigma_a.r * unit_mm, t[i].sigma_a.g * unit_mm, t[i].sigma_a.b * unit_mm);
+        rows[i].sigma_s = soak_rgb_per_unit_from_per_m(t[i].sigma_s_per_m, m_per_unit);
+        rows[i].sigma_a = soak_rgb_per_unit_from_per_m(t[i].sigma_a_per_m, m_per_unit);
         rows[i].g1 = t[i].phase.g1;
         rows[i].g2 = t[i].phase.g2;
         rows[i].w = t[i].phase.w;

@@ -88,7 +88,7 @@ static soak_status param_pixel(const bl_grid *g, double L, double px[BL_PARAM_CO
     soak_wet_params w;
     soak_status st = soak_wetness_eval(g->p, g->l, &in, &w);
     soak_rgb T = {0.0, 0.0, 0.0};
-    if (st == SOAK_OK && g->p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, g->p->thickness_mm, g->p->ior, &T);
+    if (st == SOAK_OK && g->p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, g->p->thickness_m, g->p->ior, &T);
     soak_wet_specular s;
     if (st == SOAK_OK) st = soak_wet_specular_eval(g->p, g->l, &w, &s);
     if (st != SOAK_OK) return st;
@@ -326,7 +326,7 @@ static soak_status add_material(soak_json *j, cJSON *materials, const soak_prese
     soak_json_num(j, m, "ior", p->ior);
     soak_json_num(j, m, "porosity", p->porosity);
     soak_json_num(j, m, "t_fill", p->t_fill);
-    soak_json_num(j, m, "sheet_thickness_m", 1e-3 * p->thickness_mm);
+    soak_json_num(j, m, "sheet_thickness_m", p->thickness_m);
     cJSON *liquids = soak_json_object(j, m, "liquids");
     for (int i = 0; i < soak_presets_liquid_count(db); ++i) {
         const soak_liquid *l = soak_presets_liquid_at(db, i);

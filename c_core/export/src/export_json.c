@@ -17,14 +17,14 @@
 
 static soak_rgb rgb_scale(soak_rgb c, double s) { return (soak_rgb){c.r * s, c.g * s, c.b * s}; }
 
-/* Mean free path 1 / sigma_t in metres from coefficients in 1/mm; 0 where
- * the medium does not interact (no scattering, no absorption). */
+/* Mean free path 1 / sigma_t in metres; 0 where the medium does not
+ * interact (no scattering, no absorption). */
 static soak_rgb mean_free_path_m(soak_rgb ss, soak_rgb sa)
 {
     soak_rgb m;
     for (int i = 0; i < 3; ++i) {
         double t = soak_rgb_at(ss, i) + soak_rgb_at(sa, i);
-        soak_rgb_set(&m, i, t > 0.0 ? 1e-3 / t : 0.0);
+        soak_rgb_set(&m, i, t > 0.0 ? 1.0 / t : 0.0);
     }
     return m;
 }
@@ -80,9 +80,9 @@ static void push_row(soak_json *j, cJSON *cols[C_COUNT], const soak_wet_params *
         case C_ALBEDO_SUB: soak_json_rgb(j, cols[c], NULL, p->albedo_subsurface); break;
         case C_ALBEDO_FILM: soak_json_rgb(j, cols[c], NULL, p->albedo_film); break;
         case C_OMEGA: soak_json_rgb(j, cols[c], NULL, p->omega); break;
-        case C_SIGMA_S: soak_json_rgb(j, cols[c], NULL, rgb_scale(p->sigma_s, 1000.0)); break;
-        case C_SIGMA_A: soak_json_rgb(j, cols[c], NULL, rgb_scale(p->sigma_a, 1000.0)); break;
-        case C_MFP: soak_json_rgb(j, cols[c], NULL, mean_free_path_m(p->sigma_s, p->sigma_a)); break;
+        case C_SIGMA_S: soak_json_rgb(j, cols[c], NULL, p->sigma_s_per_m); break;
+        case C_SIGMA_A: soak_json_rgb(j, cols[c], NULL, p->sigma_a_per_m); break;
+        case C_MFP: soak_json_rgb(j, cols[c], NULL, mean_free_path_m(p->sigma_s_per_m, p->sigma_a_per_m)); break;
         case C_SHEET_T: soak_json_rgb(j, cols[c], NULL, *sheet_t); break;
         case C_VIEW: push_view(j, cols[c], view); break;
         default: soak_json_num(j, cols[c], NULL, scalars[c]);
@@ -106,7 +106,7 @@ static soak_status add_knot_table(soak_json *j, cJSON *o, const soak_preset *p, 
         soak_wet_params w;
         soak_rgb sheet_t = {0, 0, 0}, view[SOAK_EXPORT_VIEW_N];
         st = soak_wetness_eval(p, l, &in, &w);
-        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &sheet_t);
+        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_m, p->ior, &sheet_t);
         if (st == SOAK_OK) st = soak_export_view_factors(p, l, &w, view);
         if (st == SOAK_OK) push_row(j, cols, &w, &sheet_t, view);
     }
@@ -157,8 +157,8 @@ static soak_status add_material(soak_json *j, cJSON *list, const soak_preset_db 
     const int conductor = p->kind == SOAK_KIND_CONDUCTOR;
     soak_json_preset_optics(j, o, p, "dry_albedo", 0);
     soak_json_num(j, o, "t_fill", p->t_fill);
-    soak_json_num(j, o, "film_thickness_m", 1e-3 * p->film_thickness_mm);
-    soak_json_num(j, o, "sheet_thickness_m", 1e-3 * p->thickness_mm);
+    soak_json_num(j, o, "film_thickness_m", p->film_thickness_m);
+    soak_json_num(j, o, "sheet_thickness_m", p->thickness_m);
     cJSON *tables = soak_json_object(j, o, "liquids");
     if (!tables) return SOAK_ERR_NOMEM;
     soak_status st = SOAK_OK;
@@ -184,8 +184,8 @@ static soak_status add_liquid(soak_json *j, cJSON *list, const soak_liquid *l)
     soak_json_str(j, o, "name", l->name);
     soak_json_str(j, o, "display_name", l->display_name);
     soak_json_num(j, o, "ior", l->ior);
-    soak_json_rgb(j, o, "sigma_a_per_m", rgb_scale(l->sigma_a, 1000.0));
-    soak_json_rgb(j, o, "sigma_s_per_m", rgb_scale(l->sigma_s, 1000.0));
+    soak_json_rgb(j, o, "sigma_a_per_m", l->sigma_a_per_m);
+    soak_json_rgb(j, o, "sigma_s_per_m", l->sigma_s_per_m);
     double f0 = 0.0, hemi = 0.0;
     soak_status st = soak_fresnel_r0(l->ior, 0.0, &f0);
     soak_film film = {l->ior, 0.0, 0.0};

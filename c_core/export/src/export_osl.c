@@ -69,7 +69,7 @@ static soak_status add_knots(soak_osl_tables *t, const soak_preset *p, const soa
         soak_wet_params w;
         soak_rgb sheet = {0, 0, 0}, view[SOAK_EXPORT_VIEW_N];
         st = soak_wetness_eval(p, l, &in, &w);
-        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &sheet);
+        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_m, p->ior, &sheet);
         if (st == SOAK_OK) st = soak_export_view_factors(p, l, &w, view);
         if (st != SOAK_OK) return st;
         for (int v = 0; v < SOAK_EXPORT_VIEW_N; ++v)

@@ -21,7 +21,8 @@
  *     backside diffuse amount of POV-Ray's "diffuse front, back", luminance
  *     matched: back = Y(T) / Y(pigment) (POV-Ray tints it by the pigment);
  *   - the scattering medium for participating media and subsurface: sigma_s,
- *     sigma_a (1/mm, per channel), the two-term Henyey-Greenstein phase
+ *     sigma_a (per channel, in 1/mm: POV-Ray's files are in mm, converted
+ *     from the core's 1/m here, soak/units.h), the two-term Henyey-Greenstein phase
  *     (g1, g2, weight w of g1; all 0 where there is no medium: conductors);
  *     and POV-Ray's subsurface translucency giving its BSSRDF, which takes
  *     the reduced albedo from the pigment, the core's diffusion length
@@ -46,6 +47,7 @@
 #include "soak/fresnel.h"
 #include "soak/povray_subsurface.h"
 #include "soak/sheet.h"
+#include "soak/units.h"
 
 #define POV_ROUGH_MIN 5e-4
 #define POV_ROUGH_MAX 1.0
@@ -120,11 +122,11 @@ static double pov_roughness(double alpha)
 static soak_status fill_medium(const soak_wet_params *w, double eta, pov_table *t, int i)
 {
     const double g = w->phase.w * w->phase.g1 + (1.0 - w->phase.w) * w->phase.g2;
-    t->v[V_SIGMA_S][i] = w->sigma_s;
-    t->v[V_SIGMA_A][i] = w->sigma_a;
+    t->v[V_SIGMA_S][i] = soak_rgb_per_mm_from_per_m(w->sigma_s_per_m);
+    t->v[V_SIGMA_A][i] = soak_rgb_per_mm_from_per_m(w->sigma_a_per_m);
     for (int k = 0; k < 3; ++k) {
-        double sa = soak_rgb_at(w->sigma_a, k);
-        double reduced = sa + (1.0 - g) * soak_rgb_at(w->sigma_s, k);
+        double sa = soak_rgb_at(w->sigma_a_per_m, k);
+        double reduced = sa + (1.0 - g) * soak_rgb_at(w->sigma_s_per_m, k);
         double translucency = 0.0;
         if (reduced > 0.0) {
             double rd = clamp(soak_rgb_at(t->v[V_PIGMENT][i], k), POV_SUBSURFACE_PIGMENT_MIN, 1.0);
@@ -148,7 +150,7 @@ static soak_status fill_knot(const soak_preset *p, const soak_liquid *l, double 
     if (st == SOAK_OK) st = soak_fresnel_r0(l->ior, 0.0, &f0_liq);
     if (st == SOAK_OK && p->kind != SOAK_KIND_CONDUCTOR) st = soak_fresnel_r0(p->ior, 0.0, &f0_mat);
     soak_rgb sheet_t = {0, 0, 0};
-    if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &sheet_t);
+    if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_m, p->ior, &sheet_t);
     if (st != SOAK_OK) return st;
     const double c = w.film ? w.film_coverage : 0.0;
     const int metal = p->kind == SOAK_KIND_CONDUCTOR;
@@ -238,8 +240,8 @@ typedef double (*preset_num)(const soak_preset *p);
 static double p_kind(const soak_preset *p) { return (double)p->kind; }
 static double p_tfill(const soak_preset *p) { return p->t_fill; }
 static double p_sat(const soak_preset *p) { return soak_material_kind_porous(p->kind) ? p->porosity : 0.0; }
-static double p_film(const soak_preset *p) { return p->film_thickness_mm; }
-static double p_sheet(const soak_preset *p) { return p->thickness_mm; }
+static double p_film(const soak_preset *p) { return soak_mm_from_m(p->film_thickness_m); }
+static double p_sheet(const soak_preset *p) { return soak_mm_from_m(p->thickness_m); }
 static double p_ior(const soak_preset *p) { return p->ior; }
 
 static void write_presets(pov_out *o, const soak_preset_db *db)

@@ -21,14 +21,14 @@ enum { MAX_Q = 40, VIEW_PAIRS = 9 };
 
 /* Quantities in [0, ~1] compared absolutely; coefficients (1/m, thousands)
  * relative to their magnitude, as export.h states. */
-static int quantities(const soak_wet_params *p, double sheet_mm, double sheet_ior, double *q)
+static int quantities(const soak_wet_params *p, double sheet_m, double sheet_ior, double *q)
 {
     int n = 0;
-    if (sheet_mm > 0.0) {
+    if (sheet_m > 0.0) {
         /* thin-sheet transmittance spans decades (1e-3 .. 1): followed in
          * log, 0.1 ln T, so the absolute tolerance is ~2 % relative */
         soak_rgb T;
-        if (soak_sheet_transmittance(p, sheet_mm, sheet_ior, &T) == SOAK_OK)
+        if (soak_sheet_transmittance(p, sheet_m, sheet_ior, &T) == SOAK_OK)
             for (int c = 0; c < 3; ++c) q[n++] = 0.1 * log(fmax(soak_rgb_at(T, c), 1e-6));
     }
     const soak_rgb *rgb[] = {&p->albedo, &p->albedo_total, &p->albedo_subsurface, &p->albedo_film, &p->omega};
@@ -45,10 +45,10 @@ static int quantities(const soak_wet_params *p, double sheet_mm, double sheet_io
     q[n++] = p->specular_weight;
     q[n++] = p->water_specular_weight;
     for (int c = 0; c < 3; ++c) {
-        double ss = soak_rgb_at(p->sigma_s, c), sa = soak_rgb_at(p->sigma_a, c);
-        double scale = 1.0 + 1000.0 * (ss + sa);
-        q[n++] = 1000.0 * ss / scale;
-        q[n++] = 1000.0 * sa / scale;
+        double ss = soak_rgb_at(p->sigma_s_per_m, c), sa = soak_rgb_at(p->sigma_a_per_m, c);
+        double scale = 1.0 + ss + sa;
+        q[n++] = ss / scale;
+        q[n++] = sa / scale;
     }
     return n;
 }
@@ -66,7 +66,7 @@ static soak_status eval_at(const knot_ctx *k, double w, double *q, int *nq)
     soak_wet_params p;
     soak_status st = soak_wetness_eval(k->preset, k->liquid, &in, &p);
     if (st != SOAK_OK) return st;
-    *nq = quantities(&p, k->preset->kind == SOAK_KIND_THIN_SHEET ? k->preset->thickness_mm : 0.0, k->preset->ior, q);
+    *nq = quantities(&p, k->preset->kind == SOAK_KIND_THIN_SHEET ? k->preset->thickness_m : 0.0, k->preset->ior, q);
     /* the view factor at 0, 60 and 75.5 deg, after the albedo it multiplies:
      * q[*nq ..] = 9 albedos, then 9 factors (VIEW_PAIRS) */
     const double views[3] = {1.0, 0.5, 0.25};
@@ -145,7 +145,7 @@ soak_status soak_export_knots(const soak_preset *preset, const soak_liquid *liqu
 {
     if (!preset || !liquid || !knots || !n) return SOAK_ERR_NULL;
     if (max < 2 || !(film_thickness_m <= SOAK_WET_FILM_MAX_M)) return SOAK_ERR_ARG;
-    knot_ctx k = {preset, liquid, film_thickness_m < 0.0 ? 1e-3 * preset->film_thickness_mm : film_thickness_m};
+    knot_ctx k = {preset, liquid, film_thickness_m < 0.0 ? preset->film_thickness_m : film_thickness_m};
     int count = 0;
     knots[count++] = 0.0;
     double w_sat = 0.0;

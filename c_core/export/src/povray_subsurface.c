@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "soak/units.h"
+
 #define RD_NODES 100 /* POV-Ray tabulates alpha' at Rd = i / RD_NODES */
 #define BISECT_STEPS 60
 
@@ -51,16 +53,17 @@ static double clamp_translucency(double t)
     return t > SOAK_POVRAY_TRANSLUCENCY_MAX ? SOAK_POVRAY_TRANSLUCENCY_MAX : t;
 }
 
-soak_status soak_povray_translucency(double rd, double eta, double sigma_tr, double *translucency_mm)
+soak_status soak_povray_translucency(double rd, double eta, double sigma_tr_per_m, double *translucency_mm)
 {
     if (!translucency_mm) return SOAK_ERR_NULL;
-    if (!soak_in_range(sigma_tr, 0.0, 1e12)) return SOAK_ERR_ARG;
+    if (!soak_in_range(sigma_tr_per_m, 0.0, 1e15)) return SOAK_ERR_ARG;
     double ap = 0.0;
     soak_status st = soak_povray_alpha_prime(rd, eta, &ap);
     if (st != SOAK_OK) return st;
-    double denom = ap * sigma_tr;
+    double denom = ap * sigma_tr_per_m;
     /* alpha' -> 0 or sigma_tr -> 0: unbounded; alpha' -> 1: T -> 0 (POV-Ray
      * then has no absorption and diffuses without limit whatever T is) */
-    *translucency_mm = denom > 0.0 ? clamp_translucency(sqrt(3.0 * (1.0 - ap)) / denom) : SOAK_POVRAY_TRANSLUCENCY_MAX;
+    *translucency_mm =
+        denom > 0.0 ? clamp_translucency(soak_mm_from_m(sqrt(3.0 * (1.0 - ap)) / denom)) : SOAK_POVRAY_TRANSLUCENCY_MAX;
     return SOAK_OK;
 }

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "soak/fresnel.h"
+#include "soak/units.h"
 #include "soak/vdhulst.h"
 
 #ifndef SOAK_DATA_DIR
@@ -410,7 +411,9 @@ static soak_status parse_medium_groups(const mat_reader *r, soak_preset *p)
     const cJSON *g = NULL;
     char gp[PATH_MAX_LEN];
     soak_status st = open_material_group(r, "medium", medium_keys, NULL, &g, gp);
-    if (st == SOAK_OK) st = get_rgb(r->c, g, gp, "sigma_t_per_mm", 1e-6, 1e5, &p->sigma_t);
+    soak_rgb sigma_t_per_mm = {0.0, 0.0, 0.0};
+    if (st == SOAK_OK) st = get_rgb(r->c, g, gp, "sigma_t_per_mm", 1e-6, 1e5, &sigma_t_per_mm);
+    p->sigma_t_per_m = soak_rgb_per_m_from_per_mm(sigma_t_per_mm);
     if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->medium_source);
     if (st != SOAK_OK) return st;
     st = open_material_group(r, "phase", r->porous ? phase_all : phase_dry, phase_all, &g, gp);
@@ -429,7 +432,9 @@ static soak_status parse_wetting_group(const mat_reader *r, soak_preset *p)
     char gp[PATH_MAX_LEN];
     soak_status st = open_material_group(r, "wetting", r->porous ? wet_all : wet_film, wet_all, &g, gp);
     if (st == SOAK_OK && r->porous) st = get_number(r->c, g, gp, "t_fill", 0.0, 1e6, &p->t_fill);
-    if (st == SOAK_OK) st = get_number(r->c, g, gp, "film_thickness_mm", 0.0, 1000.0, &p->film_thickness_mm);
+    double film_mm = 0.0;
+    if (st == SOAK_OK) st = get_number(r->c, g, gp, "film_thickness_mm", 0.0, 1000.0, &film_mm);
+    p->film_thickness_m = soak_m_from_mm(film_mm);
     if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->wetting_source);
     return st;
 }
@@ -440,7 +445,9 @@ static soak_status parse_sheet_group(const mat_reader *r, soak_preset *p)
     const cJSON *g = NULL;
     char gp[PATH_MAX_LEN];
     soak_status st = open_material_group(r, "sheet", sheet_keys, NULL, &g, gp);
-    if (st == SOAK_OK) st = get_number(r->c, g, gp, "thickness_mm", 1e-3, 1000.0, &p->thickness_mm);
+    double sheet_mm = 0.0;
+    if (st == SOAK_OK) st = get_number(r->c, g, gp, "thickness_mm", 1e-3, 1000.0, &sheet_mm);
+    p->thickness_m = soak_m_from_mm(sheet_mm);
     if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->sheet_source);
     return st;
 }
@@ -475,15 +482,15 @@ soak_status soak_preset_derive(soak_preset *p)
     if (!p) return SOAK_ERR_NULL;
     soak_rgb zero = {0.0, 0.0, 0.0};
     if (p->kind == SOAK_KIND_CONDUCTOR) {
-        p->omega_dry = p->sigma_s_dry = p->sigma_a_dry = zero;
+        p->omega_dry = p->sigma_s_dry_per_m = p->sigma_a_dry_per_m = zero;
         return SOAK_OK;
     }
     if (soak_hg2_validate(&p->phase_dry) != SOAK_OK) return SOAK_ERR_ARG;
     double g = soak_hg2_mean_cosine(&p->phase_dry);
     soak_rgb omega = zero, ss = zero, sa = zero;
     for (int i = 0; i < 3; ++i) {
-        double w = 0.0, sigma_t = soak_rgb_at(p->sigma_t, i);
-        if (!soak_in_range(sigma_t, 0.0, 1e5)) return SOAK_ERR_ARG;
+        double w = 0.0, sigma_t = soak_rgb_at(p->sigma_t_per_m, i);
+        if (!soak_in_range(sigma_t, 0.0, SOAK_SIGMA_T_MAX_PER_M)) return SOAK_ERR_ARG;
         soak_status st = soak_vdhulst_invert(soak_rgb_at(p->albedo, i), g, &w);
         if (st != SOAK_OK) return st;
         soak_rgb_set(&omega, i, w);
@@ -491,8 +498,8 @@ soak_status soak_preset_derive(soak_preset *p)
         soak_rgb_set(&sa, i, (1.0 - w) * sigma_t);
     }
     p->omega_dry = omega;
-    p->sigma_s_dry = ss;
-    p->sigma_a_dry = sa;
+    p->sigma_s_dry_per_m = ss;
+    p->sigma_a_dry_per_m = sa;
     return SOAK_OK;
 }
 
@@ -504,8 +511,11 @@ static soak_status parse_liquid(ctx *c, const cJSON *l, const char *path, soak_l
     if (st == SOAK_OK) st = get_name(c, l, path, &q->name);
     if (st == SOAK_OK) st = get_string(c, l, path, "display_name", &q->display_name);
     if (st == SOAK_OK) st = get_number(c, l, path, "ior", 1.0, 3.0, &q->ior);
-    if (st == SOAK_OK) st = get_rgb(c, l, path, "sigma_a_per_mm", 0.0, 1000.0, &q->sigma_a);
-    if (st == SOAK_OK) st = get_rgb(c, l, path, "sigma_s_per_mm", 0.0, 1000.0, &q->sigma_s);
+    soak_rgb sigma_a_per_mm = {0.0, 0.0, 0.0}, sigma_s_per_mm = {0.0, 0.0, 0.0};
+    if (st == SOAK_OK) st = get_rgb(c, l, path, "sigma_a_per_mm", 0.0, 1000.0, &sigma_a_per_mm);
+    if (st == SOAK_OK) st = get_rgb(c, l, path, "sigma_s_per_mm", 0.0, 1000.0, &sigma_s_per_mm);
+    q->sigma_a_per_m = soak_rgb_per_m_from_per_mm(sigma_a_per_mm);
+    q->sigma_s_per_m = soak_rgb_per_m_from_per_mm(sigma_s_per_mm);
     if (st == SOAK_OK) st = get_string(c, l, path, "source", &q->source);
     return st;
 }

@@ -39,10 +39,10 @@ static double with_faces(double R, double T, double r_e, double r_i)
     return (1.0 - r_e) * (1.0 - r_i) * T / ((a - b) * (a + b));
 }
 
-soak_status soak_sheet_transmittance(const soak_wet_params *w, double thickness_mm, double ior, soak_rgb *T)
+soak_status soak_sheet_transmittance(const soak_wet_params *w, double thickness_m, double ior, soak_rgb *T)
 {
     if (!w || !T) return SOAK_ERR_NULL;
-    if (!soak_in_range(thickness_mm, 0.0, 1e6) || !soak_in_range(w->mean_cosine, -1.0, 1.0) ||
+    if (!soak_in_range(thickness_m, 0.0, 1e3) || !soak_in_range(w->mean_cosine, -1.0, 1.0) ||
         !soak_in_range(ior, 1.0, 3.0))
         return SOAK_ERR_ARG;
     double r_e = 0.0, r_i = 0.0;
@@ -50,12 +50,12 @@ soak_status soak_sheet_transmittance(const soak_wet_params *w, double thickness_
     if (st == SOAK_OK) st = soak_fresnel_dielectric_avg(1.0 / ior, &r_i);
     if (st != SOAK_OK) return st;
     soak_rgb out = {1.0, 1.0, 1.0};
-    for (int c = 0; thickness_mm > 0.0 && c < 3; ++c) {
-        double sa = soak_rgb_at(w->sigma_a, c), ss = soak_rgb_at(w->sigma_s, c);
+    for (int c = 0; thickness_m > 0.0 && c < 3; ++c) {
+        double sa = soak_rgb_at(w->sigma_a_per_m, c), ss = soak_rgb_at(w->sigma_s_per_m, c);
         if (!soak_in_range(sa, 0.0, 1e12) || !soak_in_range(ss, 0.0, 1e12)) return SOAK_ERR_ARG;
         double K = 2.0 * sa, S = 0.75 * ss * (1.0 - w->mean_cosine) - 0.25 * sa;
         double r = 0.0, t = 1.0;
-        st = soak_km_slab(K, S > 0.0 ? S : 0.0, thickness_mm, &r, &t);
+        st = soak_km_slab(K, S > 0.0 ? S : 0.0, thickness_m, &r, &t);
         if (st != SOAK_OK) return st;
         soak_rgb_set(&out, c, with_faces(r, t, r_e, r_i));
     }

@@ -20,7 +20,7 @@ soak_wet_input soak_wet_input_steady(const soak_preset *preset, double wetness)
     in.time = 1.0;
     in.t0 = 0.0;
     in.t_fill = 0.0;
-    in.film_thickness_m = preset ? 1e-3 * preset->film_thickness_mm : 0.0;
+    in.film_thickness_m = preset ? preset->film_thickness_m : 0.0;
     return in;
 }
 
@@ -39,15 +39,15 @@ static soak_status validate(const soak_preset *p, const soak_liquid *l, const so
      * non-porous kind's porosity) must still be numbers: NaN is a caller's
      * error wherever it sits. */
     const double any[] = {p->porosity, p->phase_dry.g1, p->phase_dry.g2, p->phase_dry.w, p->phase_wet.g1,
-                          p->phase_wet.g2, p->phase_wet.w, p->sigma_t.r, p->sigma_t.g, p->sigma_t.b};
+                          p->phase_wet.g2, p->phase_wet.w, p->sigma_t_per_m.r, p->sigma_t_per_m.g, p->sigma_t_per_m.b};
     for (size_t i = 0; i < sizeof any / sizeof any[0]; ++i)
         if (!soak_is_finite(any[i])) return SOAK_ERR_ARG;
     if (!soak_in_range(l->ior, 1.0, 3.0)) return SOAK_ERR_ARG;
     if (!soak_in_range(p->ggx_alpha_dry, 1e-4, 1.0) || !soak_in_range(p->ggx_alpha_wet, 1e-4, 1.0)) return SOAK_ERR_ARG;
     for (int i = 0; i < 3; ++i) {
         if (!soak_in_range(soak_rgb_at(p->albedo, i), 0.0, 1.0) ||
-            !soak_in_range(soak_rgb_at(l->sigma_a, i), 0.0, 1000.0) ||
-            !soak_in_range(soak_rgb_at(l->sigma_s, i), 0.0, 1000.0))
+            !soak_in_range(soak_rgb_at(l->sigma_a_per_m, i), 0.0, SOAK_LIQUID_SIGMA_MAX_PER_M) ||
+            !soak_in_range(soak_rgb_at(l->sigma_s_per_m, i), 0.0, SOAK_LIQUID_SIGMA_MAX_PER_M))
             return SOAK_ERR_ARG;
     }
     if (p->kind == SOAK_KIND_CONDUCTOR) {
@@ -62,7 +62,7 @@ static soak_status validate(const soak_preset *p, const soak_liquid *l, const so
     if (soak_material_kind_porous(p->kind) && !soak_in_range(p->porosity, 1e-3, 0.95)) return SOAK_ERR_ARG;
     for (int i = 0; i < 3; ++i)
         if (!soak_in_range(soak_rgb_at(p->omega_dry, i), 0.0, 1.0) ||
-            !soak_in_range(soak_rgb_at(p->sigma_t, i), 0.0, 1e5))
+            !soak_in_range(soak_rgb_at(p->sigma_t_per_m, i), 0.0, SOAK_SIGMA_T_MAX_PER_M))
             return SOAK_ERR_ARG;
     return SOAK_OK;
 }
@@ -162,7 +162,7 @@ soak_status soak_wetness_eval(const soak_preset *p, const soak_liquid *l, const 
     o.film = o.film_coverage > 0.0;
     o.film_thickness_m = in->film_thickness_m;
     o.film_ior = l->ior;
-    for (int i = 0; i < 3; ++i) soak_rgb_set(&o.film_absorption_per_m, i, 1000.0 * soak_rgb_at(l->sigma_a, i));
+    o.film_absorption_per_m = l->sigma_a_per_m;
 
     /* Steps 3-4. */
     if (!conductor) {
@@ -172,9 +172,9 @@ soak_status soak_wetness_eval(const soak_preset *p, const soak_liquid *l, const 
         o.mean_cosine = soak_hg2_mean_cosine(&o.phase);
         double liquid_volume = porous ? p->porosity * o.fill : 0.0;
         for (int i = 0; i < 3; ++i) {
-            double omega_dry = soak_rgb_at(p->omega_dry, i), sigma_t = soak_rgb_at(p->sigma_t, i);
-            double ss = omega_dry * sigma_t + liquid_volume * soak_rgb_at(l->sigma_s, i);
-            double sa = (1.0 - omega_dry) * sigma_t + liquid_volume * soak_rgb_at(l->sigma_a, i);
+            double omega_dry = soak_rgb_at(p->omega_dry, i), sigma_t = soak_rgb_at(p->sigma_t_per_m, i);
+            double ss = omega_dry * sigma_t + liquid_volume * soak_rgb_at(l->sigma_s_per_m, i);
+            double sa = (1.0 - omega_dry) * sigma_t + liquid_volume * soak_rgb_at(l->sigma_a_per_m, i);
             /* At f = 0 use omega_dry itself so that w = 0 reproduces the dry
              * albedo bit for bit (ss / (ss + sa) could differ in the last ulp). */
             double omega = liquid_volume > 0.0 && ss + sa > 0.0 ? ss / (ss + sa) : omega_dry;
@@ -184,8 +184,8 @@ soak_status soak_wetness_eval(const soak_preset *p, const soak_liquid *l, const 
                 if (st != SOAK_OK) return st;
             }
             soak_rgb_set(&o.omega, i, omega);
-            soak_rgb_set(&o.sigma_s, i, ss);
-            soak_rgb_set(&o.sigma_a, i, sa);
+            soak_rgb_set(&o.sigma_s_per_m, i, ss);
+            soak_rgb_set(&o.sigma_a_per_m, i, sa);
             soak_rgb_set(&o.albedo_subsurface, i, r);
         }
     } else {
@@ -203,7 +203,7 @@ soak_status soak_wetness_eval(const soak_preset *p, const soak_liquid *l, const 
 
     for (int i = 0; i < 3; ++i) {
         double v[] = {soak_rgb_at(o.albedo, i), soak_rgb_at(o.albedo_total, i), soak_rgb_at(o.albedo_film, i),
-                      soak_rgb_at(o.albedo_subsurface, i), soak_rgb_at(o.sigma_s, i), soak_rgb_at(o.sigma_a, i),
+                      soak_rgb_at(o.albedo_subsurface, i), soak_rgb_at(o.sigma_s_per_m, i), soak_rgb_at(o.sigma_a_per_m, i),
                       soak_rgb_at(o.omega, i)};
         for (size_t j = 0; j < sizeof v / sizeof v[0]; ++j)
             if (!soak_is_finite(v[j])) return SOAK_ERR_NUMERIC;
@@ -222,7 +222,7 @@ soak_status soak_wetness_albedo_sun(const soak_preset *p, const soak_liquid *l, 
         return SOAK_ERR_ARG;
     for (int i = 0; i < 3; ++i)
         if (!soak_in_range(soak_rgb_at(w->albedo_subsurface, i), 0.0, 1.0) ||
-            !soak_in_range(soak_rgb_at(w->film_absorption_per_m, i), 0.0, 1e6))
+            !soak_in_range(soak_rgb_at(w->film_absorption_per_m, i), 0.0, SOAK_LIQUID_SIGMA_MAX_PER_M))
             return SOAK_ERR_ARG;
     soak_rgb a, t;
     soak_status st = interface_step(p, l, w, cos_i, &a, &t, NULL);

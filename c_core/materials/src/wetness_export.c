@@ -1,12 +1,15 @@
 /* `soak materials --json [--table N]`: the presets, with their sources, and
  * optionally their wetness tables at uniform wetness, for people and scripts
  * (no front end reads it: they read `soak export`). Field names carry their
- * units; numbers are the doubles as computed (soak/json_writer.h, digits 0). */
+ * units, those of materials.json (mm, 1/mm: converted from the core's SI here,
+ * soak/units.h) or SI where the key says _m; numbers are the doubles as
+ * computed (soak/json_writer.h, digits 0). */
 #include <stdlib.h>
 #include <string.h>
 
 #include "soak/json_writer.h"
 #include "soak/preset_json.h"
+#include "soak/units.h"
 #include "soak/wetness.h"
 
 static void add_phase(soak_json *j, cJSON *o, const char *key, const soak_hg2 *ph)
@@ -34,8 +37,8 @@ static void add_row(soak_json *j, cJSON *rows, const soak_wet_params *r, int con
     if (!conductor) {
         add_phase(j, o, "phase", &r->phase);
         soak_json_rgb(j, o, "omega", r->omega);
-        soak_json_rgb(j, o, "sigma_s_per_mm", r->sigma_s);
-        soak_json_rgb(j, o, "sigma_a_per_mm", r->sigma_a);
+        soak_json_rgb(j, o, "sigma_s_per_mm", soak_rgb_per_mm_from_per_m(r->sigma_s_per_m));
+        soak_json_rgb(j, o, "sigma_a_per_mm", soak_rgb_per_mm_from_per_m(r->sigma_a_per_m));
     }
     soak_json_num(j, o, "specular_weight", r->specular_weight);
     soak_json_num(j, o, "water_specular_weight", r->water_specular_weight);
@@ -55,9 +58,9 @@ static soak_status add_material(soak_json *j, cJSON *arr, const soak_preset *p, 
     soak_json_num(j, o, "s_p", p->s_p);
     if (porous) soak_json_str(j, o, "porosity_source", p->porosity_source);
     if (!conductor) {
-        soak_json_rgb(j, o, "sigma_t_per_mm", p->sigma_t);
-        soak_json_rgb(j, o, "sigma_s_per_mm", p->sigma_s_dry);
-        soak_json_rgb(j, o, "sigma_a_per_mm", p->sigma_a_dry);
+        soak_json_rgb(j, o, "sigma_t_per_mm", soak_rgb_per_mm_from_per_m(p->sigma_t_per_m));
+        soak_json_rgb(j, o, "sigma_s_per_mm", soak_rgb_per_mm_from_per_m(p->sigma_s_dry_per_m));
+        soak_json_rgb(j, o, "sigma_a_per_mm", soak_rgb_per_mm_from_per_m(p->sigma_a_dry_per_m));
         soak_json_rgb(j, o, "omega", p->omega_dry);
         soak_json_str(j, o, "medium_source", p->medium_source);
         add_phase(j, o, "phase_dry", &p->phase_dry);
@@ -65,9 +68,9 @@ static soak_status add_material(soak_json *j, cJSON *arr, const soak_preset *p, 
         soak_json_str(j, o, "phase_source", p->phase_source);
     }
     soak_json_num(j, o, "t_fill", p->t_fill);
-    soak_json_num(j, o, "film_thickness_mm", p->film_thickness_mm);
+    soak_json_num(j, o, "film_thickness_mm", soak_mm_from_m(p->film_thickness_m));
     soak_json_str(j, o, "wetting_source", p->wetting_source);
-    soak_json_num(j, o, "thickness_mm", p->thickness_mm);
+    soak_json_num(j, o, "thickness_mm", soak_mm_from_m(p->thickness_m));
     if (p->kind == SOAK_KIND_THIN_SHEET) soak_json_str(j, o, "sheet_source", p->sheet_source);
     if (table_n >= 2) {
         soak_status st = soak_wetness_table(p, liq, table_n, -1.0, rows);
@@ -86,8 +89,8 @@ static soak_status add_liquid(soak_json *j, cJSON *arr, const soak_liquid *l)
     soak_json_str(j, o, "name", l->name);
     soak_json_str(j, o, "display_name", l->display_name);
     soak_json_num(j, o, "ior", l->ior);
-    soak_json_rgb(j, o, "sigma_a_per_mm", l->sigma_a);
-    soak_json_rgb(j, o, "sigma_s_per_mm", l->sigma_s);
+    soak_json_rgb(j, o, "sigma_a_per_mm", soak_rgb_per_mm_from_per_m(l->sigma_a_per_m));
+    soak_json_rgb(j, o, "sigma_s_per_mm", soak_rgb_per_mm_from_per_m(l->sigma_s_per_m));
     soak_json_str(j, o, "source", l->source);
     return j->ok ? SOAK_OK : SOAK_ERR_NOMEM;
 }

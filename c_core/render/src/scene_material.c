@@ -10,6 +10,7 @@
 #include "soak/ggx.h"
 #include "soak/porous.h"
 #include "soak/preset.h"
+#include "soak/units.h"
 #include "soak/wetness.h"
 
 static void medium_majorant(soak_scene_medium *m)
@@ -130,7 +131,7 @@ static void model_view_ggx(soak_material *m)
 
 /* Preset at the chain's steady state: dry albedo and pores for the porous
  * models, the chain's subsurface albedo for the others. */
-static void preset_model_view(const soak_preset *p, const soak_wet_params *w, double unit_mm, soak_material *m)
+static void preset_model_view(const soak_preset *p, const soak_wet_params *w, double m_per_unit, soak_material *m)
 {
     model_view_base(m);
     for (int ch = 0; ch < 3; ++ch) {
@@ -141,8 +142,8 @@ static void preset_model_view(const soak_preset *p, const soak_wet_params *w, do
         q->k = conductor ? soak_rgb_at(p->ior_k, ch) : 0.0;
         q->roughness = w->ggx_alpha;
         q->n_film = w->film_ior;
-        q->absorption = soak_rgb_at(w->film_absorption_per_m, ch) * unit_mm / 1000.0;
-        q->thickness = w->film_coverage > 0 ? w->film_thickness_m * 1000.0 / unit_mm : 0.0;
+        q->absorption = soak_per_unit_from_per_m(soak_rgb_at(w->film_absorption_per_m, ch), m_per_unit);
+        q->thickness = w->film_coverage > 0 ? soak_units_from_m(w->film_thickness_m, m_per_unit) : 0.0;
         q->porosity = p->porosity;
         q->sp = p->s_p;
         q->fill = w->fill;
@@ -351,7 +352,8 @@ static soak_status parse_wet(scene_ctx *c, const cJSON *j, const char *path, soa
 /* What a preset material asks for. */
 typedef struct preset_request {
     const char *name, *liquid, *model; /* liquid, model: NULL when absent */
-    double wetness, unit_mm;
+    double wetness;
+    double m_per_unit; /* the scene's length unit, from the material's "unit_mm" */
 } preset_request;
 
 /* What the wetness chain made of the preset, kept past the preset file's lifetime. */
@@ -388,7 +390,7 @@ static soak_status eval_preset(scene_ctx *c, const char *path, const preset_requ
         out->n = p->ior_n;
         out->k = p->ior_k;
         if (st == SOAK_OK)
-            preset_model_view(p, &out->w, r->unit_mm, m);
+            preset_model_view(p, &out->w, r->m_per_unit, m);
         else
             st = sj_fail(c, st, path, "wetness evaluation failed (%s)", soak_status_str(st));
     }
@@ -402,17 +404,16 @@ static soak_status eval_preset(scene_ctx *c, const char *path, const preset_requ
  * One film of the chain's area; its thickness only where a film lies (the
  * pore part differs by the absorption of a film thickness, < 1e-3 for
  * clear liquids). */
-static void preset_film(const soak_wet_params *w, double unit_mm, soak_material *m)
+static void preset_film(const soak_wet_params *w, double m_per_unit, soak_material *m)
 {
     m->film_ior = w->film_ior;
     m->film_k = 1;
     m->film_coverage = soak_wet_interface_area(w);
-    m->film_thickness = w->film_coverage > 0 ? w->film_thickness_m * 1000.0 / unit_mm : 0.0;
-    m->film_absorption = soak_rgb3(w->film_absorption_per_m.r * unit_mm / 1000.0, w->film_absorption_per_m.g * unit_mm / 1000.0,
-                                   w->film_absorption_per_m.b * unit_mm / 1000.0);
+    m->film_thickness = w->film_coverage > 0 ? soak_units_from_m(w->film_thickness_m, m_per_unit) : 0.0;
+    m->film_absorption = soak_rgb_per_unit_from_per_m(w->film_absorption_per_m, m_per_unit);
 }
 
-static void preset_base(const preset_chain *pc, double unit_mm, soak_material *m)
+static void preset_base(const preset_chain *pc, double m_per_unit, soak_material *m)
 {
     const soak_wet_params *w = &pc->w;
     if (pc->kind == SOAK_KIND_CONDUCTOR) {
@@ -436,16 +437,17 @@ static void preset_base(const preset_chain *pc, double unit_mm, soak_material *m
          * sheets render black), so the sheet stays the slab it was; its
          * front-lit albedo is darker than the chain's (scenes/README.md). */
         m->base = SOAK_BASE_MEDIUM;
-        m->medium.sigma_s = soak_rgb3(w->sigma_s.r * unit_mm, w->sigma_s.g * unit_mm, w->sigma_s.b * unit_mm);
-        m->medium.sigma_a = soak_rgb3(w->sigma_a.r * unit_mm, w->sigma_a.g * unit_mm, w->sigma_a.b * unit_mm);
+        m->medium.sigma_s = soak_rgb_per_unit_from_per_m(w->sigma_s_per_m, m_per_unit);
+        m->medium.sigma_a = soak_rgb_per_unit_from_per_m(w->sigma_a_per_m, m_per_unit);
         m->medium.phase = w->phase;
         m->medium.ior = pc->ior;
         medium_majorant(&m->medium);
     }
 }
 
-/* Preset + wetness through soak/wetness.h (steady state). Preset
- * coefficients are per mm; "unit_mm" is the scene length unit in mm. */
+/* Preset + wetness through soak/wetness.h (steady state). The chain is in
+ * SI (m, 1/m); "unit_mm" is the scene length unit in mm (the scene file's
+ * documented key), converted here once to metres per unit. */
 static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
 {
     static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", NULL};
@@ -454,15 +456,17 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     if (st == SOAK_OK) st = sj_str(c, j, "name", path, 1, &r.name);
     if (st == SOAK_OK) st = sj_num(c, j, "wetness", path, 0, 1, 0, 0, &r.wetness);
     if (st == SOAK_OK) st = sj_str(c, j, "liquid", path, 0, &r.liquid);
-    if (st == SOAK_OK) st = sj_num_gt(c, j, "unit_mm", path, 0, 1e9, 0, 1000, &r.unit_mm);
+    double unit_mm = 0.0;
+    if (st == SOAK_OK) st = sj_num_gt(c, j, "unit_mm", path, 0, 1e9, 0, 1000, &unit_mm);
+    r.m_per_unit = soak_m_from_mm(unit_mm);
     if (st == SOAK_OK) st = sj_str(c, j, "model", path, 0, &r.model);
     if (st != SOAK_OK) return st;
     preset_chain pc;
     st = eval_preset(c, path, &r, m, &pc);
     if (st != SOAK_OK) return st;
     m->type = SOAK_MAT_WET;
-    preset_film(&pc.w, r.unit_mm, m);
-    preset_base(&pc, r.unit_mm, m);
+    preset_film(&pc.w, r.m_per_unit, m);
+    preset_base(&pc, r.m_per_unit, m);
     if (!r.model) return SOAK_OK;
     char mp[320];
     sj_path(mp, sizeof mp, path, "model");

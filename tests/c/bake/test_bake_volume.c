@@ -210,22 +210,27 @@ static void test_preset(void)
     }
     enum { N = 5 };
     soak_vol_medium rows[N];
-    check_status("rows from preset", soak_vol_rows_from_preset(sand, water, 1000.0, N, rows), SOAK_OK);
-    double worst = 0.0;
+    soak_vol_medium rows_mm[N];
+    check_status("rows from preset, box in mm", soak_vol_rows_from_preset(sand, water, 1e-3, N, rows_mm), SOAK_OK);
+    check_status("rows from preset, box in m", soak_vol_rows_from_preset(sand, water, 1.0, N, rows), SOAK_OK);
+    double worst = 0.0, worst_mm = 0.0;
     for (int i = 0; i < N; ++i) {
         soak_wet_input in = soak_wet_input_steady(sand, i / (N - 1.0));
         soak_wet_params p;
         soak_wetness_eval(sand, water, &in, &p);
-        worst = fmax(worst, fabs(rows[i].sigma_s.g - 1000.0 * p.sigma_s.g) / (1000.0 * p.sigma_s.g));
-        worst = fmax(worst, fabs(rows[i].sigma_a.b - 1000.0 * p.sigma_a.b) / (1000.0 * p.sigma_a.b + 1e-300));
+        worst = fmax(worst, fabs(rows[i].sigma_s.g - p.sigma_s_per_m.g) / p.sigma_s_per_m.g);
+        worst = fmax(worst, fabs(rows[i].sigma_a.b - p.sigma_a_per_m.b) / (p.sigma_a_per_m.b + 1e-300));
         worst = fmax(worst, fabs(rows[i].g1 - p.phase.g1));
+        worst_mm = fmax(worst_mm, fabs(1000.0 * rows_mm[i].sigma_s.g - p.sigma_s_per_m.g) / p.sigma_s_per_m.g);
+        worst_mm = fmax(worst_mm, fabs(1000.0 * rows_mm[i].sigma_a.b - p.sigma_a_per_m.b) / (p.sigma_a_per_m.b + 1e-300));
     }
-    check_close("preset rows vs soak_wetness_eval (1/mm -> 1/m), max rel diff", worst, 0.0, 1e-12);
+    check_close("preset rows (box in m) vs soak_wetness_eval (1/m), max rel diff", worst, 0.0, 1e-12);
+    check_close("preset rows (box in mm) = 1/1000 of the chain's 1/m, max rel diff", worst_mm, 0.0, 1e-12);
     soak_vol_medium m = soak_vol_rows_eval(rows, N, 0.3); /* between rows 1 (0.25) and 2 (0.5) */
     check_close("w = 0.3: g1 = 0.8 row1 + 0.2 row2", m.g1, 0.8 * rows[1].g1 + 0.2 * rows[2].g1, 1e-12);
     check_close("w = 0.3: sigma_s.r", m.sigma_s.r, 0.8 * rows[1].sigma_s.r + 0.2 * rows[2].sigma_s.r, 1e-9);
     const soak_preset *cu = soak_presets_find(db, "copper");
-    if (cu) check_status("conductor has no medium", soak_vol_rows_from_preset(cu, water, 1000.0, N, rows), SOAK_ERR_ARG);
+    if (cu) check_status("conductor has no medium", soak_vol_rows_from_preset(cu, water, 1.0, N, rows), SOAK_ERR_ARG);
     soak_presets_free(db);
 }
 

@@ -31,7 +31,7 @@ static int knot_quantities(const soak_wet_params *p, double *q)
         q[n++] = soak_rgb_at(p->albedo_total, c);
         q[n++] = soak_rgb_at(p->albedo_film, c);
         /* coefficients in 1/m, relative */
-        double ss = 1000.0 * soak_rgb_at(p->sigma_s, c), sa = 1000.0 * soak_rgb_at(p->sigma_a, c);
+        double ss = soak_rgb_at(p->sigma_s_per_m, c), sa = soak_rgb_at(p->sigma_a_per_m, c);
         q[n++] = ss / (1.0 + ss + sa);
         q[n++] = sa / (1.0 + ss + sa);
     }
@@ -301,8 +301,8 @@ static void test_sheet(void)
     if (!check_status("traced slab", soak_measure_run(&s, &r), SOAK_OK)) return;
     soak_wet_params w = {0};
     w.mean_cosine = g;
-    w.sigma_s = (soak_rgb){omega * tau, omega * tau, omega * tau};
-    w.sigma_a = (soak_rgb){(1 - omega) * tau, (1 - omega) * tau, (1 - omega) * tau};
+    w.sigma_s_per_m = (soak_rgb){omega * tau, omega * tau, omega * tau}; /* a sheet 1 m thick */
+    w.sigma_a_per_m = (soak_rgb){(1 - omega) * tau, (1 - omega) * tau, (1 - omega) * tau};
     soak_rgb T;
     check_status("sheet transmittance", soak_sheet_transmittance(&w, 1.0, 1.0, &T), SOAK_OK);
     printf("  traced slab T = %.4f +- %.4f, two-flux T = %.4f\n", r.transmittance, r.transmittance_err, T.g);
@@ -342,7 +342,7 @@ static void test_sheet_preset(const soak_preset_db *db)
     const soak_liquid *l = soak_presets_find_liquid(db, "water");
     for (int i = 0; l && i < soak_presets_count(db); ++i) {
         const soak_preset *p = soak_presets_at(db, i);
-        if (p->kind != SOAK_KIND_THIN_SHEET || !(p->thickness_mm > 0)) continue;
+        if (p->kind != SOAK_KIND_THIN_SHEET || !(p->thickness_m > 0)) continue;
         for (int k = 0; k < 2; ++k) {
             soak_wet_input in = soak_wet_input_steady(p, k);
             soak_wet_params w;
@@ -350,7 +350,7 @@ static void test_sheet_preset(const soak_preset_db *db)
             char what[160];
             snprintf(what, sizeof what, "%s wetness %d: two-flux T vs traced slab (green)", p->name, k);
             if (!check_status(what, soak_wetness_eval(p, l, &in, &w), SOAK_OK)) continue;
-            if (!check_status(what, soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &T), SOAK_OK)) continue;
+            if (!check_status(what, soak_sheet_transmittance(&w, p->thickness_m, p->ior, &T), SOAK_OK)) continue;
             soak_measure_setup s;
             soak_measure_setup_default(&s);
             s.config = SOAK_MEASURE_SLAB;
@@ -358,7 +358,7 @@ static void test_sheet_preset(const soak_preset_db *db)
             s.diffuse_incidence = 1;
             s.albedo = w.omega.g;
             s.phase = w.phase;
-            s.tau = (w.sigma_s.g + w.sigma_a.g) * p->thickness_mm;
+            s.tau = (w.sigma_s_per_m.g + w.sigma_a_per_m.g) * p->thickness_m;
             s.ior = p->ior;
             s.paths = 100000;
             soak_measure_result r;

@@ -89,7 +89,7 @@ static void test_tables(const soak_preset_db *db, const soak_osl_tables *t)
                                   fabs(soak_interp(t->kw.v, off, n, (float)L, t->kr.v, off, 1) - sqrt(w.ggx_alpha)));
                 if (p->kind == SOAK_KIND_THIN_SHEET) {
                     soak_rgb T;
-                    if ((st = soak_sheet_transmittance(&w, p->thickness_mm, p->ior, &T)) != SOAK_OK) break;
+                    if ((st = soak_sheet_transmittance(&w, p->thickness_m, p->ior, &T)) != SOAK_OK) break;
                     for (int c = 0; c < 3; ++c) {
                         float got = soak_interp_log(t->kw.v, off, n, (float)L, t->kt.v, 3 * off + c, 3);
                         double ref = soak_rgb_at(T, c);

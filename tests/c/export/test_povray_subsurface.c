@@ -64,12 +64,12 @@ static void test_between_nodes(void)
 static void test_translucency_identity(void)
 {
     const double rds[] = {0.02, 0.3, 0.655, 0.9, 0.995};
-    const double trs[] = {0.05, 1.0, 30.0};
+    const double trs[] = {0.05, 1.0, 30.0}; /* 1/mm: POV-Ray's T is in mm, the argument in 1/m */
     double worst = 0.0;
     for (int i = 0; i < 5; ++i)
         for (int j = 0; j < 3; ++j) {
             double T = 0, ap = 0;
-            soak_povray_translucency(rds[i], 1.333, trs[j], &T);
+            soak_povray_translucency(rds[i], 1.333, 1000.0 * trs[j], &T);
             soak_povray_alpha_prime(rds[i], 1.333, &ap);
             if (T <= SOAK_POVRAY_TRANSLUCENCY_MIN || T >= SOAK_POVRAY_TRANSLUCENCY_MAX) continue;
             double sps = 1.0 / T, spt = sps / ap, sa = spt - sps;

@@ -362,11 +362,11 @@ static void check_water(const soak_preset_db *db)
 {
     const soak_liquid *w = soak_presets_find_liquid(db, "water");
     if (!check_true("water present", w != NULL)) return;
-    check_close("water sigma_a R = Pope & Fry 600-700 nm average (1/m)", w->sigma_a.r * 1000, band_average(600, 700),
+    check_close("water sigma_a R = Pope & Fry 600-700 nm average (1/m)", w->sigma_a_per_m.r, band_average(600, 700),
                 1e-5);
-    check_close("water sigma_a G = Pope & Fry 500-600 nm average (1/m)", w->sigma_a.g * 1000, band_average(500, 600),
+    check_close("water sigma_a G = Pope & Fry 500-600 nm average (1/m)", w->sigma_a_per_m.g, band_average(500, 600),
                 1e-5);
-    check_close("water sigma_a B = Pope & Fry 400-500 nm average (1/m)", w->sigma_a.b * 1000, band_average(400, 500),
+    check_close("water sigma_a B = Pope & Fry 400-500 nm average (1/m)", w->sigma_a_per_m.b, band_average(400, 500),
                 1e-5);
     check_close("water index 1.333", w->ior, 1.333, 0);
 }

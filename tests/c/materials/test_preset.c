@@ -49,7 +49,7 @@ static void check_shipped(void)
                  p->ior_source[0] && p->wetting_source[0];
         for (int c = 0; c < 3; ++c) ok = ok && soak_in_range(soak_rgb_at(p->albedo, c), 0, 1);
         ok = ok && soak_in_range(p->ggx_alpha_dry, 1e-4, 1) && soak_in_range(p->ggx_alpha_wet, 1e-4, p->ggx_alpha_dry);
-        ok = ok && soak_in_range(p->t_fill, 0, 1e6) && soak_in_range(p->film_thickness_mm, 0, 1000);
+        ok = ok && soak_in_range(p->t_fill, 0, 1e6) && soak_in_range(p->film_thickness_m, 0, 1);
         if (p->kind == SOAK_KIND_CONDUCTOR) {
             for (int c = 0; c < 3; ++c) {
                 double want = f0(soak_rgb_at(p->ior_n, c), soak_rgb_at(p->ior_k, c));
@@ -64,8 +64,8 @@ static void check_shipped(void)
                 snprintf(what, sizeof what, "%s: van de Hulst R(omega_dry[%d]) = dry albedo", p->name, c);
                 check_close(what, vdh_albedo(om, g), soak_rgb_at(p->albedo, c), 1e-10);
                 snprintf(what, sizeof what, "%s: sigma_s + sigma_a = sigma_t [%d]", p->name, c);
-                check_rel(what, soak_rgb_at(p->sigma_s_dry, c) + soak_rgb_at(p->sigma_a_dry, c),
-                          soak_rgb_at(p->sigma_t, c), 1e-14);
+                check_rel(what, soak_rgb_at(p->sigma_s_dry_per_m, c) + soak_rgb_at(p->sigma_a_dry_per_m, c),
+                          soak_rgb_at(p->sigma_t_per_m, c), 1e-14);
             }
         }
         if (soak_material_kind_porous(p->kind))
@@ -87,7 +87,7 @@ static void check_shipped(void)
         check_true("limestone porosity in seed 001's 30-45%", soak_in_range(lime->porosity, 0.30, 0.45));
         check_true("clay porosity in seed 001's 40-50%", soak_in_range(clay->porosity, 0.40, 0.50));
         check_close("sand dry forward g (seed 000)", sand->phase_dry.g1, 0.2, 0);
-        check_close("paper thickness 0.8 mm (seed 000)", paper->thickness_mm, 0.8, 0);
+        check_close("paper thickness 0.8 mm (seed 000), in m", paper->thickness_m, 0.8e-3, 1e-18);
         check_true("paper is a thin sheet", paper->kind == SOAK_KIND_THIN_SHEET);
         check_true("marble is non-porous", marble->kind == SOAK_KIND_NONPOROUS_DIELECTRIC);
         check_true("copper is a conductor", copper->kind == SOAK_KIND_CONDUCTOR);

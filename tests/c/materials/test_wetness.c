@@ -91,7 +91,7 @@ static void check_dry(const soak_preset_db *db, const soak_liquid *water)
                  o.film_coverage == 0 && !o.film;
         if (p->kind != SOAK_KIND_CONDUCTOR)
             ok = ok && o.phase.g1 == p->phase_dry.g1 && o.phase.g2 == p->phase_dry.g2 && o.phase.w == p->phase_dry.w &&
-                 rgb_eq(o.sigma_s, p->sigma_s_dry) && rgb_eq(o.sigma_a, p->sigma_a_dry) && rgb_eq(o.omega, p->omega_dry);
+                 rgb_eq(o.sigma_s_per_m, p->sigma_s_dry_per_m) && rgb_eq(o.sigma_a_per_m, p->sigma_a_dry_per_m) && rgb_eq(o.omega, p->omega_dry);
         /* liquid not yet arrived: t < t0 at full wetness is dry too */
         in = soak_wet_input_steady(p, 1.0);
         in.time = 0.2;
@@ -326,8 +326,8 @@ static void check_paper(const soak_preset_db *db, const soak_liquid *water)
     for (int c = 0; c < 3; ++c) {
         char what[96];
         snprintf(what, sizeof what, "coffee: sigma_a[%d] = dry + porosity * liquid", c);
-        check_rel(what, soak_rgb_at(cw.sigma_a, c),
-                  soak_rgb_at(paper->sigma_a_dry, c) + paper->porosity * soak_rgb_at(coffee->sigma_a, c), 1e-14);
+        check_rel(what, soak_rgb_at(cw.sigma_a_per_m, c),
+                  soak_rgb_at(paper->sigma_a_dry_per_m, c) + paper->porosity * soak_rgb_at(coffee->sigma_a_per_m, c), 1e-14);
     }
     check_true("coffee stains darker than water in every channel",
                cw.albedo.r < ww.albedo.r && cw.albedo.g < ww.albedo.g && cw.albedo.b < ww.albedo.b);
@@ -339,7 +339,7 @@ static int params_equal(const soak_wet_params *a, const soak_wet_params *b)
     return a->wetness == b->wetness && a->fill == b->fill && a->film_coverage == b->film_coverage &&
            rgb_eq(a->albedo, b->albedo) && rgb_eq(a->albedo_total, b->albedo_total) && a->ggx_alpha == b->ggx_alpha &&
            a->phase.g1 == b->phase.g1 && a->phase.g2 == b->phase.g2 && a->phase.w == b->phase.w &&
-           rgb_eq(a->sigma_s, b->sigma_s) && rgb_eq(a->sigma_a, b->sigma_a) &&
+           rgb_eq(a->sigma_s_per_m, b->sigma_s_per_m) && rgb_eq(a->sigma_a_per_m, b->sigma_a_per_m) &&
            a->water_specular_weight == b->water_specular_weight && a->film_thickness_m == b->film_thickness_m;
 }
 

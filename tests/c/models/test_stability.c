@@ -856,7 +856,7 @@ static void sweep_wetness(tallies *ts, soak_rng *r, const soak_preset_db *db, in
         in.film_thickness_m = arg(r, 0.0, SOAK_WET_FILM_MAX_M, pb, &v);
         /* a preset or liquid built by hand with a NaN in a field the chain reads */
         if (uni(r) < pb * 0.5) {
-            double *fields[] = {&p.albedo.g, &p.ggx_alpha_wet, &l.ior, &l.sigma_a.b, &p.phase_wet.g1, &p.sigma_t.r};
+            double *fields[] = {&p.albedo.g, &p.ggx_alpha_wet, &l.ior, &l.sigma_a_per_m.b, &p.phase_wet.g1, &p.sigma_t_per_m.r};
             *fields[(int)(uni(r) * 6)] = NAN;
             v = v_pl = 0;
         }
@@ -867,7 +867,7 @@ static void sweep_wetness(tallies *ts, soak_rng *r, const soak_preset_db *db, in
         for (int c = 0; c < 3; ++c)
             ok = ok && in01(soak_rgb_at(o.albedo, c)) && in01(soak_rgb_at(o.albedo_total, c)) &&
                  in01(soak_rgb_at(o.albedo_film, c)) && in01(soak_rgb_at(o.albedo_subsurface, c)) &&
-                 nonneg(soak_rgb_at(o.sigma_s, c)) && nonneg(soak_rgb_at(o.sigma_a, c));
+                 nonneg(soak_rgb_at(o.sigma_s_per_m, c)) && nonneg(soak_rgb_at(o.sigma_a_per_m, c));
         ok = ok && in01(o.progress) && in01(o.fill) && in01(o.film_coverage) && in01(o.liquid) &&
              rng_ok(o.ggx_alpha, 1e-4, 1.0) && rng_ok(o.mean_cosine, -1.0, 1.0) && in01(o.specular_weight) &&
              in01(o.water_specular_weight);
@@ -903,7 +903,7 @@ static void monotone_wetness(soak_rng *r, const soak_preset_db *db)
         const soak_preset *p = soak_presets_at(db, i);
         if (!soak_material_kind_porous(p->kind)) continue;
         for (int li = 0; li < soak_presets_liquid_count(db); ++li)
-            for (int rep = 0; rep < 2 && soak_rgb_max(soak_presets_liquid_at(db, li)->sigma_s) == 0.0; ++rep) {
+            for (int rep = 0; rep < 2 && soak_rgb_max(soak_presets_liquid_at(db, li)->sigma_s_per_m) == 0.0; ++rep) {
                 soak_wet_input in = soak_wet_input_steady(p, 0.0);
                 in.time = uni(r);
                 in.t_fill = rep ? 0.0 : uni(r);

@@ -99,11 +99,11 @@ double soak_vol_turbulence_wetness(void *ctx, double x, double y, double z);
 
 
 /* Wetness table of a preset soaked with a liquid (soak_wetness_table, steady
- * state, the preset's film thickness): sigma_s, sigma_a converted from 1/mm
- * to 1/(length unit) with unit_mm = millimetres per length unit of the box
- * (1000 for metres), phase g1, g2, w. A conductor has no medium:
- * SOAK_ERR_ARG. */
-soak_status soak_vol_rows_from_preset(const soak_preset *preset, const soak_liquid *liquid, double unit_mm,
+ * state, the preset's film thickness): sigma_s, sigma_a converted from the
+ * chain's 1/m to 1/(length unit) with m_per_unit = metres per length unit
+ * of the box, in [1e-12, 1e6] (1 for metres, 1e-3 for mm), phase g1, g2, w.
+ * A conductor has no medium: SOAK_ERR_ARG. */
+soak_status soak_vol_rows_from_preset(const soak_preset *preset, const soak_liquid *liquid, double m_per_unit,
                                       int n_rows, soak_vol_medium *rows);
 
 #endif

@@ -35,8 +35,10 @@
  * boundary of relative index eta in [1, 10]. */
 soak_status soak_povray_alpha_prime(double rd, double eta, double *alpha_prime);
 
-/* Translucency (mm) giving POV-Ray's BSSRDF, with pigment rd and interior
- * ior eta, the diffusion coefficient sigma_tr (1/mm, >= 0) of the core. */
-soak_status soak_povray_translucency(double rd, double eta, double sigma_tr, double *translucency_mm);
+/* Translucency giving POV-Ray's BSSRDF, with pigment rd and interior ior
+ * eta, the core's diffusion coefficient sigma_tr_per_m (1/m, >= 0). The
+ * result is in POV-Ray's unit, mm (its translucency is read through
+ * global_settings' mm_per_unit): the one conversion out of the core's SI. */
+soak_status soak_povray_translucency(double rd, double eta, double sigma_tr_per_m, double *translucency_mm);
 
 #endif

@@ -27,9 +27,11 @@
  * {wet_dry_ratio, spread, dry_albedo, wetness, quantity, source}}; a liquid {name,
  * display_name, ior, sigma_a_per_mm, sigma_s_per_mm, source}.
  *
- * Units: extinction sigma_t and liquid sigma_a/sigma_s in 1/mm; thicknesses
- * in mm. Albedo is linear RGB: the diffuse albedo for dielectrics, the
- * normal-incidence reflectance F0 for conductors (checked against n, k).
+ * Units: the file gives extinction sigma_t and liquid sigma_a/sigma_s in
+ * 1/mm and thicknesses in mm (its keys say so); the loader converts them
+ * once (soak/units.h) and every field below is in SI, m and 1/m. Albedo is
+ * linear RGB: the diffuse albedo for dielectrics, the normal-incidence
+ * reflectance F0 for conductors (checked against n, k).
  *
  * Derived on load: the single-scattering albedo omega of the dry medium by
  * inverting the dry albedo with van de Hulst's formula (soak/vdhulst.h) at
@@ -83,7 +85,7 @@ typedef struct soak_preset {
     double s_p;        /* Merillou pore depth/diameter ratio, 0 for non-porous kinds */
     const char *porosity_source;
 
-    soak_rgb sigma_t;  /* extinction, 1/mm; zero for conductors */
+    soak_rgb sigma_t_per_m; /* extinction, 1/m; zero for conductors */
     const char *medium_source;
 
     soak_hg2 phase_dry; /* w is the weight of the g1 lobe (soak/hg.h) */
@@ -91,10 +93,10 @@ typedef struct soak_preset {
     const char *phase_source;
 
     double t_fill;            /* default pore fill time (seed 002 relative units), >= 0 */
-    double film_thickness_mm; /* default film thickness, mm, >= 0 */
+    double film_thickness_m;  /* default film thickness, m, >= 0 */
     const char *wetting_source;
 
-    double thickness_mm; /* thin sheets: sheet thickness, mm; 0 = semi-infinite */
+    double thickness_m;  /* thin sheets: sheet thickness, m; 0 = semi-infinite */
     const char *sheet_source;
 
     /* Optional "measured" group: a published wet/dry reflectance ratio the
@@ -115,16 +117,19 @@ typedef struct soak_preset {
 
     /* Derived on load (see above). Zero for conductors. */
     soak_rgb omega_dry;   /* single-scattering albedo of the dry medium */
-    soak_rgb sigma_s_dry; /* 1/mm */
-    soak_rgb sigma_a_dry; /* 1/mm */
+    soak_rgb sigma_s_dry_per_m;
+    soak_rgb sigma_a_dry_per_m;
 } soak_preset;
+
+#define SOAK_SIGMA_T_MAX_PER_M 1e8       /* a preset's extinction (1e5 / mm) */
+#define SOAK_LIQUID_SIGMA_MAX_PER_M 1e6  /* a liquid's coefficients (1000 / mm) */
 
 typedef struct soak_liquid {
     const char *name;
     const char *display_name;
     double ior;       /* relative to air, [1, 3] */
-    soak_rgb sigma_a; /* absorption, 1/mm, [0, 1000] */
-    soak_rgb sigma_s; /* scattering, 1/mm, [0, 1000] */
+    soak_rgb sigma_a_per_m; /* absorption, [0, SOAK_LIQUID_SIGMA_MAX_PER_M] */
+    soak_rgb sigma_s_per_m; /* scattering, [0, SOAK_LIQUID_SIGMA_MAX_PER_M] */
     const char *source;
 } soak_liquid;
 
@@ -149,9 +154,10 @@ int soak_presets_count(const soak_preset_db *db);
 const soak_preset *soak_presets_at(const soak_preset_db *db, int index); /* NULL if out of range */
 const soak_preset *soak_presets_find(const soak_preset_db *db, const char *name); /* NULL if absent */
 
-/* Recomputes the derived fields (omega_dry, sigma_s_dry, sigma_a_dry) of a
- * preset built or edited by hand from albedo, phase_dry and sigma_t; the
- * loader calls it. Conductors: the derived fields are set to zero. */
+/* Recomputes the derived fields (omega_dry, sigma_s_dry_per_m,
+ * sigma_a_dry_per_m) of a preset built or edited by hand from albedo,
+ * phase_dry and sigma_t_per_m; the loader calls it. Conductors: the derived
+ * fields are set to zero. */
 soak_status soak_preset_derive(soak_preset *preset);
 
 int soak_presets_liquid_count(const soak_preset_db *db);

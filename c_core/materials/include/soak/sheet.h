@@ -35,9 +35,10 @@ soak_status soak_km_transmittance(double K, double S, double d, double *T);
 /* Kubelka-Munk reflectance and transmittance of a slab (as above). */
 soak_status soak_km_slab(double K, double S, double d, double *R, double *T);
 
-/* Per channel, for wetness parameters w (sigma in 1/mm, mean cosine), a
- * sheet thickness_mm >= 0 (0: no sheet, T = 1: its faces vanish with it)
- * and the sheet's index ior in [1, 3] relative to air (1: index matched). */
-soak_status soak_sheet_transmittance(const soak_wet_params *w, double thickness_mm, double ior, soak_rgb *T);
+/* Per channel, for wetness parameters w (sigma_s_per_m, sigma_a_per_m,
+ * mean cosine), a sheet thickness_m in [0, 1000] m (0: no sheet, T = 1: its
+ * faces vanish with it) and the sheet's index ior in [1, 3] relative to air
+ * (1: index matched). */
+soak_status soak_sheet_transmittance(const soak_wet_params *w, double thickness_m, double ior, soak_rgb *T);
 
 #endif

@@ -51,7 +51,7 @@
  *      film: coverage c, thickness h; where the film lies it REPLACES the
  *        pore water's surface (one interface, one TIR).
  *    With T_h(A) = soak_film_albedo_diffuse (index n_liquid, absorption
- *    1000 sigma_a,liquid 1/m, thickness h) for dielectrics,
+ *    sigma_a,liquid, thickness h) for dielectrics,
  *      albedo_film  = T_h(A) - T_h(0)   (A = albedo_subsurface; T_h(0) is the
  *                                        interface's own specular part S_h)
  *      open         = (1 - a) A + a (T_0(A) - T_0(0))
@@ -83,7 +83,11 @@
  *
  * Limitations: the semi-infinite formula is used for thin sheets too (their
  * front-lit albedo; translucency needs a volumetric renderer with sigma_s,
- * sigma_a, phase and thickness_mm); the film is flat and non-scattering. */
+ * sigma_a, phase and thickness_m); the film is flat and non-scattering.
+ *
+ * Units: every length here is in metres and every coefficient in 1/m
+ * (fields named _m, _per_m), as in soak_preset; the files' mm and 1/mm are
+ * converted where they are read and written (soak/units.h). */
 #ifndef SOAK_WETNESS_H
 #define SOAK_WETNESS_H
 
@@ -114,7 +118,7 @@ typedef struct soak_wet_params {
     int film;                /* c > 0 */
     double film_thickness_m; /* thickness of the film where present */
     double film_ior;         /* n_liquid */
-    soak_rgb film_absorption_per_m;
+    soak_rgb film_absorption_per_m; /* the liquid's sigma_a */
 
     soak_rgb albedo_subsurface; /* step 4 */
     soak_rgb albedo_film;       /* step 5, at full coverage */
@@ -125,8 +129,8 @@ typedef struct soak_wet_params {
     soak_hg2 phase;             /* zero for conductors */
     double mean_cosine;
     soak_rgb omega;             /* single-scattering albedo; zero for conductors */
-    soak_rgb sigma_s;           /* 1/mm */
-    soak_rgb sigma_a;           /* 1/mm */
+    soak_rgb sigma_s_per_m;
+    soak_rgb sigma_a_per_m;
 
     double specular_weight;       /* material's own specular, 1 - porosity */
     double water_specular_weight; /* porosity * f */

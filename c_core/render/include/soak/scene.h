@@ -6,7 +6,14 @@
  * errors "scene.json: line 12, column 5: JSON syntax error". Unknown keys
  * are errors (a misspelt key would otherwise be silently ignored). Relative
  * file names inside a scene (meshes, wet maps, environment maps, volumes)
- * are resolved against the scene file's folder. */
+ * are resolved against the scene file's folder.
+ *
+ * Units: a scene has its own length unit (positions, sizes, film
+ * thicknesses; coefficients per that unit), not necessarily metres. A
+ * preset material's chain is in SI (m, 1/m, soak/wetness.h); its "unit_mm"
+ * (the scene unit in mm, default 1000) converts it to the scene's unit once,
+ * where the material is parsed (soak/units.h); the tracer sees only scene
+ * units. */
 #ifndef SOAK_SCENE_H
 #define SOAK_SCENE_H
 
