@@ -32,6 +32,7 @@ static void model_desc(const soak_material *m, int wet, soak_bsdf_desc *d)
 static soak_status material_setup(const soak_material *m, int trace_films, rt_material_bsdf *out)
 {
     soak_bsdf_desc d;
+    out->has_wet = out->has_pore = 0;
     if (m->type == SOAK_MAT_MODEL) {
         model_desc(m, 0, &d);
         soak_status st = soak_bsdf_setup(&d, &out->dry);
@@ -48,7 +49,11 @@ static soak_status material_setup(const soak_material *m, int trace_films, rt_ma
     d.film_thickness = m->film_thickness;
     d.film_traced = trace_films;
     out->has_wet = 1;
-    return soak_bsdf_setup(&d, &out->wet);
+    st = soak_bsdf_setup(&d, &out->wet);
+    if (st != SOAK_OK || !(m->film_pore_share > 0 && m->film_thickness > 0)) return st;
+    d.film_thickness = 0.0;
+    out->has_pore = 1;
+    return soak_bsdf_setup(&d, &out->pore);
 }
 
 soak_status rt_bsdfs_setup(const soak_scene *s, int trace_films, rt_material_bsdf *bsdfs, char *err, size_t errlen)

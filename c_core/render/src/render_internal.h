@@ -56,7 +56,8 @@ typedef struct rt_env {
  * and wet (chosen with probability wetness * film coverage) when has_wet. */
 typedef struct rt_material_bsdf {
     soak_bsdf dry, wet;
-    int has_wet;
+    soak_bsdf pore; /* the wet state's interface at zero thickness (has_pore) */
+    int has_wet, has_pore;
 } rt_material_bsdf;
 
 struct rt_photon_map;

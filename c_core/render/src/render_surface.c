@@ -205,7 +205,8 @@ void rt_surface(rt_thread *t, const soak_hit *hit, rt_path *path)
     const soak_bsdf *b = &mb->dry;
     if (mb->has_wet) {
         double w = soak_scene_wetness(obj, hit->p, hit->u, hit->v) * m->film_coverage;
-        if (rt_rand(t) < w) b = &mb->wet;
+        double u = rt_rand(t); /* one draw: the film's pixels stay as they were without pores */
+        if (u < w) b = mb->has_pore && u >= w * (1.0 - m->film_pore_share) ? &mb->pore : &mb->wet;
     }
     if (b->flags & SOAK_BSDF_TRANSMIT) dielectric(t, hit, m, b, path);
     else if (b->flags & SOAK_BSDF_WALK) walk(t, hit, b, path);

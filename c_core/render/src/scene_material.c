@@ -401,14 +401,16 @@ static soak_status eval_preset(scene_ctx *c, const char *path, const preset_requ
 /* The chain's liquid-air interface (wetness.h step 5): the film over the
  * coverage c and the pore water's surface (zero thickness) over porosity *
  * fill of the rest (soak_wet_interface_area, the one owner of that area).
- * One film of the chain's area; its thickness only where a film lies (the
- * pore part differs by the absorption of a film thickness, < 1e-3 for
- * clear liquids). */
+ * A wet draw is the film with its thickness, or with probability
+ * film_pore_share = 1 - c / area the pore water at zero thickness: a
+ * coloured liquid absorbs over the film's path only where a film lies
+ * (brick + coffee at w = 0.5 was 22.5 % dark with one thick film over both). */
 static void preset_film(const soak_wet_params *w, double m_per_unit, soak_material *m)
 {
     m->film_ior = w->film_ior;
     m->film_k = 1;
     m->film_coverage = soak_wet_interface_area(w);
+    m->film_pore_share = m->film_coverage > 0 ? 1.0 - fmin(w->film_coverage / m->film_coverage, 1.0) : 0.0;
     m->film_thickness = w->film_coverage > 0 ? soak_units_from_m(w->film_thickness_m, m_per_unit) : 0.0;
     m->film_absorption = soak_rgb_per_unit_from_per_m(w->film_absorption_per_m, m_per_unit);
 }

@@ -25,6 +25,12 @@
  *  6. A thin, weakly scattering index-matched slab lit from behind: the
  *     radiance toward a viewer in front is single scattering in closed form
  *     (next-event estimation must find the face the light enters through).
+ *  7. A preset under a coloured liquid with both a film and water-filled
+ *     pores (brick + coffee at w = 0.5: film over c = 0.23, pore water over
+ *     0.27) under the uniform sky: the radiance toward an overhead camera is
+ *     the chain's directional-hemispherical total at normal incidence
+ *     (soak_wetness_albedo_sun, reciprocity), where the film absorbs over its
+ *     thickness and the pore water over none.
  *  5. A heterogeneous parameter grid (soak grid format) holding the same
  *     half-space parameters, plus one far-away dense voxel that raises the
  *     majorant (so null collisions happen everywhere), gives the same
@@ -42,6 +48,8 @@
 #include "render_harness.h"
 #include "soak/film.h"
 #include "soak/measure.h"
+#include "soak/preset.h"
+#include "soak/wetness.h"
 #include "soak/render.h"
 #include "soak/scene.h"
 
@@ -319,6 +327,37 @@ static void test_determinism(void)
     soak_scene_free(&scene);
 }
 
+static void test_preset_film_and_pores(void)
+{
+    soak_preset_db *db = NULL;
+    char err[256];
+    if (!check_status("presets", soak_presets_load(NULL, &db, err, sizeof err), SOAK_OK)) return;
+    const soak_preset *p = soak_presets_find(db, "brick");
+    const soak_liquid *l = soak_presets_find_liquid(db, "coffee");
+    soak_wet_input in = p ? soak_wet_input_steady(p, 0.5) : (soak_wet_input){0};
+    soak_wet_params w;
+    soak_rgb dir, total;
+    if (check_true("brick and coffee", p && l) && check_status("chain", soak_wetness_eval(p, l, &in, &w), SOAK_OK) &&
+        check_status("sun albedo", soak_wetness_albedo_sun(p, l, &w, 1.0, &dir, &total), SOAK_OK)) {
+        check_true("both a film and uncovered pore water", w.film_coverage > 0.1 && soak_wet_interface_area(&w) > w.film_coverage + 0.1);
+        char cam[256], text[2048];
+        camera_json(cam, sizeof cam, 0.0, 5);
+        snprintf(text, sizeof text,
+                 "{\"render\": {\"width\": 1, \"height\": 1, \"max_depth\": 1000}, %s,"
+                 " \"environment\": {\"type\": \"constant\", \"radiance\": 1},"
+                 " \"materials\": {\"m\": {\"type\": \"preset\", \"name\": \"brick\", \"liquid\": \"coffee\", \"wetness\": 0.5}},"
+                 " \"objects\": [{\"type\": \"plane\", \"size\": [4000, 4000], \"material\": \"m\"}]}",
+                 cam);
+        double m, se;
+        if (render_mean("brick + coffee", text, 65536, &m, &se)) {
+            double ref = (total.r + total.g + total.b) / 3;
+            printf("  brick + coffee w 0.5, overhead: traced %.5f +- %.5f, chain %.5f\n", m, se, ref);
+            check_close("preset with film and pore water = the chain's directional total", m, ref, 4 * se + 1e-3);
+        }
+    }
+    soak_presets_free(db);
+}
+
 int main(void)
 {
     setvbuf(stdout, NULL, _IONBF, 0);
@@ -329,5 +368,6 @@ int main(void)
     test_backlit_single_scattering();
     test_sand();
     test_rock();
+    test_preset_film_and_pores();
     return check_finish();
 }
