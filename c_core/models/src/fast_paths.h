@@ -28,7 +28,7 @@ static inline film_fast film_fast_make(const soak_film_ctx *ctx, double base_alb
 }
 
 /* 1 - F of light from air at cos_i in (0, 1] and the refracted cosine: the
- * dielectric Fresnel of fresnel_dielectric_inline without its branches,
+ * dielectric Fresnel of soak_fresnel_dielectric_raw without its branches,
  * since from air into n >= 1 there is no total internal reflection
  * (sin^2 t = (1 - cos_i^2) / n^2 < 1). */
 static inline double film_transmit(const film_fast *f, double cos_i, double *cos_t)

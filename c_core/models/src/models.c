@@ -69,9 +69,9 @@ static soak_status params_ok(const soak_model_params *p)
 
 /* soak_v3_is_unit for two directions with one branch: |v|^2 - 1 is exact
  * near 1, and a NaN or Inf component fails the comparison. */
-static int both_unit(soak_vec3 a, soak_vec3 b)
+static int both_unit(const soak_vec3 *a, const soak_vec3 *b)
 {
-    double la = a.x * a.x + a.y * a.y + a.z * a.z, lb = b.x * b.x + b.y * b.y + b.z * b.z;
+    double la = a->x * a->x + a->y * a->y + a->z * a->z, lb = b->x * b->x + b->y * b->y + b->z * b->z;
     return (fabs(la - 1.0) <= SOAK_UNIT_TOL) & (fabs(lb - 1.0) <= SOAK_UNIT_TOL);
 }
 
@@ -338,25 +338,29 @@ const soak_model *soak_model_find(const char *name)
 
 /* The fast paths of this file by name, so that the compiler puts their
  * bodies (fast_paths.h) here: no indirect call, no copy of the directions. */
-static inline double eval_fast_inline(eval_fast_fn fn, const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo)
+static inline double eval_fast_inline(eval_fast_fn fn, const soak_model_ctx *ctx, const soak_vec3 *wi, const soak_vec3 *wo)
 {
-    if (fn == ww_triace_eval_fast) return ww_triace_value(ctx, wi, wo);
-    if (fn == film_ctx_eval_fast) return film_ctx_value(ctx, wi, wo);
-    return fn(ctx, wi, wo);
+    if (fn == ww_triace_eval_fast) {
+        const triace_fast *k = &((const ww_ctx *)ctx->bytes)->k;
+        return triace_eval_fast(k, *wi, wi->x * wi->x + wi->y * wi->y, *wo, wo->x * wo->x + wo->y * wo->y);
+    }
+    if (fn == film_ctx_eval_fast) return film_brdf_fast(&((const film_ctx *)ctx->bytes)->fast, *wi, *wo);
+    return fn(ctx, *wi, *wo);
 }
 
 soak_status soak_model_eval(const soak_model *m, const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo, double *f)
 {
     if (!m || !ctx || !f) return SOAK_ERR_NULL;
-    if (!both_unit(wi, wo)) return SOAK_ERR_ARG;
-    if (!(wi.z > 0.0 && wo.z > 0.0)) {
+    const soak_vec3 *a = &wi, *b = &wo;
+    if (!both_unit(a, b)) return SOAK_ERR_ARG;
+    if (!(a->z > 0.0 && b->z > 0.0)) {
         *f = 0.0;
         return SOAK_OK;
     }
     double v;
     if (m->eval_fast) {
         if (!ctx_marked(ctx, m->eval_fast)) return SOAK_ERR_ARG;
-        v = eval_fast_inline(m->eval_fast, ctx, wi, wo);
+        v = eval_fast_inline(m->eval_fast, ctx, a, b);
     } else {
         soak_status st = m->eval(ctx, wi, wo, &v);
         if (st != SOAK_OK) return st;
