@@ -228,12 +228,28 @@ typedef struct exposure_job {
     int failed;
 } exposure_job;
 
+/* The rays of one texel go to the occlusion test in batches of BATCH
+ * (Embree packets); the weights are added in ray order, so acc is the sum a
+ * ray-by-ray loop makes. */
+enum { BATCH = 64 };
+
+static double add_unoccluded(exposure_job *j, const soak_ray *rays, const double *weights, int n, double acc)
+{
+    int occ[BATCH];
+    if (soak_geometry_occluded_n(j->g, rays, (size_t)n, occ) != SOAK_OK) j->failed = 1;
+    for (int q = 0; q < n; ++q)
+        if (!occ[q]) acc += weights[q];
+    return acc;
+}
+
 static void exposure_row(void *ctx, int y, int thread)
 {
     (void)thread;
     exposure_job *j = ctx;
     const rain_surface *s = j->s;
     int N = j->p->rays;
+    soak_ray rays[BATCH];
+    double weights[BATCH];
     for (int x = 0; x < s->w; ++x) {
         size_t i = (size_t)y * s->w + x;
         if (s->tri[i] < 0) {
@@ -245,6 +261,7 @@ static void exposure_row(void *ctx, int y, int thread)
         soak_rng rng;
         soak_rng_seed(&rng, j->p->seed, (uint64_t)i);
         double acc = 0.0;
+        int queued = 0;
         for (int k = 0; k < N; ++k) {
             double xi1 = (k + soak_rng_uniform(&rng)) / N, xi2 = soak_rng_uniform(&rng);
             double phi = 2.0 * SOAK_PI * xi2, weight;
@@ -261,11 +278,14 @@ static void exposure_row(void *ctx, int y, int thread)
                 weight = soak_v3_dot(n, u) / j->f_open;
                 if (!(weight > 0.0)) continue;
             }
-            soak_ray r = {soak_geometry_offset(p, n, u), u, 0.0, INFINITY};
-            int occ = 1;
-            if (soak_geometry_occluded(j->g, &r, &occ) != SOAK_OK) j->failed = 1;
-            if (!occ) acc += weight;
+            rays[queued] = (soak_ray){soak_geometry_offset(p, n, u), u, 0.0, INFINITY};
+            weights[queued++] = weight;
+            if (queued == BATCH) {
+                acc = add_unoccluded(j, rays, weights, queued, acc);
+                queued = 0;
+            }
         }
+        if (queued) acc = add_unoccluded(j, rays, weights, queued, acc);
         j->out[i] = (float)(acc / N);
     }
 }

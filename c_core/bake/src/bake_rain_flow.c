@@ -1,11 +1,16 @@
 /* Fused downhill-flow sweeps of the rain bake (bake_rain_flow.h). */
 #include "bake_rain_flow.h"
 
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
-const int SOAK_RAIN_DX[8] = {1, 1, 0, -1, -1, -1, 0, 1};
-const int SOAK_RAIN_DY[8] = {0, -1, -1, -1, 0, 1, 1, 1};
+#define FLOW_DX_INIT {1, 1, 0, -1, -1, -1, 0, 1}
+#define FLOW_DY_INIT {0, -1, -1, -1, 0, 1, 1, 1}
+const int SOAK_RAIN_DX[8] = FLOW_DX_INIT;
+const int SOAK_RAIN_DY[8] = FLOW_DY_INIT;
+/* The same, as constants the compiler folds into unrolled loops. */
+static const int FLOW_DX[8] = FLOW_DX_INIT, FLOW_DY[8] = FLOW_DY_INIT;
 
 /* Rows per task; each task also computes the outflows of one row either
  * side of its band, so wider bands repeat less work. */
@@ -25,9 +30,15 @@ typedef struct flow_job {
     double *next;
     flux *scratch;        /* 3 rows (a ring: row y in slot y % 3) per thread */
     unsigned char *pulls; /* bit d: neighbour d exists and sends to this texel (its adj has the way back) */
+    ptrdiff_t step[8];    /* index offset of neighbour d */
+    /* level + depth per covered texel before and after the sweep, each sum
+     * made once (by the gather that writes the depth) instead of by all
+     * nine texels that read it */
+    const double *lvl;
+    double *lvl_next;
 } flow_job;
 
-static double level_at(const flow_job *j, size_t i) { return j->g->level[i] + j->depth[i]; }
+static double level_at(const flow_job *j, size_t i) { return j->lvl[i]; }
 
 static void texel_flux(const flow_job *j, int x, int y, flux *f)
 {
@@ -42,12 +53,19 @@ static void texel_flux(const flow_job *j, int x, int y, flux *f)
         return;
     }
     double lvl = level_at(j, i), diff[9], sum = 0.0, mx = 0.0;
-    for (int d = 0; d < 8; ++d) {
-        diff[d] = 0.0;
-        if (!(g->adj[i] >> d & 1u)) continue;
-        size_t k = (size_t)(y + SOAK_RAIN_DY[d]) * g->w + (size_t)(x + SOAK_RAIN_DX[d]);
-        double dl = lvl - level_at(j, k);
-        if (dl > 0.0) diff[d] = dl;
+    if (g->adj[i] == 0xFFu) { /* all eight adjacent (inside a chart): no per-direction test */
+        for (int d = 0; d < 8; ++d) {
+            double dl = lvl - level_at(j, i + (size_t)j->step[d]);
+            diff[d] = dl > 0.0 ? dl : 0.0;
+        }
+    } else {
+        for (int d = 0; d < 8; ++d) {
+            diff[d] = 0.0;
+            if (!(g->adj[i] >> d & 1u)) continue;
+            size_t k = (size_t)(y + SOAK_RAIN_DY[d]) * g->w + (size_t)(x + SOAK_RAIN_DX[d]);
+            double dl = lvl - level_at(j, k);
+            if (dl > 0.0) diff[d] = dl;
+        }
     }
     diff[8] = g->drip[i] > 0.0f ? h + g->drip[i] : 0.0; /* virtual dry neighbour beyond the edge */
     for (int d = 0; d < 9; ++d) { /* diff >= 0, never NaN: comparisons give fmax / fmin's values */
@@ -56,11 +74,15 @@ static void texel_flux(const flow_job *j, int x, int y, flux *f)
     }
     if (!(sum > 0.0)) return;
     double moved = 0.5 * mx < mobile ? 0.5 * mx : mobile, out = 0.0;
+    /* A direction without a level drop sends moved * 0 / sum = +0, which the
+     * memset above wrote and which adds nothing to out (>= +0): skipping its
+     * division leaves every bit as it was. */
     for (int d = 0; d < 8; ++d) {
+        if (!(diff[d] > 0.0)) continue;
         f->o[d] = (float)(moved * diff[d] / sum);
         out += f->o[d];
     }
-    f->out = out + (float)(moved * diff[8] / sum);
+    f->out = diff[8] > 0.0 ? out + (float)(moved * diff[8] / sum) : out;
 }
 
 static void flux_row(const flow_job *j, flux *ring, int y)
@@ -84,15 +106,24 @@ static void gather_row(const flow_job *j, const flux *ring, int y)
         size_t i = (size_t)y * g->w + x;
         if (!g->covered[i]) {
             j->next[i] = j->depth[i];
+            j->lvl_next[i] = 0.0; /* never read: only covered texels are neighbours */
             continue;
         }
         double vol_in = 0.0;
-        for (unsigned m = j->pulls[i]; m; m &= m - 1) {
-            int d = __builtin_ctz(m), r = SOAK_RAIN_DY[d] + 1, kx = x + SOAK_RAIN_DX[d];
-            vol_in += fr[r][kx].o[(d + 4) & 7] * (double)ar[r][kx];
+        if (j->pulls[i] == 0xFFu) { /* all eight send (inside a chart): the same sum in the same order, unrolled */
+            for (int d = 0; d < 8; ++d) {
+                int r = FLOW_DY[d] + 1, kx = x + FLOW_DX[d];
+                vol_in += fr[r][kx].o[(d + 4) & 7] * (double)ar[r][kx];
+            }
+        } else {
+            for (unsigned m = j->pulls[i]; m; m &= m - 1) {
+                int d = __builtin_ctz(m), r = SOAK_RAIN_DY[d] + 1, kx = x + SOAK_RAIN_DX[d];
+                vol_in += fr[r][kx].o[(d + 4) & 7] * (double)ar[r][kx];
+            }
         }
         double h = j->depth[i] - fr[1][x].out + vol_in / g->area[i];
         j->next[i] = h > 0.0 ? h : 0.0;
+        j->lvl_next[i] = g->level[i] + j->next[i];
     }
 }
 
@@ -131,19 +162,30 @@ soak_status soak_rain_flow(const soak_rain_flow_grid *g, double *depth, int iter
     int threads = soak_bake_threads(exec);
     if (threads == 0) return SOAK_ERR_ARG;
     size_t n = (size_t)g->w * g->h;
-    flow_job j = {g, depth, malloc(n * sizeof(double)), malloc((size_t)threads * 3 * g->w * sizeof(flux)), malloc(n)};
-    soak_status st = j.next && j.scratch && j.pulls ? SOAK_OK : SOAK_ERR_NOMEM;
-    if (st == SOAK_OK) find_pulls(g, j.pulls);
+    double *lvl = malloc(n * sizeof(double)), *lvl_next = malloc(n * sizeof(double));
+    flow_job j = {g,   depth, malloc(n * sizeof(double)), malloc((size_t)threads * 3 * g->w * sizeof(flux)), malloc(n),
+                  {0}, lvl,   lvl_next};
+    for (int d = 0; d < 8; ++d) j.step[d] = (ptrdiff_t)SOAK_RAIN_DY[d] * g->w + SOAK_RAIN_DX[d];
+    soak_status st = j.next && j.scratch && j.pulls && lvl && lvl_next ? SOAK_OK : SOAK_ERR_NOMEM;
+    if (st == SOAK_OK) {
+        find_pulls(g, j.pulls);
+        for (size_t i = 0; i < n; ++i) lvl[i] = g->covered[i] ? g->level[i] + depth[i] : 0.0;
+    }
     int bands = (g->h + BAND - 1) / BAND;
     for (int it = 0; it < iterations && st == SOAK_OK; ++it) {
         st = soak_parallel_rows(bands, exec, flow_band, &j, progress_lo, progress_hi);
         double *t = (double *)j.depth;
         j.depth = j.next;
         j.next = t;
+        t = (double *)j.lvl;
+        j.lvl = j.lvl_next;
+        j.lvl_next = t;
     }
     if (st == SOAK_OK && j.depth != depth) memcpy(depth, j.depth, n * sizeof(double));
     free(j.depth == depth ? j.next : (double *)j.depth);
     free(j.scratch);
     free(j.pulls);
+    free(lvl);
+    free(lvl_next);
     return st;
 }

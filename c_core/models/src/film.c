@@ -36,6 +36,8 @@
 
 #include "soak/fresnel.h"
 
+#include "fast_paths.h"
+
 #define GRADE_LEVELS 10
 
 /* 12-point Gauss-Legendre on [-1,1], positive half. */
@@ -212,15 +214,10 @@ soak_status soak_film_ctx_brdf(const soak_film_ctx *ctx, double base_albedo, soa
     return SOAK_OK;
 }
 
-/* The two paths' absorptions exp(-tau / cos_t) multiplied as one exp (cos_t
- * > 0 for light arriving from air above the horizon). */
 double soak_film_ctx_brdf_raw(const soak_film_ctx *ctx, double base_albedo, soak_vec3 wi, soak_vec3 wo)
 {
-    double cti, cto;
-    double Fi = soak_fresnel_dielectric_raw(wi.z < 1.0 ? wi.z : 1.0, ctx->n, &cti);
-    double Fo = soak_fresnel_dielectric_raw(wo.z < 1.0 ? wo.z : 1.0, ctx->n, &cto);
-    double att = ctx->tau > 0.0 ? exp(-(ctx->tau / cti + ctx->tau / cto)) : 1.0; /* each term may be +Inf, never NaN */
-    return (1.0 - Fi) * (1.0 - Fo) * att * base_albedo * SOAK_INV_PI / (ctx->n * ctx->n * (1.0 - base_albedo * ctx->ret));
+    film_fast k = film_fast_make(ctx, base_albedo);
+    return film_brdf_fast(&k, wi, wo);
 }
 
 soak_status soak_film_albedo_dir(const soak_film *film, double base_albedo, double cos_i, double *albedo)

@@ -10,6 +10,8 @@
 #include "soak/porous.h"
 #include "soak/ww.h"
 
+#include "fast_paths.h"
+
 _Static_assert(sizeof(soak_porous_ggx) + sizeof(double) <= sizeof(soak_model_ctx), "model context too small");
 
 typedef double (*eval_fast_fn)(const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo);
@@ -67,31 +69,10 @@ static soak_status params_ok(const soak_model_params *p)
 
 /* soak_v3_is_unit for two directions with one branch: |v|^2 - 1 is exact
  * near 1, and a NaN or Inf component fails the comparison. */
-static int both_unit(soak_vec3 a, soak_vec3 b)
+static int both_unit(const soak_vec3 *a, const soak_vec3 *b)
 {
-    double la = a.x * a.x + a.y * a.y + a.z * a.z, lb = b.x * b.x + b.y * b.y + b.z * b.z;
+    double la = a->x * a->x + a->y * a->y + a->z * a->z, lb = b->x * b->x + b->y * b->y + b->z * b->z;
     return (fabs(la - 1.0) <= SOAK_UNIT_TOL) & (fabs(lb - 1.0) <= SOAK_UNIT_TOL);
-}
-
-soak_status soak_model_eval(const soak_model *m, const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo, double *f)
-{
-    if (!m || !ctx || !f) return SOAK_ERR_NULL;
-    if (!both_unit(wi, wo)) return SOAK_ERR_ARG;
-    if (!(wi.z > 0.0 && wo.z > 0.0)) {
-        *f = 0.0;
-        return SOAK_OK;
-    }
-    double v;
-    if (m->eval_fast) {
-        if (!ctx_marked(ctx, m->eval_fast)) return SOAK_ERR_ARG;
-        v = m->eval_fast(ctx, wi, wo);
-    } else {
-        soak_status st = m->eval(ctx, wi, wo, &v);
-        if (st != SOAK_OK) return st;
-    }
-    if (!(v >= 0.0 && v <= 1e300)) return SOAK_ERR_NUMERIC;
-    *f = v;
-    return SOAK_OK;
 }
 
 /* --- Lambert ------------------------------------------------------------ */
@@ -140,7 +121,7 @@ static soak_status ggx_conductor_eval(const soak_model_ctx *c, soak_vec3 wi, soa
 }
 
 /* --- Lekner-Dorf film over Lambert ----------------------------------------- */
-typedef struct { soak_film film; soak_film_ctx ctx; double albedo; } film_ctx;
+typedef struct { soak_film film; soak_film_ctx ctx; double albedo; film_fast fast; } film_ctx;
 _Static_assert(sizeof(film_ctx) <= CTX_MARK_AT, "film context overlaps the set-up mark");
 static soak_status film_setup(const soak_model_params *p, soak_model_ctx *c)
 {
@@ -152,7 +133,9 @@ static soak_status film_setup(const soak_model_params *p, soak_model_ctx *c)
     m->film.thickness = p->thickness;
     m->albedo = p->albedo;
     if (!soak_in_range(p->albedo, 0.0, 1.0)) return SOAK_ERR_ARG;
-    return soak_film_setup(&m->film, &m->ctx);
+    soak_status st = soak_film_setup(&m->film, &m->ctx);
+    if (st == SOAK_OK) m->fast = film_fast_make(&m->ctx, m->albedo);
+    return st;
 }
 static soak_status film_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
 {
@@ -168,10 +151,13 @@ static soak_status film_ctx_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec
     const film_ctx *m = (const film_ctx *)c->bytes;
     return soak_film_ctx_brdf(&m->ctx, m->albedo, wi, wo, f);
 }
+static inline double film_ctx_value(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo)
+{
+    return film_brdf_fast(&((const film_ctx *)c->bytes)->fast, wi, wo);
+}
 static double film_ctx_eval_fast(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo)
 {
-    const film_ctx *m = (const film_ctx *)c->bytes;
-    return soak_film_ctx_brdf_raw(&m->ctx, m->albedo, wi, wo);
+    return film_ctx_value(c, wi, wo);
 }
 static soak_status film_ctx_setup(const soak_model_params *p, soak_model_ctx *c)
 {
@@ -179,7 +165,7 @@ static soak_status film_ctx_setup(const soak_model_params *p, soak_model_ctx *c)
 }
 
 /* --- Weidlich-Wilkie with a water layer, and the Tri-Ace fast path ---------- */
-typedef struct { soak_ww ww; soak_ww_triace fast; } ww_ctx;
+typedef struct { soak_ww ww; soak_ww_triace fast; triace_fast k; } ww_ctx;
 _Static_assert(sizeof(ww_ctx) <= CTX_MARK_AT, "ww context overlaps the set-up mark");
 static soak_status ww_setup(const soak_model_params *p, soak_model_ctx *c)
 {
@@ -202,7 +188,9 @@ static soak_status ww_triace_setup(const soak_model_params *p, soak_model_ctx *c
     soak_status st = ww_setup(p, c);
     if (st != SOAK_OK) return st;
     ww_ctx *m = (ww_ctx *)c->bytes;
-    return soak_ww_triace_setup(&m->ww, &m->fast); /* n_water in [SOAK_WW_TRIACE_N_MIN, _MAX] */
+    st = soak_ww_triace_setup(&m->ww, &m->fast); /* n_water in [SOAK_WW_TRIACE_N_MIN, _MAX] */
+    if (st == SOAK_OK) m->k = triace_fast_make(&m->fast);
+    return st;
 }
 static soak_status ww_eval(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo, double *f)
 {
@@ -224,9 +212,13 @@ static soak_status ww_triace_eval(const soak_model_ctx *c, soak_vec3 wi, soak_ve
 }
 /* The raw form takes the directions as given (unit within 1e-5): the
  * refracted directions it builds are renormalised inside. */
+static inline double ww_triace_value(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo)
+{
+    return triace_eval_fast(&((const ww_ctx *)c->bytes)->k, wi, wi.x * wi.x + wi.y * wi.y, wo, wo.x * wo.x + wo.y * wo.y);
+}
 static double ww_triace_eval_fast(const soak_model_ctx *c, soak_vec3 wi, soak_vec3 wo)
 {
-    return soak_ww_eval_triace_raw(&((const ww_ctx *)c->bytes)->fast, wi, wo);
+    return ww_triace_value(c, wi, wo);
 }
 static soak_status ww_triace_setup_marked(const soak_model_params *p, soak_model_ctx *c)
 {
@@ -342,4 +334,38 @@ const soak_model *soak_model_find(const char *name)
     for (size_t i = 0; i < sizeof models / sizeof models[0]; ++i)
         if (strcmp(models[i].name, name) == 0) return &models[i];
     return NULL;
+}
+
+/* The fast paths of this file by name, so that the compiler puts their
+ * bodies (fast_paths.h) here: no indirect call, no copy of the directions. */
+static inline double eval_fast_inline(eval_fast_fn fn, const soak_model_ctx *ctx, const soak_vec3 *wi, const soak_vec3 *wo)
+{
+    if (fn == ww_triace_eval_fast) {
+        const triace_fast *k = &((const ww_ctx *)ctx->bytes)->k;
+        return triace_eval_fast(k, *wi, wi->x * wi->x + wi->y * wi->y, *wo, wo->x * wo->x + wo->y * wo->y);
+    }
+    if (fn == film_ctx_eval_fast) return film_brdf_fast(&((const film_ctx *)ctx->bytes)->fast, *wi, *wo);
+    return fn(ctx, *wi, *wo);
+}
+
+soak_status soak_model_eval(const soak_model *m, const soak_model_ctx *ctx, soak_vec3 wi, soak_vec3 wo, double *f)
+{
+    if (!m || !ctx || !f) return SOAK_ERR_NULL;
+    const soak_vec3 *a = &wi, *b = &wo;
+    if (!both_unit(a, b)) return SOAK_ERR_ARG;
+    if (!(a->z > 0.0 && b->z > 0.0)) {
+        *f = 0.0;
+        return SOAK_OK;
+    }
+    double v;
+    if (m->eval_fast) {
+        if (!ctx_marked(ctx, m->eval_fast)) return SOAK_ERR_ARG;
+        v = eval_fast_inline(m->eval_fast, ctx, a, b);
+    } else {
+        soak_status st = m->eval(ctx, wi, wo, &v);
+        if (st != SOAK_OK) return st;
+    }
+    if (!(v >= 0.0 && v <= 1e300)) return SOAK_ERR_NUMERIC;
+    *f = v;
+    return SOAK_OK;
 }

@@ -10,11 +10,7 @@
 #include "soak/ggx.h"
 #include "soak/ww.h"
 
-/* Seed 001, refract_1_33: fit of (eta cos_i - cos_t) for eta = 1/1.33 on cos_i in [0, 1]. */
-#define R133_ETA 0.7518796992481203 /* 1 / 1.33 */
-#define R133_C0 (-0.666308423880957)
-#define R133_C1 0.7518796992481197
-#define R133_C2 (-0.34853799144237796)
+#include "fast_paths.h"
 
 static double f0(double na, double nb, double kb)
 {
@@ -100,38 +96,10 @@ soak_status soak_ww_triace_setup(const soak_ww *m, soak_ww_triace *fast)
     return SOAK_OK;
 }
 
-/* Upward unit direction in the water for an air direction w (z > 0): the
- * reverse of refract_1_33(-w, +z), renormalised. */
-static inline soak_vec3 refract_up(soak_vec3 w)
-{
-    double c = w.z;
-    double p = (R133_C2 * c + R133_C1) * c + R133_C0;
-    double x = R133_ETA * w.x, y = R133_ETA * w.y, z = R133_ETA * c - p;
-    double inv = 1.0 / sqrt(x * x + y * y + z * z);
-    return soak_v3(x * inv, y * inv, z * inv);
-}
-
 double soak_ww_eval_triace_raw(const soak_ww_triace *fast, soak_vec3 wi, soak_vec3 wo)
 {
-    soak_vec3 a = refract_up(wi), b = refract_up(wo);
-    double a2 = fast->alpha2;
-
-    /* GGX D of h' = a + b without normalising h': D = a2 |h|^4 / (pi (hx^2 + hy^2 + a2 hz^2)^2). */
-    double hx = a.x + b.x, hy = a.y + b.y, hz = a.z + b.z;
-    double hs = hx * hx + hy * hy, hz2 = hz * hz;
-    double q = (hs + hz2) / (hs + a2 * hz2);
-    double D = a2 * q * q * SOAK_INV_PI;
-    double ri = sqrt(a.z * a.z + a2 * (1.0 - a.z * a.z));
-    double ro = sqrt(b.z * b.z + a2 * (1.0 - b.z * b.z));
-    double vis = 0.5 / (ri * b.z + ro * a.z);
-
-    /* Schlick T12 at the air side (no total internal reflection going in). */
-    double m = 1.0 - wi.z, m2 = m * m;
-    double t12 = (1.0 - fast->r0_top) * (1.0 - m2 * m2 * m);
-
-    double ab = 1.0 - fast->alpha_prime * (a.z + b.z) / (a.z * b.z);
-    if (ab < 0.0) ab = 0.0;
-    return t12 * ab * fast->inv_n2 * (fast->fbottom * D * vis + fast->diffuse);
+    triace_fast k = triace_fast_make(fast);
+    return triace_eval_fast(&k, wi, wi.x * wi.x + wi.y * wi.y, wo, wo.x * wo.x + wo.y * wo.y);
 }
 
 soak_status soak_ww_eval_triace(const soak_ww_triace *fast, soak_vec3 wi, soak_vec3 wo, double *f)

@@ -685,13 +685,37 @@ soak_status soak_geometry_intersect_n(const soak_geometry *g, const soak_ray *ra
     return SOAK_OK;
 }
 
+/* Packets of PACKET rays through Embree's packet traversal: the same rays in
+ * float as soak_geometry_occluded's, one walk down the BVH for a bundle of
+ * similar rays (the rain bake's rays from one texel). */
+enum { PACKET = 8 };
+
+static void occluded_packet(const soak_geometry *g, const soak_ray *rays, size_t m, int *occluded)
+{
+    struct RTCRay8 p;
+    _Alignas(32) int valid[PACKET];
+    for (size_t k = 0; k < PACKET; ++k) {
+        struct RTCRay e;
+        to_embree(&rays[k < m ? k : 0], &e);
+        valid[k] = k < m ? -1 : 0;
+        p.org_x[k] = e.org_x, p.org_y[k] = e.org_y, p.org_z[k] = e.org_z;
+        p.dir_x[k] = e.dir_x, p.dir_y[k] = e.dir_y, p.dir_z[k] = e.dir_z;
+        p.tnear[k] = e.tnear, p.tfar[k] = e.tfar, p.time[k] = e.time;
+        p.mask[k] = e.mask, p.id[k] = e.id, p.flags[k] = e.flags;
+    }
+    struct RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    rtcOccluded8(valid, g->scene, &ctx, &p);
+    for (size_t k = 0; k < m; ++k) occluded[k] = p.tfar[k] == -INFINITY;
+}
+
 soak_status soak_geometry_occluded_n(const soak_geometry *g, const soak_ray *rays, size_t n, int *occluded)
 {
     if (!g || (n && (!rays || !occluded))) return SOAK_ERR_NULL;
-    for (size_t i = 0; i < n; ++i) {
-        soak_status st = soak_geometry_occluded(g, &rays[i], &occluded[i]);
-        if (st != SOAK_OK) return st;
-    }
+    if (n && !g->committed) return SOAK_ERR_ARG;
+    for (size_t i = 0; i < n; ++i)
+        if (!ray_ok(&rays[i])) return SOAK_ERR_ARG;
+    for (size_t i = 0; i < n; i += PACKET) occluded_packet(g, rays + i, n - i < PACKET ? n - i : PACKET, occluded + i);
     return SOAK_OK;
 }
 

@@ -1,6 +1,7 @@
 /* Geometry: analytic sphere/quad/box distances, normals and UVs; meshes read
  * from OBJ files written here; missing UVs and missing files reported;
- * threaded queries agree with single-threaded ones. */
+ * threaded queries agree with single-threaded ones; batched occlusion
+ * (Embree packets) agrees with ray-by-ray occlusion. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <pthread.h>
@@ -380,6 +381,77 @@ static void test_threads(void)
     soak_geometry_destroy(g);
 }
 
+/* soak_geometry_occluded_n (packets of rays) against soak_geometry_occluded
+ * one ray at a time (Embree's single-ray traversal) on a random triangle soup
+ * around a sphere: scattered rays with finite and infinite tfar, and bundles
+ * from one origin within a 10 degree cone (the rain bake's), in batches of
+ * every size from 1 to 19 and all at once. */
+static void test_occluded_batches(void)
+{
+    soak_geometry *g = NULL;
+    char err[256] = "";
+    if (!check_status("batches: create", soak_geometry_create(&g, err, sizeof err), SOAK_OK) || !g) return;
+    enum { TRIS = 400, RAYS = 3000 };
+    unsigned long long s = 2024;
+    static double pos[9 * TRIS];
+    static unsigned idx[3 * TRIS];
+    for (int t = 0; t < TRIS; ++t) {
+        soak_vec3 c = soak_v3(3 * lcg01(&s) - 1.5, 3 * lcg01(&s) - 1.5, 3 * lcg01(&s) - 1.5);
+        for (int k = 0; k < 3; ++k) {
+            soak_vec3 v = soak_v3_add(c, soak_v3_scale(unit_dir(&s), 0.25));
+            pos[9 * t + 3 * k] = v.x, pos[9 * t + 3 * k + 1] = v.y, pos[9 * t + 3 * k + 2] = v.z;
+            idx[3 * t + k] = (unsigned)(3 * t + k);
+        }
+    }
+    soak_mesh m = {3 * TRIS, TRIS, pos, NULL, NULL, idx};
+    unsigned id;
+    check_status("batches: add mesh", soak_geometry_add_mesh(g, &m, NULL, &id), SOAK_OK);
+    check_status("batches: add sphere", soak_geometry_add_sphere(g, soak_v3(0.2, -0.1, 0.3), 0.4, &id), SOAK_OK);
+    check_status("batches: commit", soak_geometry_commit(g), SOAK_OK);
+    static soak_ray rays[RAYS];
+    static int one[RAYS], all[RAYS], part[RAYS];
+    for (int i = 0; i < RAYS; ++i) {
+        if (i % 64 == 0 || i < RAYS / 2) { /* a new origin: every ray below RAYS/2, every 64th above */
+            rays[i].org = soak_v3(4 * lcg01(&s) - 2, 4 * lcg01(&s) - 2, 4 * lcg01(&s) - 2);
+            rays[i].dir = unit_dir(&s);
+        } else { /* a bundle: the origin of ray i - 1, the direction within 10 degrees of it */
+            rays[i].org = rays[i - 1].org;
+            rays[i].dir = soak_v3_norm(soak_v3_add(rays[i - 1].dir, soak_v3_scale(unit_dir(&s), 0.09)));
+        }
+        rays[i].tnear = lcg01(&s) < 0.5 ? 0.0 : 0.05;
+        rays[i].tfar = lcg01(&s) < 0.5 ? INFINITY : 0.2 + 3 * lcg01(&s);
+    }
+    int bad = 0, hits = 0;
+    for (int i = 0; i < RAYS; ++i) {
+        bad += soak_geometry_occluded(g, &rays[i], &one[i]) != SOAK_OK;
+        hits += one[i];
+    }
+    check_true("batches: ray-by-ray queries succeed", bad == 0);
+    check_true("batches: both answers are common (10-90 % occluded)", hits > RAYS / 10 && hits < 9 * RAYS / 10);
+    check_status("batches: all rays in one call", soak_geometry_occluded_n(g, rays, RAYS, all), SOAK_OK);
+    int differ = 0;
+    for (int i = 0; i < RAYS; ++i) differ += all[i] != one[i];
+    char what[160];
+    snprintf(what, sizeof what, "batches: one call = ray by ray (%d of %d rays differ)", differ, RAYS);
+    check_true(what, differ == 0);
+    differ = 0;
+    for (int size = 1; size <= 19; ++size) {
+        memset(part, 0xFF, sizeof part);
+        for (int i = 0; i < RAYS; i += size) {
+            int n = RAYS - i < size ? RAYS - i : size;
+            bad += soak_geometry_occluded_n(g, rays + i, (size_t)n, part + i) != SOAK_OK;
+        }
+        for (int i = 0; i < RAYS; ++i) differ += part[i] != one[i];
+    }
+    snprintf(what, sizeof what, "batches of 1..19 rays = ray by ray (%d answers differ, %d calls failed)", differ, bad);
+    check_true(what, differ == 0 && bad == 0);
+    soak_ray broken[3] = {rays[0], rays[1], rays[2]};
+    broken[1].dir = soak_v3(NAN, 0, 1);
+    check_status("batches: a NaN direction in a batch refused", soak_geometry_occluded_n(g, broken, 3, part), SOAK_ERR_ARG);
+    check_status("batches: an empty batch", soak_geometry_occluded_n(g, rays, 0, NULL), SOAK_OK);
+    soak_geometry_destroy(g);
+}
+
 int main(void)
 {
     test_sphere();
@@ -387,5 +459,6 @@ int main(void)
     test_local_queries();
     test_mesh_files();
     test_threads();
+    test_occluded_batches();
     return check_finish();
 }
