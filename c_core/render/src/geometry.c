@@ -21,6 +21,8 @@ typedef struct geo_object {
     soak_vec3 center; /* spheres */
     double radius;
     int isolated; /* no other surface enters the interior (spheres; set at commit) */
+    soak_vec3 clear_c; /* a ball no surface enters (set at commit; clear_r2 = 0: none) */
+    double clear_r2;
 } geo_object;
 
 struct soak_geometry {
@@ -29,7 +31,7 @@ struct soak_geometry {
     geo_object *objects;
     unsigned count, capacity;
     int committed;
-    int robust; /* Embree's robust traversal (the default; see soak_geometry_set_robust) */
+    int robust; /* Embree's robust traversal (on unless soak_geometry_set_robust turns it off) */
     char error[256]; /* last Embree device error, written by its callback */
 };
 
@@ -505,6 +507,25 @@ static soak_status mark_isolated(soak_geometry *g)
     return SOAK_OK;
 }
 
+/* The clear ball of a triangle object: around the centre of its bounds, up
+ * to the nearest surface of any object, less a margin above Embree's float
+ * error (the scale of soak_geometry_offset's), so a segment inside it meets
+ * no surface for Embree either. A closed convex object's ball is its
+ * inscribed sphere about that centre; a flat or hollow one gets none. */
+static void mark_clear_ball(soak_geometry *g, unsigned id)
+{
+    geo_object *o = &g->objects[id];
+    soak_vec3 lo, hi;
+    o->clear_r2 = 0;
+    if (soak_geometry_object_bounds(g, id, &lo, &hi) != SOAK_OK) return;
+    soak_vec3 c = soak_v3_scale(soak_v3_add(lo, hi), 0.5);
+    double reach = 0.5 * soak_v3_len(soak_v3_sub(hi, lo));
+    double m = fmax(fmax(fabs(c.x), fabs(c.y)), fabs(c.z)) + reach;
+    double r = fmin(nearest_surface(g, (unsigned)-1, 0, c, reach), reach) * (1 - 1e-6) - 1e-5 * (1 + m);
+    o->clear_c = c;
+    o->clear_r2 = r > 0 ? r * r : 0;
+}
+
 soak_status soak_geometry_commit(soak_geometry *g)
 {
     if (!g) return SOAK_ERR_NULL;
@@ -519,6 +540,8 @@ soak_status soak_geometry_commit(soak_geometry *g)
     rtcCommitScene(g->scene);
     if (g->error[0]) return SOAK_ERR_NUMERIC;
     g->committed = 1;
+    for (unsigned i = 0; i < g->count; ++i)
+        if (g->objects[i].kind != SOAK_SHAPE_SPHERE) mark_clear_ball(g, i);
     return mark_isolated(g);
 }
 
@@ -760,11 +783,29 @@ soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned objec
     return SOAK_OK;
 }
 
+/* 1 when the segment of ray lies inside object id's clear ball (see
+ * mark_clear_ball): no surface on it, no traversal needed. */
+static int segment_clear(const soak_geometry *g, unsigned id, const soak_ray *ray)
+{
+    if (!g->committed || id >= g->count || !(g->objects[id].clear_r2 > 0) || !(ray->tfar < INFINITY)) return 0;
+    const geo_object *o = &g->objects[id];
+    soak_vec3 a = soak_v3_sub(soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tnear)), o->clear_c);
+    soak_vec3 b = soak_v3_sub(soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tfar)), o->clear_c);
+    return soak_v3_dot(a, a) < o->clear_r2 && soak_v3_dot(b, b) < o->clear_r2;
+}
+
 soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int *occluded)
 {
     if (!g || !ray || !occluded) return SOAK_ERR_NULL;
     const geo_object *o = g->committed ? local_sphere(g, object_id) : NULL;
-    if (!o) return soak_geometry_occluded(g, ray, occluded);
+    if (!o) {
+        if (!ray_ok(ray)) return SOAK_ERR_ARG;
+        if (segment_clear(g, object_id, ray)) {
+            *occluded = 0; /* a ball is convex: the whole segment is in it */
+            return SOAK_OK;
+        }
+        return soak_geometry_occluded(g, ray, occluded);
+    }
     if (!ray_ok(ray)) return SOAK_ERR_ARG;
     /* From inside (the walk's case) the segment crosses the convex surface
      * iff it ends outside: two squared distances, no root. */

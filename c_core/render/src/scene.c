@@ -191,7 +191,7 @@ static soak_status whole(scene_ctx *c, const char *path, double v)
     return sj_fail(c, SOAK_ERR_ARG, path, "must be a whole number, got %g", v);
 }
 
-/* render.robust: Embree's robust traversal for the scene (a boolean, off by
+/* render.robust: Embree's robust traversal for the scene (a boolean, on by
  * default: see soak_geometry_set_robust). */
 static soak_status parse_robust(scene_ctx *c, const cJSON *j, int *robust)
 {
@@ -207,7 +207,7 @@ static soak_status parse_render(scene_ctx *c, const cJSON *j)
     static const char *const keys[] = {"width", "height", "spp", "max_depth", "caustic_photons", "caustic_radius", "robust", NULL};
     soak_scene *s = c->scene;
     double w = 256, h = 192, spp = 16, md = 256, np = 0, rad = 0;
-    int robust = 0;
+    int robust = 1;
     if (j) {
         soak_status st = sj_keys(c, j, "render", keys);
         if (st == SOAK_OK) st = parse_robust(c, j, &robust);
