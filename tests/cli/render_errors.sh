@@ -57,6 +57,9 @@ expect negative_plane 1 "$dir/negative_plane.json" "objects[0].size" "> 0"
 printf '{ %s, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "nope"}] }\n' "$head" >"$dir/no_material.json"
 expect no_material 1 "$dir/no_material.json" "objects[0].material" "nope"
 
+printf '{ "render": {"robust": 1}, %s, %s }\n' "$head" "$good_objects" >"$dir/robust_number.json"
+expect robust_number 1 "$dir/robust_number.json" "render.robust" "must be true or false"
+
 printf '{ "camera": {"position": [0,-4,0], "look_at": [0,0,0]}, "environment": {"type": "constant", "radiance": 1}, "materials": {"m": {"type": "wet", "base": {"type": "medium", "sigma_s": -2}}}, %s }\n' "$good_objects" >"$dir/negative_sigma.json"
 expect negative_sigma 1 "$dir/negative_sigma.json" "materials.m.base.sigma_s" "[0, 1e+09]"
 

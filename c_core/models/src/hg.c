@@ -90,10 +90,11 @@ soak_vec3 soak_hg2_sample_dir_raw(const soak_hg2 *p, soak_vec3 dir_in, double u_
     double g = u_lobe < p->w ? p->g1 : p->g2;
     double c = soak_hg_sample_cos_raw(g, u_cos);
     double s = sqrt(fmax(0.0, (1.0 - c) * (1.0 + c)));
-    double phi = 2.0 * SOAK_PI * u_phi;
+    double sin_phi, cos_phi;
+    soak_sincos_2pi(u_phi, &sin_phi, &cos_phi);
     soak_vec3 t, b;
     soak_v3_basis(dir_in, &t, &b);
-    soak_vec3 d = soak_v3_add(soak_v3_add(soak_v3_scale(t, s * cos(phi)), soak_v3_scale(b, s * sin(phi))),
+    soak_vec3 d = soak_v3_add(soak_v3_add(soak_v3_scale(t, s * cos_phi), soak_v3_scale(b, s * sin_phi)),
                               soak_v3_scale(dir_in, c));
     return soak_v3_norm(d);
 }

@@ -21,6 +21,8 @@ typedef struct geo_object {
     soak_vec3 center; /* spheres */
     double radius;
     int isolated; /* no other surface enters the interior (spheres; set at commit) */
+    soak_vec3 clear_c; /* a ball no surface enters (set at commit; clear_r2 = 0: none) */
+    double clear_r2;
 } geo_object;
 
 struct soak_geometry {
@@ -29,6 +31,7 @@ struct soak_geometry {
     geo_object *objects;
     unsigned count, capacity;
     int committed;
+    int robust; /* Embree's robust traversal (on unless soak_geometry_set_robust turns it off) */
     char error[256]; /* last Embree device error, written by its callback */
 };
 
@@ -57,7 +60,7 @@ soak_status soak_geometry_create(soak_geometry **out, char *err, size_t errlen)
         free(g);
         return SOAK_ERR_NOMEM;
     }
-    rtcSetSceneFlags(g->scene, RTC_SCENE_FLAG_ROBUST);
+    g->robust = 1;
     *out = g;
     return SOAK_OK;
 }
@@ -504,6 +507,25 @@ static soak_status mark_isolated(soak_geometry *g)
     return SOAK_OK;
 }
 
+/* The clear ball of a triangle object: around the centre of its bounds, up
+ * to the nearest surface of any object, less a margin above Embree's float
+ * error (the scale of soak_geometry_offset's), so a segment inside it meets
+ * no surface for Embree either. A closed convex object's ball is its
+ * inscribed sphere about that centre; a flat or hollow one gets none. */
+static void mark_clear_ball(soak_geometry *g, unsigned id)
+{
+    geo_object *o = &g->objects[id];
+    soak_vec3 lo, hi;
+    o->clear_r2 = 0;
+    if (soak_geometry_object_bounds(g, id, &lo, &hi) != SOAK_OK) return;
+    soak_vec3 c = soak_v3_scale(soak_v3_add(lo, hi), 0.5);
+    double reach = 0.5 * soak_v3_len(soak_v3_sub(hi, lo));
+    double m = fmax(fmax(fabs(c.x), fabs(c.y)), fabs(c.z)) + reach;
+    double r = fmin(nearest_surface(g, (unsigned)-1, 0, c, reach), reach) * (1 - 1e-6) - 1e-5 * (1 + m);
+    o->clear_c = c;
+    o->clear_r2 = r > 0 ? r * r : 0;
+}
+
 soak_status soak_geometry_commit(soak_geometry *g)
 {
     if (!g) return SOAK_ERR_NULL;
@@ -514,10 +536,21 @@ soak_status soak_geometry_commit(soak_geometry *g)
         rtcSetGeometryUserData(geom, &g->objects[i]);
         rtcCommitGeometry(geom);
     }
+    rtcSetSceneFlags(g->scene, g->robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
     rtcCommitScene(g->scene);
     if (g->error[0]) return SOAK_ERR_NUMERIC;
     g->committed = 1;
+    for (unsigned i = 0; i < g->count; ++i)
+        if (g->objects[i].kind != SOAK_SHAPE_SPHERE) mark_clear_ball(g, i);
     return mark_isolated(g);
+}
+
+soak_status soak_geometry_set_robust(soak_geometry *g, int robust)
+{
+    if (!g) return SOAK_ERR_NULL;
+    g->robust = robust != 0;
+    g->committed = 0;
+    return SOAK_OK;
 }
 
 unsigned soak_geometry_object_count(const soak_geometry *g) { return g ? g->count : 0; }
@@ -587,9 +620,30 @@ static void to_embree(const soak_ray *r, struct RTCRay *e)
 }
 
 
+/* Shading normal and texture coordinates of triangle tri at barycentrics
+ * (b1, b2); ng is the face normal. */
+static void triangle_shading(const geo_object *o, const unsigned *tri, double b1, double b2, soak_vec3 ng, soak_hit *hit)
+{
+    double b0 = 1 - b1 - b2;
+    if (o->uv) {
+        hit->u = b0 * o->uv[2 * tri[0]] + b1 * o->uv[2 * tri[1]] + b2 * o->uv[2 * tri[2]];
+        hit->v = b0 * o->uv[2 * tri[0] + 1] + b1 * o->uv[2 * tri[1] + 1] + b2 * o->uv[2 * tri[2] + 1];
+    }
+    if (o->nrm) {
+        soak_vec3 n = soak_v3_add(soak_v3_add(soak_v3_scale(vtx(o->nrm, tri[0]), b0), soak_v3_scale(vtx(o->nrm, tri[1]), b1)),
+                                  soak_v3_scale(vtx(o->nrm, tri[2]), b2));
+        if (soak_v3_len(n) > 1e-12) {
+            n = soak_v3_norm(n);
+            hit->ns = soak_v3_dot(n, ng) < 0 ? soak_v3_scale(n, -1.0) : n;
+        }
+    }
+}
+
 /* Fills hit from Embree's result, recomputing t and p in double. Returns 0 if
- * the refined hit falls outside the ray interval (a float-precision graze). */
-static int refine(const soak_geometry *g, const soak_ray *r, const struct RTCRayHit *rh, soak_hit *hit)
+ * the refined hit falls outside the ray interval (a float-precision graze).
+ * Without detail (a walk's boundary query) the hit keeps u = v = 0 and
+ * ns = ng: no interpolation, no atan2/acos. */
+static int refine(const soak_geometry *g, const soak_ray *r, const struct RTCRayHit *rh, int detail, soak_hit *hit)
 {
     const geo_object *o = &g->objects[rh->hit.geomID];
     double t;
@@ -599,7 +653,9 @@ static int refine(const soak_geometry *g, const soak_ray *r, const struct RTCRay
         double t0, t1, tf = rh->ray.tfar;
         if (!sphere_roots(o->center, o->radius, r->org, r->dir, &t0, &t1)) return 0;
         t = fabs(t0 - tf) <= fabs(t1 - tf) ? t0 : t1;
-        sphere_surface(o, soak_v3_add(r->org, soak_v3_scale(r->dir, t)), &ng, &u, &v);
+        soak_vec3 p = soak_v3_add(r->org, soak_v3_scale(r->dir, t));
+        if (detail) sphere_surface(o, p, &ng, &u, &v);
+        else ng = soak_v3_norm(soak_v3_sub(p, o->center));
         ns = ng;
     } else {
         const unsigned *tri = o->idx + 3 * rh->hit.primID;
@@ -607,20 +663,13 @@ static int refine(const soak_geometry *g, const soak_ray *r, const struct RTCRay
         ng = soak_v3_norm(soak_v3_cross(soak_v3_sub(p1, p0), soak_v3_sub(p2, p0)));
         double dn = soak_v3_dot(r->dir, ng);
         t = dn != 0 ? soak_v3_dot(soak_v3_sub(p0, r->org), ng) / dn : rh->ray.tfar;
-        double b1 = rh->hit.u, b2 = rh->hit.v, b0 = 1 - b1 - b2;
-        if (o->uv) {
-            u = b0 * o->uv[2 * tri[0]] + b1 * o->uv[2 * tri[1]] + b2 * o->uv[2 * tri[2]];
-            v = b0 * o->uv[2 * tri[0] + 1] + b1 * o->uv[2 * tri[1] + 1] + b2 * o->uv[2 * tri[2] + 1];
-        }
-        ns = ng;
-        if (o->nrm) {
-            soak_vec3 n = soak_v3_add(soak_v3_add(soak_v3_scale(vtx(o->nrm, tri[0]), b0), soak_v3_scale(vtx(o->nrm, tri[1]), b1)),
-                                      soak_v3_scale(vtx(o->nrm, tri[2]), b2));
-            if (soak_v3_len(n) > 1e-12) {
-                n = soak_v3_norm(n);
-                ns = soak_v3_dot(n, ng) < 0 ? soak_v3_scale(n, -1.0) : n;
-            }
-        }
+        soak_hit sh;
+        sh.u = sh.v = 0;
+        sh.ns = ng;
+        if (detail) triangle_shading(o, tri, rh->hit.u, rh->hit.v, ng, &sh);
+        u = sh.u;
+        v = sh.v;
+        ns = sh.ns;
     }
     if (!(t > r->tnear && t < r->tfar) || !soak_is_finite(t)) {
         /* Float traversal accepted a hit the double refinement puts just
@@ -639,9 +688,9 @@ static int refine(const soak_geometry *g, const soak_ray *r, const struct RTCRay
     return 1;
 }
 
-soak_status soak_geometry_intersect(const soak_geometry *g, const soak_ray *ray, soak_hit *hit, int *found)
+/* Closest hit in the whole scene; detail: see refine. */
+static soak_status intersect_scene(const soak_geometry *g, const soak_ray *ray, int detail, soak_hit *hit, int *found)
 {
-    if (!g || !ray || !hit || !found) return SOAK_ERR_NULL;
     if (!g->committed) return SOAK_ERR_ARG;
     if (!ray_ok(ray)) return SOAK_ERR_ARG;
     struct RTCIntersectContext ctx;
@@ -655,10 +704,16 @@ soak_status soak_geometry_intersect(const soak_geometry *g, const soak_ray *ray,
     *found = 0;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || rh.hit.geomID >= g->count) return SOAK_OK;
     soak_hit h;
-    if (!refine(g, ray, &rh, &h)) return SOAK_OK;
+    if (!refine(g, ray, &rh, detail, &h)) return SOAK_OK;
     *hit = h;
     *found = 1;
     return SOAK_OK;
+}
+
+soak_status soak_geometry_intersect(const soak_geometry *g, const soak_ray *ray, soak_hit *hit, int *found)
+{
+    if (!g || !ray || !hit || !found) return SOAK_ERR_NULL;
+    return intersect_scene(g, ray, 1, hit, found);
 }
 
 soak_status soak_geometry_occluded(const soak_geometry *g, const soak_ray *ray, int *occluded)
@@ -730,7 +785,7 @@ soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned objec
 {
     if (!g || !ray || !hit || !found) return SOAK_ERR_NULL;
     const geo_object *o = g->committed ? local_sphere(g, object_id) : NULL;
-    if (!o) return soak_geometry_intersect(g, ray, hit, found);
+    if (!o) return intersect_scene(g, ray, want_uv, hit, found);
     if (!ray_ok(ray)) return SOAK_ERR_ARG;
     double t0, t1, t;
     *found = 0;
@@ -752,11 +807,29 @@ soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned objec
     return SOAK_OK;
 }
 
+/* 1 when the segment of ray lies inside object id's clear ball (see
+ * mark_clear_ball): no surface on it, no traversal needed. */
+static int segment_clear(const soak_geometry *g, unsigned id, const soak_ray *ray)
+{
+    if (!g->committed || id >= g->count || !(g->objects[id].clear_r2 > 0) || !(ray->tfar < INFINITY)) return 0;
+    const geo_object *o = &g->objects[id];
+    soak_vec3 a = soak_v3_sub(soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tnear)), o->clear_c);
+    soak_vec3 b = soak_v3_sub(soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tfar)), o->clear_c);
+    return soak_v3_dot(a, a) < o->clear_r2 && soak_v3_dot(b, b) < o->clear_r2;
+}
+
 soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int *occluded)
 {
     if (!g || !ray || !occluded) return SOAK_ERR_NULL;
     const geo_object *o = g->committed ? local_sphere(g, object_id) : NULL;
-    if (!o) return soak_geometry_occluded(g, ray, occluded);
+    if (!o) {
+        if (!ray_ok(ray)) return SOAK_ERR_ARG;
+        if (segment_clear(g, object_id, ray)) {
+            *occluded = 0; /* a ball is convex: the whole segment is in it */
+            return SOAK_OK;
+        }
+        return soak_geometry_occluded(g, ray, occluded);
+    }
     if (!ray_ok(ray)) return SOAK_ERR_ARG;
     /* From inside (the walk's case) the segment crosses the convex surface
      * iff it ends outside: two squared distances, no root. */

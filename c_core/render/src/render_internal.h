@@ -140,9 +140,13 @@ static inline soak_vec3 rt_to_world(const rt_frame *f, soak_vec3 v)
     return soak_v3_add(soak_v3_add(soak_v3_scale(f->t, v.x), soak_v3_scale(f->b, v.y)), soak_v3_scale(f->n, v.z));
 }
 
-/* Two-term HG value (soak/hg.h) for an already validated phase function. */
+/* Two-term HG value (soak/hg.h) for an already validated phase function.
+ * A lobe of weight 0 is not evaluated: w x + 0 y = w x exactly for the
+ * finite y it would give, so the value is the same bit for bit. */
 static inline double rt_hg2(const soak_hg2 *p, double cos_theta)
 {
+    if (p->w == 1.0) return soak_hg_eval_raw(p->g1, cos_theta);
+    if (p->w == 0.0) return soak_hg_eval_raw(p->g2, cos_theta);
     return p->w * soak_hg_eval_raw(p->g1, cos_theta) + (1 - p->w) * soak_hg_eval_raw(p->g2, cos_theta);
 }
 

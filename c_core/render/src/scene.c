@@ -191,13 +191,26 @@ static soak_status whole(scene_ctx *c, const char *path, double v)
     return sj_fail(c, SOAK_ERR_ARG, path, "must be a whole number, got %g", v);
 }
 
+/* render.robust: Embree's robust traversal for the scene (a boolean, on by
+ * default: see soak_geometry_set_robust). */
+static soak_status parse_robust(scene_ctx *c, const cJSON *j, int *robust)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(j, "robust");
+    if (!v) return SOAK_OK;
+    if (!cJSON_IsBool(v)) return sj_fail(c, SOAK_ERR_ARG, "render.robust", "must be true or false");
+    *robust = cJSON_IsTrue(v);
+    return SOAK_OK;
+}
+
 static soak_status parse_render(scene_ctx *c, const cJSON *j)
 {
-    static const char *const keys[] = {"width", "height", "spp", "max_depth", "caustic_photons", "caustic_radius", NULL};
+    static const char *const keys[] = {"width", "height", "spp", "max_depth", "caustic_photons", "caustic_radius", "robust", NULL};
     soak_scene *s = c->scene;
     double w = 256, h = 192, spp = 16, md = 256, np = 0, rad = 0;
+    int robust = 1;
     if (j) {
         soak_status st = sj_keys(c, j, "render", keys);
+        if (st == SOAK_OK) st = parse_robust(c, j, &robust);
         if (st == SOAK_OK) st = sj_num(c, j, "caustic_photons", "render", 0, 1e9, 0, 0, &np);
         if (st == SOAK_OK) st = sj_num(c, j, "caustic_radius", "render", 0, 1e12, 0, 0, &rad);
         if (st == SOAK_OK && np > 0 && !(rad > 0))
@@ -219,7 +232,7 @@ static soak_status parse_render(scene_ctx *c, const cJSON *j)
     s->max_depth = (int)md;
     s->caustic_photons = (long long)np;
     s->caustic_radius = rad;
-    return SOAK_OK;
+    return soak_geometry_set_robust(s->geometry, robust);
 }
 
 static soak_status parse_camera(scene_ctx *c, const cJSON *j)

@@ -88,6 +88,13 @@ soak_status soak_geometry_add_quad(soak_geometry *g, soak_vec3 origin, soak_vec3
  * with uv over [0,1]^2). */
 soak_status soak_geometry_add_box(soak_geometry *g, soak_vec3 lo, soak_vec3 hi, unsigned *object_id);
 soak_status soak_geometry_commit(soak_geometry *g);
+/* Embree's robust traversal (RTC_SCENE_FLAG_ROBUST): on (1) by default;
+ * takes effect at the next commit. Off saves about 6 % of the instructions
+ * of a mesh-heavy render (c_core/bench/results/2026-11-27-render-vs-cycles.md),
+ * but a ray aimed at an edge or corner between triangles may pass between
+ * them: from inside a box, 61 of 1280 rays aimed exactly at its edges and
+ * corners did (tests/c/render/test_geometry.c). */
+soak_status soak_geometry_set_robust(soak_geometry *g, int robust);
 
 unsigned soak_geometry_object_count(const soak_geometry *g);
 soak_shape_kind soak_geometry_object_kind(const soak_geometry *g, unsigned object_id);
@@ -113,10 +120,13 @@ soak_status soak_geometry_occluded_n(const soak_geometry *g, const soak_ray *ray
  * enters its interior, and then only its own surface is tested. An isolated
  * sphere (every other surface at least its radius from its centre, decided
  * at commit) is answered in closed form in double precision, without the
- * BVH; every other case falls back to the scene query. Cycles' subsurface
+ * BVH; every other case falls back to the scene query, except that an
+ * occlusion query whose segment lies in the object's clear ball (about the
+ * centre of its bounds, free of every surface, found at commit) answers 0
+ * without traversal. Cycles' subsurface
  * walk likewise intersects only its own object (scene_intersect_local).
- * With want_uv = 0 a closed-form hit leaves u = v = 0 (a walk needs texture
- * coordinates only for a wet map). */
+ * With want_uv = 0 a hit leaves u = v = 0 and ns = ng (a walk needs texture
+ * coordinates only for a wet map, and no shading normal). */
 soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int want_uv,
                                           soak_hit *hit, int *found);
 soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int *occluded);
