@@ -11,7 +11,7 @@ import bpy
 
 DATA_FILE = os.path.join(os.path.dirname(__file__), "soak_data.json")
 FORMAT = "soak-blender"
-FORMAT_VERSION = 3
+FORMAT_VERSION = 4
 
 _cache = {}
 
@@ -93,6 +93,7 @@ def _rgb_rows(name, rows, width, per_pixel):
 class LookupImages:
     """The images a group reads for one preset and liquid:
     params  the per-row parameters (RGB pixels as exported);
+    view    the preset's view factor per row (columns: the view cosines);
     linear  per channel c, the albedo table with channel c's function in
             channel c and zeros in the others (Linear lookups, summed);
     cells   per channel c, one texel per table cell holding its corners
@@ -102,8 +103,8 @@ class LookupImages:
             bilinear weights: a convex sum, so a half-precision GPU copy errs
             by at most 2^-11 of the value (exact lookups)."""
 
-    def __init__(self, params, linear, cells):
-        self.params, self.linear, self.cells = params, linear, cells
+    def __init__(self, params, view, linear, cells):
+        self.params, self.view, self.linear, self.cells = params, view, linear, cells
 
 
 def lookup_images(preset, liquid_name, exact=False):
@@ -116,6 +117,9 @@ def lookup_images(preset, liquid_name, exact=False):
     npar = len(t["params"][0]) // 3
     par = _image(f"Soak Params {base}", npar, rows,
                  [v for row in _rgb_rows("params", t["params"], npar, 3) for p in row for v in (*p, 1.0)], tag)
+    nv = d["view_columns"]
+    view = _image(f"Soak View {base}", nv, rows,
+                  [v for row in _rgb_rows("view_factor", t["view_factor"], nv, 3) for p in row for v in (*p, 1.0)], tag)
     alb = _rgb_rows("albedo", t["albedo"], na, 3)
     linear, cells = [], []
     for c in range(3):
@@ -129,4 +133,4 @@ def lookup_images(preset, liquid_name, exact=False):
                 f00, f01, f10, f11 = alb[r][j][c], alb[r][j + 1][c], alb[r + 1][j][c], alb[r + 1][j + 1][c]
                 px += [f01, f10, f11, f00]   # corners: bilinear weights make a convex sum
         cells.append(_image(f"Soak Cells {base} {'RGB'[c]}", na - 1, rows - 1, px, tag, alpha=True))
-    return LookupImages(par, linear, cells)
+    return LookupImages(par, view, linear, cells)

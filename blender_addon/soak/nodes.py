@@ -8,7 +8,10 @@ The group evaluates, with native nodes only, what the core exports
            the export's column and row programs place the channel and L in
            the table; Linear lookups (one per channel, Cycles' bilinear
            filter is the core's) or, with exact lookups (EEVEE), one Closest
-           read per channel of the cell's bilinear form;
+           read per channel of the cell's bilinear form; times the preset's
+           view factor at the view's cosine (the exported view_factor image:
+           the interface's transmission towards the viewer; the light's
+           angle a base colour cannot follow);
   rough  = Roughness * the exported apparent-roughness ratio;
   coat   = the liquid's mirror: film plus water-filled pores (coat / clearcoat weight);
   spec   = Specular * the base's own specular left under the liquid
@@ -366,14 +369,58 @@ def _wet_colour(b, colour, t, images, rows):
     return _combine(b, *values)
 
 
-def _wet_path(b, gin, L, preset, liquid_name, exact):
-    """The core's wetness function of one preset's class for the input colour:
+def _lerp(b, a, c, f):
+    """a + (c - a) f for vector sockets a, c and a float socket f."""
+    m = b.node("ShaderNodeVectorMath", operation="MULTIPLY_ADD")
+    b.link(_vec(b, "SUBTRACT", c, a), m.inputs[0])
+    b.link(f, m.inputs[1])
+    b.link(a, m.inputs[2])
+    return m.outputs[0]
+
+
+def _view_factor(b, t, images, rows, normal):
+    """The preset's view factor (the export's view_factor image) at the
+    view's cosine to the shading normal, None where it is 1 throughout (dry
+    tables, conductors). A base colour cannot follow the light's angle
+    through the liquid interface, but it can follow the viewer's. Layer
+    Weight's Facing at blend 0.5 is 1 - |cos| (both engines; backfaces
+    included); one Linear lookup, or for exact lookups four Closest reads of
+    the cell's corners and their bilinear mix (EEVEE Next's Linear lookup
+    fails where a coordinate is constant over the screen)."""
+    if all(v == 1.0 for row in t["view_factor"] for v in row):
+        return None
+    n = data.load()["view_columns"]
+    lw = b.node("ShaderNodeLayerWeight")
+    lw.inputs["Blend"].default_value = 0.5
+    b.link(normal, lw.inputs["Normal"])
+    facing = lw.outputs["Facing"]
+    if not rows.exact:
+        u = b.math("MULTIPLY_ADD", facing, -(n - 1) / n, (n - 0.5) / n)
+        return _lookup(b, images.view, u, rows.v, "Linear").outputs["Color"]
+    x = b.math("MULTIPLY_ADD", facing, -(n - 1) * _EDGE, (n - 1) * _EDGE)
+    i0 = b.math("FLOOR", x)
+    fx = b.math("SUBTRACT", x, i0)
+    u0 = b.math("MULTIPLY_ADD", i0, 1.0 / n, 0.5 / n)
+    u1 = b.math("ADD", u0, 1.0 / n)
+
+    def row(v):
+        a = _lookup(b, images.view, u0, v, "Closest").outputs["Color"]
+        return _lerp(b, a, _lookup(b, images.view, u1, v, "Closest").outputs["Color"], fx)
+    return _lerp(b, row(rows.v0), row(rows.v1), rows.fy)
+
+
+def _wet_path(b, gin, L, preset, liquid_name, exact, normal):
+    """The core's wetness function of one preset's class for the input colour
+    (times the preset's view factor at the view through `normal`):
     (colour, roughness, coat weight, base specular factor) sockets, and a
     reader of further parameter pixels."""
     t = data.table(preset, liquid_name)
     images = data.lookup_images(preset, liquid_name, exact)
     rows = _Rows(b, L, t, exact)
     colour = _wet_colour(b, gin.outputs["Base Color"], t, images, rows)
+    view = _view_factor(b, t, images, rows, normal)
+    if view is not None:
+        colour = _vec(b, "MULTIPLY", colour, view)
     spec = b.node("ShaderNodeSeparateXYZ")   # (base specular factor, interface area, roughness ratio)
     b.link(_param(b, images.params, t, rows, 3), spec.inputs[0])
     rough = b.math("MULTIPLY", gin.outputs["Roughness"], spec.outputs[2], clamp=True)
@@ -413,9 +460,15 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None):
     gin = b.node("NodeGroupInput")
     gout = b.node("NodeGroupOutput")
     L = _liquid_schedule(b, gin)
-    colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact)
+    bump = b.node("ShaderNodeBump")
+    b.link(gin.outputs["Spill Edge"], bump.inputs["Strength"])
+    b.link(gin.outputs["Wet Map"], bump.inputs["Height"])
+    bump.inputs["Distance"].default_value = 0.02
+    b.link(gin.outputs["Normal"], bump.inputs["Normal"])
+    normal = bump.outputs["Normal"]
+    colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact, normal)
     if metal is not None:
-        mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact)
+        mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact, normal)
         f = b.math("MINIMUM", b.math("MAXIMUM", gin.outputs["Metallic"], 0.0), 1.0)
         mix = b.node("ShaderNodeVectorMath", operation="MULTIPLY_ADD")
         b.link(_vec(b, "SUBTRACT", mc, colour), mix.inputs[0])
@@ -424,11 +477,6 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None):
         colour = mix.outputs[0]
         rough = b.math("MULTIPLY_ADD", b.math("SUBTRACT", mr, rough), f, rough)
         coat = b.math("MULTIPLY_ADD", b.math("SUBTRACT", mcoat, coat), f, coat)
-    bump = b.node("ShaderNodeBump")
-    b.link(gin.outputs["Spill Edge"], bump.inputs["Strength"])
-    b.link(gin.outputs["Wet Map"], bump.inputs["Height"])
-    bump.inputs["Distance"].default_value = 0.02
-    b.link(gin.outputs["Normal"], bump.inputs["Normal"])
     spec = b.math("MULTIPLY", gin.outputs["Specular"], factor)
     # Blender's own coat dims what lies under it (4.x); the core's values
     # already hold the film's transmission: undo the engine's share.

@@ -188,7 +188,8 @@ def main():
                     area = c + (1 - c) * interp(kn["wetness"], kn["water_specular_weight"], w)
                     keep = 1 / (1 - area * liquids[liquid]["film_normal_reflectance"]) if coat_dims else 1.0
                     if what == "colour":
-                        exp = [x * keep for x in want]
+                        vf = [interp(kn["wetness"], [f[-1][c] for f in kn["view_factor"]], w) for c in range(3)]
+                        exp = [x * f * keep for x, f in zip(want, vf)]
                     elif what == "coat":
                         exp = [area] * 3
                     elif what == "spec":

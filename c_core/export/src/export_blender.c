@@ -13,10 +13,14 @@
  *            the pores of a bright base darkens it like sqrt(L)), L uniform
  *            over [w_sat, 1] above (rows_above intervals), so that the
  *            saturation kink lies on a row.
- * A second image holds per-row parameters (roughness, film coverage, ...).
- * The writer refines both grids until bilinear interpolation stays within
- * half of SOAK_EXPORT_BASE_TOL of the core at cell midpoints, and writes the
- * worst error it then finds at cell centres and quarter points. JSON through
+ * A second image holds per-row parameters (roughness, film coverage, ...),
+ * a third the view factor (soak_export_view_factors) per row on the core's
+ * view cosines, so that the add-on's base colour follows the liquid
+ * interface's transmission towards the viewer (it cannot follow the
+ * light's). The writer refines both grids until bilinear interpolation
+ * stays within half of SOAK_EXPORT_BASE_TOL of the core at cell midpoints (the view
+ * factor's on the colour it scales included), and writes the worst errors it
+ * then finds at cell centres and quarter points. JSON through
  * soak/json_writer.h: 6 significant digits (the images are 32-bit float; the
  * tolerance is 5e-3), 10 for the node programs' constants. */
 #include <math.h>
@@ -29,7 +33,7 @@
 #include "soak/wet_specular.h"
 
 #define BL_FORMAT "soak-blender"
-#define BL_FORMAT_VERSION 3
+#define BL_FORMAT_VERSION 4
 #define BL_DIGITS 6             /* significant digits of pixels and facts */
 #define BL_ZERO 5e-13           /* written as 0 below this */
 #define BL_PROGRAM_DIGITS 10    /* node program constants: positions of rows */
@@ -37,6 +41,7 @@
 #define BL_MAX_COLS 257
 #define BL_MAX_ROWS 257
 #define BL_PARAM_COLS 4 /* see param_pixel */
+#define BL_VIEW_MAX_DEG 75.0    /* view_max_error covers views up to this zenith angle */
 
 typedef struct bl_grid {
     const soak_preset *p;
@@ -101,12 +106,74 @@ static soak_status param_pixel(const bl_grid *g, double L, double px[BL_PARAM_CO
     return SOAK_OK;
 }
 
+/* The view factor of the row's state on the view cosines i / (VIEW_N - 1). */
+static soak_status view_row(const bl_grid *g, double L, soak_rgb f[SOAK_EXPORT_VIEW_N])
+{
+    soak_wet_input in = soak_wet_input_steady(g->p, L);
+    soak_wet_params w;
+    soak_status st = soak_wetness_eval(g->p, g->l, &in, &w);
+    return st == SOAK_OK ? soak_export_view_factors(g->p, g->l, &w, f) : st;
+}
+
 static double max_abs_diff(const double *a, const double *b, int n)
 {
     double e = 0.0;
     for (int i = 0; i < n; ++i)
         if (fabs(a[i] - b[i]) > e) e = fabs(a[i] - b[i]);
     return e;
+}
+
+/* Bilinear error of the view-factor image against the core in row interval
+ * [r, r + 1] at fraction t, at the view columns (and their quarter points
+ * with between_views: the core's fixed 17 view cosines, which the rows
+ * cannot refine), over views
+ * up to BL_VIEW_MAX_DEG (the json export's range), on the colour it
+ * multiplies: times the wet albedo of a white dry colour, the brightest any
+ * user's colour gets (coffee's black film makes the factor steep near L = 1,
+ * where the colour it scales is near 0). */
+static soak_status view_cell_error(const bl_grid *g, int r, double t, int between_views, double *err)
+{
+    static const double ts[] = {0.0, 0.25, 0.5, 0.75};
+    const int nu = between_views ? 4 : 1;
+    const double cos_min = cos(BL_VIEW_MAX_DEG * (SOAK_PI / 180.0));
+    const int n = SOAK_EXPORT_VIEW_N - 1;
+    soak_rgb f0[SOAK_EXPORT_VIEW_N], f1[SOAK_EXPORT_VIEW_N];
+    soak_status st = view_row(g, row_liquid(g, r), f0);
+    if (st == SOAK_OK) st = view_row(g, row_liquid(g, r + 1), f1);
+    soak_wet_input in = soak_wet_input_steady(g->p, row_liquid(g, r + t));
+    soak_wet_params w;
+    double white[3];
+    if (st == SOAK_OK) st = soak_wetness_eval(g->p, g->l, &in, &w);
+    if (st == SOAK_OK) st = albedo_pixel(g, 1.0, row_liquid(g, r + t), white);
+    *err = 0.0;
+    for (int i = 0; st == SOAK_OK && i < n; ++i)
+        for (int u = 0; st == SOAK_OK && u < nu; ++u) {
+            double x = (i + ts[u]) / n;
+            if (x < cos_min) continue;
+            soak_rgb core;
+            st = soak_wetness_view_factor(g->p, g->l, &w, x, &core);
+            for (int c = 0; st == SOAK_OK && c < 3; ++c) {
+                double lo = soak_rgb_at(f0[i], c) + (soak_rgb_at(f0[i + 1], c) - soak_rgb_at(f0[i], c)) * ts[u];
+                double hi = soak_rgb_at(f1[i], c) + (soak_rgb_at(f1[i + 1], c) - soak_rgb_at(f1[i], c)) * ts[u];
+                double e = white[c] * fabs(lo + (hi - lo) * t - soak_rgb_at(core, c));
+                if (e > *err) *err = e;
+            }
+        }
+    return st;
+}
+
+static soak_status view_error(const bl_grid *g, double *err)
+{
+    static const double ts[] = {0.25, 0.5, 0.75};
+    *err = 0.0;
+    for (int r = 0; r + 1 < grid_rows(g); ++r)
+        for (int v = 0; v < 3; ++v) {
+            double e;
+            soak_status st = view_cell_error(g, r, ts[v], 1, &e);
+            if (st != SOAK_OK) return st;
+            if (e > *err) *err = e;
+        }
+    return SOAK_OK;
 }
 
 /* Worst error of interpolating along one axis at fraction t of each interval:
@@ -139,6 +206,9 @@ static soak_status axis_error(const bl_grid *g, int axis, double t, int rows_lo,
         if (st != SOAK_OK) return st;
         for (int k = 0; k < BL_PARAM_COLS * 3; ++k) pi[k] = p0[k] + (p1[k] - p0[k]) * t;
         double e = max_abs_diff(pi, pm, BL_PARAM_COLS * 3);
+        if (e > *err) *err = e;
+        st = view_cell_error(g, r, t, 0, &e);
+        if (st != SOAK_OK) return st;
         if (e > *err) *err = e;
         for (int j = 0; j < g->na; ++j) {
             double a = col_albedo(g, j);
@@ -293,6 +363,15 @@ static soak_status add_pixels(soak_json *j, cJSON *table, const bl_grid *g)
         cJSON *row = soak_json_array(j, params, NULL);
         for (int k = 0; k < BL_PARAM_COLS * 3; ++k) soak_json_num(j, row, NULL, px[k]);
     }
+    cJSON *view = soak_json_array(j, table, "view_factor");
+    for (int r = 0; r < rows; ++r) {
+        soak_rgb f[SOAK_EXPORT_VIEW_N];
+        soak_status st = view_row(g, row_liquid(g, r), f);
+        if (st != SOAK_OK) return st;
+        cJSON *row = soak_json_array(j, view, NULL);
+        for (int i = 0; i < SOAK_EXPORT_VIEW_N; ++i)
+            for (int c = 0; c < 3; ++c) soak_json_num(j, row, NULL, soak_rgb_at(f[i], c));
+    }
     return j->ok ? SOAK_OK : SOAK_ERR_NOMEM;
 }
 
@@ -301,8 +380,9 @@ static soak_status add_table(soak_json *j, cJSON *liquids, const soak_preset *p,
     bl_grid g = {p, l, soak_material_kind_porous(p->kind) ? p->porosity : 0.0, 17, 0, 1};
     if (g.w_sat > 0.0) g.n1 = 4;
     soak_status st = refine(&g);
-    double err = 0.0;
+    double err = 0.0, view_err = 0.0;
     if (st == SOAK_OK) st = bilinear_error(&g, &err);
+    if (st == SOAK_OK) st = view_error(&g, &view_err);
     if (st != SOAK_OK) return st;
     cJSON *table = soak_json_object(j, liquids, l->name);
     soak_json_int(j, table, "columns", g.na);
@@ -310,6 +390,7 @@ static soak_status add_table(soak_json *j, cJSON *liquids, const soak_preset *p,
     soak_json_int(j, table, "rows_above", g.n2);
     soak_json_num(j, table, "saturation", g.w_sat);
     soak_json_num(j, table, "max_error", err);
+    soak_json_num(j, table, "view_max_error", view_err);
     add_coordinate_programs(j, table, &g);
     return add_pixels(j, table, &g);
 }
@@ -347,6 +428,7 @@ static void add_header(soak_json *j, cJSON *root, const soak_export_header *h)
     soak_json_str(j, root, "materials_file", h->materials_file);
     soak_json_str(j, root, "materials_hash", h->materials_hash);
     soak_json_num(j, root, "tolerance", SOAK_EXPORT_BASE_TOL);
+    soak_json_int(j, root, "view_columns", SOAK_EXPORT_VIEW_N);
     soak_json_str(j, root, "layout",
                   "per material and liquid: albedo[row][3*column+channel] and params[row][3*pixel+channel]. Column "
                   "j: s = j/(columns-1), dry albedo a = 1-(1-s)^2. Row r: delivered liquid L = "
@@ -356,8 +438,11 @@ static void add_header(soak_json *j, cJSON *root, const soak_export_header *h)
                   "albedo a. params pixels: 0 = (roughness, film coverage, water specular weight), 1 = (pore fill, "
                   "specular weight, 0), 2 = thin-sheet transmittance, 3 = (the base's own specular under the liquid "
                   "over its dry value, the liquid mirror's weight = interface area, apparent roughness: conductors "
-                  "seen through the film; see soak/wet_specular.h). Interpolate bilinearly between pixel centres; "
-                  "max_error is the worst error of that against the core.");
+                  "seen through the film; see soak/wet_specular.h). view_factor[row][3*i+channel]: the preset's view "
+                  "factor (soak_wetness_view_factor) at cos(view zenith) = i/16, the factor on the wet colour seen "
+                  "along that view under uniform light. Interpolate bilinearly between pixel centres; max_error is "
+                  "the worst error of that against the core, view_max_error the view factor's (views up to 75 deg, "
+                  "times the wet albedo of a white dry colour: the error on the colour).");
     add_schedule_program(j, root);
 }
 
