@@ -95,7 +95,9 @@ def main():
     soak, root, tmp, lib = setup_args(__doc__)
     exp = export_json(soak, tmp)
     k = next(m for m in exp["materials"] if m["name"] == "sand")["liquids"]["water"]["knots"]
-    dry, wet = np.array(k["albedo"][0]), np.array(k["albedo"][-1])
+    # seen straight from above: the colour times the view factor along the normal (1 when dry)
+    j = exp["view_cos"].index(1.0)
+    dry, wet = (np.array(k["albedo"][i]) * np.array(k["view_factor"][i][j]) for i in (0, -1))
     if k["wetness"][-1] != 1.0 or k["wetness"][0] != 0.0:
         fail("sand's knots do not start at 0 and end at 1")
     write_map(os.path.join(tmp, "map.png"))

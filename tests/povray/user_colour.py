@@ -3,7 +3,9 @@ time (Soak_Wet_Colour) and at render time (Soak_Wet_User_Material: a per-channel
 colour_map over the user's pigment; Soak_Wet_User_Texture_Fn: a texture_map over
 wetness), against an independent bilinear interpolation of the JSON export's
 base_colour table (`soak export --target json`, another writer of the same core
-function).
+function). Rendered, the colour is seen along the normal: times the preset's view
+factor at cos 1 (the JSON's knots.view_factor, lerped in wetness); the _Fn texture
+lerps the base table's wetness rows, each with its own factor.
 
 usage: user_colour.py SOAK ROOT TMPDIR"""
 import os
@@ -37,6 +39,25 @@ def bilinear(exp, name, w, rgb):
         rows = [np.interp(rgb[c], a, tab[c][i]) for i in range(len(ws))]
         out.append(np.interp(w, ws, rows))
     return np.array(out)
+
+
+def view_factor(exp, name, w):
+    """The preset's view factor seen along the normal (view_cos 1), lerped in wetness."""
+    m = next(m for m in exp["materials"] if m["name"] == name)
+    k = m["liquids"]["water"]["knots"]
+    j = exp["view_cos"].index(1.0)
+    return np.array([np.interp(w, k["wetness"], [v[j][c] for v in k["view_factor"]]) for c in range(3)])
+
+
+def seen(exp, name, w, rgb, kind):
+    """The colour rendered along the normal: const, the wet colour times the factor at w;
+    fn, the texture_map's lerp over the base table's wetness rows of the same product."""
+    if kind == "const":
+        return bilinear(exp, name, w, rgb) * view_factor(exp, name, w)
+    m = next(m for m in exp["materials"] if m["name"] == name)
+    ws = m["liquids"]["water"]["base_colour"]["wetness"]
+    rows = np.array([bilinear(exp, name, wi, rgb) * view_factor(exp, name, wi) for wi in ws])
+    return np.array([np.interp(w, ws, rows[:, c]) for c in range(3)])
 
 
 def main():
@@ -81,7 +102,7 @@ def main():
             if rc != 0:
                 fail(f"{pov}: exit {rc}\n{log[-1500:]}")
             px = read_image(out).mean((0, 1))
-            ref = bilinear(exp, p, w, c)
+            ref = seen(exp, p, w, c, kind)
             # half-float output: 2^-11 relative; the clamp of channel 1.0 to 1 - 1e-6
             ok = np.all(np.abs(px - ref) <= 1e-3 * np.maximum(ref, 0.05) + 2e-5)
             bad += not ok

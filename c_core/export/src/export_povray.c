@@ -31,6 +31,12 @@
  *   - the wetness function for any base colour (soak_wet_params_for_base)
  *     on the nodes of soak_export_base_nodes, as <r,g,b> per (wetness, dry
  *     albedo) node;
+ *   - the view factor (soak_wetness_view_factor) per knot on a grid of view
+ *     angles, every 5 deg to 60 deg, then every 2.5 deg to 90 deg: POV-Ray's
+ *     aoi pattern is linear in the angle (1 - angle / 180 deg), so soak.inc's
+ *     colour_map over it lerps in angle; this grid keeps albedo x factor so
+ *     lerped within 0.0008 of the core to 60 deg and 0.0011 to 75 deg over
+ *     every preset's knots (0.0064 to 90 deg; paper, fully wet);
  *   - the pore-filling schedule as a macro (Soak_Fill_Progress_Fn), the one
  *     copy soak.inc's animation macros call.
  * Layout: flat arrays indexed by table t = preset * Soak_N_Liquids + liquid
@@ -51,8 +57,9 @@
 
 #define POV_ROUGH_MIN 5e-4
 #define POV_ROUGH_MAX 1.0
-#define POV_FORMAT_VERSION 4
+#define POV_FORMAT_VERSION 5
 #define POV_SUBSURFACE_PIGMENT_MIN 1e-3 /* soak.inc's clamp of a subsurface pigment */
+#define POV_VIEW_N 25
 
 enum { V_PIGMENT, V_REFLECT_METAL, V_SHEET_T, V_SIGMA_S, V_SIGMA_A, V_TRANSLUCENCY, V_COUNT };
 enum { S_W, S_COVERAGE, S_FILL, S_FILM_R, S_SPEC, S_ROUGH, S_PHONG, S_BACK, S_G1, S_G2, S_LOBE_W, S_COUNT };
@@ -89,6 +96,7 @@ typedef struct pov_table {
     int na, nw; /* base-colour nodes */
     double a[SOAK_EXPORT_KNOTS_MAX], w[SOAK_EXPORT_KNOTS_MAX];
     soak_rgb *base; /* nw * na, row-major in wetness */
+    soak_rgb *view; /* n * POV_VIEW_N: the view factor per knot and view angle */
 } pov_table;
 
 typedef struct pov_out {
@@ -141,6 +149,22 @@ static soak_status fill_medium(const soak_wet_params *w, double eta, pov_table *
     return SOAK_OK;
 }
 
+static double view_angle_deg(int k) { return k <= 12 ? 5.0 * k : 60.0 + 2.5 * (k - 12); }
+
+static double view_cos(int k)
+{
+    const double deg = 0.017453292519943295;
+    return k + 1 == POV_VIEW_N ? 0.0 : cos(view_angle_deg(k) * deg);
+}
+
+static soak_status fill_view(const soak_preset *p, const soak_liquid *l, const soak_wet_params *w, pov_table *t, int i)
+{
+    soak_status st = SOAK_OK;
+    for (int k = 0; st == SOAK_OK && k < POV_VIEW_N; ++k)
+        st = soak_wetness_view_factor(p, l, w, view_cos(k), &t->view[i * POV_VIEW_N + k]);
+    return st;
+}
+
 static soak_status fill_knot(const soak_preset *p, const soak_liquid *l, double wet, pov_table *t, int i)
 {
     soak_wet_input in = soak_wet_input_steady(p, wet);
@@ -151,6 +175,7 @@ static soak_status fill_knot(const soak_preset *p, const soak_liquid *l, double 
     if (st == SOAK_OK && p->kind != SOAK_KIND_CONDUCTOR) st = soak_fresnel_r0(p->ior, 0.0, &f0_mat);
     soak_rgb sheet_t = {0, 0, 0};
     if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET) st = soak_sheet_transmittance(&w, p->thickness_m, p->ior, &sheet_t);
+    if (st == SOAK_OK) st = fill_view(p, l, &w, t, i);
     if (st != SOAK_OK) return st;
     const double c = w.film ? w.film_coverage : 0.0;
     const int metal = p->kind == SOAK_KIND_CONDUCTOR;
@@ -174,6 +199,10 @@ static soak_status fill_table(const soak_preset *p, const soak_liquid *l, pov_ta
 {
     double knots[SOAK_EXPORT_KNOTS_MAX];
     soak_status st = soak_export_knots(p, l, -1.0, knots, SOAK_EXPORT_KNOTS_MAX, &t->n);
+    if (st == SOAK_OK) {
+        t->view = malloc((size_t)t->n * POV_VIEW_N * sizeof *t->view);
+        if (!t->view) return SOAK_ERR_NOMEM;
+    }
     for (int i = 0; st == SOAK_OK && i < t->n; ++i) st = fill_knot(p, l, knots[i], t, i);
     if (st == SOAK_OK)
         st = soak_export_base_nodes(p, l, t->a, SOAK_EXPORT_KNOTS_MAX, &t->na, t->w, SOAK_EXPORT_KNOTS_MAX, &t->nw);
@@ -233,7 +262,12 @@ static void write_header(pov_out *o, const soak_export_header *h)
     num(o, SOAK_EXPORT_KNOT_TOL);
     out(o, ";\n#declare Soak_Data_Base_Tolerance = ");
     num(o, SOAK_EXPORT_BASE_TOL);
-    out(o, ";\n\n");
+    out(o, ";\n// view angles (deg from the normal) of Soak_K_View: POV-Ray's aoi pattern is 1 - angle / 180\n");
+    out(o, "#declare Soak_N_View = %d;\n#declare Soak_View_Angle = array[%d] {", POV_VIEW_N, POV_VIEW_N);
+    for (int k = 0; k < POV_VIEW_N; ++k) {
+        num(o, view_angle_deg(k));
+        out(o, k + 1 < POV_VIEW_N ? ", " : "}\n\n");
+    }
 }
 
 typedef double (*preset_num)(const soak_preset *p);
@@ -338,6 +372,15 @@ static void write_knot_tables(pov_out *o, const pov_table *tabs, int nt, int *st
             }
         out(o, "\n}\n");
     }
+    out(o, "// the view factor: the diffuse colour seen at Soak_View_Angle[k] over the hemispherical\n");
+    out(o, "// albedo (uniform light; soak_wetness_view_factor), knot i's at Soak_K_View[i * Soak_N_View + k]\n");
+    out(o, "#declare Soak_K_View = array[%d] {\n  ", total * POV_VIEW_N);
+    for (int t = 0, i = 0; t < nt; ++t)
+        for (int k = 0; k < tabs[t].n * POV_VIEW_N; ++k, ++i) {
+            vec(o, tabs[t].view[k]);
+            sep(o, i, total * POV_VIEW_N, 3);
+        }
+    out(o, "\n}\n");
 }
 
 /* The nodes and values of the any-base-colour tables (dry albedo x wetness).
@@ -425,7 +468,10 @@ soak_status soak_export_write_povray(const soak_preset_db *db, FILE *f, char *er
             st = SOAK_ERR_IO;
         }
     }
-    for (int t = 0; t < nt; ++t) free(tabs[t].base);
+    for (int t = 0; t < nt; ++t) {
+        free(tabs[t].base);
+        free(tabs[t].view);
+    }
     free(tabs);
     return st;
 }
