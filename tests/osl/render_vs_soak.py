@@ -108,19 +108,6 @@ def render(soak, tmp, tag, items, sun_dir, sky, spp, exp):
     return fg.region_means(read_image(ref), items), fg.region_means(read_image(osl), items)
 
 
-def light_angle_term(n, cos_sun, sky_radiance):
-    """What a diffuse closure weighted by the view factor still misses: the liquid
-    interface lets the sun in with its transmission at the sun's angle, T(sun), where
-    the hemispherical albedo assumes the cosine-weighted mean transmission T_mean; the
-    uniform sky's light averages to T_mean exactly. Relative size over the interface
-    area: the sun's share of the irradiance x |T(sun) / T_mean - 1| (Fresnel, textbook
-    formula; zero thickness: water absorbs nothing over a film's path)."""
-    mu = np.linspace(1e-4, 1, 4001)
-    t_mean = np.trapz([(1 - fg.fresnel(m, n)) * 2 * m for m in mu], mu)
-    e_sun, e_sky = fg.SUN_E * cos_sun, np.pi * sky_radiance
-    return e_sun / (e_sun + e_sky) * abs((1 - fg.fresnel(cos_sun, n)) / t_mean - 1)
-
-
 def main():
     if len(sys.argv) < 4:
         fail(__doc__)
@@ -149,11 +136,11 @@ def main():
         for (name, w), (rm, rs), (om, os_) in zip(items, ref, osl):
             rows.append((tag, name, w, fg.lum(rm), fg.lum(rs), fg.lum(om), fg.lum(os_), cov(name, w)))
 
-    film_b = light_angle_term(n_water, fg.SUN_DIR[2], fg.SKY_L)
+    film_b = fg.light_half(n_water, fg.SUN_DIR[2], 0.0, fg.sun_share(fg.SUN_DIR[2], fg.SKY_L))
 
     # Budget (osl/README.md, "Rendered"), relative: 4 standard errors of each side's
     # region mean + 0.002/value (albedo x view factor, the export's knots and view grid)
-    # + 1e-3 (half-float EXR) + ground: area x the light's angle term (the shader
+    # + 1e-3 (half-float EXR) + ground: area x the light's half (fg.light_half: the shader
     # weights its diffuse closure by the interface's transmission towards the viewer;
     # a diffuse closure cannot follow the light's angle, which the traced interface
     # does) | metals: 0.03 (a GGX lobe times the normal reflectance vs the
