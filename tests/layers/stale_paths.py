@@ -14,6 +14,10 @@ prefix (e.g. `gallery_*.png`) and counts when some path starts with it.
 Paths under out/, build folders and the system's /tmp are outputs, not
 references, and are not checked.
 
+Markdown files are also checked for their relative links and pictures,
+`[text](target)` and `![alt](target)`, resolved against the file's folder
+(web addresses and anchors are not checked).
+
 Before the scan, a self-test plants stale paths in a line of text and checks
 that they are reported, so the test is known to be able to fail.
 """
@@ -56,6 +60,23 @@ def scan_text(text, exists, prefix_exists):
     return stale
 
 
+MD_LINK = re.compile(r"\]\(([^)\s]+)\)")
+
+
+def scan_markdown(path, text, exists):
+    """Relative link targets of a markdown file that do not exist."""
+    stale = []
+    for lineno, line in enumerate(text.splitlines(), 1):
+        for m in MD_LINK.finditer(line):
+            target = m.group(1).split("#")[0]
+            if not target or re.match(r"^[a-z]+:", target) or target.startswith("/"):
+                continue
+            resolved = os.path.normpath(os.path.join(os.path.dirname(path), target))
+            if not exists(resolved):
+                stale.append((lineno, resolved))
+    return stale
+
+
 def main():
     repo = os.path.abspath(sys.argv[1])
     files = tracked(repo)
@@ -78,6 +99,10 @@ def main():
     if planted != want:
         print("FAIL self-test: planted stale paths %s reported as %s" % (want, planted))
         return 1
+    planted_md = scan_markdown("docs/x.md", "![a](images/nope.png) [b](../README.md) [c](https://x.org/y)\n", exists)
+    if planted_md != [(1, "docs/images/nope.png")]:
+        print("FAIL self-test: planted stale markdown link reported as %s" % planted_md)
+        return 1
     print("ok   self-test: planted stale paths are reported")
 
     n_files = n_refs = 0
@@ -93,6 +118,8 @@ def main():
         n_files += 1
         n_refs += len(WORD.findall(text))
         stale += [(f, ln, w) for ln, w in scan_text(text, exists, prefix_exists)]
+        if f.endswith(".md"):
+            stale += [(f, ln, w) for ln, w in scan_markdown(f, text, exists)]
     for f, ln, w in stale:
         print("FAIL %s:%d names %s, which does not exist" % (f, ln, w))
     print("%d files, %d path references, %d stale" % (n_files, n_refs, len(stale)))
