@@ -69,19 +69,27 @@ static void camera_json(char *buf, size_t n, double theta_deg, double dist)
              -dist * sin(t), dist * cos(t));
 }
 
+/* One pixel of a large plane of material `material` (JSON) under a uniform
+ * sky of radiance 1, seen from theta_deg off the normal. */
+static void sky_plane_scene(char *text, size_t n, double theta_deg, const char *material)
+{
+    char cam[256];
+    camera_json(cam, sizeof cam, theta_deg, 5);
+    snprintf(text, n,
+             "{\"render\": {\"width\": 1, \"height\": 1, \"max_depth\": 1000}, %s,"
+             " \"environment\": {\"type\": \"constant\", \"radiance\": 1},"
+             " \"materials\": {\"m\": %s},"
+             " \"objects\": [{\"type\": \"plane\", \"size\": [4000, 4000], \"material\": \"m\"}]}",
+             cam, material);
+}
+
 static void test_film_vs_lekner_dorf(void)
 {
     double cosv[2] = {1.0, 0.5};
     for (int i = 0; i < 2; ++i) {
-        char cam[256], text[2048];
-        camera_json(cam, sizeof cam, acos(cosv[i]) * 180.0 / SOAK_PI, 5);
-        snprintf(text, sizeof text,
-                 "{\"render\": {\"width\": 1, \"height\": 1, \"max_depth\": 1000}, %s,"
-                 " \"environment\": {\"type\": \"constant\", \"radiance\": 1},"
-                 " \"materials\": {\"m\": {\"type\": \"wet\", \"film\": {\"ior\": 1.33},"
-                 "   \"base\": {\"type\": \"lambert\", \"albedo\": 0.5}}},"
-                 " \"objects\": [{\"type\": \"plane\", \"size\": [4000, 4000], \"material\": \"m\"}]}",
-                 cam);
+        char text[2048];
+        sky_plane_scene(text, sizeof text, acos(cosv[i]) * 180.0 / SOAK_PI,
+                        "{\"type\": \"wet\", \"film\": {\"ior\": 1.33}, \"base\": {\"type\": \"lambert\", \"albedo\": 0.5}}");
         double m, se;
         if (!render_mean("film plane", text, 65536, &m, &se)) continue;
         soak_film film = {1.33, 0, 0};
@@ -340,14 +348,9 @@ static void test_preset_film_and_pores(void)
     if (check_true("brick and coffee", p && l) && check_status("chain", soak_wetness_eval(p, l, &in, &w), SOAK_OK) &&
         check_status("sun albedo", soak_wetness_albedo_sun(p, l, &w, 1.0, &dir, &total), SOAK_OK)) {
         check_true("both a film and uncovered pore water", w.film_coverage > 0.1 && soak_wet_interface_area(&w) > w.film_coverage + 0.1);
-        char cam[256], text[2048];
-        camera_json(cam, sizeof cam, 0.0, 5);
-        snprintf(text, sizeof text,
-                 "{\"render\": {\"width\": 1, \"height\": 1, \"max_depth\": 1000}, %s,"
-                 " \"environment\": {\"type\": \"constant\", \"radiance\": 1},"
-                 " \"materials\": {\"m\": {\"type\": \"preset\", \"name\": \"brick\", \"liquid\": \"coffee\", \"wetness\": 0.5}},"
-                 " \"objects\": [{\"type\": \"plane\", \"size\": [4000, 4000], \"material\": \"m\"}]}",
-                 cam);
+        char text[2048];
+        sky_plane_scene(text, sizeof text, 0.0,
+                        "{\"type\": \"preset\", \"name\": \"brick\", \"liquid\": \"coffee\", \"wetness\": 0.5}");
         double m, se;
         if (render_mean("brick + coffee", text, 65536, &m, &se)) {
             double ref = (total.r + total.g + total.b) / 3;
