@@ -216,15 +216,6 @@ typedef struct nee_exit {
     double inv_q;    /* 1 / survival probability of the roulette */
 } nee_exit;
 
-/* Stage 2 of the roulette on the exit e found so far: deep inside the light
- * barely gets through, so the rest of the estimate survives with overall
- * probability min(q1, nee_survival(T)), q1 that of stage 1; survivors are
- * divided by it. */
-static int exit_roulette(nee_ctx *c, double q1, nee_exit *e)
-{
-    return nee_roulette(c->t, fmin(1.0, nee_survival(max_transmittance(c->med->sigma_t, e->h.t)) / q1), &e->inv_q);
-}
-
 /* Refracts the light direction wl through a flat film at normal n (n2
  * cancels for parallel layers) into the material of index n3; cos1 = wl . n. */
 static soak_vec3 refract_in(soak_vec3 wl, soak_vec3 n, double cos1, double n3)
@@ -236,17 +227,7 @@ static soak_vec3 refract_in(soak_vec3 wl, soak_vec3 n, double cos1, double n3)
 /* Finds the exit point of light l's shadow path from x: refract at the
  * current normal, trace, and refine once with the exit point's normal (a
  * planar face under the sun is exact at once). Returns 0 when there is none
- * or the roulette ended the estimate.
- *
- * Stage 2 of the roulette normally judges the first exit found, which saves
- * the refinement ray for estimates that die. For a light behind the entry
- * face the first guess (the opposite normal) can be far from the real exit:
- * the refined exit is then often much nearer than the judged one, and its
- * transmittance divided by the survival of the judged one makes rare
- * weights of up to 1 / RT_NEE_SURVIVAL_MIN. There the roulette waits for
- * the refined exit: on the benchmark's wet sphere (bench_wet_sphere.json,
- * 36 seeds x 16 spp) this cut the image's mean pixel variance by 23 % for
- * 12 % more instructions per path (2026-11-28-nee-behind.md). */
+ * or the roulette ended the estimate. */
 static int find_exit(nee_ctx *c, const soak_light *l, int li, soak_vec3 x, nee_exit *e)
 {
     rt_thread *t = c->t;
@@ -256,8 +237,7 @@ static int find_exit(nee_ctx *c, const soak_light *l, int li, soak_vec3 x, nee_e
     /* A light behind the face the path came in through (a thin sheet lit
      * from behind) reaches x through another face: start from the opposite
      * normal, the exit search below finds the real face. */
-    int behind = !(soak_v3_dot(wl, n) > 0);
-    if (behind) n = soak_v3_scale(n, -1.0);
+    if (!(soak_v3_dot(wl, n) > 0)) n = soak_v3_scale(n, -1.0);
     e->inv_q = 1.0;
     for (int it = 0; it < 2; ++it) {
         double cos1 = soak_v3_dot(wl, n);
@@ -274,15 +254,18 @@ static int find_exit(nee_ctx *c, const soak_light *l, int li, soak_vec3 x, nee_e
         soak_status gst = soak_geometry_intersect_local(s->geometry, c->obj->object_id, &r, rt_object_uses_uv(c->obj), &e->h, &found);
         if (gst != SOAK_OK) t->n.geom_errors++;
         if (gst != SOAK_OK || !found) return 0;
-        /* Stage 2 (exit_roulette), before the refinement and the shadow ray. */
-        if (play && !behind && !exit_roulette(c, q1, e)) return 0;
+        /* Stage 2, with the first exit found: deep inside the light barely
+         * gets through, so the rest of the estimate (exit refinement, shadow
+         * ray) survives with overall probability min(q1, nee_survival(T));
+         * survivors are divided by it. */
+        if (play && !nee_roulette(t, fmin(1.0, nee_survival(max_transmittance(c->med->sigma_t, e->h.t)) / q1), &e->inv_q))
+            return 0;
         soak_vec3 ny = soak_v3_dot(e->d3, e->h.ng) >= 0 ? e->h.ng : soak_v3_scale(e->h.ng, -1.0);
         if (l->type == SOAK_LIGHT_POINT) wl = soak_v3_norm(soak_v3_sub(l->position, e->h.p));
         int same = soak_v3_dot(ny, n) > 1 - 1e-12;
         n = ny;
         if (same && l->type == SOAK_LIGHT_DIRECTIONAL) break; /* planar face: exact */
     }
-    if (behind && !c->med->coeffs && !exit_roulette(c, q1, e)) return 0;
     e->n = n;
     e->wl = wl;
     e->cos1 = soak_v3_dot(wl, n);
