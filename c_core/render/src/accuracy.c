@@ -83,7 +83,34 @@ static void bsdf_albedo(const soak_bsdf *b, soak_vec3 wo, int samples, soak_rng 
     }
 }
 
-static soak_status albedo_of(const rt_material_bsdf *mb, double p_wet, soak_vec3 wo, int samples, uint64_t seed,
+/* The states a surface point is shaded in, with their probabilities, as
+ * render_surface.c draws them: dry, the film with its thickness, the pore
+ * water at zero thickness (a share film_pore_share of the wet draws). */
+#define N_STATES 3
+typedef struct state_mix {
+    double p[N_STATES];
+} state_mix;
+
+static state_mix mix_of(const rt_material_bsdf *mb, const soak_material *m, double wetness)
+{
+    double p_wet = mb->has_wet ? wetness * m->film_coverage : 0.0;
+    double pore = mb->has_pore ? p_wet * m->film_pore_share : 0.0;
+    return (state_mix){{1.0 - p_wet, p_wet - pore, pore}};
+}
+
+static state_mix only(int state)
+{
+    state_mix s = {{0, 0, 0}};
+    s.p[state] = 1.0;
+    return s;
+}
+
+static const soak_bsdf *state_bsdf(const rt_material_bsdf *mb, int state)
+{
+    return state == 0 ? &mb->dry : state == 1 ? &mb->wet : &mb->pore;
+}
+
+static soak_status albedo_of(const rt_material_bsdf *mb, state_mix mix, soak_vec3 wo, int samples, uint64_t seed,
                              soak_albedo_estimate *out);
 
 soak_status soak_material_albedo(const soak_material *m, double wetness, double cos_o, int samples, uint64_t seed,
@@ -95,26 +122,30 @@ soak_status soak_material_albedo(const soak_material *m, double wetness, double 
     rt_material_bsdf mb;
     soak_status st = material_bsdfs(m, trace_films, &mb);
     if (st != SOAK_OK) return st;
-    double p_wet = mb.has_wet ? wetness * m->film_coverage : 0.0;
     soak_vec3 wo = soak_v3(sqrt(fmax(0.0, 1.0 - cos_o * cos_o)), 0.0, cos_o);
-    return albedo_of(&mb, p_wet, wo, samples, seed, out);
+    return albedo_of(&mb, mix_of(&mb, m, wetness), wo, samples, seed, out);
 }
 
-static soak_status albedo_of(const rt_material_bsdf *mb, double p_wet, soak_vec3 wo, int samples, uint64_t seed,
+/* Each state with its own stream (1 dry, 2 film, 3 pore water), so a
+ * material without pores estimates as it did before they had a state. */
+static soak_status albedo_of(const rt_material_bsdf *mb, state_mix mix, soak_vec3 wo, int samples, uint64_t seed,
                              soak_albedo_estimate *out)
 {
-    soak_rng rng;
-    soak_rgb dry = soak_rgb3(0, 0, 0), dry_var = dry, wet = dry, wet_var = dry;
-    soak_rng_seed(&rng, seed, 1);
-    if (p_wet < 1) bsdf_albedo(&mb->dry, wo, samples, &rng, &dry, &dry_var);
-    soak_rng_seed(&rng, seed, 2);
-    if (p_wet > 0) bsdf_albedo(&mb->wet, wo, samples, &rng, &wet, &wet_var);
-    for (int ch = 0; ch < 3; ++ch) {
-        double v = (1 - p_wet) * soak_rgb_at(dry, ch) + p_wet * soak_rgb_at(wet, ch);
-        double e = (1 - p_wet) * (1 - p_wet) * soak_rgb_at(dry_var, ch) + p_wet * p_wet * soak_rgb_at(wet_var, ch);
-        soak_rgb_set(&out->value, ch, v);
-        soak_rgb_set(&out->std_error, ch, sqrt(e));
+    out->value = out->std_error = soak_rgb3(0, 0, 0);
+    soak_rgb var = out->value;
+    for (int i = 0; i < N_STATES; ++i) {
+        double p = mix.p[i];
+        if (!(p > 0)) continue;
+        soak_rng rng;
+        soak_rgb mean = soak_rgb3(0, 0, 0), v = mean;
+        soak_rng_seed(&rng, seed, (uint64_t)i + 1);
+        bsdf_albedo(state_bsdf(mb, i), wo, samples, &rng, &mean, &v);
+        for (int ch = 0; ch < 3; ++ch) {
+            soak_rgb_set(&out->value, ch, soak_rgb_at(out->value, ch) + p * soak_rgb_at(mean, ch));
+            soak_rgb_set(&var, ch, soak_rgb_at(var, ch) + p * p * soak_rgb_at(v, ch));
+        }
     }
+    out->std_error = soak_rgb3(sqrt(var.r), sqrt(var.g), sqrt(var.b));
     return SOAK_OK;
 }
 
@@ -164,6 +195,20 @@ soak_status soak_material_radiance(const soak_material *m, double wetness, soak_
     return st;
 }
 
+/* The direct light of the states in mix: sum of p f(wi, wo) cos(wi) E. */
+static soak_rgb direct_mix(const rt_material_bsdf *mb, state_mix mix, const soak_rgb *walk_albedo,
+                           const soak_local_light *l, soak_vec3 wo)
+{
+    soak_rgb L = soak_rgb3(0, 0, 0);
+    for (int i = 0; i < N_STATES; ++i) {
+        if (!(mix.p[i] > 0)) continue;
+        soak_rgb f = direct(state_bsdf(mb, i), l->wi, wo, walk_albedo[i]);
+        for (int ch = 0; ch < 3; ++ch)
+            soak_rgb_set(&L, ch, soak_rgb_at(L, ch) + mix.p[i] * soak_rgb_at(f, ch) * soak_rgb_at(l->irradiance, ch));
+    }
+    return L;
+}
+
 soak_status soak_shading_radiance(const soak_shading_material *p, double wetness, soak_vec3 wo, soak_rgb env,
                                   const soak_local_light *lights, int n_lights, int samples, uint64_t seed,
                                   soak_albedo_estimate *out)
@@ -173,23 +218,23 @@ soak_status soak_shading_radiance(const soak_shading_material *p, double wetness
         !(samples >= 1 && samples <= 100000000))
         return SOAK_ERR_ARG;
     const rt_material_bsdf *mb = &p->mb;
-    double p_wet = mb->has_wet ? wetness * p->m->film_coverage : 0.0;
-    soak_albedo_estimate a, dry_a = {{0, 0, 0}, {0, 0, 0}}, wet_a = dry_a;
-    soak_status st = albedo_of(mb, p_wet, wo, samples, seed, &a);
+    state_mix mix = mix_of(mb, p->m, wetness);
+    soak_albedo_estimate a;
+    soak_status st = albedo_of(mb, mix, wo, samples, seed, &a);
     /* the walk stand-in needs each state's own albedo */
-    if (st == SOAK_OK && (soak_bsdf_get_flags(&mb->wet) & SOAK_BSDF_WALK) && p_wet > 0) st = albedo_of(mb, 1.0, wo, samples, seed, &wet_a);
-    if (st == SOAK_OK && (soak_bsdf_get_flags(&mb->dry) & SOAK_BSDF_WALK) && p_wet < 1) st = albedo_of(mb, 0.0, wo, samples, seed, &dry_a);
+    soak_rgb walk_albedo[N_STATES] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    for (int i = 0; i < N_STATES && st == SOAK_OK; ++i) {
+        if (!(mix.p[i] > 0) || !(soak_bsdf_get_flags(state_bsdf(mb, i)) & SOAK_BSDF_WALK)) continue;
+        soak_albedo_estimate one;
+        st = albedo_of(mb, only(i), wo, samples, seed, &one);
+        walk_albedo[i] = one.value;
+    }
     if (st != SOAK_OK) return st;
     soak_rgb L = soak_rgb3(a.value.r * env.r, a.value.g * env.g, a.value.b * env.b);
     for (int i = 0; i < n_lights; ++i) {
-        soak_vec3 wi = lights[i].wi;
-        if (!soak_v3_is_unit(wi) || !(wi.z > 0)) continue;
-        soak_rgb fd = p_wet < 1 ? direct(&mb->dry, wi, wo, dry_a.value) : soak_rgb3(0, 0, 0);
-        soak_rgb fw = p_wet > 0 ? direct(&mb->wet, wi, wo, wet_a.value) : soak_rgb3(0, 0, 0);
-        for (int ch = 0; ch < 3; ++ch) {
-            double v = ((1 - p_wet) * soak_rgb_at(fd, ch) + p_wet * soak_rgb_at(fw, ch)) * soak_rgb_at(lights[i].irradiance, ch);
-            soak_rgb_set(&L, ch, soak_rgb_at(L, ch) + v);
-        }
+        if (!soak_v3_is_unit(lights[i].wi) || !(lights[i].wi.z > 0)) continue;
+        soak_rgb d = direct_mix(mb, mix, walk_albedo, &lights[i], wo);
+        L = soak_rgb3(L.r + d.r, L.g + d.g, L.b + d.b);
     }
     out->value = L;
     out->std_error = soak_rgb3(a.std_error.r * env.r, a.std_error.g * env.g, a.std_error.b * env.b);
