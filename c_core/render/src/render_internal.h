@@ -215,10 +215,16 @@ soak_status rt_bsdfs_setup(const soak_scene *s, int trace_films, rt_material_bsd
 /* ---- the layer stack (render_stack.c) ---- */
 /* The air | film | material layer stack of a wet surface. */
 typedef struct rt_stack {
-    double n2, n3, k;  /* film (1 = none), material, Fresnel exponent */
+    double n2, n3, k;  /* film (1 and no absorbing thickness = none), material, Fresnel exponent */
     soak_rgb alpha;    /* film absorption, 1/length */
     double h;          /* film thickness */
 } rt_stack;
+
+/* The stack a path meets entering wet medium material m at wetness wet:
+ * one draw picks the film (probability wet x coverage, with its thickness),
+ * of those a share film_pore_share of pore water (the same interface, no
+ * thickness), or dry (no film). */
+rt_stack rt_wet_stack(rt_thread *t, const soak_material *m, double wet);
 
 /* Fresnel of the interfaces a path meets (unpolarised, exact): eta = n_t/n_i. */
 double rt_fresnel(double cos_i, double eta, double *cos_t);

@@ -273,8 +273,9 @@ static int find_exit(nee_ctx *c, const soak_light *l, int li, soak_vec3 x, nee_e
     return e->cos1 > 0 && e->cos3 > 0;
 }
 
-/* Beer-Lambert in the film on the light's way in, weighted by the wet
- * share of the film transmittance Tf. */
+/* Beer-Lambert in the film on the light's way in, weighted by the share of
+ * the film transmittance Tf that crosses a film with thickness (the wet
+ * share less the pore water's, which absorbs over none). */
 static soak_rgb film_absorbed(const soak_material *m, double cover, double cos1, double Tf, soak_rgb L)
 {
     double n3 = m->medium.ior;
@@ -282,7 +283,7 @@ static soak_rgb film_absorbed(const soak_material *m, double cover, double cos1,
     soak_jensen_layer wet = {1.0, m->film_ior, n3, m->film_k};
     double Tw = 0;
     soak_jensen_shadow(&wet, cos1, &Tw);
-    double share = cover * Tw / Tf;
+    double share = cover * Tw / Tf * (1.0 - m->film_pore_share);
     soak_rgb a = rgb_exp(m->film_absorption, m->film_thickness / cos2);
     return soak_rgb3(L.r * (1 - share + share * a.r), L.g * (1 - share + share * a.g), L.b * (1 - share + share * a.b));
 }
@@ -433,8 +434,7 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     double wet = soak_scene_wetness(obj, hit->p, hit->u, hit->v);
     const soak_scene_medium *med = (!m->has_dry || rt_rand(t) < wet) ? &m->medium : &m->dry_medium;
     double n3 = m->medium.ior;
-    rt_stack st = {rt_rand(t) < wet * m->film_coverage ? m->film_ior : 1.0, n3, m->film_k, m->film_absorption,
-                m->film_thickness};
+    rt_stack st = rt_wet_stack(t, m, wet);
     double cos1 = soak_v3_dot(wo, n_out);
     soak_vec3 tang = soak_v3_sub(path->dir, soak_v3_scale(n_out, -cos1));
     double p = soak_v3_len(tang);

@@ -120,8 +120,7 @@ static int trace_photon(rt_thread *t, soak_vec3 org, soak_vec3 dir, soak_rgb pow
         if (!(cos1 > 0)) return 1;
         double wet = soak_scene_wetness(obj, h.p, h.u, h.v);
         const soak_scene_medium *med = (!m->has_dry || rt_rand(t) < wet) ? &m->medium : &m->dry_medium;
-        rt_stack st = {rt_rand(t) < wet * m->film_coverage ? m->film_ior : 1.0, m->medium.ior, m->film_k,
-                       m->film_absorption, m->film_thickness};
+        rt_stack st = rt_wet_stack(t, m, wet);
         soak_vec3 tang = soak_v3_add(dir, soak_v3_scale(n_out, cos1));
         double p = soak_v3_len(tang);
         soak_vec3 tdir = p > 1e-12 ? soak_v3_scale(tang, 1.0 / p) : soak_v3(0, 0, 0);

@@ -30,9 +30,19 @@ double rt_fresnel(double cos_i, double eta, double *cos_t)
  * estimates gathered inside multiply by it instead (add_delta_light and
  * caustic_light in render_medium.c). That keeps the roulette from killing
  * paths for a factor that is undone when they leave. */
+rt_stack rt_wet_stack(rt_thread *t, const soak_material *m, double wet)
+{
+    double u = rt_rand(t), p_film = wet * m->film_coverage;
+    rt_stack s = {u < p_film ? m->film_ior : 1.0, m->medium.ior, m->film_k, m->film_absorption,
+                  u < p_film * (1.0 - m->film_pore_share) ? m->film_thickness : 0.0};
+    return s;
+}
+
 int rt_cross_stack(rt_thread *t, const rt_stack *s, double p, int start_low, soak_rgb *beta)
 {
-    int film = s->n2 != 1.0;
+    /* an index-matched film still absorbs over its thickness (as the light
+     * estimate's film_absorbed counts it) */
+    int film = s->n2 != 1.0 || (s->h > 0 && rgb_max(s->alpha) > 0);
     double cos_film = film ? sqrt(fmax(0.0, 1 - (p / s->n2) * (p / s->n2))) : 0;
     int absorbing = film && s->h > 0 && rgb_max(s->alpha) > 0;
     /* state: 0 at the top interface going down (from air) or up (from film);

@@ -270,7 +270,7 @@ static soak_status parse_ggx(scene_ctx *c, const cJSON *j, const char *path, soa
 /* A wet material's "film": the liquid layer (absent: water, k = 1, full coverage). */
 static soak_status parse_film(scene_ctx *c, const cJSON *film, const char *fp, soak_material *m)
 {
-    static const char *const fkeys[] = {"ior", "k", "thickness", "absorption", "coverage", NULL};
+    static const char *const fkeys[] = {"ior", "k", "thickness", "absorption", "coverage", "pore_share", NULL};
     m->film_ior = SOAK_WATER_IOR;
     m->film_k = 1;
     m->film_coverage = 1;
@@ -281,6 +281,7 @@ static soak_status parse_film(scene_ctx *c, const cJSON *film, const char *fp, s
     if (st == SOAK_OK) st = sj_num(c, film, "thickness", fp, 0, 1e3, 0, 0, &m->film_thickness);
     if (st == SOAK_OK) st = sj_rgb(c, film, "absorption", fp, 0, 1e9, 0, soak_rgb3(0, 0, 0), &m->film_absorption);
     if (st == SOAK_OK) st = sj_num(c, film, "coverage", fp, 0, 1, 0, 1, &m->film_coverage);
+    if (st == SOAK_OK) st = sj_num(c, film, "pore_share", fp, 0, 1, 0, 0, &m->film_pore_share);
     return st;
 }
 

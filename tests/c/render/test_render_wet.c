@@ -25,6 +25,8 @@
  *  6. A thin, weakly scattering index-matched slab lit from behind: the
  *     radiance toward a viewer in front is single scattering in closed form
  *     (next-event estimation must find the face the light enters through).
+ *     The same under an index-matched absorbing film with pore water (no
+ *     thickness): each face's film absorbs over its thick share only.
  *  7. A preset under a coloured liquid with both a film and water-filled
  *     pores (brick + coffee at w = 0.5: film over c = 0.23, pore water over
  *     0.27) under the uniform sky: the radiance toward an overhead camera is
@@ -256,6 +258,34 @@ static void test_backlit_single_scattering(void)
     check_close("back-lit slab radiance = single scattering (+ <= 2 % multiple)", m, L1 * 1.01, 4 * se + 0.02 * L1);
 }
 
+/* The same slab under an index-matched absorbing film (thickness 0.05,
+ * absorption 10) of which a share 0.4 is pore water with no thickness: the
+ * light crosses the film at the back, the view at the front, each absorbing
+ * on average (1 - 0.4) exp(-0.5 / cos) + 0.4. A film everywhere would give
+ * 0.34 of the clear slab; this 0.56. */
+static void test_backlit_film_pores(void)
+{
+    const double ss = 0.01, sa = 0.09, d = 1.0, mu_i = cos(SOAK_PI / 6), st = ss + sa;
+    const double a = st / 1.0 - st / mu_i, tau = 0.05 * 10.0, pore = 0.4;
+    const double L1 = ss / (4 * SOAK_PI) * exp(-st * d / mu_i) * (1 - exp(-a * d)) / a;
+    const double back = (1 - pore) * exp(-tau / mu_i) + pore, front = (1 - pore) * exp(-tau) + pore;
+    char text[2048];
+    snprintf(text, sizeof text,
+             "{\"render\": {\"width\": 1, \"height\": 1, \"max_depth\": 1000},"
+             " \"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0], \"up\": [0, 1, 0], \"fov\": 0.5},"
+             " \"lights\": [{\"type\": \"sun\", \"direction\": [0.5, 0, %.17g], \"irradiance\": 1}],"
+             " \"materials\": {\"m\": {\"type\": \"wet\","
+             "   \"film\": {\"ior\": 1, \"thickness\": 0.05, \"absorption\": 10, \"pore_share\": %g},"
+             "   \"base\": {\"type\": \"medium\", \"sigma_s\": %g, \"sigma_a\": %g, \"g1\": 0, \"g2\": 0, \"w\": 1, \"ior\": 1}}},"
+             " \"objects\": [{\"type\": \"box\", \"min\": [-60, -60, %g], \"max\": [60, 60, 0], \"material\": \"m\"}]}",
+             -mu_i, pore, ss, sa, -d);
+    double m, se;
+    if (!render_mean("back-lit slab under film and pores", text, 131072, &m, &se)) return;
+    double want = L1 * back * front;
+    printf("  back-lit slab, film with pore water: traced %.6f +- %.6f, single scattering %.6f\n", m, se, want);
+    check_close("film absorbs only where it has thickness (+ <= 2 % multiple)", m, want * 1.01, 4 * se + 0.02 * want);
+}
+
 static void test_sand(void)
 {
     /* Sand: dry grains scatter nearly isotropically; water in the pores makes
@@ -369,6 +399,7 @@ int main(void)
     test_halfspace_vs_measure();
     test_paper();
     test_backlit_single_scattering();
+    test_backlit_film_pores();
     test_sand();
     test_rock();
     test_preset_film_and_pores();

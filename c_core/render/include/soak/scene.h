@@ -103,9 +103,9 @@ typedef struct soak_material {
     soak_rgb film_absorption; /* 1/length */
     double film_coverage;  /* probability of the film at a wet point, [0,1] (1 unless a preset says less) */
     double film_pore_share; /* of those draws, the share that is pore water: the same interface at zero
-                             * thickness (wetness.h step 5); 0 unless a preset says more. Surface bases
-                             * (the renderer and soak advise's estimates, accuracy.h) only: a medium
-                             * base (thin sheets) still gives the pore water the film's thickness */
+                             * thickness (wetness.h step 5); from a preset's chain, or the film's
+                             * "pore_share" (default 0). Surface and medium bases, and soak advise's
+                             * estimates (accuracy.h) */
     soak_base_type base;
     soak_scene_medium medium;     /* wet state (and dry when has_dry == 0) */
     soak_scene_medium dry_medium; /* base medium where the object is dry */
