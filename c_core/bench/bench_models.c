@@ -9,6 +9,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #include "soak/fresnel.h"
@@ -187,10 +188,23 @@ static void bench_fresnel(const dir_set *d, FILE *out)
 
 int main(int argc, char **argv)
 {
+    if (argc > 2 || (argc == 2 && argv[1][0] == '-')) {
+        fprintf(stderr, "usage: bench_models [REPORT.md]\n"
+                        "Times every model's checked evaluation on one core and prints a Markdown table\n"
+                        "(also written to REPORT.md when given). A benchmark: it asserts nothing.\n");
+        return argc == 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) ? 0 : 2;
+    }
+    FILE *out = NULL;
+    if (argc == 2 && !(out = fopen(argv[1], "w"))) {
+        fprintf(stderr, "bench_models: cannot write %s\n", argv[1]);
+        return 1;
+    }
     dir_set *d = malloc(sizeof *d);
-    if (!d) return 1;
+    if (!d) {
+        if (out) fclose(out);
+        return 1;
+    }
     make_dirs(d);
-    FILE *out = argc > 1 ? fopen(argv[1], "w") : NULL;
     emit("| model | ns/eval | M evals/s | exact peer | max rel err (0-85 deg) | max rel err (0-60 deg) |\n"
          "|---|---:|---:|---|---:|---:|\n",
          out);
@@ -199,7 +213,10 @@ int main(int argc, char **argv)
     bench_registry(d, &p, out);
     bench_triace_raw(d, &p, out);
     bench_fresnel(d, out);
-    if (out) fclose(out);
     free(d);
+    if (out && fclose(out) != 0) {
+        fprintf(stderr, "bench_models: writing %s failed\n", argv[1]);
+        return 1;
+    }
     return 0;
 }
