@@ -263,15 +263,21 @@ static int find_exit(nee_ctx *c, const soak_light *l, int li, soak_vec3 x, nee_e
      * normal, the exit search below finds the real face. */
     if (!(soak_v3_dot(wl, n) > 0)) n = soak_v3_scale(n, -1.0);
     e->inv_q = 1.0;
+    /* The prediction cannot go below RT_NEE_PREDICT_MIN: a cap at or under it
+     * decides stage 1 alone, before any direction is computed (most vertices
+     * of a walk are that deep). */
+    int predict = !c->med->coeffs;
+    if (predict && c->q_clear <= RT_NEE_PREDICT_MIN) {
+        predict = 0;
+        q1 = c->q_clear;
+        if (!nee_roulette(t, q1, &e->inv_q)) return 0;
+    }
     for (int it = 0; it < 2; ++it) {
         double cos1 = soak_v3_dot(wl, n);
         if (!(cos1 > 0)) return 0;
         e->d3 = refract_in(wl, n, cos1, n3);
-        int play = it == 0 && !c->med->coeffs;
-        if (play) {
-            /* The prediction cannot go below RT_NEE_PREDICT_MIN: a cap at or
-             * under it decides alone. */
-            q1 = c->q_clear <= RT_NEE_PREDICT_MIN ? c->q_clear : rt_min(c->q_clear, predicted_survival(c, li, x, e->d3));
+        if (it == 0 && predict) {
+            q1 = rt_min(c->q_clear, predicted_survival(c, li, x, e->d3));
             if (!nee_roulette(t, q1, &e->inv_q)) return 0;
         }
         soak_ray r = {x, e->d3, 0.0, INFINITY};
