@@ -851,6 +851,17 @@ int soak_geometry_object_isolated(const soak_geometry *g, unsigned object_id)
     return g && g->committed && local_sphere(g, object_id) != NULL;
 }
 
+double soak_geometry_clear_distance(const soak_geometry *g, unsigned object_id, soak_vec3 p)
+{
+    if (!g || !g->committed || object_id >= g->count) return 0.0;
+    const geo_object *o = &g->objects[object_id];
+    const geo_object *sph = local_sphere(g, object_id);
+    soak_vec3 c = sph ? sph->center : o->clear_c;
+    double r = sph ? sph->radius : sqrt(o->clear_r2);
+    double d = r - soak_v3_len(soak_v3_sub(p, c));
+    return d > 0 ? d : 0.0;
+}
+
 soak_vec3 soak_geometry_offset(soak_vec3 p, soak_vec3 ng, soak_vec3 dir)
 {
     /* Embree's float traversal errs by a few ulps of the coordinates. */

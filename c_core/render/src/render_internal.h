@@ -36,6 +36,8 @@
 #define RT_NEE_SURVIVAL_MIN 1e-3
 #define RT_NEE_PREDICT_MIN 0.2
 #define RT_NEE_CACHE 4
+/* -log(RT_NEE_SURVIVAL_MIN) rounded up: optical depths past it survive at the floor. */
+#define RT_NEE_FLOOR_DEPTH 6.9078
 /* Random numbers per camera path taken from the Sobol pairs (render_sampler.c):
  * pixel, then the first surface's choices. On the bench scene at 64 spp, 8, 16
  * and 32 gave the same variance (within 1 %); 8 costs least. */
@@ -114,6 +116,7 @@ static inline soak_rgb rgb_add(soak_rgb a, soak_rgb b) { return soak_rgb3(a.r + 
  * which would also break the isnan-based input checks). Signed zeros may
  * come out either way, as C allows fmax to do. */
 static inline double rt_max(double a, double b) { return (a > b || b != b) ? a : b; }
+static inline double rt_min(double a, double b) { return (a < b || b != b) ? a : b; }
 static inline double rgb_max(soak_rgb a) { return rt_max(a.r, rt_max(a.g, a.b)); }
 static inline soak_rgb rgb_exp(soak_rgb a, double s)
 {

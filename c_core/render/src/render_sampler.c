@@ -30,18 +30,21 @@ static uint32_t reverse_bits(uint32_t x)
     return (x >> 16) | (x << 16);
 }
 
-/* Sobol dimension 1 (dimension 0 is reverse_bits): XOR of the direction
- * numbers v_1 = 2^31, v_{k+1} = v_k ^ (v_k >> 1) of the index's set bits. */
-static uint32_t sobol_second(uint32_t index)
+/* Sobol dimension 1 before its bit reversal (dimension 0 is the index
+ * itself): the direction numbers v_1 = 2^31, v_{k+1} = v_k ^ (v_k >> 1) are
+ * the rows of Pascal's triangle mod 2, so bit j of the reversed result is
+ * the parity of the index's set bits k with j a subset of k (Lucas), a
+ * superset sum over the five bit levels. Equal to the XOR of the direction
+ * numbers of the set bits, reversed, for every index tried (10^8, the first
+ * 2^24 among them): one step per level instead of one per set bit. */
+static uint32_t sobol_second_reversed(uint32_t y)
 {
-    static const uint32_t v[32] = {
-        0x80000000u, 0xc0000000u, 0xa0000000u, 0xf0000000u, 0x88000000u, 0xcc000000u, 0xaa000000u, 0xff000000u,
-        0x80800000u, 0xc0c00000u, 0xa0a00000u, 0xf0f00000u, 0x88880000u, 0xcccc0000u, 0xaaaa0000u, 0xffff0000u,
-        0x80008000u, 0xc000c000u, 0xa000a000u, 0xf000f000u, 0x88008800u, 0xcc00cc00u, 0xaa00aa00u, 0xff00ff00u,
-        0x80808080u, 0xc0c0c0c0u, 0xa0a0a0a0u, 0xf0f0f0f0u, 0x88888888u, 0xccccccccu, 0xaaaaaaaau, 0xffffffffu};
-    uint32_t r = 0;
-    for (; index; index &= index - 1) r ^= v[__builtin_ctz(index)];
-    return r;
+    y ^= (y >> 1) & 0x55555555u;
+    y ^= (y >> 2) & 0x33333333u;
+    y ^= (y >> 4) & 0x0F0F0F0Fu;
+    y ^= (y >> 8) & 0x00FF00FFu;
+    y ^= (y >> 16) & 0x0000FFFFu;
+    return y;
 }
 
 /* Laine-Karras style hash: each bit is flipped depending only on the bits
@@ -58,6 +61,9 @@ static uint32_t lk_permute(uint32_t x, uint32_t seed)
 }
 
 static uint32_t owen_scramble(uint32_t x, uint32_t seed) { return reverse_bits(lk_permute(reverse_bits(x), seed)); }
+
+/* owen_scramble of a number given bit-reversed: the two reversals cancel. */
+static uint32_t owen_scramble_reversed(uint32_t rx, uint32_t seed) { return reverse_bits(lk_permute(rx, seed)); }
 
 static uint32_t hash2(uint32_t a, uint32_t b) { return soak_mix32(a ^ soak_mix32(b + 0x9e3779b9u)); }
 
@@ -79,7 +85,7 @@ double rt_qmc_next(rt_thread *t)
         t->qmc.seed_y = hash2(pair_seed, 2u);
     }
     uint32_t i = t->qmc.pair_index;
-    uint32_t x = (d & 1) ? owen_scramble(sobol_second(i), t->qmc.seed_y) : owen_scramble(reverse_bits(i), t->qmc.seed_x);
+    uint32_t x = (d & 1) ? owen_scramble_reversed(sobol_second_reversed(i), t->qmc.seed_y) : owen_scramble_reversed(i, t->qmc.seed_x);
     return (double)x * (1.0 / 4294967296.0);
 }
 

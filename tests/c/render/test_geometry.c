@@ -340,6 +340,50 @@ static void test_clear_ball(void)
     soak_geometry_destroy(g);
 }
 
+/* soak_geometry_clear_distance never exceeds the distance to the nearest
+ * surface (computed here from the shapes: a box's six faces, a sphere's
+ * radius), is that distance for an isolated sphere and near the box's centre
+ * (its inscribed ball), and is 0 outside and for a sphere the floor cuts. */
+static void test_clear_distance(void)
+{
+    soak_geometry *g = NULL;
+    char err[256];
+    if (!check_status("create", soak_geometry_create(&g, err, sizeof err), SOAK_OK) || !g) return;
+    unsigned floor_id, box, ball, cut;
+    soak_vec3 lo = soak_v3(-0.4, 0.1, 0), hi = soak_v3(0.6, 0.9, 0.7), c = soak_v3(3, 0, 0.6);
+    soak_geometry_add_quad(g, soak_v3(-10, -10, 0), soak_v3(20, 0, 0), soak_v3(0, 20, 0), &floor_id);
+    check_status("add box", soak_geometry_add_box(g, lo, hi, &box), SOAK_OK);
+    soak_geometry_add_sphere(g, c, 0.6, &ball);                 /* rests on the floor: isolated */
+    soak_geometry_add_sphere(g, soak_v3(-3, 0, 0.2), 0.5, &cut); /* the floor cuts it */
+    check_status("commit", soak_geometry_commit(g), SOAK_OK);
+    unsigned long long s = 4242;
+    int over = 0, sphere_off = 0, n = 20000;
+    for (int i = 0; i < n; ++i) {
+        soak_vec3 o = soak_v3(lo.x + (hi.x - lo.x) * lcg01(&s), lo.y + (hi.y - lo.y) * lcg01(&s), lo.z + (hi.z - lo.z) * lcg01(&s));
+        double gap = fmin(fmin(fmin(o.x - lo.x, hi.x - o.x), fmin(o.y - lo.y, hi.y - o.y)), fmin(o.z - lo.z, hi.z - o.z));
+        over += soak_geometry_clear_distance(g, box, o) > gap;
+        soak_vec3 q;
+        do {
+            q = soak_v3(c.x + 1.2 * lcg01(&s) - 0.6, c.y + 1.2 * lcg01(&s) - 0.6, c.z + 1.2 * lcg01(&s) - 0.6);
+        } while (soak_v3_len(soak_v3_sub(q, c)) > 0.6);
+        double depth = 0.6 - soak_v3_len(soak_v3_sub(q, c));
+        double dq = soak_geometry_clear_distance(g, ball, q);
+        over += dq > depth;
+        sphere_off += fabs(dq - depth) > 1e-12;
+    }
+    printf("  clear distance: %d of %d over the true distance, sphere off its depth %d times\n", over, 2 * n, sphere_off);
+    check_true("clear distance <= distance to the nearest surface", over == 0);
+    check_true("isolated sphere: clear distance = depth", sphere_off == 0);
+    double centre = soak_geometry_clear_distance(g, box, soak_v3(0.1, 0.5, 0.35));
+    check_true("box centre: clear distance = half the box height, less the margin", centre > 0.35 - 1e-4 && centre <= 0.35);
+    check_true("outside the box: 0", soak_geometry_clear_distance(g, box, soak_v3(2, 2, 2)) == 0.0);
+    check_true("outside the sphere: 0", soak_geometry_clear_distance(g, ball, soak_v3(3, 0, 1.3)) == 0.0);
+    check_true("sphere cut by the floor: 0", soak_geometry_clear_distance(g, cut, soak_v3(-3, 0, 0.3)) == 0.0);
+    check_true("flat quad: 0", soak_geometry_clear_distance(g, floor_id, soak_v3(0, 0, 0)) == 0.0);
+    check_true("NULL geometry: 0", soak_geometry_clear_distance(NULL, box, soak_v3(0.1, 0.5, 0.35)) == 0.0);
+    soak_geometry_destroy(g);
+}
+
 static int write_file(const char *path, const char *text)
 {
     FILE *f = fopen(path, "w");
@@ -573,6 +617,7 @@ int main(void)
     test_quad_box();
     test_robust_modes();
     test_clear_ball();
+    test_clear_distance();
     test_local_queries();
     test_mesh_files();
     test_threads();

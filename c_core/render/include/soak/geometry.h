@@ -132,6 +132,10 @@ soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned objec
 soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int *occluded);
 /* 1 when the local queries of object_id take the closed-form path. */
 int soak_geometry_object_isolated(const soak_geometry *g, unsigned object_id);
+/* A lower bound on the distance from p, inside object object_id, to any
+ * surface: from an isolated sphere's own radius, or from the object's clear
+ * ball; 0 when p is outside both or there is neither. No traversal. */
+double soak_geometry_clear_distance(const soak_geometry *g, unsigned object_id, soak_vec3 p);
 
 /* Origin for a ray leaving the surface at p toward direction dir: p moved off
  * the surface along ng to dir's side by an amount scaled to |p|, so the new
