@@ -355,12 +355,13 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
     soak_vec3 up = soak_v3_norm(p->up);
     for (size_t i = 0; i < n; ++i)
         j.retain[i] = s->tri[i] >= 0 ? p->retention * fmax(0.0, soak_v3_dot(fget(s->nrm, i), up)) : 0.0;
+    soak_rain_flow_plan *flow = NULL;
+    soak_status st = soak_rain_flow_create(&grid, exec, SOAK_RAIN_FLOW_AUTO, &flow);
     double dt = p->duration / p->steps;
     double rain_m_s = p->rainfall_mm_h / 3.6e6, evap = p->evaporation_mm_h / 3.6e6 * dt;
     j.drop_volume = SOAK_PI / 6.0 * p->drop_diameter * p->drop_diameter * p->drop_diameter;
     j.lambda_per_area = rain_m_s / j.drop_volume * dt; /* drops per m^2 of open horizontal surface per step */
     double sigma_texels = s->mean_texel > 0.0 ? p->splat_radius / s->mean_texel : 0.0;
-    soak_status st = SOAK_OK;
     for (int step = 0; step < p->steps && st == SOAK_OK; ++step) {
         double lo = 0.7 + 0.3 * step / p->steps;
         j.step_seed = soak_seed_derive(p->seed, (uint64_t)step + 1);
@@ -372,9 +373,10 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
             soak_image_free(&blurred);
         }
         if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, add_deposit_row, &j, lo, lo);
-        if (st == SOAK_OK) st = soak_rain_flow(&grid, depth, p->flow_iterations, exec, lo, lo);
+        if (st == SOAK_OK) st = soak_rain_flow_run(flow, depth, p->flow_iterations, exec, lo, lo);
         for (size_t i = 0; i < n; ++i) depth[i] = depth[i] > evap ? depth[i] - evap : 0.0;
     }
+    soak_rain_flow_destroy(flow);
     free(j.deposit);
     free(j.retain);
     free(covered);
