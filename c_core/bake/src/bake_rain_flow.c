@@ -20,7 +20,9 @@ enum { BAND = 32 };
 
 struct soak_rain_flow_plan {
     soak_rain_flow_grid g;
-    int threads, simd;
+    int threads;
+    flux_row_fn flux_row; /* the vector kernels, or NULL */
+    gather_row_fn gather_row;
     unsigned char *pulls;
     double *next;
     double *lvl_mem, *lvl_next_mem; /* with the w + 1 zeros either side (flow_job) */
@@ -75,10 +77,7 @@ static void flux_row(const flow_job *j, int thread, int y)
 {
     flux_row_ptrs row;
     ring_row(j, thread, y, &row);
-    int x = 0;
-#ifdef SOAK_RAIN_FLOW_AVX2
-    if (j->simd) x = soak_rain_flux_row_avx2(j, &row, y, 0);
-#endif
+    int x = j->flux_row ? j->flux_row(j, &row, y, 0) : 0;
     for (; x < j->g->w; ++x) texel_flux(j, &row, x, y);
 }
 
@@ -120,12 +119,10 @@ static void gather_row(const flow_job *j, int thread, int y)
         ar[r] = g->area + (size_t)ky * g->w;
     }
     int x = 0;
-#ifdef SOAK_RAIN_FLOW_AVX2
-    if (j->simd && g->w > 1) { /* the kernel reads one texel either side: not the first column */
+    if (j->gather_row && g->w > 1) { /* the kernel reads one texel either side: not the first column */
         texel_gather(j, fr, ar, 0, y);
-        x = soak_rain_gather_row_avx2(j, fr, ar, y, 1);
+        x = j->gather_row(j, fr, ar, y, 1);
     }
-#endif
     for (; x < g->w; ++x) texel_gather(j, fr, ar, x, y);
 }
 
@@ -155,6 +152,27 @@ static void find_pulls(const soak_rain_flow_grid *g, unsigned char *pulls)
         }
 }
 
+/* The widest vector kernels the CPU runs (all give the same bits). */
+static void pick_kernels(soak_rain_flow_plan *f, soak_rain_flow_isa isa)
+{
+    f->flux_row = NULL;
+    f->gather_row = NULL;
+    if (isa == SOAK_RAIN_FLOW_PORTABLE) return;
+#ifdef SOAK_BUILD_FLOW_AVX512
+    if (isa == SOAK_RAIN_FLOW_AUTO && soak_rain_cpu_has_avx512()) {
+        f->flux_row = soak_rain_flux_row_avx512;
+        f->gather_row = soak_rain_gather_row_avx512;
+        return;
+    }
+#endif
+#ifdef SOAK_BUILD_FLOW_AVX2
+    if (soak_rain_cpu_has_avx2()) {
+        f->flux_row = soak_rain_flux_row_avx2;
+        f->gather_row = soak_rain_gather_row_avx2;
+    }
+#endif
+}
+
 void soak_rain_flow_destroy(soak_rain_flow_plan *f)
 {
     if (!f) return;
@@ -173,7 +191,7 @@ soak_status soak_rain_flow_create(const soak_rain_flow_grid *g, const soak_bake_
     if (!g || !out) return SOAK_ERR_NULL;
     *out = NULL;
     int threads = soak_bake_threads(exec);
-    if (threads == 0 || g->w < 1 || g->h < 1 || (isa != SOAK_RAIN_FLOW_AUTO && isa != SOAK_RAIN_FLOW_PORTABLE))
+    if (threads == 0 || g->w < 1 || g->h < 1 || isa < SOAK_RAIN_FLOW_AUTO || isa > SOAK_RAIN_FLOW_AVX2)
         return SOAK_ERR_ARG;
     if (!g->covered || !g->adj || !g->area || !g->drip || !g->level || !g->retain) return SOAK_ERR_NULL;
     soak_rain_flow_plan *f = calloc(1, sizeof *f);
@@ -181,9 +199,7 @@ soak_status soak_rain_flow_create(const soak_rain_flow_grid *g, const soak_bake_
     size_t n = (size_t)g->w * g->h, padded = n + 2 * ((size_t)g->w + 1), ring = (size_t)threads * 3 * g->w;
     f->g = *g;
     f->threads = threads;
-#ifdef SOAK_RAIN_FLOW_AVX2
-    f->simd = isa == SOAK_RAIN_FLOW_AUTO && soak_rain_cpu_has_avx2();
-#endif
+    pick_kernels(f, isa);
     f->pulls = malloc(n);
     f->next = malloc(n * sizeof(double));
     f->lvl_mem = calloc(padded, sizeof(double));
@@ -209,7 +225,7 @@ soak_status soak_rain_flow_run(soak_rain_flow_plan *f, double *depth, int iterat
     const soak_rain_flow_grid *g = &f->g;
     size_t n = (size_t)g->w * g->h, pad = (size_t)g->w + 1;
     flow_job j = {g, depth, f->next, f->lvl_mem + pad, f->lvl_next_mem + pad, f->pulls, f->ring_o, f->ring_out,
-                  {0}, f->simd};
+                  {0}, f->flux_row, f->gather_row};
     for (int d = 0; d < 8; ++d) j.step[d] = (ptrdiff_t)SOAK_RAIN_DY[d] * g->w + SOAK_RAIN_DX[d];
     double *lvl = f->lvl_mem + pad;
     for (size_t i = 0; i < n; ++i) lvl[i] = g->covered[i] ? g->level[i] + depth[i] : 0.0;

@@ -36,9 +36,14 @@ typedef struct soak_rain_flow_grid {
  * per-thread rows of outflows. The grid's arrays are borrowed, not copied. */
 typedef struct soak_rain_flow_plan soak_rain_flow_plan;
 
-/* Which kernels sweep: AUTO takes the AVX2 ones where the CPU has AVX2 (same
- * bits as the portable ones), PORTABLE never (for the tests). */
-typedef enum soak_rain_flow_isa { SOAK_RAIN_FLOW_AUTO, SOAK_RAIN_FLOW_PORTABLE } soak_rain_flow_isa;
+/* Which kernels sweep (all give the same bits): AUTO the widest vector ones
+ * the CPU runs (AVX-512, AVX2), PORTABLE none, AVX2 at most AVX2 (the last
+ * two for the tests). */
+typedef enum soak_rain_flow_isa {
+    SOAK_RAIN_FLOW_AUTO,
+    SOAK_RAIN_FLOW_PORTABLE,
+    SOAK_RAIN_FLOW_AVX2
+} soak_rain_flow_isa;
 
 /* Prepares sweeps of g for up to soak_bake_threads(exec) threads. */
 soak_status soak_rain_flow_create(const soak_rain_flow_grid *g, const soak_bake_exec *exec, soak_rain_flow_isa isa,
