@@ -230,16 +230,77 @@ typedef struct exposure_job {
 
 /* The rays of one texel go to the occlusion test in batches of BATCH
  * (Embree packets); the weights are added in ray order, so acc is the sum a
- * ray-by-ray loop makes. */
+ * ray-by-ray loop makes. A ray starts at the texel's point moved off the
+ * surface to its side (soak_geometry_offset): one of two origins per texel. */
 enum { BATCH = 64 };
 
-static double add_unoccluded(exposure_job *j, const soak_ray *rays, const double *weights, int n, double acc)
+typedef struct ray_batch {
+    soak_vec3 org[2]; /* [0]: moved along n, [1]: against it */
+    soak_vec3 dir[BATCH];
+    double weight[BATCH];
+    unsigned char side[BATCH];
+    int n;
+} ray_batch;
+
+static double add_unoccluded(exposure_job *j, ray_batch *b, double acc)
 {
-    int occ[BATCH];
-    if (soak_geometry_occluded_n(j->g, rays, (size_t)n, occ) != SOAK_OK) j->failed = 1;
-    for (int q = 0; q < n; ++q)
-        if (!occ[q]) acc += weights[q];
+    soak_vec3 dirs[2][BATCH];
+    int ray_of[2][BATCH], count[2] = {0, 0}, occ[2][BATCH], blocked[BATCH];
+    for (int q = 0; q < b->n; ++q) {
+        int s = b->side[q];
+        dirs[s][count[s]] = b->dir[q];
+        ray_of[s][count[s]++] = q;
+    }
+    for (int s = 0; s < 2; ++s) {
+        if (!count[s]) continue;
+        memset(occ[s], 0, sizeof occ[s]);
+        if (soak_geometry_occluded_fan(j->g, b->org[s], dirs[s], (size_t)count[s], occ[s]) != SOAK_OK) j->failed = 1;
+        for (int k = 0; k < count[s]; ++k) blocked[ray_of[s][k]] = occ[s][k];
+    }
+    for (int q = 0; q < b->n; ++q)
+        if (!blocked[q]) acc += b->weight[q];
+    b->n = 0;
     return acc;
+}
+
+/* The sky exposure of texel i: the weighted share of its N rays that leave
+ * the mesh. */
+static double texel_exposure(exposure_job *j, size_t i, ray_batch *b)
+{
+    const rain_surface *s = j->s;
+    int N = j->p->rays;
+    soak_vec3 p = vget(s->pos, i), n = fget(s->nrm, i), t, bt;
+    soak_v3_basis(n, &t, &bt);
+    b->org[0] = soak_geometry_offset(p, n, n);
+    b->org[1] = soak_geometry_offset(p, n, soak_v3_scale(n, -1.0));
+    b->n = 0;
+    soak_rng rng;
+    soak_rng_seed(&rng, j->p->seed, (uint64_t)i);
+    double acc = 0.0;
+    for (int k = 0; k < N; ++k) {
+        double xi1 = (k + soak_rng_uniform(&rng)) / N, xi2 = soak_rng_uniform(&rng);
+        double phi = 2.0 * SOAK_PI * xi2, weight;
+        soak_vec3 u;
+        if (j->p->sky == SOAK_RAIN_SKY_HEMISPHERE) {
+            double ct = sqrt(1.0 - xi1), st = sqrt(xi1);
+            u = soak_v3_add(soak_v3_scale(n, ct), soak_v3_add(soak_v3_scale(t, st * cos(phi)),
+                                                               soak_v3_scale(bt, st * sin(phi))));
+            weight = 1.0;
+        } else {
+            double ct = 1.0 - xi1 * (1.0 - j->cos_spread), st2 = 1.0 - ct * ct;
+            double st = sqrt(st2 > 0.0 ? st2 : 0.0); /* fmax(0, st2)'s value: st2 is never -0 */
+            u = soak_v3_add(soak_v3_scale(j->rain_dir, ct),
+                            soak_v3_add(soak_v3_scale(j->rt, st * cos(phi)), soak_v3_scale(j->rb, st * sin(phi))));
+            weight = soak_v3_dot(n, u) / j->f_open;
+            if (!(weight > 0.0)) continue;
+        }
+        b->dir[b->n] = u;
+        b->weight[b->n] = weight;
+        b->side[b->n++] = !(soak_v3_dot(u, n) >= 0); /* soak_geometry_offset's choice of side */
+        if (b->n == BATCH) acc = add_unoccluded(j, b, acc);
+    }
+    if (b->n) acc = add_unoccluded(j, b, acc);
+    return acc / N;
 }
 
 static void exposure_row(void *ctx, int y, int thread)
@@ -247,46 +308,10 @@ static void exposure_row(void *ctx, int y, int thread)
     (void)thread;
     exposure_job *j = ctx;
     const rain_surface *s = j->s;
-    int N = j->p->rays;
-    soak_ray rays[BATCH];
-    double weights[BATCH];
+    ray_batch b;
     for (int x = 0; x < s->w; ++x) {
         size_t i = (size_t)y * s->w + x;
-        if (s->tri[i] < 0) {
-            j->out[i] = 0.0f;
-            continue;
-        }
-        soak_vec3 p = vget(s->pos, i), n = fget(s->nrm, i), t, b;
-        soak_v3_basis(n, &t, &b);
-        soak_rng rng;
-        soak_rng_seed(&rng, j->p->seed, (uint64_t)i);
-        double acc = 0.0;
-        int queued = 0;
-        for (int k = 0; k < N; ++k) {
-            double xi1 = (k + soak_rng_uniform(&rng)) / N, xi2 = soak_rng_uniform(&rng);
-            double phi = 2.0 * SOAK_PI * xi2, weight;
-            soak_vec3 u;
-            if (j->p->sky == SOAK_RAIN_SKY_HEMISPHERE) {
-                double ct = sqrt(1.0 - xi1), st = sqrt(xi1);
-                u = soak_v3_add(soak_v3_scale(n, ct), soak_v3_add(soak_v3_scale(t, st * cos(phi)),
-                                                                   soak_v3_scale(b, st * sin(phi))));
-                weight = 1.0;
-            } else {
-                double ct = 1.0 - xi1 * (1.0 - j->cos_spread), st = sqrt(fmax(0.0, 1.0 - ct * ct));
-                u = soak_v3_add(soak_v3_scale(j->rain_dir, ct),
-                                soak_v3_add(soak_v3_scale(j->rt, st * cos(phi)), soak_v3_scale(j->rb, st * sin(phi))));
-                weight = soak_v3_dot(n, u) / j->f_open;
-                if (!(weight > 0.0)) continue;
-            }
-            rays[queued] = (soak_ray){soak_geometry_offset(p, n, u), u, 0.0, INFINITY};
-            weights[queued++] = weight;
-            if (queued == BATCH) {
-                acc = add_unoccluded(j, rays, weights, queued, acc);
-                queued = 0;
-            }
-        }
-        if (queued) acc = add_unoccluded(j, rays, weights, queued, acc);
-        j->out[i] = (float)(acc / N);
+        j->out[i] = s->tri[i] < 0 ? 0.0f : (float)texel_exposure(j, i, &b);
     }
 }
 
