@@ -138,6 +138,18 @@ static void flow_band(void *ctx, int band, int thread)
     }
 }
 
+/* level + depth of the covered texels of a band, before the first sweep. */
+static void level_band(void *ctx, int band, int thread)
+{
+    (void)thread;
+    flow_job *j = ctx;
+    const soak_rain_flow_grid *g = j->g;
+    int y0 = band * BAND, y1 = y0 + BAND < g->h ? y0 + BAND : g->h;
+    double *lvl = (double *)j->lvl; /* the plan's buffer: writable, const only for the sweeps */
+    for (size_t i = (size_t)y0 * g->w, end = (size_t)y1 * g->w; i < end; ++i)
+        lvl[i] = g->covered[i] ? g->level[i] + j->depth[i] : 0.0;
+}
+
 static void find_pulls(const soak_rain_flow_grid *g, unsigned char *pulls)
 {
     for (int y = 0; y < g->h; ++y)
@@ -227,10 +239,8 @@ soak_status soak_rain_flow_run(soak_rain_flow_plan *f, double *depth, int iterat
     flow_job j = {g, depth, f->next, f->lvl_mem + pad, f->lvl_next_mem + pad, f->pulls, f->ring_o, f->ring_out,
                   {0}, f->flux_row, f->gather_row};
     for (int d = 0; d < 8; ++d) j.step[d] = (ptrdiff_t)SOAK_RAIN_DY[d] * g->w + SOAK_RAIN_DX[d];
-    double *lvl = f->lvl_mem + pad;
-    for (size_t i = 0; i < n; ++i) lvl[i] = g->covered[i] ? g->level[i] + depth[i] : 0.0;
     int bands = (g->h + BAND - 1) / BAND;
-    soak_status st = SOAK_OK;
+    soak_status st = soak_parallel_rows(bands, exec, level_band, &j, progress_lo, progress_lo);
     for (int it = 0; it < iterations && st == SOAK_OK; ++it) {
         st = soak_parallel_rows(bands, exec, flow_band, &j, progress_lo, progress_hi);
         double *t = (double *)j.depth;
