@@ -18,10 +18,12 @@ typedef struct flux_row_ptrs {
 
 typedef struct flow_job flow_job;
 
-/* A vector kernel does the texels [x0, returned x) of row y, a multiple of
- * its lane count from x0, with the same arithmetic in the same order as the
- * portable texel functions, and leaves the rest of the row to them. The
- * gather reads one texel either side of those it does. */
+/* A vector kernel does the texels [x0, returned x) of row y with the same
+ * arithmetic in the same order as the portable texel functions, and leaves
+ * the rest of the row to them. Its last vector may overlap the one before:
+ * a texel's results depend only on the sweep's inputs, so writing them twice
+ * writes the same bits. The gather reads one texel either side of those it
+ * does. */
 typedef int (*flux_row_fn)(const flow_job *j, const flux_row_ptrs *row, int y, int x0);
 typedef int (*gather_row_fn)(const flow_job *j, const flux_row_ptrs fr[3], const float *const ar[3], int y, int x0);
 

@@ -64,6 +64,10 @@ int SIMD_FN(soak_rain_flux_row)(const flow_job *j, const flux_row_ptrs *row, int
     for (int d = 0; d < 8; ++d) o[d] = row->o[d], step[d] = j->step[d];
     int x = x0, w = j->g->w;
     for (; x + L <= w; x += L) flux_lanes(j, o, row->out, step, (size_t)y * w + x, x);
+    if (x < w && w - L >= x0) { /* the rest as a vector that overlaps the last one: same values written again */
+        flux_lanes(j, o, row->out, step, (size_t)y * w + (w - L), w - L);
+        x = w;
+    }
     return x;
 }
 
@@ -113,5 +117,9 @@ int SIMD_FN(soak_rain_gather_row)(const flow_job *j, const flux_row_ptrs fr[3], 
     }
     int x = x0, w = j->g->w;
     for (; x + L + 1 <= w; x += L) gather_lanes(j, from, area, fr[1].out, (size_t)y * w + x, x); /* reads x - 1 .. x + L */
+    if (x < w - 1 && w - 1 - L >= x0) { /* as in the flux: a last vector overlapping the one before */
+        gather_lanes(j, from, area, fr[1].out, (size_t)y * w + (w - 1 - L), w - 1 - L);
+        x = w - 1;
+    }
     return x;
 }
