@@ -1,6 +1,6 @@
 /* The rain flow's vector kernels (bake_rain_flow_simd.h) for AVX2: four
- * texels per vector. Built with -mavx2 alone (c_core/CMakeLists.txt) and
- * called only where the CPU reports AVX2. */
+ * texels per vector. Built with -mavx2 and -ffp-contract=off
+ * (c_core/CMakeLists.txt) and called only where the CPU reports AVX2. */
 #include "bake_rain_flow_rows.h"
 
 #ifdef SOAK_BUILD_FLOW_AVX2

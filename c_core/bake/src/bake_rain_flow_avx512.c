@@ -1,7 +1,7 @@
 /* The rain flow's vector kernels (bake_rain_flow_simd.h) for AVX-512:
  * eight texels per vector, lane masks in mask registers. Built with
- * -mavx512f alone (c_core/CMakeLists.txt) and called only where the CPU
- * reports AVX-512F. */
+ * -mavx512f and -ffp-contract=off (c_core/CMakeLists.txt) and called only
+ * where the CPU reports AVX-512F. */
 #include "bake_rain_flow_rows.h"
 
 #ifdef SOAK_BUILD_FLOW_AVX512

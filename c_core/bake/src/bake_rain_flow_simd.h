@@ -4,8 +4,8 @@
  * does what texel_flux and texel_gather in bake_rain_flow.c do, in the same
  * order, so the bits are the same. What makes that hold:
  * - add, sub, mul, div and the double <-> float conversions are IEEE
- *   operations rounded to nearest in both; the including files are compiled
- *   without FMA, and C11 mode keeps GCC from contracting;
+ *   operations rounded to nearest in both, each written as its own
+ *   intrinsic, and the including files are built with -ffp-contract=off;
  * - V_MAX(a, b) and V_MIN(a, b) (maxpd, minpd) are exactly a > b ? a : b and
  *   a < b ? a : b, the portable code's comparisons;
  * - where the portable code skips a term (a direction without a level drop,
