@@ -177,43 +177,63 @@ static soak_vec3 fget(const float *a, size_t i)
     return soak_v3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
 }
 
+typedef struct connect_job {
+    rain_surface *s;
+    soak_vec3 up;
+} connect_job;
+
 /* Neighbour adjacency (covered, and where the UV step says it should be in
- * 3D: not across a UV seam) and the drip edges. */
-static void connect(rain_surface *s, soak_vec3 up)
+ * 3D: not across a UV seam) and the drip edges of row y. */
+static void connect_row(void *ctx, int y, int thread)
 {
+    (void)thread;
+    const connect_job *c = ctx;
+    rain_surface *s = c->s;
+    soak_vec3 up = c->up;
+    for (int x = 0; x < s->w; ++x) {
+        size_t i = (size_t)y * s->w + x;
+        s->adj[i] = 0;
+        s->drip[i] = 0.0f;
+        if (s->tri[i] < 0) continue;
+        soak_vec3 p = vget(s->pos, i), sx = fget(s->dpdx, i), sy = fget(s->dpdy, i), n = fget(s->nrm, i);
+        int best = -1;
+        double best_drop = 0.0;
+        for (int d = 0; d < 8; ++d) {
+            soak_vec3 step = soak_v3_add(soak_v3_scale(sx, DX[d]), soak_v3_scale(sy, DY[d]));
+            double drop = -soak_v3_dot(step, up); /* level decrease along this step */
+            int jx = x + DX[d], jy = y + DY[d];
+            int ok = jx >= 0 && jy >= 0 && jx < s->w && jy < s->h;
+            if (ok) {
+                size_t j = (size_t)jy * s->w + jx;
+                ok = s->tri[j] >= 0 && soak_v3_len(soak_v3_sub(vget(s->pos, j), p)) <= 2.0 * soak_v3_len(step) + 1e-12;
+                if (ok) s->adj[i] |= (unsigned char)(1u << d);
+            }
+            if (drop > best_drop * (1 + 1e-9)) {
+                best_drop = drop;
+                best = d;
+            }
+        }
+        /* Steepest-descent step leaves the surface: an open edge. */
+        if (best >= 0 && !(s->adj[i] >> best & 1u)) s->drip[i] = (float)best_drop;
+        if (soak_v3_dot(n, up) <= 0.0) s->drip[i] = -1.0f; /* faces down: everything mobile drips */
+    }
+}
+
+/* Adjacency and drips by rows in parallel, then the mean texel size as one
+ * sum in texel order. */
+static soak_status connect(rain_surface *s, soak_vec3 up, const soak_bake_exec *exec)
+{
+    connect_job c = {s, up};
+    soak_status st = soak_parallel_rows(s->h, exec, connect_row, &c, 0.0, 0.0);
     double sum = 0.0;
     long count = 0;
-    for (int y = 0; y < s->h; ++y)
-        for (int x = 0; x < s->w; ++x) {
-            size_t i = (size_t)y * s->w + x;
-            s->adj[i] = 0;
-            s->drip[i] = 0.0f;
-            if (s->tri[i] < 0) continue;
+    for (size_t i = 0; i < (size_t)s->w * s->h; ++i)
+        if (s->tri[i] >= 0) {
             sum += sqrt(s->area[i]);
             ++count;
-            soak_vec3 p = vget(s->pos, i), sx = fget(s->dpdx, i), sy = fget(s->dpdy, i), n = fget(s->nrm, i);
-            int best = -1;
-            double best_drop = 0.0;
-            for (int d = 0; d < 8; ++d) {
-                soak_vec3 step = soak_v3_add(soak_v3_scale(sx, DX[d]), soak_v3_scale(sy, DY[d]));
-                double drop = -soak_v3_dot(step, up); /* level decrease along this step */
-                int jx = x + DX[d], jy = y + DY[d];
-                int ok = jx >= 0 && jy >= 0 && jx < s->w && jy < s->h;
-                if (ok) {
-                    size_t j = (size_t)jy * s->w + jx;
-                    ok = s->tri[j] >= 0 && soak_v3_len(soak_v3_sub(vget(s->pos, j), p)) <= 2.0 * soak_v3_len(step) + 1e-12;
-                    if (ok) s->adj[i] |= (unsigned char)(1u << d);
-                }
-                if (drop > best_drop * (1 + 1e-9)) {
-                    best_drop = drop;
-                    best = d;
-                }
-            }
-            /* Steepest-descent step leaves the surface: an open edge. */
-            if (best >= 0 && !(s->adj[i] >> best & 1u)) s->drip[i] = (float)best_drop;
-            if (soak_v3_dot(n, up) <= 0.0) s->drip[i] = -1.0f; /* faces down: everything mobile drips */
         }
     s->mean_texel = count ? sum / (double)count : 0.0;
+    return st;
 }
 
 /* ---- step 2: exposure ---- */
@@ -230,16 +250,77 @@ typedef struct exposure_job {
 
 /* The rays of one texel go to the occlusion test in batches of BATCH
  * (Embree packets); the weights are added in ray order, so acc is the sum a
- * ray-by-ray loop makes. */
+ * ray-by-ray loop makes. A ray starts at the texel's point moved off the
+ * surface to its side (soak_geometry_offset): one of two origins per texel. */
 enum { BATCH = 64 };
 
-static double add_unoccluded(exposure_job *j, const soak_ray *rays, const double *weights, int n, double acc)
+typedef struct ray_batch {
+    soak_vec3 org[2]; /* [0]: moved along n, [1]: against it */
+    soak_vec3 dir[BATCH];
+    double weight[BATCH];
+    unsigned char side[BATCH];
+    int n;
+} ray_batch;
+
+static double add_unoccluded(exposure_job *j, ray_batch *b, double acc)
 {
-    int occ[BATCH];
-    if (soak_geometry_occluded_n(j->g, rays, (size_t)n, occ) != SOAK_OK) j->failed = 1;
-    for (int q = 0; q < n; ++q)
-        if (!occ[q]) acc += weights[q];
+    soak_vec3 dirs[2][BATCH];
+    int ray_of[2][BATCH], count[2] = {0, 0}, occ[2][BATCH], blocked[BATCH];
+    for (int q = 0; q < b->n; ++q) {
+        int s = b->side[q];
+        dirs[s][count[s]] = b->dir[q];
+        ray_of[s][count[s]++] = q;
+    }
+    for (int s = 0; s < 2; ++s) {
+        if (!count[s]) continue;
+        memset(occ[s], 0, sizeof occ[s]);
+        if (soak_geometry_occluded_fan(j->g, b->org[s], dirs[s], (size_t)count[s], occ[s]) != SOAK_OK) j->failed = 1;
+        for (int k = 0; k < count[s]; ++k) blocked[ray_of[s][k]] = occ[s][k];
+    }
+    for (int q = 0; q < b->n; ++q)
+        if (!blocked[q]) acc += b->weight[q];
+    b->n = 0;
     return acc;
+}
+
+/* The sky exposure of texel i: the weighted share of its N rays that leave
+ * the mesh. */
+static double texel_exposure(exposure_job *j, size_t i, ray_batch *b)
+{
+    const rain_surface *s = j->s;
+    int N = j->p->rays;
+    soak_vec3 p = vget(s->pos, i), n = fget(s->nrm, i), t, bt;
+    soak_v3_basis(n, &t, &bt);
+    b->org[0] = soak_geometry_offset(p, n, n);
+    b->org[1] = soak_geometry_offset(p, n, soak_v3_scale(n, -1.0));
+    b->n = 0;
+    soak_rng rng;
+    soak_rng_seed(&rng, j->p->seed, (uint64_t)i);
+    double acc = 0.0;
+    for (int k = 0; k < N; ++k) {
+        double xi1 = (k + soak_rng_uniform(&rng)) / N, xi2 = soak_rng_uniform(&rng);
+        double phi = 2.0 * SOAK_PI * xi2, weight;
+        soak_vec3 u;
+        if (j->p->sky == SOAK_RAIN_SKY_HEMISPHERE) {
+            double ct = sqrt(1.0 - xi1), st = sqrt(xi1);
+            u = soak_v3_add(soak_v3_scale(n, ct), soak_v3_add(soak_v3_scale(t, st * cos(phi)),
+                                                               soak_v3_scale(bt, st * sin(phi))));
+            weight = 1.0;
+        } else {
+            double ct = 1.0 - xi1 * (1.0 - j->cos_spread), st2 = 1.0 - ct * ct;
+            double st = sqrt(st2 > 0.0 ? st2 : 0.0); /* fmax(0, st2)'s value: st2 is never -0 */
+            u = soak_v3_add(soak_v3_scale(j->rain_dir, ct),
+                            soak_v3_add(soak_v3_scale(j->rt, st * cos(phi)), soak_v3_scale(j->rb, st * sin(phi))));
+            weight = soak_v3_dot(n, u) / j->f_open;
+            if (!(weight > 0.0)) continue;
+        }
+        b->dir[b->n] = u;
+        b->weight[b->n] = weight;
+        b->side[b->n++] = !(soak_v3_dot(u, n) >= 0); /* soak_geometry_offset's choice of side */
+        if (b->n == BATCH) acc = add_unoccluded(j, b, acc);
+    }
+    if (b->n) acc = add_unoccluded(j, b, acc);
+    return acc / N;
 }
 
 static void exposure_row(void *ctx, int y, int thread)
@@ -247,46 +328,10 @@ static void exposure_row(void *ctx, int y, int thread)
     (void)thread;
     exposure_job *j = ctx;
     const rain_surface *s = j->s;
-    int N = j->p->rays;
-    soak_ray rays[BATCH];
-    double weights[BATCH];
+    ray_batch b;
     for (int x = 0; x < s->w; ++x) {
         size_t i = (size_t)y * s->w + x;
-        if (s->tri[i] < 0) {
-            j->out[i] = 0.0f;
-            continue;
-        }
-        soak_vec3 p = vget(s->pos, i), n = fget(s->nrm, i), t, b;
-        soak_v3_basis(n, &t, &b);
-        soak_rng rng;
-        soak_rng_seed(&rng, j->p->seed, (uint64_t)i);
-        double acc = 0.0;
-        int queued = 0;
-        for (int k = 0; k < N; ++k) {
-            double xi1 = (k + soak_rng_uniform(&rng)) / N, xi2 = soak_rng_uniform(&rng);
-            double phi = 2.0 * SOAK_PI * xi2, weight;
-            soak_vec3 u;
-            if (j->p->sky == SOAK_RAIN_SKY_HEMISPHERE) {
-                double ct = sqrt(1.0 - xi1), st = sqrt(xi1);
-                u = soak_v3_add(soak_v3_scale(n, ct), soak_v3_add(soak_v3_scale(t, st * cos(phi)),
-                                                                   soak_v3_scale(b, st * sin(phi))));
-                weight = 1.0;
-            } else {
-                double ct = 1.0 - xi1 * (1.0 - j->cos_spread), st = sqrt(fmax(0.0, 1.0 - ct * ct));
-                u = soak_v3_add(soak_v3_scale(j->rain_dir, ct),
-                                soak_v3_add(soak_v3_scale(j->rt, st * cos(phi)), soak_v3_scale(j->rb, st * sin(phi))));
-                weight = soak_v3_dot(n, u) / j->f_open;
-                if (!(weight > 0.0)) continue;
-            }
-            rays[queued] = (soak_ray){soak_geometry_offset(p, n, u), u, 0.0, INFINITY};
-            weights[queued++] = weight;
-            if (queued == BATCH) {
-                acc = add_unoccluded(j, rays, weights, queued, acc);
-                queued = 0;
-            }
-        }
-        if (queued) acc = add_unoccluded(j, rays, weights, queued, acc);
-        j->out[i] = (float)(acc / N);
+        j->out[i] = s->tri[i] < 0 ? 0.0f : (float)texel_exposure(j, i, &b);
     }
 }
 
@@ -299,9 +344,17 @@ typedef struct water_job {
     double *depth;     /* water depth per texel, m */
     float *deposit;    /* drop volume per texel this step */
     double *retain;    /* film kept per texel */
-    double lambda_per_area, drop_volume;
+    double lambda_per_area, drop_volume, evaporation;
     uint64_t step_seed;
 } water_job;
+
+static void evaporate_row(void *ctx, int y, int thread)
+{
+    (void)thread;
+    water_job *j = ctx;
+    for (size_t i = (size_t)y * j->s->w, end = i + j->s->w; i < end; ++i)
+        j->depth[i] = j->depth[i] > j->evaporation ? j->depth[i] - j->evaporation : 0.0;
+}
 
 static void drops_row(void *ctx, int y, int thread)
 {
@@ -355,12 +408,13 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
     soak_vec3 up = soak_v3_norm(p->up);
     for (size_t i = 0; i < n; ++i)
         j.retain[i] = s->tri[i] >= 0 ? p->retention * fmax(0.0, soak_v3_dot(fget(s->nrm, i), up)) : 0.0;
+    soak_rain_flow_plan *flow = NULL;
+    soak_status st = soak_rain_flow_create(&grid, exec, SOAK_RAIN_FLOW_AUTO, &flow);
     double dt = p->duration / p->steps;
     double rain_m_s = p->rainfall_mm_h / 3.6e6, evap = p->evaporation_mm_h / 3.6e6 * dt;
     j.drop_volume = SOAK_PI / 6.0 * p->drop_diameter * p->drop_diameter * p->drop_diameter;
     j.lambda_per_area = rain_m_s / j.drop_volume * dt; /* drops per m^2 of open horizontal surface per step */
     double sigma_texels = s->mean_texel > 0.0 ? p->splat_radius / s->mean_texel : 0.0;
-    soak_status st = SOAK_OK;
     for (int step = 0; step < p->steps && st == SOAK_OK; ++step) {
         double lo = 0.7 + 0.3 * step / p->steps;
         j.step_seed = soak_seed_derive(p->seed, (uint64_t)step + 1);
@@ -372,9 +426,11 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
             soak_image_free(&blurred);
         }
         if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, add_deposit_row, &j, lo, lo);
-        if (st == SOAK_OK) st = soak_rain_flow(&grid, depth, p->flow_iterations, exec, lo, lo);
-        for (size_t i = 0; i < n; ++i) depth[i] = depth[i] > evap ? depth[i] - evap : 0.0;
+        if (st == SOAK_OK) st = soak_rain_flow_run(flow, depth, p->flow_iterations, exec, lo, lo);
+        j.evaporation = evap;
+        if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, evaporate_row, &j, lo, lo);
     }
+    soak_rain_flow_destroy(flow);
     free(j.deposit);
     free(j.retain);
     free(covered);
@@ -383,43 +439,75 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
 
 /* ---- outputs ---- */
 
+typedef struct dilate_job {
+    const float *img;
+    const unsigned char *filled;
+    float *val;
+    unsigned char *next;
+    int w, h;
+} dilate_job;
+
+/* One ring of row y: each empty texel with filled neighbours takes their
+ * mean (reads img and filled, writes val and next). */
+static void dilate_row(void *ctx, int y, int thread)
+{
+    (void)thread;
+    const dilate_job *j = ctx;
+    int w = j->w, h = j->h;
+    for (int x = 0; x < w; ++x) {
+        size_t i = (size_t)y * w + x;
+        if (j->filled[i]) continue;
+        double sum = 0.0;
+        int c = 0;
+        for (int d = 0; d < 8; ++d) {
+            int kx = x + DX[d], ky = y + DY[d];
+            if (kx < 0 || ky < 0 || kx >= w || ky >= h || !j->filled[(size_t)ky * w + kx]) continue;
+            sum += j->img[(size_t)ky * w + kx];
+            ++c;
+        }
+        if (c) {
+            j->val[i] = (float)(sum / c);
+            j->next[i] = 1;
+        }
+    }
+}
+
 /* Empty texels take the mean of their filled neighbours, `gutter` rings. */
-static soak_status dilate(float *img, unsigned char *filled, int w, int h, int gutter)
+static soak_status dilate(float *img, unsigned char *filled, int w, int h, int gutter, const soak_bake_exec *exec)
 {
     size_t n = (size_t)w * h;
     unsigned char *next = malloc(n);
     float *val = malloc(n * sizeof *val);
-    if (!next || !val) {
-        free(next);
-        free(val);
-        return SOAK_ERR_NOMEM;
-    }
-    for (int g = 0; g < gutter; ++g) {
+    soak_status st = next && val ? SOAK_OK : SOAK_ERR_NOMEM;
+    dilate_job j = {img, filled, val, next, w, h};
+    for (int g = 0; g < gutter && st == SOAK_OK; ++g) {
         memcpy(next, filled, n);
         memcpy(val, img, n * sizeof *val);
-        for (int y = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                size_t i = (size_t)y * w + x;
-                if (filled[i]) continue;
-                double sum = 0.0;
-                int c = 0;
-                for (int d = 0; d < 8; ++d) {
-                    int kx = x + DX[d], ky = y + DY[d];
-                    if (kx < 0 || ky < 0 || kx >= w || ky >= h || !filled[(size_t)ky * w + kx]) continue;
-                    sum += img[(size_t)ky * w + kx];
-                    ++c;
-                }
-                if (c) {
-                    val[i] = (float)(sum / c);
-                    next[i] = 1;
-                }
-            }
+        st = soak_parallel_rows(h, exec, dilate_row, &j, 1.0, 1.0);
         memcpy(filled, next, n);
         memcpy(img, val, n * sizeof *val);
     }
     free(next);
     free(val);
-    return SOAK_OK;
+    return st;
+}
+
+typedef struct output_job {
+    const rain_surface *s;
+    const double *depth;
+    double saturation_depth;
+    soak_rain_result *r;
+} output_job;
+
+static void output_row(void *ctx, int y, int thread)
+{
+    (void)thread;
+    const output_job *j = ctx;
+    for (size_t i = (size_t)y * j->s->w, end = i + j->s->w; i < end; ++i) {
+        j->r->coverage.pixels[i] = j->s->tri[i] >= 0 ? 1.0f : 0.0f;
+        j->r->water.pixels[i] = (float)j->depth[i];
+        j->r->wetness.pixels[i] = (float)(1.0 - exp(-j->depth[i] / j->saturation_depth));
+    }
 }
 
 void soak_rain_result_free(soak_rain_result *r)
@@ -521,7 +609,10 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
     rain_surface s;
     if ((st = surface_alloc(&s, width, height)) != SOAK_OK) return st;
     rasterise(mesh, &s, up);
-    connect(&s, up);
+    if ((st = connect(&s, up, exec)) != SOAK_OK) {
+        surface_free(&s);
+        return st;
+    }
 
     soak_geometry *g = NULL;
     st = build_geometry(mesh, &g, err, errlen);
@@ -554,16 +645,12 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
     if (st == SOAK_OK) {
         unsigned char *filled = malloc(n);
         if (!filled) st = SOAK_ERR_NOMEM;
-        for (size_t i = 0; i < n && st == SOAK_OK; ++i) {
-            filled[i] = s.tri[i] >= 0;
-            r.coverage.pixels[i] = filled[i] ? 1.0f : 0.0f;
-            r.water.pixels[i] = (float)depth[i];
-            r.wetness.pixels[i] = (float)(1.0 - exp(-depth[i] / p->saturation_depth));
-        }
+        output_job oj = {&s, depth, p->saturation_depth, &r};
+        if (st == SOAK_OK) st = soak_parallel_rows(height, exec, output_row, &oj, 1.0, 1.0);
         float *maps[3] = {r.exposure.pixels, r.water.pixels, r.wetness.pixels};
         for (int k = 0; k < 3 && st == SOAK_OK; ++k) {
             for (size_t i = 0; i < n; ++i) filled[i] = s.tri[i] >= 0;
-            st = dilate(maps[k], filled, width, height, p->gutter);
+            st = dilate(maps[k], filled, width, height, p->gutter, exec);
         }
         free(filled);
     }

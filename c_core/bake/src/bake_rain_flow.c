@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_rain_flow_rows.h"
+
 #define FLOW_DX_INIT {1, 1, 0, -1, -1, -1, 0, 1}
 #define FLOW_DY_INIT {0, -1, -1, -1, 0, 1, 1, 1}
 const int SOAK_RAIN_DX[8] = FLOW_DX_INIT;
@@ -16,56 +18,35 @@ static const int FLOW_DX[8] = FLOW_DX_INIT, FLOW_DY[8] = FLOW_DY_INIT;
  * side of its band, so wider bands repeat less work. */
 enum { BAND = 32 };
 
-/* What texel k sends: o[d] to neighbour d (float, as the two-pass scheme
- * stores it) and out, the sum of its nine outflows (drip included) in that
- * scheme's order. */
-typedef struct flux {
-    float o[8];
-    double out;
-} flux;
-
-typedef struct flow_job {
-    const soak_rain_flow_grid *g;
-    const double *depth;
+struct soak_rain_flow_plan {
+    soak_rain_flow_grid g;
+    int threads;
+    flux_row_fn flux_row; /* the vector kernels, or NULL */
+    gather_row_fn gather_row;
+    unsigned char *pulls;
     double *next;
-    flux *scratch;        /* 3 rows (a ring: row y in slot y % 3) per thread */
-    unsigned char *pulls; /* bit d: neighbour d exists and sends to this texel (its adj has the way back) */
-    ptrdiff_t step[8];    /* index offset of neighbour d */
-    /* level + depth per covered texel before and after the sweep, each sum
-     * made once (by the gather that writes the depth) instead of by all
-     * nine texels that read it */
-    const double *lvl;
-    double *lvl_next;
-} flow_job;
+    double *lvl_mem, *lvl_next_mem; /* with the w + 1 zeros either side (flow_job) */
+    float *ring_o;
+    double *ring_out;
+};
 
-static double level_at(const flow_job *j, size_t i) { return j->lvl[i]; }
-
-static void texel_flux(const flow_job *j, int x, int y, flux *f)
+static void texel_flux(const flow_job *j, const flux_row_ptrs *row, int x, int y)
 {
     const soak_rain_flow_grid *g = j->g;
     size_t i = (size_t)y * g->w + x;
-    memset(f, 0, sizeof *f);
+    for (int d = 0; d < 8; ++d) row->o[d][x] = 0.0f;
+    row->out[x] = 0.0;
     if (!g->covered[i]) return;
     double h = j->depth[i], mobile = h - g->retain[i];
     if (!(mobile > 0.0)) return;
     if (g->drip[i] < 0.0f) { /* faces down: everything drips, nothing to the neighbours */
-        f->out = (float)mobile;
+        row->out[x] = (float)mobile;
         return;
     }
-    double lvl = level_at(j, i), diff[9], sum = 0.0, mx = 0.0;
-    if (g->adj[i] == 0xFFu) { /* all eight adjacent (inside a chart): no per-direction test */
-        for (int d = 0; d < 8; ++d) {
-            double dl = lvl - level_at(j, i + (size_t)j->step[d]);
-            diff[d] = dl > 0.0 ? dl : 0.0;
-        }
-    } else {
-        for (int d = 0; d < 8; ++d) {
-            diff[d] = 0.0;
-            if (!(g->adj[i] >> d & 1u)) continue;
-            size_t k = (size_t)(y + SOAK_RAIN_DY[d]) * g->w + (size_t)(x + SOAK_RAIN_DX[d]);
-            double dl = lvl - level_at(j, k);
-            if (dl > 0.0) diff[d] = dl;
-        }
+    double lvl = j->lvl[i], diff[9], sum = 0.0, mx = 0.0;
+    for (int d = 0; d < 8; ++d) { /* the padding of lvl makes every neighbour loadable; adj says which count */
+        double dl = lvl - j->lvl[(ptrdiff_t)i + j->step[d]];
+        diff[d] = (g->adj[i] >> d & 1u) && dl > 0.0 ? dl : 0.0;
     }
     diff[8] = g->drip[i] > 0.0f ? h + g->drip[i] : 0.0; /* virtual dry neighbour beyond the edge */
     for (int d = 0; d < 9; ++d) { /* diff >= 0, never NaN: comparisons give fmax / fmin's values */
@@ -74,70 +55,99 @@ static void texel_flux(const flow_job *j, int x, int y, flux *f)
     }
     if (!(sum > 0.0)) return;
     double moved = 0.5 * mx < mobile ? 0.5 * mx : mobile, out = 0.0;
-    /* A direction without a level drop sends moved * 0 / sum = +0, which the
-     * memset above wrote and which adds nothing to out (>= +0): skipping its
-     * division leaves every bit as it was. */
+    /* A direction without a level drop sends moved * 0 / sum = +0, which was
+     * written above and adds nothing to out (>= +0): skipping its division
+     * leaves every bit as it was. */
     for (int d = 0; d < 8; ++d) {
         if (!(diff[d] > 0.0)) continue;
-        f->o[d] = (float)(moved * diff[d] / sum);
-        out += f->o[d];
+        row->o[d][x] = (float)(moved * diff[d] / sum);
+        out += row->o[d][x];
     }
-    f->out = diff[8] > 0.0 ? out + (float)(moved * diff[8] / sum) : out;
+    row->out[x] = diff[8] > 0.0 ? out + (float)(moved * diff[8] / sum) : out;
 }
 
-static void flux_row(const flow_job *j, flux *ring, int y)
+static void ring_row(const flow_job *j, int thread, int y, flux_row_ptrs *row)
 {
-    flux *row = ring + (size_t)(y % 3) * j->g->w;
-    for (int x = 0; x < j->g->w; ++x) texel_flux(j, x, y, &row[x]);
+    size_t w = (size_t)j->g->w, slot = (size_t)thread * 3 + (size_t)(y % 3);
+    for (int d = 0; d < 8; ++d) row->o[d] = j->ring_o + (slot * 8 + (size_t)d) * w;
+    row->out = j->ring_out + slot * w;
 }
 
-static void gather_row(const flow_job *j, const flux *ring, int y)
+static void flux_row(const flow_job *j, int thread, int y)
+{
+    flux_row_ptrs row;
+    ring_row(j, thread, y, &row);
+    int x = j->flux_row ? j->flux_row(j, &row, y, 0) : 0;
+    for (; x < j->g->w; ++x) texel_flux(j, &row, x, y);
+}
+
+static void texel_gather(const flow_job *j, const flux_row_ptrs fr[3], const float *const ar[3], int x, int y)
+{
+    const soak_rain_flow_grid *g = j->g;
+    size_t i = (size_t)y * g->w + x;
+    if (!g->covered[i]) {
+        j->next[i] = j->depth[i];
+        j->lvl_next[i] = 0.0;
+        return;
+    }
+    double vol_in = 0.0;
+    if (j->pulls[i] == 0xFFu) { /* all eight send (inside a chart): the same sum in the same order, unrolled */
+        for (int d = 0; d < 8; ++d) {
+            int r = FLOW_DY[d] + 1, kx = x + FLOW_DX[d];
+            vol_in += fr[r].o[(d + 4) & 7][kx] * (double)ar[r][kx];
+        }
+    } else {
+        for (unsigned m = j->pulls[i]; m; m &= m - 1) {
+            int d = __builtin_ctz(m), r = SOAK_RAIN_DY[d] + 1, kx = x + SOAK_RAIN_DX[d];
+            vol_in += fr[r].o[(d + 4) & 7][kx] * (double)ar[r][kx];
+        }
+    }
+    double h = j->depth[i] - fr[1].out[x] + vol_in / g->area[i];
+    j->next[i] = h > 0.0 ? h : 0.0;
+    j->lvl_next[i] = g->level[i] + j->next[i];
+}
+
+static void gather_row(const flow_job *j, int thread, int y)
 {
     const soak_rain_flow_grid *g = j->g;
     /* rows y - 1, y, y + 1 of the ring and of the areas, by DY + 1 */
-    const flux *fr[3];
+    flux_row_ptrs fr[3];
     const float *ar[3];
     for (int r = 0; r < 3; ++r) {
         int ky = y - 1 + r < 0 ? 0 : (y - 1 + r >= g->h ? g->h - 1 : y - 1 + r); /* clamped rows are never pulled from */
-        fr[r] = ring + (size_t)(ky % 3) * g->w;
+        ring_row(j, thread, ky, &fr[r]);
         ar[r] = g->area + (size_t)ky * g->w;
     }
-    for (int x = 0; x < g->w; ++x) {
-        size_t i = (size_t)y * g->w + x;
-        if (!g->covered[i]) {
-            j->next[i] = j->depth[i];
-            j->lvl_next[i] = 0.0; /* never read: only covered texels are neighbours */
-            continue;
-        }
-        double vol_in = 0.0;
-        if (j->pulls[i] == 0xFFu) { /* all eight send (inside a chart): the same sum in the same order, unrolled */
-            for (int d = 0; d < 8; ++d) {
-                int r = FLOW_DY[d] + 1, kx = x + FLOW_DX[d];
-                vol_in += fr[r][kx].o[(d + 4) & 7] * (double)ar[r][kx];
-            }
-        } else {
-            for (unsigned m = j->pulls[i]; m; m &= m - 1) {
-                int d = __builtin_ctz(m), r = SOAK_RAIN_DY[d] + 1, kx = x + SOAK_RAIN_DX[d];
-                vol_in += fr[r][kx].o[(d + 4) & 7] * (double)ar[r][kx];
-            }
-        }
-        double h = j->depth[i] - fr[1][x].out + vol_in / g->area[i];
-        j->next[i] = h > 0.0 ? h : 0.0;
-        j->lvl_next[i] = g->level[i] + j->next[i];
+    int x = 0;
+    if (j->gather_row && g->w > 1) { /* the kernel reads one texel either side: not the first column */
+        texel_gather(j, fr, ar, 0, y);
+        x = j->gather_row(j, fr, ar, y, 1);
     }
+    for (; x < g->w; ++x) texel_gather(j, fr, ar, x, y);
 }
 
 static void flow_band(void *ctx, int band, int thread)
 {
     flow_job *j = ctx;
     int h = j->g->h, y0 = band * BAND, y1 = y0 + BAND < h ? y0 + BAND : h;
-    flux *ring = j->scratch + (size_t)thread * 3 * j->g->w;
-    if (y0 > 0) flux_row(j, ring, y0 - 1);
-    flux_row(j, ring, y0);
+    if (y0 > 0) flux_row(j, thread, y0 - 1);
+    flux_row(j, thread, y0);
     for (int y = y0; y < y1; ++y) {
-        if (y + 1 < h) flux_row(j, ring, y + 1);
-        gather_row(j, ring, y);
+        if (y + 1 < h) flux_row(j, thread, y + 1);
+        gather_row(j, thread, y);
     }
+}
+
+/* level + depth of the covered texels of a band, before the first sweep. */
+static void level_band(void *ctx, int band, int thread)
+{
+    (void)thread;
+    flow_job *j = ctx;
+    const soak_rain_flow_grid *g = j->g;
+    int y0 = band * BAND, y1 = y0 + BAND < g->h ? y0 + BAND : g->h;
+    double *lvl = (double *)j->lvl; /* the plan's buffer: writable, const only for the sweeps */
+    for (size_t i = (size_t)y0 * g->w, end = (size_t)y1 * g->w; i < end; ++i)
+        lvl[i] = g->covered[i] ? g->level[i] + j->depth[i] : 0.0;
 }
 
 static void find_pulls(const soak_rain_flow_grid *g, unsigned char *pulls)
@@ -154,24 +164,83 @@ static void find_pulls(const soak_rain_flow_grid *g, unsigned char *pulls)
         }
 }
 
-soak_status soak_rain_flow(const soak_rain_flow_grid *g, double *depth, int iterations, const soak_bake_exec *exec,
-                           double progress_lo, double progress_hi)
+/* The widest vector kernels the CPU runs (all give the same bits). */
+static void pick_kernels(soak_rain_flow_plan *f, soak_rain_flow_isa isa)
 {
-    if (!g || !depth) return SOAK_ERR_NULL;
-    if (iterations <= 0) return SOAK_OK;
-    int threads = soak_bake_threads(exec);
-    if (threads == 0) return SOAK_ERR_ARG;
-    size_t n = (size_t)g->w * g->h;
-    double *lvl = malloc(n * sizeof(double)), *lvl_next = malloc(n * sizeof(double));
-    flow_job j = {g,   depth, malloc(n * sizeof(double)), malloc((size_t)threads * 3 * g->w * sizeof(flux)), malloc(n),
-                  {0}, lvl,   lvl_next};
-    for (int d = 0; d < 8; ++d) j.step[d] = (ptrdiff_t)SOAK_RAIN_DY[d] * g->w + SOAK_RAIN_DX[d];
-    soak_status st = j.next && j.scratch && j.pulls && lvl && lvl_next ? SOAK_OK : SOAK_ERR_NOMEM;
-    if (st == SOAK_OK) {
-        find_pulls(g, j.pulls);
-        for (size_t i = 0; i < n; ++i) lvl[i] = g->covered[i] ? g->level[i] + depth[i] : 0.0;
+    f->flux_row = NULL;
+    f->gather_row = NULL;
+    if (isa == SOAK_RAIN_FLOW_PORTABLE) return;
+#ifdef SOAK_BUILD_FLOW_AVX512
+    if (isa == SOAK_RAIN_FLOW_AUTO && soak_rain_cpu_has_avx512()) {
+        f->flux_row = soak_rain_flux_row_avx512;
+        f->gather_row = soak_rain_gather_row_avx512;
+        return;
     }
+#endif
+#ifdef SOAK_BUILD_FLOW_AVX2
+    if (soak_rain_cpu_has_avx2()) {
+        f->flux_row = soak_rain_flux_row_avx2;
+        f->gather_row = soak_rain_gather_row_avx2;
+    }
+#endif
+}
+
+void soak_rain_flow_destroy(soak_rain_flow_plan *f)
+{
+    if (!f) return;
+    free(f->pulls);
+    free(f->next);
+    free(f->lvl_mem);
+    free(f->lvl_next_mem);
+    free(f->ring_o);
+    free(f->ring_out);
+    free(f);
+}
+
+soak_status soak_rain_flow_create(const soak_rain_flow_grid *g, const soak_bake_exec *exec, soak_rain_flow_isa isa,
+                                  soak_rain_flow_plan **out)
+{
+    if (!g || !out) return SOAK_ERR_NULL;
+    *out = NULL;
+    int threads = soak_bake_threads(exec);
+    if (threads == 0 || g->w < 1 || g->h < 1 || isa < SOAK_RAIN_FLOW_AUTO || isa > SOAK_RAIN_FLOW_AVX2)
+        return SOAK_ERR_ARG;
+    if (!g->covered || !g->adj || !g->area || !g->drip || !g->level || !g->retain) return SOAK_ERR_NULL;
+    soak_rain_flow_plan *f = calloc(1, sizeof *f);
+    if (!f) return SOAK_ERR_NOMEM;
+    size_t n = (size_t)g->w * g->h, padded = n + 2 * ((size_t)g->w + 1), ring = (size_t)threads * 3 * g->w;
+    f->g = *g;
+    f->threads = threads;
+    pick_kernels(f, isa);
+    f->pulls = malloc(n);
+    f->next = malloc(n * sizeof(double));
+    f->lvl_mem = calloc(padded, sizeof(double));
+    f->lvl_next_mem = calloc(padded, sizeof(double));
+    f->ring_o = malloc(ring * 8 * sizeof(float));
+    f->ring_out = malloc(ring * sizeof(double));
+    if (!f->pulls || !f->next || !f->lvl_mem || !f->lvl_next_mem || !f->ring_o || !f->ring_out) {
+        soak_rain_flow_destroy(f);
+        return SOAK_ERR_NOMEM;
+    }
+    find_pulls(g, f->pulls);
+    *out = f;
+    return SOAK_OK;
+}
+
+soak_status soak_rain_flow_run(soak_rain_flow_plan *f, double *depth, int iterations, const soak_bake_exec *exec,
+                               double progress_lo, double progress_hi)
+{
+    if (!f || !depth) return SOAK_ERR_NULL;
+    int threads = soak_bake_threads(exec);
+    if (threads == 0 || threads > f->threads) return SOAK_ERR_ARG;
+    if (iterations <= 0) return SOAK_OK;
+    const soak_rain_flow_grid *g = &f->g;
+    size_t n = (size_t)g->w * g->h, pad = (size_t)g->w + 1;
+    flow_job j = {g, depth, f->next, f->lvl_mem + pad, f->lvl_next_mem + pad, f->pulls, f->ring_o, f->ring_out,
+                  {0}, f->flux_row, f->gather_row};
+    for (int d = 0; d < 8; ++d) j.step[d] = (ptrdiff_t)SOAK_RAIN_DY[d] * g->w + SOAK_RAIN_DX[d];
     int bands = (g->h + BAND - 1) / BAND;
+    soak_status st = soak_parallel_rows(bands, exec, level_band, &j, progress_lo, progress_lo);
     for (int it = 0; it < iterations && st == SOAK_OK; ++it) {
         st = soak_parallel_rows(bands, exec, flow_band, &j, progress_lo, progress_hi);
         double *t = (double *)j.depth;
@@ -181,11 +250,18 @@ soak_status soak_rain_flow(const soak_rain_flow_grid *g, double *depth, int iter
         j.lvl = j.lvl_next;
         j.lvl_next = t;
     }
-    if (st == SOAK_OK && j.depth != depth) memcpy(depth, j.depth, n * sizeof(double));
-    free(j.depth == depth ? j.next : (double *)j.depth);
-    free(j.scratch);
-    free(j.pulls);
-    free(lvl);
-    free(lvl_next);
+    if (j.depth != depth) memcpy(depth, j.depth, n * sizeof(double)); /* an odd number of sweeps */
+    return st;
+}
+
+soak_status soak_rain_flow(const soak_rain_flow_grid *g, double *depth, int iterations, const soak_bake_exec *exec,
+                           double progress_lo, double progress_hi)
+{
+    if (!g || !depth) return SOAK_ERR_NULL;
+    if (iterations <= 0) return SOAK_OK;
+    soak_rain_flow_plan *f = NULL;
+    soak_status st = soak_rain_flow_create(g, exec, SOAK_RAIN_FLOW_AUTO, &f);
+    if (st == SOAK_OK) st = soak_rain_flow_run(f, depth, iterations, exec, progress_lo, progress_hi);
+    soak_rain_flow_destroy(f);
     return st;
 }

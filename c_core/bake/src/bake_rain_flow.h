@@ -4,12 +4,12 @@
  * One routing sweep is a Jacobi update: every texel's outflows are computed
  * from the depths before the sweep, then every texel's depth becomes
  * depth - its outflow + the inflows its neighbours send it. The sweep here is
- * one pass in the pull form: a band of rows first computes, for its rows and
- * one row either side, each texel's moved volume, level-drop sum and total
- * outflow (3 doubles, kept in per-thread scratch), then every texel gathers
- * its inflows by recomputing the one outflow each neighbour sends it. The
- * arithmetic and its order are those of the two-pass scheme that stores nine
- * outflows per texel, so results are bitwise the same at any thread count. */
+ * one pass in the pull form: a band of rows computes the outflows of its
+ * rows and one row either side into a per-thread ring of three rows, and
+ * every texel gathers its inflows from the ring as soon as the row below it
+ * is done. The arithmetic and its order are those of the two-pass scheme
+ * that stores nine outflows per texel, so results are bitwise the same at
+ * any thread count and with either set of kernels. */
 #ifndef SOAK_BAKE_RAIN_FLOW_H
 #define SOAK_BAKE_RAIN_FLOW_H
 
@@ -31,7 +31,29 @@ typedef struct soak_rain_flow_grid {
     const double *retain;         /* film depth kept */
 } soak_rain_flow_grid;
 
-/* iterations sweeps on depth (w * h, metres); scratch is allocated inside. */
+/* What a run of sweeps needs besides the depths, made once per grid: who
+ * pulls from whom, the second depth buffer, the level + depth maps and the
+ * per-thread rows of outflows. The grid's arrays are borrowed, not copied. */
+typedef struct soak_rain_flow_plan soak_rain_flow_plan;
+
+/* Which kernels sweep (all give the same bits): AUTO the widest vector ones
+ * the CPU runs (AVX-512, AVX2), PORTABLE none, AVX2 at most AVX2 (the last
+ * two for the tests). */
+typedef enum soak_rain_flow_isa {
+    SOAK_RAIN_FLOW_AUTO,
+    SOAK_RAIN_FLOW_PORTABLE,
+    SOAK_RAIN_FLOW_AVX2
+} soak_rain_flow_isa;
+
+/* Prepares sweeps of g for up to soak_bake_threads(exec) threads. */
+soak_status soak_rain_flow_create(const soak_rain_flow_grid *g, const soak_bake_exec *exec, soak_rain_flow_isa isa,
+                                  soak_rain_flow_plan **out);
+void soak_rain_flow_destroy(soak_rain_flow_plan *f);
+/* iterations sweeps on depth (w * h, metres); exec must not ask for more
+ * threads than f was made for. */
+soak_status soak_rain_flow_run(soak_rain_flow_plan *f, double *depth, int iterations, const soak_bake_exec *exec,
+                               double progress_lo, double progress_hi);
+/* create, run, destroy. */
 soak_status soak_rain_flow(const soak_rain_flow_grid *g, double *depth, int iterations, const soak_bake_exec *exec,
                            double progress_lo, double progress_hi);
 

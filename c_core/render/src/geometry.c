@@ -774,6 +774,40 @@ soak_status soak_geometry_occluded_n(const soak_geometry *g, const soak_ray *ray
     return SOAK_OK;
 }
 
+/* A packet of rays from one origin (soak_geometry_occluded_fan): the
+ * packet's lanes hold what to_embree makes of each ray. */
+static void occluded_fan_packet(const soak_geometry *g, const float org[3], const soak_vec3 *dirs, size_t m,
+                                int *occluded)
+{
+    struct RTCRay8 p;
+    _Alignas(32) int valid[PACKET];
+    for (size_t k = 0; k < PACKET; ++k) {
+        const soak_vec3 *d = &dirs[k < m ? k : 0];
+        valid[k] = k < m ? -1 : 0;
+        p.org_x[k] = org[0], p.org_y[k] = org[1], p.org_z[k] = org[2];
+        p.dir_x[k] = (float)d->x, p.dir_y[k] = (float)d->y, p.dir_z[k] = (float)d->z;
+        p.tnear[k] = 0.0f, p.tfar[k] = INFINITY, p.time[k] = 0.0f;
+        p.mask[k] = 0xFFFFFFFFu, p.id[k] = 0, p.flags[k] = 0;
+    }
+    struct RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    rtcOccluded8(valid, g->scene, &ctx, &p);
+    for (size_t k = 0; k < m; ++k) occluded[k] = p.tfar[k] == -INFINITY;
+}
+
+soak_status soak_geometry_occluded_fan(const soak_geometry *g, soak_vec3 org, const soak_vec3 *dirs, size_t n,
+                                       int *occluded)
+{
+    if (!g || (n && (!dirs || !occluded))) return SOAK_ERR_NULL;
+    if (n && !g->committed) return SOAK_ERR_ARG;
+    if (n && !vec_ok(org)) return SOAK_ERR_ARG;
+    for (size_t i = 0; i < n; ++i)
+        if (!vec_ok(dirs[i]) || !(soak_v3_dot(dirs[i], dirs[i]) > 0)) return SOAK_ERR_ARG;
+    const float o[3] = {(float)org.x, (float)org.y, (float)org.z};
+    for (size_t i = 0; i < n; i += PACKET) occluded_fan_packet(g, o, dirs + i, n - i < PACKET ? n - i : PACKET, occluded + i);
+    return SOAK_OK;
+}
+
 static const geo_object *local_sphere(const soak_geometry *g, unsigned id)
 {
     const geo_object *o = id < g->count ? &g->objects[id] : NULL;

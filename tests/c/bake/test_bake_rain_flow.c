@@ -2,8 +2,11 @@
  * against a straightforward reference written here: the two-pass Jacobi
  * scheme that stores nine float outflows per texel (outflow pass, then
  * gather pass), on a random grid with uncovered texels, one-way adjacency,
- * drip edges and down-facing texels. The fused sweep keeps the reference's
- * operation order, so the depths must agree bitwise, at 1, 2 and 3 threads.
+ * drip edges and down-facing texels, and on a layout of rectangular charts
+ * with dry and uncovered runs. The fused sweep keeps the reference's
+ * operation order, so the depths must agree bitwise, at 1, 2 and 3 threads,
+ * with the AVX-512, AVX2 (where the CPU has them) and portable kernels, and
+ * when one plan runs twice with rain added between the runs.
  * Identity check on the reference itself: with no drip anywhere, the total
  * volume sum(depth * area) is conserved (relative 1e-6: outflows are
  * rounded to float). */
@@ -24,7 +27,15 @@ typedef struct grid_data {
     double *level, *retain, *depth;
 } grid_data;
 
-static void grid_make(grid_data *d, int w, int h, uint64_t seed, int drips)
+/* Texel (x, y) of the "charts" layout: rectangular islands two texels apart
+ * (whole runs of covered texels with all eight neighbours, as a UV layout
+ * has), the left third of each dry. */
+static int chart_covered(int x, int y)
+{
+    return x % 13 < 11 && y % 9 < 7;
+}
+
+static void grid_make(grid_data *d, int w, int h, uint64_t seed, int drips, int charts)
 {
     size_t n = (size_t)w * h;
     d->w = w;
@@ -38,23 +49,27 @@ static void grid_make(grid_data *d, int w, int h, uint64_t seed, int drips)
     d->depth = calloc(n, sizeof *d->depth);
     soak_rng r;
     soak_rng_seed(&r, seed, 0);
-    for (size_t i = 0; i < n; ++i) d->covered[i] = soak_rng_uniform(&r) > 0.1;
+    for (size_t i = 0; i < n; ++i)
+        d->covered[i] = charts ? chart_covered((int)(i % w), (int)(i / w)) : soak_rng_uniform(&r) > 0.1;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             size_t i = (size_t)y * w + x;
             /* a tilted bowl with noise: puddles and slopes */
             double u = (x - 0.3 * w) / w, v = (y - 0.6 * h) / h;
             d->level[i] = 0.01 * (u * u + v * v) + 0.002 * u + 1e-4 * soak_rng_uniform(&r);
-            if (!d->covered[i]) continue;
+            if (!d->covered[i]) {
+                d->area[i] = NAN; /* the bake leaves these unset: nothing may use them */
+                continue;
+            }
             d->area[i] = (float)(1e-6 * (0.5 + soak_rng_uniform(&r)));
             d->retain[i] = 2e-4 * soak_rng_uniform(&r);
-            d->depth[i] = 2e-3 * soak_rng_uniform(&r) * soak_rng_uniform(&r);
+            d->depth[i] = charts && x % 13 < 4 ? 0.0 : 2e-3 * soak_rng_uniform(&r) * soak_rng_uniform(&r);
             double q = soak_rng_uniform(&r);
             if (drips) d->drip[i] = q < 0.03 ? -1.0f : (q < 0.08 ? (float)(1e-3 * soak_rng_uniform(&r)) : 0.0f);
             for (int k = 0; k < 8; ++k) {
                 int kx = x + SOAK_RAIN_DX[k], ky = y + SOAK_RAIN_DY[k];
                 if (kx < 0 || ky < 0 || kx >= w || ky >= h || !d->covered[(size_t)ky * w + kx]) continue;
-                if (soak_rng_uniform(&r) < 0.95) d->adj[i] |= (unsigned char)(1u << k); /* some one-way links */
+                if (charts || soak_rng_uniform(&r) < 0.95) d->adj[i] |= (unsigned char)(1u << k); /* some one-way links */
             }
         }
 }
@@ -124,21 +139,38 @@ static void reference_sweep(const grid_data *d, double *depth, float *out9)
 static double volume(const grid_data *d, const double *depth)
 {
     double v = 0.0;
-    for (size_t i = 0; i < (size_t)d->w * d->h; ++i) v += depth[i] * d->area[i];
+    for (size_t i = 0; i < (size_t)d->w * d->h; ++i)
+        if (d->covered[i]) v += depth[i] * d->area[i];
     return v;
 }
 
-static void compare(int w, int h, int iterations, int drips, uint64_t seed)
+static size_t texels_differ(const double *a, const double *b, size_t n)
+{
+    size_t differ = 0;
+    for (size_t i = 0; i < n; ++i) differ += memcmp(&a[i], &b[i], sizeof(double)) != 0;
+    return differ;
+}
+
+/* Rain between two runs of sweeps, as the bake adds it between its steps. */
+static void add_rain(const grid_data *d, double *depth)
+{
+    for (size_t i = 0; i < (size_t)d->w * d->h; ++i)
+        if (d->covered[i]) depth[i] += 1e-4 * (double)(i % 7);
+}
+
+static const char *const ISA_NAME[3] = {"auto (widest vector)", "portable", "AVX2"};
+
+static void compare(int w, int h, int iterations, int drips, int charts, uint64_t seed)
 {
     grid_data d;
-    grid_make(&d, w, h, seed, drips);
+    grid_make(&d, w, h, seed, drips, charts);
     size_t n = (size_t)w * h;
     double *ref = malloc(n * sizeof *ref), *got = malloc(n * sizeof *got);
     float *out9 = malloc(9 * n * sizeof *out9);
     memcpy(ref, d.depth, n * sizeof *ref);
     double v0 = volume(&d, ref);
     for (int it = 0; it < iterations; ++it) reference_sweep(&d, ref, out9);
-    char what[160];
+    char what[200];
     if (!drips) {
         snprintf(what, sizeof what, "reference conserves volume without drips (%dx%d, %d sweeps)", w, h, iterations);
         check_rel(what, volume(&d, ref), v0, 1e-6);
@@ -154,12 +186,31 @@ static void compare(int w, int h, int iterations, int drips, uint64_t seed)
         soak_status st = soak_rain_flow(&g, got, iterations, &ex, 0.0, 1.0);
         snprintf(what, sizeof what, "fused flow runs (%dx%d, %d threads)", w, h, threads);
         check_status(what, st, SOAK_OK);
-        size_t differ = 0;
-        for (size_t i = 0; i < n; ++i) differ += memcmp(&got[i], &ref[i], sizeof(double)) != 0;
-        snprintf(what, sizeof what, "fused = two-pass reference bitwise (%dx%d, %d sweeps, drips %d, %d threads): %zu texels differ",
-                 w, h, iterations, drips, threads, differ);
-        check_true(what, differ == 0);
+        snprintf(what, sizeof what,
+                 "fused = two-pass reference bitwise (%dx%d, %d sweeps, drips %d, charts %d, %d threads): %zu texels differ",
+                 w, h, iterations, drips, charts, threads, texels_differ(got, ref, n));
+        check_true(what, texels_differ(got, ref, n) == 0);
     }
+    /* One plan, two runs with rain between (as the bake uses it), each set
+     * of kernels; the reference continues from where it was. */
+    add_rain(&d, ref);
+    for (int it = 0; it < iterations + 1; ++it) reference_sweep(&d, ref, out9);
+    for (int isa = SOAK_RAIN_FLOW_AUTO; isa <= SOAK_RAIN_FLOW_AVX2; ++isa)
+        for (int threads = 1; threads <= 3; threads += 2) {
+            soak_bake_exec ex = {threads, NULL, NULL};
+            soak_rain_flow_plan *plan = NULL;
+            soak_status st = soak_rain_flow_create(&g, &ex, (soak_rain_flow_isa)isa, &plan);
+            memcpy(got, d.depth, n * sizeof *got);
+            if (st == SOAK_OK) st = soak_rain_flow_run(plan, got, iterations, &ex, 0.0, 1.0);
+            add_rain(&d, got);
+            if (st == SOAK_OK) st = soak_rain_flow_run(plan, got, iterations + 1, &ex, 0.0, 1.0); /* odd: ends in the plan's buffer */
+            soak_rain_flow_destroy(plan);
+            snprintf(what, sizeof what, "plan runs twice (%dx%d, %s kernels, %d threads)", w, h, ISA_NAME[isa], threads);
+            check_status(what, st, SOAK_OK);
+            snprintf(what, sizeof what, "plan's two runs = reference bitwise (%dx%d, %s kernels, %d threads): %zu texels differ",
+                     w, h, ISA_NAME[isa], threads, texels_differ(got, ref, n));
+            check_true(what, texels_differ(got, ref, n) == 0);
+        }
     free(ref);
     free(got);
     free(out9);
@@ -168,10 +219,16 @@ static void compare(int w, int h, int iterations, int drips, uint64_t seed)
 
 int main(void)
 {
-    compare(61, 45, 24, 1, 7);  /* bands of 16 rows and a partial one */
-    compare(64, 64, 24, 0, 11); /* no drips: closed system */
-    compare(5, 3, 9, 1, 3);     /* fewer rows than a band */
+    compare(61, 45, 24, 1, 0, 7);  /* bands of 32 rows and a partial one */
+    compare(64, 64, 24, 0, 0, 11); /* no drips: closed system */
+    compare(5, 3, 9, 1, 0, 3);     /* fewer rows than a band, one group of four texels */
+    compare(6, 7, 9, 1, 0, 5);     /* a group of four and two texels left */
+    compare(11, 9, 9, 1, 0, 19);   /* a group of eight and three texels left */
+    compare(83, 70, 20, 1, 1, 13); /* charts: interiors, dry runs, uncovered runs */
+    compare(80, 40, 20, 0, 1, 17);
     soak_rain_flow_grid g = {4, 4, NULL, NULL, NULL, NULL, NULL, NULL};
     check_status("NULL depth refused", soak_rain_flow(&g, NULL, 1, NULL, 0, 1), SOAK_ERR_NULL);
+    soak_rain_flow_plan *plan = NULL;
+    check_status("grid without arrays refused", soak_rain_flow_create(&g, NULL, SOAK_RAIN_FLOW_AUTO, &plan), SOAK_ERR_NULL);
     return check_finish();
 }

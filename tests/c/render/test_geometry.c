@@ -545,28 +545,41 @@ static void test_threads(void)
  * around a sphere: scattered rays with finite and infinite tfar, and bundles
  * from one origin within a 10 degree cone (the rain bake's), in batches of
  * every size from 1 to 19 and all at once. */
-static void test_occluded_batches(void)
+/* A random soup of TRIS triangles in [-1.75, 1.75]^3 around a sphere. */
+enum { TRIS = 400 };
+static soak_geometry *soup_geometry(const char *label, unsigned long long *s)
 {
     soak_geometry *g = NULL;
-    char err[256] = "";
-    if (!check_status("batches: create", soak_geometry_create(&g, err, sizeof err), SOAK_OK) || !g) return;
-    enum { TRIS = 400, RAYS = 3000 };
-    unsigned long long s = 2024;
+    char err[256] = "", what[80];
+    snprintf(what, sizeof what, "%s: create", label);
+    if (!check_status(what, soak_geometry_create(&g, err, sizeof err), SOAK_OK) || !g) return NULL;
     static double pos[9 * TRIS];
     static unsigned idx[3 * TRIS];
     for (int t = 0; t < TRIS; ++t) {
-        soak_vec3 c = soak_v3(3 * lcg01(&s) - 1.5, 3 * lcg01(&s) - 1.5, 3 * lcg01(&s) - 1.5);
+        soak_vec3 c = soak_v3(3 * lcg01(s) - 1.5, 3 * lcg01(s) - 1.5, 3 * lcg01(s) - 1.5);
         for (int k = 0; k < 3; ++k) {
-            soak_vec3 v = soak_v3_add(c, soak_v3_scale(unit_dir(&s), 0.25));
+            soak_vec3 v = soak_v3_add(c, soak_v3_scale(unit_dir(s), 0.25));
             pos[9 * t + 3 * k] = v.x, pos[9 * t + 3 * k + 1] = v.y, pos[9 * t + 3 * k + 2] = v.z;
             idx[3 * t + k] = (unsigned)(3 * t + k);
         }
     }
     soak_mesh m = {3 * TRIS, TRIS, pos, NULL, NULL, idx};
     unsigned id;
-    check_status("batches: add mesh", soak_geometry_add_mesh(g, &m, NULL, &id), SOAK_OK);
-    check_status("batches: add sphere", soak_geometry_add_sphere(g, soak_v3(0.2, -0.1, 0.3), 0.4, &id), SOAK_OK);
-    check_status("batches: commit", soak_geometry_commit(g), SOAK_OK);
+    snprintf(what, sizeof what, "%s: add mesh", label);
+    check_status(what, soak_geometry_add_mesh(g, &m, NULL, &id), SOAK_OK);
+    snprintf(what, sizeof what, "%s: add sphere", label);
+    check_status(what, soak_geometry_add_sphere(g, soak_v3(0.2, -0.1, 0.3), 0.4, &id), SOAK_OK);
+    snprintf(what, sizeof what, "%s: commit", label);
+    check_status(what, soak_geometry_commit(g), SOAK_OK);
+    return g;
+}
+
+static void test_occluded_batches(void)
+{
+    enum { RAYS = 3000 };
+    unsigned long long s = 2024;
+    soak_geometry *g = soup_geometry("batches", &s);
+    if (!g) return;
     static soak_ray rays[RAYS];
     static int one[RAYS], all[RAYS], part[RAYS];
     for (int i = 0; i < RAYS; ++i) {
@@ -611,6 +624,59 @@ static void test_occluded_batches(void)
     soak_geometry_destroy(g);
 }
 
+/* soak_geometry_occluded_fan (rays from one origin, tnear 0, tfar infinite:
+ * the rain bake's) against soak_geometry_occluded one ray at a time on the
+ * soup: FANS origins with a bundle of PER rays each (within ~10 degrees of a
+ * random axis, or scattered over the sphere for every fourth origin), asked
+ * in calls of every size from 1 to 19 and a whole fan at once. */
+static void test_occluded_fan(void)
+{
+    enum { FANS = 60, PER = 50 };
+    unsigned long long s = 77;
+    soak_geometry *g = soup_geometry("fan", &s);
+    if (!g) return;
+    static soak_vec3 org[FANS], dirs[FANS][PER];
+    static int one[FANS][PER], got[FANS][PER];
+    int bad = 0, hits = 0;
+    for (int f = 0; f < FANS; ++f) {
+        org[f] = soak_v3(4 * lcg01(&s) - 2, 4 * lcg01(&s) - 2, 4 * lcg01(&s) - 2);
+        soak_vec3 axis = unit_dir(&s);
+        for (int k = 0; k < PER; ++k) {
+            dirs[f][k] = f % 4 == 3 ? unit_dir(&s) : soak_v3_norm(soak_v3_add(axis, soak_v3_scale(unit_dir(&s), 0.18)));
+            soak_ray r = {org[f], dirs[f][k], 0.0, INFINITY};
+            bad += soak_geometry_occluded(g, &r, &one[f][k]) != SOAK_OK;
+            hits += one[f][k];
+        }
+    }
+    check_true("fan: ray-by-ray queries succeed", bad == 0);
+    check_true("fan: both answers are common (10-90 % occluded)", hits > FANS * PER / 10 && hits < 9 * FANS * PER / 10);
+    int differ = 0;
+    for (int size = 1; size <= PER; size = size < 19 ? size + 1 : PER) {
+        memset(got, 0xFF, sizeof got);
+        for (int f = 0; f < FANS; ++f)
+            for (int k = 0; k < PER; k += size) {
+                int n = PER - k < size ? PER - k : size;
+                bad += soak_geometry_occluded_fan(g, org[f], dirs[f] + k, (size_t)n, got[f] + k) != SOAK_OK;
+            }
+        for (int f = 0; f < FANS; ++f)
+            for (int k = 0; k < PER; ++k) differ += got[f][k] != one[f][k];
+        if (size == PER) break;
+    }
+    char what[160];
+    snprintf(what, sizeof what, "fan: calls of 1..19 and %d rays agree with ray-by-ray (%d of %d differ, %d failed)", PER,
+             differ, 20 * FANS * PER, bad);
+    check_true(what, differ == 0 && bad == 0);
+    soak_vec3 broken[3] = {dirs[0][0], soak_v3(NAN, 0, 1), dirs[0][2]};
+    check_status("fan: a NaN direction refused", soak_geometry_occluded_fan(g, org[0], broken, 3, got[0]), SOAK_ERR_ARG);
+    broken[1] = soak_v3(0, 0, 0);
+    check_status("fan: a zero direction refused", soak_geometry_occluded_fan(g, org[0], broken, 3, got[0]), SOAK_ERR_ARG);
+    check_status("fan: a NaN origin refused", soak_geometry_occluded_fan(g, soak_v3(0, INFINITY, 0), dirs[0], 3, got[0]),
+                 SOAK_ERR_ARG);
+    check_status("fan: an empty fan", soak_geometry_occluded_fan(g, org[0], NULL, 0, NULL), SOAK_OK);
+    check_status("fan: no geometry", soak_geometry_occluded_fan(NULL, org[0], dirs[0], 1, got[0]), SOAK_ERR_NULL);
+    soak_geometry_destroy(g);
+}
+
 int main(void)
 {
     test_sphere();
@@ -622,5 +688,6 @@ int main(void)
     test_mesh_files();
     test_threads();
     test_occluded_batches();
+    test_occluded_fan();
     return check_finish();
 }

@@ -114,6 +114,11 @@ soak_status soak_geometry_occluded(const soak_geometry *g, const soak_ray *ray, 
 soak_status soak_geometry_intersect_n(const soak_geometry *g, const soak_ray *rays, size_t n, soak_hit *hits,
                                       int *found);
 soak_status soak_geometry_occluded_n(const soak_geometry *g, const soak_ray *rays, size_t n, int *occluded);
+/* The same for n rays from one origin along dirs[i] with tnear 0 and tfar
+ * infinite (the answers soak_geometry_occluded_n gives for those rays), the
+ * origin converted once. */
+soak_status soak_geometry_occluded_fan(const soak_geometry *g, soak_vec3 org, const soak_vec3 *dirs, size_t n,
+                                       int *occluded);
 
 /* Queries for a walk inside object object_id (a medium): they equal the
  * whole-scene queries for rays starting inside it whenever no other surface
