@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "scene_json.h"
+#include "soak/base_colour.h"
 #include "soak/fresnel.h"
 #include "soak/ggx.h"
 #include "soak/porous.h"
@@ -354,6 +355,8 @@ static soak_status parse_wet(scene_ctx *c, const cJSON *j, const char *path, soa
 typedef struct preset_request {
     const char *name, *liquid, *model; /* liquid, model: NULL when absent */
     double wetness;
+    int has_base;   /* "base_colour" given: the preset's class wets this dry colour */
+    soak_rgb base;
     double m_per_unit; /* the scene's length unit, from the material's "unit_mm" */
 } preset_request;
 
@@ -385,13 +388,15 @@ static soak_status eval_preset(scene_ctx *c, const char *path, const preset_requ
         st = sj_fail(c, SOAK_ERR_NOT_FOUND, np, "no liquid named '%s'", liquid);
     } else {
         soak_wet_input in = soak_wet_input_steady(p, r->wetness);
-        st = soak_wetness_eval(p, liq, &in, &out->w);
+        soak_preset own = *p;
+        if (r->has_base) own.albedo = r->base; /* the model view's dry albedo */
+        st = r->has_base ? soak_wet_params_for_base(p, liq, &in, r->base, &out->w) : soak_wetness_eval(p, liq, &in, &out->w);
         out->kind = p->kind;
         out->ior = p->ior;
         out->n = p->ior_n;
         out->k = p->ior_k;
         if (st == SOAK_OK)
-            preset_model_view(p, &out->w, r->m_per_unit, m);
+            preset_model_view(&own, &out->w, r->m_per_unit, m);
         else
             st = sj_fail(c, st, path, "wetness evaluation failed (%s)", soak_status_str(st));
     }
@@ -453,9 +458,11 @@ static void preset_base(const preset_chain *pc, double m_per_unit, soak_material
  * documented key), converted here once to metres per unit. */
 static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
 {
-    static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", NULL};
+    static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", "base_colour", NULL};
     preset_request r;
     soak_status st = sj_keys(c, j, path, keys);
+    r.has_base = cJSON_GetObjectItemCaseSensitive(j, "base_colour") != NULL;
+    if (st == SOAK_OK) st = sj_rgb(c, j, "base_colour", path, 0, 1, 0, soak_rgb3(0, 0, 0), &r.base);
     if (st == SOAK_OK) st = sj_str(c, j, "name", path, 1, &r.name);
     if (st == SOAK_OK) st = sj_num(c, j, "wetness", path, 0, 1, 0, 0, &r.wetness);
     if (st == SOAK_OK) st = sj_str(c, j, "liquid", path, 0, &r.liquid);
@@ -467,6 +474,12 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     preset_chain pc;
     st = eval_preset(c, path, &r, m, &pc);
     if (st != SOAK_OK) return st;
+    if (r.has_base && pc.kind == SOAK_KIND_CONDUCTOR) {
+        char bp[320];
+        sj_path(bp, sizeof bp, path, "base_colour");
+        return sj_fail(c, SOAK_ERR_ARG, bp, "'%s' is a metal: its colour is its complex index (n, k), "
+                       "base_colour wets a dielectric's or a thin sheet's own colour", r.name);
+    }
     m->type = SOAK_MAT_WET;
     preset_film(&pc.w, r.m_per_unit, m);
     preset_base(&pc, r.m_per_unit, m);
