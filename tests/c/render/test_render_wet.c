@@ -45,6 +45,7 @@
 #include <unistd.h>
 
 #include "soak/bake_volume.h"
+#include "soak/base_colour.h"
 
 #include "check.h"
 #include "render_harness.h"
@@ -391,6 +392,40 @@ static void test_preset_film_and_pores(void)
     soak_presets_free(db);
 }
 
+/* A user's colour wetted by a preset's class: the scene's "base_colour" must
+ * trace what soak_wet_params_for_base says (its directional total). */
+static void test_preset_base_colour(void)
+{
+    soak_preset_db *db = NULL;
+    char err[256];
+    if (!check_status("presets", soak_presets_load(NULL, &db, err, sizeof err), SOAK_OK)) return;
+    const soak_preset *p = soak_presets_find(db, "sand");
+    const soak_liquid *l = soak_presets_find_liquid(db, "water");
+    soak_wet_input in = p ? soak_wet_input_steady(p, 0.5) : (soak_wet_input){0};
+    soak_wet_params w;
+    soak_rgb dir, total;
+    if (check_true("sand and water", p && l) &&
+        check_status("chain", soak_wet_params_for_base(p, l, &in, soak_rgb3(0.2, 0.45, 0.7), &w), SOAK_OK) &&
+        check_status("sun albedo", soak_wetness_albedo_sun(p, l, &w, 1.0, &dir, &total), SOAK_OK)) {
+        char text[2048];
+        sky_plane_scene(text, sizeof text, 0.0,
+                        "{\"type\": \"preset\", \"name\": \"sand\", \"wetness\": 0.5, \"base_colour\": [0.2, 0.45, 0.7]}");
+        double m, se;
+        if (render_mean("sand class, blue-green colour", text, 65536, &m, &se)) {
+            double ref = (total.r + total.g + total.b) / 3;
+            printf("  sand class (0.2, 0.45, 0.7) w 0.5, overhead: traced %.5f +- %.5f, chain %.5f\n", m, se, ref);
+            check_close("preset with base_colour = the chain for that colour", m, ref, 4 * se + 1e-3);
+            soak_wet_params own;
+            soak_rgb own_dir, own_total;
+            if (check_status("own colour", soak_wetness_eval(p, l, &in, &own), SOAK_OK) &&
+                check_status("own sun albedo", soak_wetness_albedo_sun(p, l, &own, 1.0, &own_dir, &own_total), SOAK_OK))
+                check_true("and not the preset's own colour's",
+                           fabs(m - (own_total.r + own_total.g + own_total.b) / 3) > 0.02);
+        }
+    }
+    soak_presets_free(db);
+}
+
 int main(void)
 {
     setvbuf(stdout, NULL, _IONBF, 0);
@@ -403,5 +438,6 @@ int main(void)
     test_sand();
     test_rock();
     test_preset_film_and_pores();
+    test_preset_base_colour();
     return check_finish();
 }
