@@ -124,48 +124,56 @@ def menu(root, shader, param):
 
 
 def parse_print(text, outputs):
-    pixels, cur = [], None
+    """testshade --print's values per pixel, in row-major order (x fastest)."""
+    pixels, cur = {}, None
     for line in text.splitlines():
-        if line.startswith("Pixel ("):
+        m = re.match(r"Pixel \((\d+), (\d+)\):", line)
+        if m:
             cur = {}
-            pixels.append(cur)
+            pixels[(int(m.group(2)), int(m.group(1)))] = cur
         elif cur is not None and ":" in line:
             key, val = line.split(":", 1)
             if key.strip() in outputs:
                 cur[key.strip()] = [float(x) for x in val.split()]
-    return pixels
+    return [pixels[k] for k in sorted(pixels)]
 
 
 def testshade_rows(root, tmp, failures):
-    nx, ny = GRID
-    grid = run(["testshade", "-g", str(nx), str(ny), "soak_test_grid", "-o", "Wetness", "null",
-                "-o", "BaseColor", "null", "--print"], cwd=tmp)
-    points = parse_print(grid.stdout, {"Wetness", "BaseColor"})
-    if grid.returncode != 0 or len(points) != nx * ny:
-        failures.append("testshade grid driver: " + grid.stderr.strip())
-        return []
+    """One testshade run per shader (one JIT, seconds): the driver's rows are
+    blocks of GRID[1] rows, one per preset x liquid x UseBaseColor, the
+    wetness along u and the base colours along v within each block."""
+    nx, rows_per = GRID
     rows = []
     for shader, _, outputs in RUNS:
-        for preset in menu(root, shader, "Preset"):
-            for liquid in menu(root, shader, "Liquid"):
-                for use_base in (0, 1):
-                    cmd = ["testshade", "-g", str(nx), str(ny), "--layer", "g", "--shader", "soak_test_grid", "g",
-                           "--layer", "s", "--param", "Preset", preset, "--param", "Liquid", liquid,
-                           "--param", "UseBaseColor", str(use_base), "--shader", shader, "s",
-                           "--connect", "g", "Wetness", "s", "Wetness", "--connect", "g", "BaseColor", "s", "BaseColor",
-                           "--print"]
-                    for o in outputs:
-                        cmd += ["-o", o, "null"]
-                    r = run(cmd, cwd=tmp)
-                    got = parse_print(r.stdout, set(outputs))
-                    if r.returncode != 0 or len(got) != nx * ny or "ERROR" in r.stderr:
-                        failures.append("testshade %s %s/%s: %s" % (shader, preset, liquid, r.stderr.strip()[:300]))
-                        continue
-                    for pt, g in zip(points, got):
-                        tr = g.get("Transmittance", [0, 0, 0])
-                        rows.append("%s,%s,%s,%d,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g" % (
-                            shader, preset, liquid, use_base, *pt["BaseColor"], pt["Wetness"][0], *g["WetColor"],
-                            g["Coverage"][0], g["Roughness"][0], *tr))
+        presets, liquids = menu(root, shader, "Preset"), menu(root, shader, "Liquid")
+        cases = [(p, q, b) for p in presets for q in liquids for b in (0, 1)]
+        ny = rows_per * len(cases)
+        drv = ["--param", "Presets", "|".join(presets), "--param", "Liquids", "|".join(liquids),
+               "--param", "Rows", str(rows_per), "--param", "Height", str(ny)]
+        grid = run(["testshade", "-t", "1", "-g", str(nx), str(ny), *drv, "soak_test_grid", "-o", "Wetness", "null",
+                    "-o", "BaseColor", "null", "--print"], cwd=tmp)
+        points = parse_print(grid.stdout, {"Wetness", "BaseColor"})
+        if grid.returncode != 0 or len(points) != nx * ny:
+            failures.append("testshade grid driver: " + grid.stderr.strip()[:300])
+            continue
+        cmd = ["testshade", "-t", "1", "-g", str(nx), str(ny), "--layer", "g", *drv, "--shader", "soak_test_grid", "g",
+               "--layer", "s", "--shader", shader, "s"]
+        for out in ("Wetness", "BaseColor", "Preset", "Liquid", "UseBaseColor"):
+            cmd += ["--connect", "g", out, "s", out]
+        cmd.append("--print")
+        for o in outputs:
+            cmd += ["-o", o, "null"]
+        r = run(cmd, cwd=tmp)
+        got = parse_print(r.stdout, set(outputs))
+        if r.returncode != 0 or len(got) != nx * ny or "ERROR" in r.stderr or "unknown" in r.stderr:
+            failures.append("testshade %s: %s" % (shader, r.stderr.strip()[:300]))
+            continue
+        for i, (pt, g) in enumerate(zip(points, got)):
+            preset, liquid, use_base = cases[(i // nx) // rows_per]
+            tr = g.get("Transmittance", [0, 0, 0])
+            rows.append("%s,%s,%s,%d,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g,%.7g" % (
+                shader, preset, liquid, use_base, *pt["BaseColor"], pt["Wetness"][0], *g["WetColor"],
+                g["Coverage"][0], g["Roughness"][0], *tr))
     return rows
 
 
@@ -189,7 +197,7 @@ def check_wetmap(tmp, failures):
     nx, ny, fill, amount = 21, 16, 0.2, 0.8
     worst, count = 0.0, 0
     for name, drying in (("const", 1), ("const", 0), ("split", 1)):
-        r = run(["testshade", "-g", str(nx), str(ny), "--center", "--layer", "g", "--shader", "soak_test_grid", "g",
+        r = run(["testshade", "-t", "1", "-g", str(nx), str(ny), "--center", "--layer", "g", "--shader", "soak_test_grid", "g",
                  "--layer", "w", "--param", "WetMap", name + ".tx", "--param", "Drying", str(drying),
                  "--param", "FillTime", str(fill), "--param", "Amount", str(amount), "--shader", "soak_wetmap", "w",
                  "--connect", "g", "Wetness", "w", "Time", "-o", "Wetness", "null", "--print"], cwd=tmp)
