@@ -63,6 +63,15 @@ expect robust_number 1 "$dir/robust_number.json" "render.robust" "must be true o
 printf '{ "camera": {"position": [0,-4,0], "look_at": [0,0,0]}, "environment": {"type": "constant", "radiance": 1}, "materials": {"m": {"type": "wet", "base": {"type": "medium", "sigma_s": -2}}}, %s }\n' "$good_objects" >"$dir/negative_sigma.json"
 expect negative_sigma 1 "$dir/negative_sigma.json" "materials.m.base.sigma_s" "[0, 1e+09]"
 
+# a preset's base_colour: each channel in [0, 1]; a metal has no base colour to replace
+env='"camera": {"position": [0,-4,0], "look_at": [0,0,0]}, "environment": {"type": "constant", "radiance": 1}'
+printf '{ %s, "materials": {"m": {"type": "preset", "name": "sand", "base_colour": [0.2, 1.5, 0.3]}}, %s }\n' "$env" "$good_objects" >"$dir/base_colour_range.json"
+expect base_colour_range 1 "$dir/base_colour_range.json" "materials.m.base_colour[1]" "[0, 1]"
+printf '{ %s, "materials": {"m": {"type": "preset", "name": "copper", "base_colour": [0.2, 0.5, 0.3]}}, %s }\n' "$env" "$good_objects" >"$dir/base_colour_metal.json"
+expect base_colour_metal 1 "$dir/base_colour_metal.json" "materials.m.base_colour" "'copper' is a metal"
+printf '{ %s, "materials": {"m": {"type": "preset", "name": "sand", "base_colour": [0.2, 0.5, 0.3]}}, %s }\n' "$env" "$good_objects" >"$dir/base_colour_ok.json"
+expect base_colour_ok 0
+
 printf '{ "camera": {"position": [0,-4,0], "look_at": [0,0,0]}, "materials": {"m": {"type": "lambert", "albedo": 0.5}}, %s }\n' "$good_objects" >"$dir/no_light.json"
 expect no_light 1 "$dir/no_light.json" "lights" "neither lights nor an environment"
 
