@@ -355,7 +355,7 @@ static soak_status parse_wet(scene_ctx *c, const cJSON *j, const char *path, soa
 typedef struct preset_request {
     const char *name, *liquid, *model; /* liquid, model: NULL when absent */
     double wetness;
-    int has_base;   /* "base_colour" given: the preset's class wets this dry colour */
+    int has_base; /* "base_colour" given: the preset's class wets this dry colour */
     soak_rgb base;
     double m_per_unit; /* the scene's length unit, from the material's "unit_mm" */
 } preset_request;
@@ -390,7 +390,8 @@ static soak_status eval_preset(scene_ctx *c, const char *path, const preset_requ
         soak_wet_input in = soak_wet_input_steady(p, r->wetness);
         soak_preset own = *p;
         if (r->has_base) own.albedo = r->base; /* the model view's dry albedo */
-        st = r->has_base ? soak_wet_params_for_base(p, liq, &in, r->base, &out->w) : soak_wetness_eval(p, liq, &in, &out->w);
+        st = r->has_base ? soak_wet_params_for_base(p, liq, &in, r->base, &out->w)
+                         : soak_wetness_eval(p, liq, &in, &out->w);
         out->kind = p->kind;
         out->ior = p->ior;
         out->n = p->ior_n;
