@@ -534,8 +534,10 @@ static void md_not_traced(FILE *f, const report *r)
                "  BSDF reproduces it, so no directional albedo of the same kind is computed.\n"
                "- Front ends (POV-Ray, Blender Cycles/EEVEE, OSL): their errors against `soak render`\n"
                "  are published by their own tests and READMEs (povray/README.md,\n"
-               "  blender_addon/README.md, osl/); `soak report` does not run them (they need their\n"
-               "  renderers and minutes per image) and this table does not include them.\n"
+               "  blender_addon/README.md, osl/README.md); `soak report` does not run them (they need\n"
+               "  their renderers and minutes per image) and this table does not include them. The\n"
+               "  OSL shaders' table is the output of CI runs: `osl_render_vs_soak` with OSL 1.13.12,\n"
+               "  which CI's set-up (`.ci/run`) provides; a CI run in which it skips fails.\n"
                "- Angular shape: R integrates over the lighting hemisphere; a model with the\n"
                "  right albedo and a wrong lobe shape scores well here (see `soak advise`, which\n"
                "  measures rendered images).\n");
