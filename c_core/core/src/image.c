@@ -13,6 +13,7 @@
 
 #include "image_plugin.h"
 #include "soak/image_check.h"
+#include "soak/input_file.h"
 #include "soak/plugin.h"
 #include "soak/staged.h"
 
@@ -85,25 +86,17 @@ soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t
 {
     if (!path || !img) return SOAK_ERR_NULL;
     img->pixels = NULL;
-    struct stat sb;
-    if (stat(path, &sb) != 0) {
-        if (err && errlen) snprintf(err, errlen, "%s: cannot read image: %s", path, strerror(errno));
-        return SOAK_ERR_IO;
-    }
-    if (!S_ISREG(sb.st_mode)) {
-        if (err && errlen)
-            snprintf(err, errlen, "%s: %s", path,
-                     S_ISDIR(sb.st_mode) ? "is a folder, not an image file"
-                                         : "is not a regular file (a FIFO, socket or device)");
-        return SOAK_ERR_IO;
-    }
+    long long size = 0;
+    soak_status st = soak_input_check(path, SOAK_INPUT_IMAGE, &size, err, errlen);
+    if (st != SOAK_OK) return st;
     /* Headers an image library would allocate from are checked on the bytes
      * first (soak/image_check.h: a 566-byte EXR made OpenEXR allocate 1.7 GB). */
-    soak_status st = soak_image_check_header(path, err, errlen);
+    long long payload = size;
+    st = soak_image_check_header(path, &payload, err, errlen);
     if (st != SOAK_OK) return st;
     const soak_image_plugin *p = image_plugin(path, err, errlen);
     if (!p) return SOAK_ERR_UNSUPPORTED;
-    st = p->read(path, (long long)sb.st_size, img, err, errlen);
+    st = p->read(path, payload, img, err, errlen);
     if (st != SOAK_OK) {
         soak_image_free(img);
         return st;

@@ -11,10 +11,12 @@
 #include "soak/image.h"
 
 typedef struct soak_image_plugin {
-    /* Decodes path (a regular file of file_bytes bytes) into img (channels
-     * capped at 4), refusing from the header what soak/image.h's limits
-     * refuse. Finite values are checked by the caller. */
-    soak_status (*read)(const char *path, long long file_bytes, soak_image *img, char *err, size_t errlen);
+    /* Decodes path (a regular file whose compressed pixel data is
+     * payload_bytes, soak/image_check.h) into img (channels capped at 4)
+     * with the reader its extension names and no other, refusing from the
+     * header what soak/image.h's limits refuse. Finite values are checked
+     * by the caller. */
+    soak_status (*read)(const char *path, long long payload_bytes, soak_image *img, char *err, size_t errlen);
     /* Encodes img in the format of path's extension ext (lower case) into a
      * malloc'ed buffer. opts is never NULL. */
     soak_status (*encode)(const char *path, const char *ext, const soak_image *img, const soak_image_write_opts *opts,

@@ -31,6 +31,7 @@
 #include <unistd.h>
 
 #include "mesh_import.h"
+#include "soak/input_file.h"
 
 /* The time limit is the last line of defence after mesh_check.c: a fixed
  * start-up allowance plus one second per MiB (Assimp reads ~10-50 MiB/s in a
@@ -213,16 +214,8 @@ static soak_status receive(int fd, pid_t pid, double deadline, double limit, con
 static soak_status open_and_check(const char *path, long long *size, char *err, size_t errlen)
 {
     struct stat sb;
-    if (stat(path, &sb) != 0) {
-        if (err && errlen) snprintf(err, errlen, "%s: cannot open mesh file (%s)", path, strerror(errno));
-        return SOAK_ERR_IO;
-    }
-    if (!S_ISREG(sb.st_mode)) {
-        if (err && errlen)
-            snprintf(err, errlen, "%s: %s", path,
-                     S_ISDIR(sb.st_mode) ? "is a folder, not a mesh file" : "is not a regular file (a FIFO, socket or device)");
-        return SOAK_ERR_IO;
-    }
+    soak_status st = soak_input_check(path, SOAK_INPUT_MESH, NULL, err, errlen);
+    if (st != SOAK_OK) return st;
     if (!soak_mesh_format_ok(path)) {
         if (err && errlen)
             snprintf(err, errlen, "%s: unsupported mesh format (use .obj, .ply, .stl, .off, .gltf or .glb)", path);
@@ -235,7 +228,6 @@ static soak_status open_and_check(const char *path, long long *size, char *err, 
         if (fd >= 0) close(fd);
         return SOAK_ERR_IO;
     }
-    soak_status st = SOAK_OK;
     if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
         if (err && errlen) snprintf(err, errlen, "%s: is not a regular file", path);
         st = SOAK_ERR_IO;
