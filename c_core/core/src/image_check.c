@@ -14,6 +14,7 @@
 #include <sys/stat.h>
 
 #include "soak/image.h"
+#include "soak/input_file.h"
 #include "image_check_png.h"
 
 #define EXR_TILED 0x200u
@@ -371,8 +372,8 @@ soak_status soak_image_check_header(const char *path, long long *payload, char *
         st = check_stream(f, path, (long long)sb.st_size, payload, err, errlen);
         /* The holes of a sparse file hold no data: only allocated blocks
          * count as compressed pixels. */
-        long long stored = (long long)sb.st_blocks * 512;
-        if (sb.st_blocks > 0 && stored < *payload) *payload = stored;
+        long long stored = soak_input_stored_bytes((long long)sb.st_size, (long long)sb.st_blocks);
+        if (stored < *payload) *payload = stored;
     }
     fclose(f);
     if (st != SOAK_OK && err && errlen) soak_message_printable(err);

@@ -49,6 +49,12 @@ long long soak_input_cap(soak_input_kind kind)
     return (long long)(mib * 1048576.0);
 }
 
+long long soak_input_stored_bytes(long long size, long long blocks)
+{
+    long long stored = blocks * 512;
+    return size > 65536 && stored >= 0 && stored < size ? stored : size;
+}
+
 static soak_status say(char *err, size_t errlen, soak_status st, const char *fmt, const char *path, const char *what,
                        const char *detail)
 {

@@ -47,6 +47,12 @@ soak_status soak_input_check(const char *path, soak_input_kind kind, long long *
 soak_status soak_input_check_part(const char *path, soak_input_kind kind, const char *role, long long *total,
                                   char *err, size_t errlen);
 
+/* Bytes of a file of size bytes and blocks 512-byte blocks that hold data:
+ * a sparse file's holes do not (its zeros are no compressed pixels and no
+ * mesh). Files up to 64 KiB count whole (some file systems store small
+ * files inline, without blocks). */
+long long soak_input_stored_bytes(long long size, long long blocks);
+
 /* Reads the whole of path into a malloc'ed buffer with a terminating zero
  * byte (*text, *n bytes before it), after soak_input_check. SOAK_ERR_NOMEM
  * with a message when the buffer cannot be allocated, SOAK_ERR_IO on a read
