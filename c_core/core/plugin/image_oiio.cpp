@@ -285,11 +285,32 @@ static soak_status write_tx(const char *tmp, const std::string &path, const soak
     return SOAK_OK;
 }
 
+soak_status probe_image(const char *path, int *width, int *height, int *channels, char *err, size_t errlen)
+{
+    auto in = open_named_reader(path, err, errlen);
+    if (!in) return SOAK_ERR_IO;
+    const ImageSpec &spec = in->spec();
+    *width = spec.width;
+    *height = spec.height;
+    *channels = spec.nchannels < 4 ? spec.nchannels : 4;
+    return SOAK_OK;
+}
+
 // The table's entries: C++ exceptions (allocation failures) become status codes.
 soak_status plugin_read(const char *path, long long payload_bytes, soak_image *img, char *err, size_t errlen)
 {
     try {
         return read_image(path, payload_bytes, img, err, errlen);
+    } catch (const std::exception &e) {
+        set_err(err, errlen, std::string(path) + ": cannot read image: " + e.what());
+        return SOAK_ERR_NOMEM;
+    }
+}
+
+soak_status plugin_probe(const char *path, int *width, int *height, int *channels, char *err, size_t errlen)
+{
+    try {
+        return probe_image(path, width, height, channels, err, errlen);
     } catch (const std::exception &e) {
         set_err(err, errlen, std::string(path) + ": cannot read image: " + e.what());
         return SOAK_ERR_NOMEM;
@@ -319,5 +340,5 @@ soak_status plugin_write_tx(const char *tmp, const char *path, const soak_image 
 
 } // namespace
 
-extern "C" __attribute__((visibility("default"))) const soak_image_plugin soak_image_plugin_v1 = {
-    plugin_read, plugin_encode, plugin_write_tx};
+extern "C" __attribute__((visibility("default"))) const soak_image_plugin soak_image_plugin_v2 = {
+    plugin_read, plugin_probe, plugin_encode, plugin_write_tx};

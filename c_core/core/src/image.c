@@ -106,6 +106,20 @@ soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t
     return st;
 }
 
+soak_status soak_image_probe(const char *path, soak_image_info *info, char *err, size_t errlen)
+{
+    if (!path || !info) return SOAK_ERR_NULL;
+    long long size = 0;
+    soak_status st = soak_input_check(path, SOAK_INPUT_IMAGE, &size, err, errlen);
+    if (st != SOAK_OK) return st;
+    info->payload_bytes = size;
+    st = soak_image_check_header(path, &info->payload_bytes, err, errlen);
+    if (st != SOAK_OK) return st;
+    const soak_image_plugin *p = image_plugin(path, err, errlen);
+    if (!p) return SOAK_ERR_UNSUPPORTED;
+    return p->probe(path, &info->width, &info->height, &info->channels, err, errlen);
+}
+
 /* path's extension in lower case ("" when it has none). */
 static void extension_of(const char *path, char *ext, size_t n)
 {

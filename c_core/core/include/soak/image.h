@@ -63,6 +63,31 @@ void soak_image_free(soak_image *img);
  * extension names (soak/image_check.h): no other reader is tried. */
 soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t errlen);
 
+/* What soak_image_read would decode, from the file's checks and header
+ * alone (no pixels): width, height, channels (capped at 4) and the bytes of
+ * compressed pixel data (soak/image_check.h), after the same input policy
+ * and format checks. A command sizes its working memory from it before it
+ * reads the image (soak_memory_check). */
+typedef struct soak_image_info {
+    int width, height, channels;
+    long long payload_bytes;
+} soak_image_info;
+soak_status soak_image_probe(const char *path, soak_image_info *info, char *err, size_t errlen);
+
+/* Memory a command may use for its working buffers, given the bytes of
+ * compressed data its inputs hold: SOAK_MAX_MEMORY_MB when set (MiB, in
+ * [64, 1e7]), else max(SOAK_MEMORY_FREE_BYTES, SOAK_MEMORY_RATIO x
+ * input_bytes), at most half the machine's memory. A small file cannot
+ * make a command allocate gigabytes (a 1.16 MB PNG made bake drying take
+ * 5.6 GB); a large real input earns a large budget. */
+#define SOAK_MEMORY_FREE_BYTES (1024.0 * 1024.0 * 1024.0)
+#define SOAK_MEMORY_RATIO 256.0
+double soak_memory_budget(long long input_bytes);
+/* SOAK_ERR_ARG with "<what> needs about N MiB ... the budget is M MiB
+ * (SOAK_MAX_MEMORY_MB raises it)" when estimate_bytes exceeds the budget. */
+soak_status soak_memory_check(const char *what, double estimate_bytes, long long input_bytes, char *err,
+                              size_t errlen);
+
 /* Writes by extension (.exr .png .tif/.tiff .jpg .hdr ...). Linear PNGs carry
  * a gAMA 1.0 chunk so POV-Ray and viewers do not sRGB-decode them; sRGB-toned
  * PNGs carry the sRGB chunk. opts may be NULL (linear, auto type). */
