@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 
 #include "image_plugin.h"
+#include "stderr_capture.h"
 #include "soak/image_check.h"
 #include "soak/input_file.h"
 #include "soak/plugin.h"
@@ -82,6 +83,16 @@ static soak_status check_finite(const char *path, const soak_image *img, char *e
     return SOAK_OK;
 }
 
+/* One line: OpenImageIO's messages span lines ("...\nPNG library error"). */
+static void one_line(char *err, size_t errlen)
+{
+    if (!err || !errlen) return;
+    size_t n = strnlen(err, errlen - 1);
+    while (n > 0 && (err[n - 1] == '\n' || err[n - 1] == ' ')) err[--n] = '\0';
+    for (char *c = err; *c; ++c)
+        if (*c == '\n') *c = ';';
+}
+
 soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t errlen)
 {
     if (!path || !img) return SOAK_ERR_NULL;
@@ -96,8 +107,12 @@ soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t
     if (st != SOAK_OK) return st;
     const soak_image_plugin *p = image_plugin(path, err, errlen);
     if (!p) return SOAK_ERR_UNSUPPORTED;
+    soak_stderr_capture quiet;
+    soak_stderr_capture_begin(&quiet);
     st = p->read(path, payload, img, err, errlen);
+    soak_stderr_capture_end(&quiet);
     if (st != SOAK_OK) {
+        one_line(err, errlen);
         soak_image_free(img);
         return st;
     }
@@ -117,7 +132,12 @@ soak_status soak_image_probe(const char *path, soak_image_info *info, char *err,
     if (st != SOAK_OK) return st;
     const soak_image_plugin *p = image_plugin(path, err, errlen);
     if (!p) return SOAK_ERR_UNSUPPORTED;
-    return p->probe(path, &info->width, &info->height, &info->channels, err, errlen);
+    soak_stderr_capture quiet;
+    soak_stderr_capture_begin(&quiet);
+    st = p->probe(path, &info->width, &info->height, &info->channels, err, errlen);
+    soak_stderr_capture_end(&quiet);
+    if (st != SOAK_OK) one_line(err, errlen);
+    return st;
 }
 
 /* path's extension in lower case ("" when it has none). */
