@@ -746,8 +746,14 @@ soak_status soak_scene_load(const char *path, soak_scene *scene, char *err, size
     /* soak/input_file.h: a regular file within SOAK_MAX_SCENE_MB, read
      * without growing; every failure names the file. */
     char *text = NULL;
-    soak_status rst = soak_input_read(path, SOAK_INPUT_SCENE, &text, NULL, err, errlen);
+    size_t n = 0;
+    soak_status rst = soak_input_read(path, SOAK_INPUT_SCENE, &text, &n, err, errlen);
     if (rst != SOAK_OK) return rst;
+    if (strlen(text) != n) { /* the parser would stop there and ignore the rest */
+        if (err && errlen) snprintf(err, errlen, "%s: contains a NUL byte at offset %zu", path, strlen(text));
+        free(text);
+        return SOAK_ERR_PARSE;
+    }
     char dir[1024];
     snprintf(dir, sizeof dir, "%s", path);
     char *slash = strrchr(dir, '/');
