@@ -103,7 +103,7 @@ static soak_status open_input(const char *path, soak_input_kind kind, const char
     const char *what = role ? role : info(kind)->name;
     struct stat sb;
     if (stat(path, &sb) != 0)
-        return say(err, errlen, SOAK_ERR_IO, "%s: cannot read this %s (%s)", path, what, strerror(errno));
+        return say(err, errlen, SOAK_ERR_IO, "%s: cannot open this %s (%s)", path, what, strerror(errno));
     long long before = total ? *total : 0;
     soak_status st = judge(path, &sb, kind, role, total, err, errlen);
     if (st != SOAK_OK) return st;

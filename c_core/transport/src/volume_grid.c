@@ -307,6 +307,9 @@ static soak_status read_grid(const char *json_path, soak_volume *v, char *err, s
     soak_status st = read_header(json_path, &h, err, errlen);
     if (st != SOAK_OK) return st;
     FILE *f = NULL;
+    size_t voxels = (size_t)h.dims[0] * (size_t)h.dims[1] * (size_t)h.dims[2];
+    if (voxels > ((size_t)1 << 31) / SOAK_VOL_NCHANNELS) /* soak_volume_alloc's limit, before the payload is opened */
+        return alloc_grid(&h, json_path, v, err, errlen);
     st = open_payload(&h, json_path, &f, err, errlen);
     if (st == SOAK_OK) st = alloc_grid(&h, json_path, v, err, errlen);
     if (st == SOAK_OK) st = read_channels(f, &h, v, err, errlen);
