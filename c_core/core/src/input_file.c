@@ -18,7 +18,7 @@ typedef struct kind_info {
 static const kind_info kinds[SOAK_INPUT_KINDS] = {
     {"scene file", "SOAK_MAX_SCENE_MB", 16},   {"presets file", "SOAK_MAX_PRESETS_MB", 16},
     {"image", "SOAK_MAX_IMAGE_MB", 2048},      {"mesh file", "SOAK_MAX_MESH_MB", 2048},
-    {"volume file", "SOAK_MAX_VOLUME_MB", 4096},
+    {"volume file", "SOAK_MAX_VOLUME_MB", 8192},
 };
 
 static const kind_info *info(soak_input_kind kind)

@@ -24,7 +24,7 @@ typedef enum soak_input_kind {
     SOAK_INPUT_PRESETS, /* materials.json (--materials, SOAK_MATERIALS): 16 MiB, SOAK_MAX_PRESETS_MB */
     SOAK_INPUT_IMAGE,   /* maps, masks, environment images: 2048 MiB, SOAK_MAX_IMAGE_MB */
     SOAK_INPUT_MESH,    /* a mesh with every file it names (glTF buffers, OBJ materials): 2048 MiB, SOAK_MAX_MESH_MB */
-    SOAK_INPUT_VOLUME,  /* df3, grid payloads, OpenVDB: 4096 MiB, SOAK_MAX_VOLUME_MB */
+    SOAK_INPUT_VOLUME,  /* df3, grid payloads, OpenVDB: 8192 MiB (a grid at the voxel limit), SOAK_MAX_VOLUME_MB */
     SOAK_INPUT_KINDS
 } soak_input_kind;
 
