@@ -743,6 +743,7 @@ soak_status soak_scene_load(const char *path, soak_scene *scene, char *err, size
 {
     if (!path || !scene) return SOAK_ERR_NULL;
     memset(scene, 0, sizeof *scene);
+    if (err && errlen) err[0] = '\0';
     /* soak/input_file.h: a regular file within SOAK_MAX_SCENE_MB, read
      * without growing; every failure names the file. */
     char *text = NULL;
@@ -761,6 +762,8 @@ soak_status soak_scene_load(const char *path, soak_scene *scene, char *err, size
     else snprintf(dir, sizeof dir, ".");
     soak_status st = soak_scene_parse(text, path, dir, scene, err, errlen);
     free(text);
+    if (st != SOAK_OK && err && errlen && !err[0]) /* every failure explains itself, even out of memory */
+        snprintf(err, errlen, "%s: %s", path, soak_status_str(st));
     return st;
 }
 
