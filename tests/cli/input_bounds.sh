@@ -67,6 +67,15 @@ bounded "scene 2 GiB sparse" "sparse\.json: this scene file is 2147483648 bytes;
 bounded "presets /dev/zero" "/dev/zero: cannot read this presets file: it is a device" -- "$SOAK" materials --materials /dev/zero
 bounded "presets 2 GiB sparse" "sparse\.json: this presets file is 2147483648 bytes; the limit for a presets file is 16 MiB \(SOAK_MAX_PRESETS_MB" \
   -- "$SOAK" materials --materials "$D/sparse.json"
+# The same limit and message in every command that reads the kind.
+bounded "scene FIFO: advise" "fifo\.json: cannot read this scene file: it is a FIFO \(pipe\), not a regular file" \
+  -- "$SOAK" advise "$D/fifo.json" --tol 0.1
+mkfifo "$D/fifo_presets.json"
+for cmd in "materials" "export --target json -o $D/e.json" "albedo --material sand --wetness 1"; do
+  # shellcheck disable=SC2086
+  bounded "presets FIFO: ${cmd%% *}" "fifo_presets\.json: cannot read this presets file: it is a FIFO \(pipe\)" \
+    -- "$SOAK" $cmd --materials "$D/fifo_presets.json"
+done
 # Out of memory while reading: raise the cap, lower the address space.
 if [ "$asan" = 1 ]; then skip "ulimit -v cannot be used in a sanitizer build" "scene out of memory"
 else
