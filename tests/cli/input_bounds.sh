@@ -140,6 +140,9 @@ bounded "PNG with corrupt pixel data" "corrupt\.png: truncated or unreadable ima
 bounded "bake drying of an 8192^2 mask of 65 KB" \
   "mask8k\.png: drying a 8192x8192 mask needs about [0-9]+ MiB of working memory; the budget is 1024 MiB .*SOAK_MAX_MEMORY_MB sets it" \
   -- "$SOAK" bake drying "$D/mask8k.png" --time 0.5 -o "$D/o.png"
+bounded "bake combine of two 8192^2 masks" \
+  "mask8k\.png: combining 8192x8192 images needs about [0-9]+ MiB of working memory; the budget is 1024 MiB" \
+  -- "$SOAK" bake combine max "$D/mask8k.png" "$D/mask8k.png" -o "$D/o.png"
 
 # One side limit, one message, every command.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n' >"$D/tri.obj"
