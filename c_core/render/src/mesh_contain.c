@@ -207,16 +207,24 @@ typedef struct reader {
     const char *path;
 } reader;
 
-/* The first line the child wrote to its stderr, printable, or "". */
+/* The first line with a letter the child wrote to its stderr (a
+ * sanitizer's report starts with a line of '='), printable, or "". */
 static void child_said(const reader *r, char *line, size_t n)
 {
+    char buf[4096];
     line[0] = '\0';
     if (r->err_fd < 0 || n < 2) return;
-    ssize_t got = pread(r->err_fd, line, n - 1, 0);
+    ssize_t got = pread(r->err_fd, buf, sizeof buf - 1, 0);
     if (got <= 0) return;
-    line[got] = '\0';
-    char *nl = strchr(line, '\n');
-    if (nl) *nl = '\0';
+    buf[got] = '\0';
+    for (char *at = buf, *nl; at && *at; at = nl ? nl + 1 : NULL) {
+        nl = strchr(at, '\n');
+        if (nl) *nl = '\0';
+        if (strpbrk(at, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz")) {
+            snprintf(line, n, "%.*s", (int)(n - 1), at);
+            break;
+        }
+    }
     soak_message_printable(line);
 }
 
