@@ -2,6 +2,7 @@
 #define _GNU_SOURCE
 #include "stderr_capture.h"
 
+#include <pthread.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/mman.h>
@@ -9,16 +10,21 @@
 
 #define CAPTURE_KEEP 65536 /* bytes scanned for sanitizer reports */
 
+/* stderr is one per process: captures from several threads take turns (a
+ * second begin would save the first one's memory file as "the original"). */
+static pthread_mutex_t capture_turn = PTHREAD_MUTEX_INITIALIZER;
+
 void soak_stderr_capture_begin(soak_stderr_capture *c)
 {
     c->saved = c->file = -1;
+    pthread_mutex_lock(&capture_turn);
     fflush(stderr);
     int file = memfd_create("soak-library-stderr", MFD_CLOEXEC);
-    if (file < 0) return;
-    int saved = dup(STDERR_FILENO);
+    int saved = file >= 0 ? dup(STDERR_FILENO) : -1;
     if (saved < 0 || dup2(file, STDERR_FILENO) < 0) {
         if (saved >= 0) close(saved);
-        close(file);
+        if (file >= 0) close(file);
+        pthread_mutex_unlock(&capture_turn);
         return;
     }
     c->saved = saved;
@@ -50,4 +56,5 @@ void soak_stderr_capture_end(soak_stderr_capture *c)
     pass_sanitizer_reports(c->file);
     close(c->file);
     c->saved = c->file = -1;
+    pthread_mutex_unlock(&capture_turn);
 }

@@ -2,8 +2,9 @@
  * calls it (libpng's "libpng error: ..." and "PNG read error" lines around
  * soak's own message) goes to a memory file and is dropped; the library's
  * error reaches the user through soak's message. Sanitizer reports are
- * written through. Process-wide: for calls made while no other thread
- * writes to stderr (images are read before a command's parallel work). */
+ * written through. stderr is process-wide: captures take turns (a mutex),
+ * and what another thread writes meanwhile is captured too (soak reads
+ * images before a command's parallel work). */
 #ifndef SOAK_STDERR_CAPTURE_H
 #define SOAK_STDERR_CAPTURE_H
 
