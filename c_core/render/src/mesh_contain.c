@@ -243,6 +243,7 @@ static void child_fate(const reader *r, int timed_out, char *err, size_t errlen)
     child_said(r, said, sizeof said);
     if (said[0]) snprintf(tail, sizeof tail, " (the reader said: %s)", said);
     double peak = (double)ru.ru_maxrss * 1024.0;
+    (void)peak; /* unused in a sanitizer build: no memory limit there */
     if (timed_out == -3)
         snprintf(err, errlen, "%s: mesh import interrupted", r->path);
     else if (timed_out)
