@@ -97,7 +97,19 @@ static soak_status read_input(const combine_job *j, int k, int frame, soak_image
         if (soak_bake_frame_path(p, frame, path, sizeof path) != SOAK_OK) return SOAK_ERR_ARG;
         p = path;
     }
-    soak_status st = soak_image_read(p, img, err, errlen);
+    /* Working memory from the header before decoding: the running result,
+     * this input and their combination (3 images), and the encoding (10
+     * bytes per pixel, as bake drying's estimate). */
+    soak_image_info info;
+    soak_status st = soak_image_probe(p, &info, err, errlen);
+    if (st == SOAK_OK) {
+        char what[4200];
+        snprintf(what, sizeof what, "%s: combining %dx%d images", p, info.width, info.height);
+        double px = (double)info.width * info.height;
+        st = soak_memory_check(what, px * (3.0 * info.channels * sizeof(float) + 10.0), info.payload_bytes, err,
+                               errlen);
+    }
+    if (st == SOAK_OK) st = soak_image_read(p, img, err, errlen);
     if (st != SOAK_OK) return st == SOAK_ERR_ARG ? SOAK_ERR_IO : st;
     if (soak_bake_check_size(img->width, img->height) != SOAK_OK) {
         snprintf(err, errlen, "%s: %dx%d is larger than %d in a direction", p, img->width, img->height,

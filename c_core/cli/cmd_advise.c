@@ -135,7 +135,7 @@ int soak_cmd_advise(int argc, char **argv)
     int rc = parse_args(argc, argv, &a);
     if (rc >= 0) return rc;
     soak_scene scene;
-    char err[4096];
+    char err[4096] = "";
     if (soak_scene_load(a.scene_path, &scene, err, sizeof err) != SOAK_OK) {
         cli_error(CMD, "%s", err);
         return SOAK_EXIT_FAIL;

@@ -254,7 +254,7 @@ static int check_before_writing(const char *cmd, const char *dir, const char *ma
     static const char *const outputs[] = {"albedo_table.csv",      "swatches.png",       "wetmap_turbulence.exr",
                                           "wetmap_turbulence.png", "wetmap_drying_t0.3.png", "wetmap_waves.png",
                                           "render_wet_dry.exr",    "render_wet_dry.png"};
-    char err[4352];
+    char err[4352] = "";
     soak_scene scene;
     soak_status st = soak_scene_load(scene_path, &scene, err, sizeof err);
     if (st != SOAK_OK) {
@@ -292,7 +292,7 @@ int soak_cmd_demo(int argc, char **argv)
     if (rc >= 0) return rc;
     if (!a.materials) a.materials = soak_presets_default_path();
     soak_preset_db *db = NULL;
-    char err[2048];
+    char err[2048] = "";
     if (soak_presets_load(a.materials, &db, err, sizeof err) != SOAK_OK) {
         cli_error(cmd, "%s", err);
         return SOAK_EXIT_FAIL;

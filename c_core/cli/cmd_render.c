@@ -145,7 +145,7 @@ static int parse_args(int argc, char **argv, render_args *a)
  * bit format). Returns -1 to go on, else the exit code. */
 static int check_output(const render_args *a, int *toned)
 {
-    char err[4096];
+    char err[4096] = "";
     if (soak_io_check_output("-o", a->out_path, &a->scene_path, 1, err, sizeof err) != SOAK_OK) {
         cli_error(CMD, "%s (the scene file)", err);
         return SOAK_EXIT_USAGE;
@@ -188,7 +188,7 @@ static soak_status guard_inputs(const render_args *a, const soak_scene *scene, c
  * with nothing to free. */
 static int load_scene(const render_args *a, soak_scene *scene)
 {
-    char err[4096];
+    char err[4096] = "";
     if (soak_scene_load(a->scene_path, scene, err, sizeof err) != SOAK_OK) {
         cli_error(CMD, "%s", err);
         return SOAK_EXIT_FAIL;
@@ -249,7 +249,7 @@ static soak_status trace(const render_args *a, soak_scene *scene, soak_image *im
 
 static soak_status write_image(const render_args *a, soak_image *img, int toned, double exposure)
 {
-    char err[4096];
+    char err[4096] = "";
     soak_image_write_opts wo = {SOAK_TONE_LINEAR, SOAK_PIXEL_FLOAT};
     if (toned) {
         soak_render_expose(img, exposure);

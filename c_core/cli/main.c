@@ -4,6 +4,8 @@
 #include <string.h>
 
 #include "cli.h"
+#include "soak/image.h"
+#include "soak/input_file.h"
 
 static const soak_cli_command commands[] = {
     {"materials", "list the material presets (--json for machine-readable output)", soak_cmd_materials},
@@ -27,6 +29,16 @@ static void usage(FILE *out)
             "Physically based wet materials: models, reference tracer and bakers.\n\n"
             "commands:\n");
     for (int i = 0; i < n_commands; ++i) fprintf(out, "  %-10s %s\n", commands[i].name, commands[i].summary);
+    fprintf(out, "\ninput limits (every command; an environment variable raises each, in MiB):\n");
+    for (int k = 0; k < SOAK_INPUT_KINDS; ++k)
+        fprintf(out, "  %-13s %6lld MiB  %s\n", soak_input_kind_name((soak_input_kind)k),
+                soak_input_cap((soak_input_kind)k) / 1048576, soak_input_kind_env((soak_input_kind)k));
+    fprintf(out,
+            "  a mesh counts with the files it names; its reader's memory: SOAK_MESH_MEMORY_MB, time:\n"
+            "  SOAK_MESH_TIMEOUT (s); working memory of a bake: SOAK_MAX_MEMORY_MB (default the larger\n"
+            "  of 1024 MiB and 256 bytes per byte of compressed input); images: at most %d pixels a\n"
+            "  side and 1024 MiB as float. Inputs must be regular files (README: Outputs and inputs).\n",
+            SOAK_IMAGE_MAX_SIDE);
     fprintf(out, "\nexample:\n  soak albedo --material sand --wetness 1\n");
 }
 

@@ -58,5 +58,5 @@ printf '{"camera": {"position": [0, -4, 0], "look_at": [0, 0, 0]}, "environment"
  "materials": {"w": {"type": "wet", "base": {"type": "medium", "sigma_s": 1, "sigma_a": 0.1, "volume": {"file": "%s"}}}},
  "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "w"}]}\n' "$D/g.json" >"$D/fifo_scene.json"
 expect_exit 1 "grid payload that is a FIFO" -- timeout 60 "$SOAK" render "$D/fifo_scene.json" --width 4 --height 4 --spp 1 -o "$D/o.exr"
-expect_stderr "g\.raw: is not a regular file" "FIFO payload: refused by what it is"
+expect_stderr "g\.raw: cannot read this grid payload named by .*g\.json: it is a FIFO \(pipe\), not a regular file" "FIFO payload: refused by what it is"
 finish

@@ -72,11 +72,11 @@ done
 mkdir -p "$D/folder.obj"
 scene_with "$D/folder.obj" >"$D/folder.json"
 expect_exit 1 "a folder as a mesh" -- "$SOAK" render "$D/folder.json" --width 4 --height 4 --spp 1 -o "$D/o.exr"
-expect_stderr "folder\.obj: is a folder, not a mesh file" "a folder is called a folder"
+expect_stderr "folder\.obj: cannot read this mesh file: it is a folder, not a regular file" "a folder is called a folder"
 rm -f "$D/fifo.obj" && mkfifo "$D/fifo.obj"
 scene_with "$D/fifo.obj" >"$D/fifo.json"
 expect_exit 1 "a FIFO as a mesh (no blocking open)" -- timeout 120 "$SOAK" render "$D/fifo.json" --width 4 --height 4 --spp 1 -o "$D/o.exr"
-expect_stderr "fifo\.obj: is not a regular file" "a FIFO is refused as not a regular file"
+expect_stderr "fifo\.obj: cannot read this mesh file: it is a FIFO \(pipe\), not a regular file" "a FIFO is refused as not a regular file"
 
 # Orphans: a large valid OBJ keeps the reader busy; soak alone is killed
 # while its child runs, and the child must be gone at once.

@@ -21,12 +21,17 @@ grid() {
 }
 printable() { ! LC_ALL=C grep -q '[^[:print:][:space:]]' "$SOAK_TMP/last.err"; }
 
-# 1. dims [4096,4096,4096] over the 320-byte payload: refused by size, at once.
+# 1. dims [4096,4096,4096] over the 320-byte payload: refused by the voxel
+# limit from the header alone, before the payload is opened; dims within
+# the limit over the same payload: refused by size, at once.
 grid big "4096, 4096, 4096"
 cp "$D/vg.raw" "$D/big.raw"
 scene_with "$D/big.json" >"$D/big_scene.json"
 expect_exit 1 "dims 4096^3 over a 320-byte payload" -- "$SOAK" render "$D/big_scene.json" --width 4 --height 4 --spp 1 -o "$D/o.exr"
-expect_stderr "big\.raw: size does not match the header: 320 bytes, but dims 4096x4096x4096 with 10 channels of float32 need 2748779069440" \
+expect_stderr "big\.json: dims: too many voxels" "the header's voxel count is refused first"
+grid big "64, 64, 64"
+expect_exit 1 "dims 64^3 over a 320-byte payload" -- "$SOAK" render "$D/big_scene.json" --width 4 --height 4 --spp 1 -o "$D/o.exr"
+expect_stderr "big\.raw: size does not match the header: 320 bytes, but dims 64x64x64 with 10 channels of float32 need 10485760" \
   "the message names the payload and both sizes"
 printable && ok "the message is printable" || bad "the message holds unprintable bytes"
 

@@ -347,6 +347,13 @@ static soak_status bake_diffusion(const unsigned char *wet, int width, int heigh
     return st;
 }
 
+double soak_drying_peak_bytes(int width, int height, const soak_drying_params *p)
+{
+    const double encode = 4 + 4 + 2; /* output floats, the encoder's float copy, 16-bit samples */
+    double work = 1 + 4 + ((p && p->mode == SOAK_DRYING_DIFFUSION) ? 8 : 8 + 1 + 8);
+    return (double)width * (double)height * (work > encode ? work : encode);
+}
+
 soak_status soak_bake_drying(const soak_image *mask, int width, int height, const soak_drying_params *p,
                              const soak_bake_exec *exec, soak_image *out)
 {

@@ -12,7 +12,9 @@
 #include <sys/stat.h>
 
 #include "image_plugin.h"
+#include "stderr_capture.h"
 #include "soak/image_check.h"
+#include "soak/input_file.h"
 #include "soak/plugin.h"
 #include "soak/staged.h"
 
@@ -81,35 +83,60 @@ static soak_status check_finite(const char *path, const soak_image *img, char *e
     return SOAK_OK;
 }
 
+/* One line: OpenImageIO's messages span lines ("...\nPNG library error"). */
+static void one_line(char *err, size_t errlen)
+{
+    if (!err || !errlen) return;
+    size_t n = strnlen(err, errlen - 1);
+    while (n > 0 && (err[n - 1] == '\n' || err[n - 1] == ' ')) err[--n] = '\0';
+    for (char *c = err; *c; ++c)
+        if (*c == '\n') *c = ';';
+}
+
 soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t errlen)
 {
     if (!path || !img) return SOAK_ERR_NULL;
     img->pixels = NULL;
-    struct stat sb;
-    if (stat(path, &sb) != 0) {
-        if (err && errlen) snprintf(err, errlen, "%s: cannot read image: %s", path, strerror(errno));
-        return SOAK_ERR_IO;
-    }
-    if (!S_ISREG(sb.st_mode)) {
-        if (err && errlen)
-            snprintf(err, errlen, "%s: %s", path,
-                     S_ISDIR(sb.st_mode) ? "is a folder, not an image file"
-                                         : "is not a regular file (a FIFO, socket or device)");
-        return SOAK_ERR_IO;
-    }
+    long long size = 0;
+    soak_status st = soak_input_check(path, SOAK_INPUT_IMAGE, &size, err, errlen);
+    if (st != SOAK_OK) return st;
     /* Headers an image library would allocate from are checked on the bytes
      * first (soak/image_check.h: a 566-byte EXR made OpenEXR allocate 1.7 GB). */
-    soak_status st = soak_image_check_header(path, err, errlen);
+    long long payload = size;
+    st = soak_image_check_header(path, &payload, err, errlen);
     if (st != SOAK_OK) return st;
     const soak_image_plugin *p = image_plugin(path, err, errlen);
     if (!p) return SOAK_ERR_UNSUPPORTED;
-    st = p->read(path, (long long)sb.st_size, img, err, errlen);
+    soak_stderr_capture quiet;
+    soak_stderr_capture_begin(&quiet);
+    st = p->read(path, payload, img, err, errlen);
+    soak_stderr_capture_end(&quiet);
     if (st != SOAK_OK) {
+        one_line(err, errlen);
         soak_image_free(img);
         return st;
     }
     st = check_finite(path, img, err, errlen);
     if (st != SOAK_OK) soak_image_free(img);
+    return st;
+}
+
+soak_status soak_image_probe(const char *path, soak_image_info *info, char *err, size_t errlen)
+{
+    if (!path || !info) return SOAK_ERR_NULL;
+    long long size = 0;
+    soak_status st = soak_input_check(path, SOAK_INPUT_IMAGE, &size, err, errlen);
+    if (st != SOAK_OK) return st;
+    info->payload_bytes = size;
+    st = soak_image_check_header(path, &info->payload_bytes, err, errlen);
+    if (st != SOAK_OK) return st;
+    const soak_image_plugin *p = image_plugin(path, err, errlen);
+    if (!p) return SOAK_ERR_UNSUPPORTED;
+    soak_stderr_capture quiet;
+    soak_stderr_capture_begin(&quiet);
+    st = p->probe(path, &info->width, &info->height, &info->channels, err, errlen);
+    soak_stderr_capture_end(&quiet);
+    if (st != SOAK_OK) one_line(err, errlen);
     return st;
 }
 

@@ -1,5 +1,5 @@
 /* The table libsoak_image.so (core/plugin/image_oiio.cpp, OpenImageIO)
- * exports as soak_image_plugin_v1; image.c calls it after the checks that
+ * exports as soak_image_plugin_v2; image.c calls it after the checks that
  * need no image library. The module calls nothing of libsoak: pixels it
  * returns are calloc'ed (soak_image_free frees them), encoded bytes
  * malloc'ed (the caller frees them). No C++ exception leaves it. */
@@ -11,10 +11,15 @@
 #include "soak/image.h"
 
 typedef struct soak_image_plugin {
-    /* Decodes path (a regular file of file_bytes bytes) into img (channels
-     * capped at 4), refusing from the header what soak/image.h's limits
-     * refuse. Finite values are checked by the caller. */
-    soak_status (*read)(const char *path, long long file_bytes, soak_image *img, char *err, size_t errlen);
+    /* Decodes path (a regular file whose compressed pixel data is
+     * payload_bytes, soak/image_check.h) into img (channels capped at 4)
+     * with the reader its extension names and no other, refusing from the
+     * header what soak/image.h's limits refuse. Finite values are checked
+     * by the caller. */
+    soak_status (*read)(const char *path, long long payload_bytes, soak_image *img, char *err, size_t errlen);
+    /* The size and channels (capped at 4) the header of path declares,
+     * through the same reader as read, without decoding pixels. */
+    soak_status (*probe)(const char *path, int *width, int *height, int *channels, char *err, size_t errlen);
     /* Encodes img in the format of path's extension ext (lower case) into a
      * malloc'ed buffer. opts is never NULL. */
     soak_status (*encode)(const char *path, const char *ext, const soak_image *img, const soak_image_write_opts *opts,
@@ -25,6 +30,6 @@ typedef struct soak_image_plugin {
 } soak_image_plugin;
 
 #define SOAK_IMAGE_PLUGIN_FILE "libsoak_image.so"
-#define SOAK_IMAGE_PLUGIN_SYMBOL "soak_image_plugin_v1"
+#define SOAK_IMAGE_PLUGIN_SYMBOL "soak_image_plugin_v2"
 
 #endif

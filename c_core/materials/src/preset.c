@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "soak/fresnel.h"
+#include "soak/input_file.h"
 #include "soak/units.h"
 #include "soak/vdhulst.h"
 
@@ -17,7 +18,6 @@
 #define SOAK_DATA_DIR "c_core/data"
 #endif
 
-#define MAX_FILE_BYTES (16L * 1024 * 1024)
 #define MAX_ENTRIES 1024
 #define PATH_MAX_LEN 160
 /* A conductor's albedo must equal F0(n, k) to this tolerance per channel. */
@@ -572,45 +572,11 @@ static soak_status parse_root(ctx *c, const cJSON *root)
     return SOAK_OK;
 }
 
+/* soak/input_file.h: a regular file within SOAK_MAX_PRESETS_MB, read
+ * without growing; the message names the file. */
 static soak_status read_file(ctx *c, const char *path, char **text, size_t *len)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) return fail(c, SOAK_ERR_IO, "", "cannot open for reading");
-    char *buf = NULL;
-    size_t n = 0, cap = 0;
-    soak_status st = SOAK_OK;
-    for (;;) {
-        if (cap - n < 65536) {
-            cap = cap ? 2 * cap : 65536;
-            if ((long)cap > MAX_FILE_BYTES + 65536L) {
-                st = fail(c, SOAK_ERR_IO, "", "larger than %ld bytes", MAX_FILE_BYTES);
-                break;
-            }
-            char *grown = realloc(buf, cap + 1);
-            if (!grown) {
-                st = fail(c, SOAK_ERR_NOMEM, "", "out of memory");
-                break;
-            }
-            buf = grown;
-        }
-        size_t got = fread(buf + n, 1, cap - n, f);
-        n += got;
-        if (got == 0) {
-            if (ferror(f)) st = fail(c, SOAK_ERR_IO, "", "read error");
-            break;
-        }
-    }
-    fclose(f);
-    if (st != SOAK_OK) {
-        free(buf);
-        return st;
-    }
-    if (!buf) buf = calloc(1, 1);
-    if (!buf) return fail(c, SOAK_ERR_NOMEM, "", "out of memory");
-    buf[n] = '\0';
-    *text = buf;
-    *len = n;
-    return SOAK_OK;
+    return soak_input_read(path, SOAK_INPUT_PRESETS, text, len, c->err, c->errlen);
 }
 
 void soak_presets_free(soak_preset_db *db)

@@ -21,6 +21,15 @@ soak_status soak_mesh_validate(soak_mesh *m, const char *path, char *err, size_t
  * open mesh file of size bytes, by path's extension (mesh_check.c): refuses
  * a file whose header is incomplete or claims more than the file holds. */
 soak_status soak_mesh_check_file(const char *path, FILE *f, long long size, char *err, size_t errlen);
+/* A mesh file and the files it names (glTF buffers, OBJ material
+ * libraries, mesh_external.c). */
+typedef struct soak_mesh_inputs {
+    long long total_bytes;  /* their sizes, counted against SOAK_MAX_MESH_MB */
+    long long stored_bytes; /* their bytes that hold data (not a sparse file's holes): sizes the reader's limits */
+} soak_mesh_inputs;
+/* Checks every file the mesh at path names against the input policy
+ * (soak/input_file.h) and adds up their sizes. */
+soak_status soak_mesh_external_files(const char *path, soak_mesh_inputs *in, char *err, size_t errlen);
 /* 1 when path's extension is a mesh format Soak accepts (and fuzzes). */
 int soak_mesh_format_ok(const char *path);
 

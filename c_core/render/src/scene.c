@@ -2,6 +2,7 @@
  * environment, lights and objects. Materials and wetness: scene_material.c. */
 #define _POSIX_C_SOURCE 200809L
 #include "soak/scene.h"
+#include "soak/input_file.h"
 #include "soak/render.h"
 
 #include <errno.h>
@@ -742,34 +743,18 @@ soak_status soak_scene_load(const char *path, soak_scene *scene, char *err, size
 {
     if (!path || !scene) return SOAK_ERR_NULL;
     memset(scene, 0, sizeof *scene);
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        if (err && errlen) snprintf(err, errlen, "%s: cannot open scene file (%s)", path, strerror(errno));
-        return SOAK_ERR_IO;
-    }
-    size_t cap = 1 << 16, n = 0;
-    char *text = malloc(cap);
-    while (text) {
-        n += fread(text + n, 1, cap - n - 1, f);
-        if (n < cap - 1) break;
-        char *t = realloc(text, cap * 2);
-        if (!t) {
-            free(text);
-            text = NULL;
-            break;
-        }
-        text = t;
-        cap *= 2;
-    }
-    int bad = ferror(f);
-    fclose(f);
-    if (!text) return SOAK_ERR_NOMEM;
-    if (bad) {
+    if (err && errlen) err[0] = '\0';
+    /* soak/input_file.h: a regular file within SOAK_MAX_SCENE_MB, read
+     * without growing; every failure names the file. */
+    char *text = NULL;
+    size_t n = 0;
+    soak_status rst = soak_input_read(path, SOAK_INPUT_SCENE, &text, &n, err, errlen);
+    if (rst != SOAK_OK) return rst;
+    if (strlen(text) != n) { /* the parser would stop there and ignore the rest */
+        if (err && errlen) snprintf(err, errlen, "%s: contains a NUL byte at offset %zu", path, strlen(text));
         free(text);
-        if (err && errlen) snprintf(err, errlen, "%s: read error", path);
-        return SOAK_ERR_IO;
+        return SOAK_ERR_PARSE;
     }
-    text[n] = '\0';
     char dir[1024];
     snprintf(dir, sizeof dir, "%s", path);
     char *slash = strrchr(dir, '/');
@@ -777,6 +762,8 @@ soak_status soak_scene_load(const char *path, soak_scene *scene, char *err, size
     else snprintf(dir, sizeof dir, ".");
     soak_status st = soak_scene_parse(text, path, dir, scene, err, errlen);
     free(text);
+    if (st != SOAK_OK && err && errlen && !err[0]) /* every failure explains itself, even out of memory */
+        snprintf(err, errlen, "%s: %s", path, soak_status_str(st));
     return st;
 }
 

@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 
 #include "soak/volume.h"
+#include "soak/input_file.h"
 
 static soak_status fail(char *err, size_t errlen, soak_status st, const char *path, const char *fmt, ...)
 {
@@ -29,19 +30,9 @@ static soak_status fail(char *err, size_t errlen, soak_status st, const char *pa
 /* Opens path for reading if it is a regular file; its size in *size. */
 static FILE *open_regular(const char *path, long long *size, char *err, size_t errlen)
 {
-    struct stat sb;
-    if (stat(path, &sb) != 0) {
-        fail(err, errlen, SOAK_ERR_IO, path, "cannot read: %s", strerror(errno));
-        return NULL;
-    }
-    if (!S_ISREG(sb.st_mode)) {
-        fail(err, errlen, SOAK_ERR_IO, path, "%s",
-             S_ISDIR(sb.st_mode) ? "is a folder, not a volume file" : "is not a regular file (a FIFO, socket or device)");
-        return NULL;
-    }
+    if (soak_input_check(path, SOAK_INPUT_VOLUME, size, err, errlen) != SOAK_OK) return NULL;
     FILE *f = fopen(path, "rb");
     if (!f) fail(err, errlen, SOAK_ERR_IO, path, "cannot read: %s", strerror(errno));
-    *size = (long long)sb.st_size;
     return f;
 }
 

@@ -11,6 +11,7 @@
 #include <cjson/cJSON.h>
 
 #include "soak/volume.h"
+#include "soak/input_file.h"
 #include "soak/staged_files.h"
 
 static void set_err(char *err, size_t errlen, const char *fmt, const char *a, const char *b)
@@ -121,37 +122,11 @@ soak_status soak_volume_write_grid(const soak_volume *v, const char *prefix, con
     return soak_staged_commit(&stage, err, errlen);
 }
 
+/* soak/input_file.h: a grid header is read like a scene file. */
 static char *read_text(const char *path, char *err, size_t errlen)
 {
-    struct stat sb;
-    if (stat(path, &sb) == 0 && !S_ISREG(sb.st_mode)) {
-        set_err(err, errlen, "%s: %s", path, S_ISDIR(sb.st_mode) ? "is a folder, not a grid header"
-                                                                  : "is not a regular file (a FIFO, socket or device)");
-        return NULL;
-    }
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
-        return NULL;
-    }
-    size_t cap = 4096, len = 0;
-    char *s = malloc(cap);
-    size_t got;
-    while (s && (got = fread(s + len, 1, cap - len - 1, f)) > 0) {
-        len += got;
-        if (len + 1 == cap) {
-            if (cap > (64u << 20)) break; /* a header is never this large */
-            char *t = realloc(s, cap *= 2);
-            if (!t) {
-                free(s);
-                s = NULL;
-            } else
-                s = t;
-        }
-    }
-    fclose(f);
-    if (s) s[len] = '\0';
-    return s;
+    char *text = NULL;
+    return soak_input_read(path, SOAK_INPUT_SCENE, &text, NULL, err, errlen) == SOAK_OK ? text : NULL;
 }
 
 static int json_int3(const cJSON *a, int lo, int hi, int out[3])
@@ -261,15 +236,11 @@ static soak_status read_header(const char *json_path, grid_header *h, char *err,
 static soak_status open_payload(const grid_header *h, const char *json_path, FILE **f, char *err, size_t errlen)
 {
     const char *raw = h->raw;
-    struct stat sb;
-    if (stat(raw, &sb) == 0 && !S_ISREG(sb.st_mode)) {
-        if (err && errlen)
-            snprintf(err, errlen, "%s: %s (the payload named by %s)", raw,
-                     S_ISDIR(sb.st_mode) ? "is a folder, not the grid's payload"
-                                         : "is not a regular file (a FIFO, socket or device)",
-                     json_path);
-        return SOAK_ERR_IO;
-    }
+    char role[1200];
+    snprintf(role, sizeof role, "grid payload named by %s", json_path);
+    long long total = 0;
+    soak_status st = soak_input_check_part(raw, SOAK_INPUT_VOLUME, role, &total, err, errlen);
+    if (st != SOAK_OK) return st;
     *f = fopen(raw, "rb");
     if (!*f) {
         /* The payload's name comes from the header: name both. */
@@ -336,6 +307,9 @@ static soak_status read_grid(const char *json_path, soak_volume *v, char *err, s
     soak_status st = read_header(json_path, &h, err, errlen);
     if (st != SOAK_OK) return st;
     FILE *f = NULL;
+    size_t voxels = (size_t)h.dims[0] * (size_t)h.dims[1] * (size_t)h.dims[2];
+    if (voxels > ((size_t)1 << 31) / SOAK_VOL_NCHANNELS) /* soak_volume_alloc's limit, before the payload is opened */
+        return alloc_grid(&h, json_path, v, err, errlen);
     st = open_payload(&h, json_path, &f, err, errlen);
     if (st == SOAK_OK) st = alloc_grid(&h, json_path, v, err, errlen);
     if (st == SOAK_OK) st = read_channels(f, &h, v, err, errlen);

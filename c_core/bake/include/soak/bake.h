@@ -223,6 +223,14 @@ typedef struct soak_drying_params {
     int steps;               /* implicit time steps, 1..100000 */
 } soak_drying_params;
 
+/* Peak bytes of one drying frame of width x height, counted from the
+ * buffers bake_drying.c holds at once, per pixel: wet flags 1 and the float
+ * output 4, with (schedule) start times 8, dry flags 1 and squared
+ * distances 8 or (diffusion) the field 8; then the encoding, the output 4,
+ * a float copy 4 and 2-byte samples; the mask itself not counted (measured
+ * 8192^2 schedule: 21 bytes per pixel with the mask, estimated 26). */
+double soak_drying_peak_bytes(int width, int height, const soak_drying_params *p);
+
 /* schedule, threshold 0.5, time 0.5, t_fill 0.2, no noise (frequency 8, 4
  * octaves), seed 0, drying_time 1, diffusion_length 8, steps 32. */
 void soak_drying_defaults(soak_drying_params *p);

@@ -39,9 +39,13 @@ void soak_image_free(soak_image *img);
 /* Largest image soak_image_read decodes: 1 GiB of float pixels (e.g.
  * 16384 x 16384 x 1, 8192 x 8192 x 4). */
 #define SOAK_IMAGE_MAX_BYTES (1024.0 * 1024.0 * 1024.0)
+/* Largest width or height of any image soak reads or makes: one limit for
+ * every command (a 65536 x 1 map was read by render and refused by bake). */
+#define SOAK_IMAGE_MAX_SIDE 16384
 /* Compression-ratio rule: above SOAK_IMAGE_FREE_BYTES of float pixels, an
  * image may claim at most SOAK_IMAGE_MAX_RATIO float bytes per byte of its
- * file (deflate's own limit is 1032:1 on the packed samples; 1024 float
+ * compressed pixel data (PNG: the IDAT chunks; OpenEXR: the offset tables
+ * and chunks after the headers; other formats: the whole file) (deflate's own limit is 1032:1 on the packed samples; 1024 float
  * bytes per file byte is 256:1 on 8-bit samples, 32:1 on 1-bit ones), so a
  * small file cannot make the reader allocate and decode gigabytes (a 249 KB
  * PNG claiming 16000 x 16000). Below the floor any ratio is allowed
@@ -53,8 +57,36 @@ void soak_image_free(soak_image *img);
 /* Reads any format OIIO reads, converting to float. err gets a message
  * naming the file on failure. A NaN or infinite pixel is an error
  * (SOAK_ERR_ARG naming the pixel), as is an image above SOAK_IMAGE_MAX_BYTES
- * (refused from its header, before any decoding). */
+ * or wider or taller than SOAK_IMAGE_MAX_SIDE (refused from its header,
+ * before any decoding). The file is checked first (soak/input_file.h:
+ * a regular file within SOAK_MAX_IMAGE_MB) and must be of the format its
+ * extension names (soak/image_check.h): no other reader is tried. */
 soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t errlen);
+
+/* What soak_image_read would decode, from the file's checks and header
+ * alone (no pixels): width, height, channels (capped at 4) and the bytes of
+ * compressed pixel data (soak/image_check.h), after the same input policy
+ * and format checks. A command sizes its working memory from it before it
+ * reads the image (soak_memory_check). */
+typedef struct soak_image_info {
+    int width, height, channels;
+    long long payload_bytes;
+} soak_image_info;
+soak_status soak_image_probe(const char *path, soak_image_info *info, char *err, size_t errlen);
+
+/* Memory a command may use for its working buffers, given the bytes of
+ * compressed data its inputs hold: SOAK_MAX_MEMORY_MB when set (MiB, in
+ * [64, 1e7]), else max(SOAK_MEMORY_FREE_BYTES, SOAK_MEMORY_RATIO x
+ * input_bytes), at most half the machine's memory. A small file cannot
+ * make a command allocate gigabytes (a 1.16 MB PNG made bake drying take
+ * 5.6 GB); a large real input earns a large budget. */
+#define SOAK_MEMORY_FREE_BYTES (1024.0 * 1024.0 * 1024.0)
+#define SOAK_MEMORY_RATIO 256.0
+double soak_memory_budget(long long input_bytes);
+/* SOAK_ERR_ARG with "<what> needs about N MiB ... the budget is M MiB
+ * (SOAK_MAX_MEMORY_MB raises it)" when estimate_bytes exceeds the budget. */
+soak_status soak_memory_check(const char *what, double estimate_bytes, long long input_bytes, char *err,
+                              size_t errlen);
 
 /* Writes by extension (.exr .png .tif/.tiff .jpg .hdr ...). Linear PNGs carry
  * a gAMA 1.0 chunk so POV-Ray and viewers do not sRGB-decode them; sRGB-toned

@@ -15,9 +15,17 @@
  *    an 8-byte chunk header);
  *  - uncompressed files hold every sample; compressed ones obey the
  *    compression-ratio rule of soak/image.h (above SOAK_IMAGE_FREE_BYTES of
- *    float pixels at most SOAK_IMAGE_MAX_RATIO float bytes per file byte)
+ *    float pixels at most SOAK_IMAGE_MAX_RATIO float bytes per byte after
+ *    the headers: offset tables and chunks)
  *    and SOAK_IMAGE_MAX_BYTES;
  *  - deep (non-image) parts are refused as unsupported.
+ * PNG: every chunk inside the file with a valid type, IHDR first, IEND
+ * last, pixel data present; the compression-ratio rule counts the IDAT
+ * bytes only (a 900 KB private chunk padded a 16384^2 bomb past a rule
+ * that counted the whole file).
+ * Every extension that names a format (.png, .jpg/.jpeg, .exr, .tif/.tiff/
+ * .tx, .hdr) must start with that format's signature: 256 MiB of zeros named
+ * .png is refused here, not walked by OpenImageIO's other readers.
  * JPEG (FF D8 FF): the end-of-image marker FF D9 lies within the last 4 KiB
  * (libjpeg decodes a file cut short, filling the missing rows with grey and
  * only warning: a cut at 9/10 was accepted).
@@ -32,10 +40,12 @@
 
 #define SOAK_EXR_MIN_CHUNK_BYTES 16
 
-/* SOAK_OK when path is not an OpenEXR file or its headers pass the rules
- * above; otherwise SOAK_ERR_PARSE (malformed), SOAK_ERR_ARG (sizes the file
- * cannot hold) or SOAK_ERR_UNSUPPORTED, with err naming the file and the
- * attribute. */
-soak_status soak_image_check_header(const char *path, char *err, size_t errlen);
+/* SOAK_OK when path passes the rules above; otherwise SOAK_ERR_PARSE
+ * (malformed), SOAK_ERR_ARG (sizes the file cannot hold) or
+ * SOAK_ERR_UNSUPPORTED, with err naming the file and the attribute.
+ * *payload gets the bytes the decoded pixels are budgeted against: the
+ * IDAT chunks of a PNG, what follows the headers of an OpenEXR file, the
+ * whole file otherwise. */
+soak_status soak_image_check_header(const char *path, long long *payload, char *err, size_t errlen);
 
 #endif
