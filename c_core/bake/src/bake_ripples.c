@@ -1,0 +1,223 @@
+/* Ripple flipbook: one capillary-gravity ring per drop impact on a torus
+ * in space and time (model in soak/bake_ripples.h). */
+#include "soak/bake_ripples.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "soak/bake_drops.h"
+#include "soak/bake_rain.h"
+#include "soak/rng.h"
+
+#define PI 3.14159265358979323846
+#define ENVELOPE_SIGMAS 4.0 /* ring drawn within R +- 4 w */
+#define POISSON_EXACT_MAX 30.0
+
+double soak_capillary_omega(double k)
+{
+    if (!soak_in_range(k, 1e-300, 1e12)) return 0;
+    return sqrt(SOAK_GRAVITY * k + SOAK_WATER_SIGMA / SOAK_WATER_RHO * k * k * k);
+}
+
+double soak_capillary_group_velocity(double k)
+{
+    double w = soak_capillary_omega(k);
+    if (w <= 0) return 0;
+    return (SOAK_GRAVITY + 3 * SOAK_WATER_SIGMA / SOAK_WATER_RHO * k * k) / (2 * w);
+}
+
+void soak_ripples_defaults(soak_ripples_params *p)
+{
+    if (!p) return;
+    memset(p, 0, sizeof *p);
+    p->rate_mm_h = 10;
+    p->tile_m = 0.5;
+    p->size = 512;
+    p->frames = 64;
+    p->period = 2.56;
+    p->wavelength_m = 2 * PI / sqrt(SOAK_WATER_RHO * SOAK_GRAVITY / SOAK_WATER_SIGMA);
+    p->width_m = p->wavelength_m;
+    p->lifetime = 0.5;
+    p->amplitude_m = 3e-4;
+    p->min_diameter_mm = 1;
+}
+
+soak_status soak_ripples_check(const soak_ripples_params *p)
+{
+    if (!p) return SOAK_ERR_NULL;
+    if (!(soak_in_range(p->rate_mm_h, 0, SOAK_DROP_RATE_MAX) && p->rate_mm_h > 0) ||
+        !soak_in_range(p->tile_m, 1e-6, 100) || !(p->size >= 1 && p->size <= SOAK_BAKE_MAX_SIZE) ||
+        !(p->frames >= 1 && p->frames <= SOAK_RIPPLES_MAX_FRAMES) || !soak_in_range(p->period, 1e-6, 1e4) ||
+        !soak_in_range(p->wavelength_m, 1e-6, 10) || !soak_in_range(p->width_m, 1e-6, 10) ||
+        !soak_in_range(p->lifetime, 1e-6, 1e3) || !soak_in_range(p->amplitude_m, 1e-12, 1) ||
+        !(soak_in_range(p->min_diameter_mm, 0, SOAK_DROP_D_MAX_MM) && p->min_diameter_mm < SOAK_DROP_D_MAX_MM))
+        return SOAK_ERR_ARG;
+    return SOAK_OK;
+}
+
+#define MAX_IMPACTS 50000000.0
+
+soak_status soak_ripples_impacts(const soak_ripples_params *p, soak_ripple_impact **out, size_t *count)
+{
+    if (!p || !out || !count) return SOAK_ERR_NULL;
+    *out = NULL, *count = 0;
+    soak_status st = soak_ripples_check(p);
+    if (st != SOAK_OK) return st;
+    double lambda = soak_drop_flux(p->rate_mm_h, p->min_diameter_mm, SOAK_DROP_D_MAX_MM) * p->tile_m * p->tile_m *
+                    p->period;
+    if (!(lambda <= MAX_IMPACTS)) return SOAK_ERR_ARG;
+    soak_rng rng;
+    soak_rng_seed(&rng, p->seed, 0x726970706c6573ULL); /* "ripples" */
+    double parts = ceil(lambda / POISSON_EXACT_MAX);
+    long n = 0;
+    for (double k = 0; k < parts; ++k) n += soak_rain_poisson(lambda / parts, &rng);
+    if (n == 0) return SOAK_OK;
+    soak_ripple_impact *v = malloc((size_t)n * sizeof *v);
+    if (!v) return SOAK_ERR_NOMEM;
+    for (long i = 0; i < n; ++i) {
+        v[i].x = soak_rng_uniform(&rng) * p->tile_m;
+        v[i].y = soak_rng_uniform(&rng) * p->tile_m;
+        v[i].t = soak_rng_uniform(&rng) * p->period;
+    }
+    *out = v, *count = (size_t)n;
+    return SOAK_OK;
+}
+
+/* A live ring at the frame's time, in texels. */
+typedef struct ring {
+    double cx, cy, radius, amplitude, phase; /* phase = omega tau */
+} ring;
+
+typedef struct frame_ctx {
+    const soak_ripples_params *p;
+    const ring *rings;
+    size_t n;
+    double k_tex, w_tex, reach; /* carrier and width per texel, drawn half-width */
+    double *h, *gx, *gy;        /* height (m) and slopes dh/dx, dh/dy (x right, y down) */
+} frame_ctx;
+
+static long wrap_index(long i, long n)
+{
+    long m = i % n;
+    return m < 0 ? m + n : m;
+}
+
+/* Adds ring g's texels in unwrapped row j to image row y. */
+static void ring_row(const frame_ctx *c, const ring *g, long j, long y)
+{
+    long n = c->p->size;
+    double dy = (double)j + 0.5 - g->cy, out = g->radius + c->reach, in = g->radius - c->reach;
+    if (fabs(dy) > out) return;
+    double half = sqrt(out * out - dy * dy);
+    long i0 = (long)ceil(g->cx - 0.5 - half), i1 = (long)floor(g->cx - 0.5 + half);
+    double texel = c->p->tile_m / n;
+    for (long i = i0; i <= i1; ++i) {
+        double dx = (double)i + 0.5 - g->cx, r = sqrt(dx * dx + dy * dy);
+        if (in > 0 && r < in) continue;
+        double u = (r - g->radius) / c->w_tex, env = g->amplitude * exp(-0.5 * u * u);
+        double ph = c->k_tex * r - g->phase, cs = cos(ph), sn = sin(ph);
+        size_t at = (size_t)y * n + wrap_index(i, n);
+        c->h[at] += env * cs;
+        if (r > 0) {
+            double dhdr = env * (-u / c->w_tex * cs - c->k_tex * sn) / texel; /* metres per metre */
+            c->gx[at] += dhdr * dx / r;
+            c->gy[at] += dhdr * dy / r;
+        }
+    }
+}
+
+static void frame_row(void *vctx, int y, int thread)
+{
+    (void)thread;
+    const frame_ctx *c = vctx;
+    long n = c->p->size;
+    for (size_t k = 0; k < c->n; ++k) {
+        const ring *g = &c->rings[k];
+        double top = g->cy - 0.5 - g->radius - c->reach, bottom = g->cy - 0.5 + g->radius + c->reach;
+        /* unwrapped rows j = y + m n inside [top, bottom] */
+        for (long j = y + n * (long)ceil((top - y) / n); j <= bottom; j += n) ring_row(c, g, j, y);
+    }
+}
+
+static soak_status live_rings(const soak_ripples_params *p, const soak_ripple_impact *imp, size_t count, long frame,
+                              ring **out, size_t *n_out)
+{
+    double t = (double)frame * p->period / p->frames, texel = p->tile_m / p->size;
+    double k = 2 * PI / p->wavelength_m, omega = soak_capillary_omega(k), cg = soak_capillary_group_velocity(k);
+    double max_age = SOAK_RIPPLES_LIFETIMES * p->lifetime;
+    size_t per = (size_t)ceil(max_age / p->period) + 1, cap = count * per, n = 0;
+    ring *v = malloc((cap ? cap : 1) * sizeof *v);
+    if (!v) return SOAK_ERR_NOMEM;
+    for (size_t i = 0; i < count; ++i) {
+        double age = fmod(t - imp[i].t, p->period);
+        if (age < 0) age += p->period;
+        for (double tau = age; tau < max_age && n < cap; tau += p->period) {
+            double radius = cg * tau;
+            v[n].cx = imp[i].x / texel, v[n].cy = imp[i].y / texel, v[n].radius = radius / texel;
+            v[n].amplitude = p->amplitude_m * exp(-tau / p->lifetime) * sqrt(p->width_m / (p->width_m + radius));
+            v[n].phase = omega * tau;
+            ++n;
+        }
+    }
+    *out = v, *n_out = n;
+    return SOAK_OK;
+}
+
+/* RGBA from height and slopes (see soak/bake_ripples.h for the encoding). */
+static void encode(const soak_ripples_params *p, const double *h, const float *slopes, soak_image *out)
+{
+    size_t n = (size_t)p->size * p->size;
+    for (size_t i = 0; i < n; ++i) {
+        double nx = -slopes[2 * i], ny = slopes[2 * i + 1], len = sqrt(nx * nx + ny * ny + 1);
+        float *px = out->pixels + 4 * i;
+        px[0] = (float)(0.5 * (nx / len + 1));
+        px[1] = (float)(0.5 * (ny / len + 1));
+        px[2] = (float)(0.5 * (1 / len + 1));
+        px[3] = (float)fmin(1.0, fmax(0.0, 0.5 + h[i] / (4 * p->amplitude_m)));
+    }
+}
+
+static soak_status render_slopes(const soak_ripples_params *p, const ring *rings, size_t n_rings,
+                                 const soak_bake_exec *exec, double *h, soak_image *slopes)
+{
+    size_t n = (size_t)p->size * p->size;
+    double *g = calloc(2 * n, sizeof(double));
+    if (!g) return SOAK_ERR_NOMEM;
+    double texel = p->tile_m / p->size;
+    frame_ctx c = {p, rings, n_rings, 2 * PI / p->wavelength_m * texel, p->width_m / texel,
+                   ENVELOPE_SIGMAS * p->width_m / texel, h, g, g + n};
+    soak_bake_exec quiet = {exec ? exec->threads : 0, NULL, NULL};
+    soak_status st = soak_parallel_rows(p->size, &quiet, frame_row, &c, 0, 1);
+    if (st == SOAK_OK) st = soak_image_alloc(slopes, p->size, p->size, 2);
+    for (size_t i = 0; i < n && st == SOAK_OK; ++i) {
+        slopes->pixels[2 * i] = (float)g[i];
+        slopes->pixels[2 * i + 1] = (float)g[n + i];
+    }
+    free(g);
+    return st;
+}
+
+soak_status soak_ripples_frame(const soak_ripples_params *p, const soak_ripple_impact *impacts, size_t count,
+                               long frame, double filter_px, const soak_bake_exec *exec, soak_image *out)
+{
+    if (!p || !out || (count && !impacts)) return SOAK_ERR_NULL;
+    soak_status st = soak_ripples_check(p);
+    if (st != SOAK_OK) return st;
+    if (!(filter_px == 0 || soak_in_range(filter_px, 1e-6, SOAK_BLUR_MAX_SIGMA)) || soak_bake_threads(exec) == 0 ||
+        !(labs(frame) <= 1000000000L))
+        return SOAK_ERR_ARG;
+    ring *rings = NULL;
+    size_t n_rings = 0, n = (size_t)p->size * p->size;
+    double *h = calloc(n, sizeof(double));
+    soak_image slopes = {0, 0, 0, NULL}, blurred = {0, 0, 0, NULL};
+    st = h ? live_rings(p, impacts, count, frame, &rings, &n_rings) : SOAK_ERR_NOMEM;
+    if (st == SOAK_OK) st = render_slopes(p, rings, n_rings, exec, h, &slopes);
+    if (st == SOAK_OK && filter_px > 0) st = soak_map_blur(&slopes, filter_px, 1, exec, &blurred);
+    if (st == SOAK_OK) st = soak_image_alloc(out, p->size, p->size, 4);
+    if (st == SOAK_OK) encode(p, h, blurred.pixels ? blurred.pixels : slopes.pixels, out);
+    if (exec && exec->progress) exec->progress(exec->progress_user, 1);
+    free(h), free(rings);
+    soak_image_free(&slopes), soak_image_free(&blurred);
+    return st;
+}
