@@ -181,14 +181,15 @@ static double wet_fraction(const soak_image *img)
  * seed-to-seed scatter gives the statistical error. */
 static void test_coverage(void)
 {
-    const int size = 256, seeds = 6;
-    const double times[] = {1, 2, 4, 8}, texel = 2e-4;
-    double na = simpson(50, spread_area_m2);
+    const int size = 512, seeds = 6;
+    const double times[] = {4, 8, 16, 32}, texel = 2.5e-4;
+    double na = simpson(10, spread_area_m2);
     for (size_t k = 0; k < sizeof times / sizeof times[0]; ++k) {
         double sum = 0, sum2 = 0;
         for (int s = 0; s < seeds; ++s) {
-            soak_drops_params p = plane(50, texel);
+            soak_drops_params p = plane(10, texel);
             p.min_diameter_mm = 0.3; /* spread >= 0.39 mm, wider than sqrt(2) texels */
+            p.duration = 100;
             p.seed = 100 + s;
             p.capacity_m = 1e-9;
             soak_drops_state *st = NULL;
