@@ -67,7 +67,7 @@ static void usage(FILE *out)
             "usage: soak bake drops [MESH] [options] --frames A-B -o drops.%%04d.exr\n\n"
             "Wet maps of a surface during and after rain. Drops of the Marshall-Palmer (1948) size\n"
             "distribution fall at Atlas et al.'s (1973) terminal velocities: impacts per area and\n"
-            "time n = int N(D) v(D) dD (2970 /m^2/s at 5 mm/h, 4450 at 10), a space-time Poisson\n"
+            "time n = int N(D) v(D) dD (3271 /m^2/s at 5 mm/h, 4451 at 10), a space-time Poisson\n"
             "process weighted by the sky exposure (MESH: computed as `soak bake rain` does; or\n"
             "--exposure; neither: an open plane). Each drop spreads its volume over a disc of\n"
             "Clanet et al.'s (2004) maximal spread, filling the texels up to --capacity; the wet\n"
@@ -75,7 +75,7 @@ static void usage(FILE *out)
             "map dries by the drying bake's pore schedule over --dry-time. Frame f is at time\n"
             "f / fps whatever --frames range is baked, so chunks equal one run; same seed, same\n"
             "bytes on any number of threads. Without --frames one map at --time (default: the\n"
-            "rain's end).\n\n"
+            "rain's end). Frame 0 is at t = 0 unless --time / --frame-origin say otherwise.\n\n"
             "options:\n");
     const cli_opt_table tables[] = DROPS_TABLES(NULL, NULL);
     cli_opts_help(out, tables, sizeof tables / sizeof tables[0]);

@@ -31,7 +31,7 @@ static const cli_opt ripples_opts[] = {
     {"--wavelength", NULL, CLI_OPT_DOUBLE, .lo = 1e-6, .hi = 10, F(p.wavelength_m), .meta = "M",
      .help = "ring carrier wavelength, m (default 0.0171, the slowest capillary-gravity wave)"},
     {"--ring-width", NULL, CLI_OPT_DOUBLE, .lo = 1e-6, .hi = 10, F(p.width_m), .meta = "M",
-     .help = "ring envelope standard deviation, m (default: one wavelength)"},
+     .help = "ring envelope standard deviation, m (default: half a wavelength)"},
     {"--lifetime", NULL, CLI_OPT_DOUBLE, .lo = 1e-6, .hi = 1e3, F(p.lifetime), .meta = "S",
      .help = "e-folding time of a ring's height, s (default 0.5)"},
     {"--amplitude", NULL, CLI_OPT_DOUBLE, .lo = 1e-12, .hi = 1, F(p.amplitude_m), .meta = "M",
@@ -42,10 +42,6 @@ static const cli_opt ripples_opts[] = {
      .help = "also write the distance version (slopes low-passed), same pattern rules as -o"},
     {"--far-filter", NULL, CLI_OPT_DOUBLE, .lo = 1e-3, .hi = SOAK_BLUR_MAX_SIGMA, F(far_px), .meta = "PX",
      .help = "its Gaussian standard deviation in texels (default 4)"},
-    {"--height", NULL, CLI_OPT_REJECT, .help = "tiles are square: --width sets the size"},
-    {"--time", NULL, CLI_OPT_REJECT, .help = "frames are numbered: frame f at f * period / loop-frames"},
-    {"--frame-time", NULL, CLI_OPT_REJECT, .help = "use --period and --loop-frames"},
-    {"--frame-origin", NULL, CLI_OPT_REJECT, .help = "frame f is always at f * period / loop-frames"},
 };
 #undef F
 
@@ -61,7 +57,9 @@ static void usage(FILE *out)
             "grows at the group velocity of capillary-gravity waves (omega^2 = g k + sigma/rho k^3,\n"
             "Lamb 1932) at its wavelength and whose height decays over --lifetime. RGB = (n+1)/2,\n"
             "tangent space, v up (OpenGL/Blender); alpha = 0.5 + height / (4 amplitude) (POV-Ray\n"
-            "bumps). --far writes the low-passed version for distant puddles.\n\n"
+            "bumps). --far writes the low-passed version for distant puddles. The tile is square:\n"
+            "--width (default 512 here) sets its size; frame f is at f * period / loop-frames\n"
+            "(--time, --frame-time and --frame-origin do not apply).\n\n"
             "options:\n");
     const cli_opt_table tables[] = RIPPLES_TABLES(NULL, NULL);
     cli_opts_help(out, tables, sizeof tables / sizeof tables[0]);
@@ -75,16 +73,16 @@ static soak_status frame(void *vctx, int f, double time, const soak_bake_exec *e
     (void)time;
     ripples_job *j = vctx;
     long index = f < 0 ? 0 : f;
-    soak_status st = soak_ripples_frame(&j->p, j->impacts, j->count, index, 0, exec, out);
+    soak_image far = {0, 0, 0, NULL};
+    soak_status st = soak_ripples_frame(&j->p, j->impacts, j->count, index, j->far_path ? j->far_px : 0, exec, out,
+                                        &far);
     if (st == SOAK_OK && j->far_path) {
         char path[4096];
-        soak_image far = {0, 0, 0, NULL};
         st = f < 0 ? (snprintf(path, sizeof path, "%s", j->far_path), SOAK_OK)
                    : soak_bake_frame_path(j->far_path, f, path, sizeof path);
-        if (st == SOAK_OK) st = soak_ripples_frame(&j->p, j->impacts, j->count, index, j->far_px, exec, &far);
         if (st == SOAK_OK) st = soak_bake_write(path, &far, 0, err, errlen);
-        soak_image_free(&far);
     }
+    soak_image_free(&far);
     if (st != SOAK_OK && !err[0]) snprintf(err, errlen, "frame %d: %s", f, soak_status_str(st));
     return st;
 }
@@ -114,7 +112,14 @@ int soak_bake_ripples_main(int argc, char **argv)
     const cli_opt_table tables[] = RIPPLES_TABLES(&o, &j);
     int rc = cli_opts_parse(&spec, tables, sizeof tables / sizeof tables[0], argc, argv);
     if (rc >= 0) return rc;
-    if (!ring_width_given) j.p.width_m = j.p.wavelength_m;
+    if (!ring_width_given) j.p.width_m = 0.5 * j.p.wavelength_m;
+    if ((o.have_height && o.height != o.width) || o.time != 0 || o.frame_time != 0 || o.have_origin) {
+        cli_error(CMD, "%s", o.have_height && o.height != o.width
+                                 ? "the tile is square: give --width only"
+                                 : "--time, --frame-time, --frame-origin do not apply: frame f is at f * period / "
+                                   "loop-frames");
+        return SOAK_EXIT_USAGE;
+    }
     j.p.size = (int)o.width;
     j.p.seed = o.seed;
     if ((rc = bake_opts_check(&o, NULL, 0)) != 0 || (rc = check_far(&j, &o)) != 0) return rc;

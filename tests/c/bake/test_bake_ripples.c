@@ -80,7 +80,7 @@ static void test_ring_radius(void)
     int n = 0;
     for (long f = 2; f <= 7; ++f) {
         soak_image img = {0, 0, 0, NULL};
-        check_status("frame", soak_ripples_frame(&p, &one, 1, f, 0, NULL, &img), SOAK_OK);
+        check_status("frame", soak_ripples_frame(&p, &one, 1, f, 0, NULL, &img, NULL), SOAK_OK);
         double t = f * p.period / p.frames, r = ring_radius(&img, 128, 128) * texel;
         worst = fmax(worst, fabs(r / (cg * t) - 1));
         sx += t, sy += r, sxx += t * t, sxy += t * r, ++n;
@@ -115,14 +115,14 @@ static void test_loop_and_tiling(void)
     double mean = soak_drop_flux(30, 1, 6) * p.tile_m * p.tile_m * p.period;
     check_close("ring impacts per loop: 4 sigma of n L^2 T", (n - mean) / sqrt(mean), 0, 4);
     soak_image first = {0, 0, 0, NULL}, wrapped = {0, 0, 0, NULL}, last = {0, 0, 0, NULL};
-    check_status("frame 0", soak_ripples_frame(&p, v, n, 0, 0, NULL, &first), SOAK_OK);
-    check_status("frame N", soak_ripples_frame(&p, v, n, p.frames, 0, NULL, &wrapped), SOAK_OK);
-    check_status("frame N-1", soak_ripples_frame(&p, v, n, p.frames - 1, 0, NULL, &last), SOAK_OK);
+    check_status("frame 0", soak_ripples_frame(&p, v, n, 0, 0, NULL, &first, NULL), SOAK_OK);
+    check_status("frame N", soak_ripples_frame(&p, v, n, p.frames, 0, NULL, &wrapped, NULL), SOAK_OK);
+    check_status("frame N-1", soak_ripples_frame(&p, v, n, p.frames - 1, 0, NULL, &last, NULL), SOAK_OK);
     check_close("frame N = frame 0 (the loop closes) within float rounding", max_abs_diff(&first, &wrapped), 0, 1e-6);
     double step_last = 0, step_inner = 0;
     soak_image a = {0, 0, 0, NULL}, b = {0, 0, 0, NULL};
-    check_status("frame 5", soak_ripples_frame(&p, v, n, 5, 0, NULL, &a), SOAK_OK);
-    check_status("frame 6", soak_ripples_frame(&p, v, n, 6, 0, NULL, &b), SOAK_OK);
+    check_status("frame 5", soak_ripples_frame(&p, v, n, 5, 0, NULL, &a, NULL), SOAK_OK);
+    check_status("frame 6", soak_ripples_frame(&p, v, n, 6, 0, NULL, &b, NULL), SOAK_OK);
     for (int i = 0; i < p.size * p.size * 4; ++i)
         step_last += fabs(last.pixels[i] - first.pixels[i]), step_inner += fabs(a.pixels[i] - b.pixels[i]);
     printf("  mean change N-1 -> 0: %.5f, 5 -> 6: %.5f\n", step_last / (p.size * p.size * 4),
@@ -132,7 +132,7 @@ static void test_loop_and_tiling(void)
     /* Half a tile shift of every impact = the image rolled by half its size. */
     for (size_t i = 0; i < n; ++i) v[i].x = fmod(v[i].x + p.tile_m / 2, p.tile_m);
     soak_image shifted = {0, 0, 0, NULL};
-    check_status("shifted", soak_ripples_frame(&p, v, n, 0, 0, NULL, &shifted), SOAK_OK);
+    check_status("shifted", soak_ripples_frame(&p, v, n, 0, 0, NULL, &shifted, NULL), SOAK_OK);
     double worst = 0;
     for (int y = 0; y < p.size; ++y)
         for (int x = 0; x < p.size; ++x)
@@ -141,20 +141,21 @@ static void test_loop_and_tiling(void)
                 worst = fmax(worst, fabs(s - first.pixels[4 * (y * p.size + x) + c]));
             }
     check_close("tiles: shifted impacts give the rolled image (edges continue) within float rounding", worst, 0, 1e-5);
-    soak_image one = {0, 0, 0, NULL}, two = {0, 0, 0, NULL}, far = {0, 0, 0, NULL};
+    soak_image one = {0, 0, 0, NULL}, two = {0, 0, 0, NULL}, far = {0, 0, 0, NULL}, sharp = {0, 0, 0, NULL};
     soak_bake_exec e1 = {1, NULL, NULL}, e2 = {2, NULL, NULL};
-    check_status("1 thread", soak_ripples_frame(&p, v, n, 3, 0, &e1, &one), SOAK_OK);
-    check_status("2 threads", soak_ripples_frame(&p, v, n, 3, 0, &e2, &two), SOAK_OK);
+    check_status("1 thread", soak_ripples_frame(&p, v, n, 3, 0, &e1, &one, NULL), SOAK_OK);
+    check_status("2 threads", soak_ripples_frame(&p, v, n, 3, 0, &e2, &two, NULL), SOAK_OK);
     check_true("1 and 2 threads bit for bit", max_abs_diff(&one, &two) == 0);
-    check_status("far", soak_ripples_frame(&p, v, n, 3, 4, NULL, &far), SOAK_OK);
+    check_status("far", soak_ripples_frame(&p, v, n, 3, 4, NULL, &sharp, &far), SOAK_OK);
     double s_sharp = 0, s_far = 0;
     for (int i = 0; i < p.size * p.size; ++i) s_sharp += slope2(one.pixels + 4 * i), s_far += slope2(far.pixels + 4 * i);
     printf("  mean slope^2 sharp %.5f, far %.5f\n", s_sharp / (p.size * p.size), s_far / (p.size * p.size));
     check_true("distance version: mean slope^2 below a quarter of the sharp one", s_far < 0.25 * s_sharp);
-    check_status("bad filter", soak_ripples_frame(&p, v, n, 3, -1, NULL, &far), SOAK_ERR_ARG);
+    check_true("the sharp map made with the distance version = the sharp map alone", max_abs_diff(&sharp, &one) == 0);
+    check_status("bad filter", soak_ripples_frame(&p, v, n, 3, -1, NULL, &sharp, &far), SOAK_ERR_ARG);
     p.rate_mm_h = NAN;
     check_status("NaN rate", soak_ripples_check(&p), SOAK_ERR_ARG);
-    soak_image *all[] = {&first, &wrapped, &last, &a, &b, &shifted, &one, &two, &far};
+    soak_image *all[] = {&first, &wrapped, &last, &a, &b, &shifted, &one, &two, &far, &sharp};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; ++i) soak_image_free(all[i]);
     free(v);
 }

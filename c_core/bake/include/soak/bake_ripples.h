@@ -14,7 +14,8 @@
  * ring at the carrier wavenumber k = 2 pi / wavelength (ours: one dominant
  * wavelength per ring, not the impact's full spectrum):
  *   h(r, tau) = A(tau) exp(-(r - R)^2 / (2 w^2)) cos(k r - omega tau),
- *   R = c_g tau,  A = amplitude exp(-tau / lifetime) sqrt(w / (w + R))
+ *   R = c_g tau,  A = amplitude exp(-tau / lifetime) sqrt(w / (w + R)),
+ * drawn within R +- 3.5 w
  * (the square root spreads the ring's energy over its circumference; the
  * exponential is the damping, a setting). Rings older than 3 lifetimes are
  * dropped. Periodic: impacts lie on the torus [0, tile)^2 x [0, period)
@@ -52,14 +53,14 @@ typedef struct soak_ripples_params {
     int frames;             /* frames per loop, 1..100000 */
     double period;          /* loop duration, (0, 1e4] s */
     double wavelength_m;    /* carrier, (0, 10] m */
-    double width_m;         /* ring envelope standard deviation, (0, 10] m */
+    double width_m;         /* ring envelope standard deviation w, (0, 10] m */
     double lifetime;        /* e-folding time of the amplitude, (0, 1e3] s */
     double amplitude_m;     /* ring height at impact, (0, 1] m */
     double min_diameter_mm; /* drops that make rings, [0, 6) mm */
 } soak_ripples_params;
 
 /* seed 0, 10 mm/h, 0.5 m tile at 512 texels, 64 frames over 2.56 s,
- * wavelength 2 pi / k_m (1.71 cm), width one wavelength, lifetime 0.5 s,
+ * wavelength 2 pi / k_m (1.71 cm), width half a wavelength, lifetime 0.5 s,
  * amplitude 0.3 mm, drops from 1 mm. */
 void soak_ripples_defaults(soak_ripples_params *p);
 soak_status soak_ripples_check(const soak_ripples_params *p);
@@ -73,9 +74,12 @@ typedef struct soak_ripple_impact {
 soak_status soak_ripples_impacts(const soak_ripples_params *p, soak_ripple_impact **out, size_t *count);
 
 /* Frame f (any integer; time f period / frames) of the loop made by the
- * given impacts, RGBA size x size; filter_px 0 = sharp, else the distance
- * version's Gaussian standard deviation in texels, (0, 1000]. */
+ * given impacts, RGBA size x size, into out; with filter_px > 0 (at most
+ * 1000) also the distance version into far: the same slopes blurred by a
+ * wrapped Gaussian of that standard deviation in texels (far may be NULL
+ * when filter_px is 0; its alpha is the sharp height). */
 soak_status soak_ripples_frame(const soak_ripples_params *p, const soak_ripple_impact *impacts, size_t count,
-                               long frame, double filter_px, const soak_bake_exec *exec, soak_image *out);
+                               long frame, double filter_px, const soak_bake_exec *exec, soak_image *out,
+                               soak_image *far);
 
 #endif
