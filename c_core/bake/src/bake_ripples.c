@@ -110,28 +110,45 @@ static long wrap_index(long i, long n)
     return m < 0 ? m + n : m;
 }
 
-/* Adds ring g's texels in unwrapped row j to image row y. */
+/* Adds ring g to texels i0..i1 (unwrapped) of unwrapped row j = image row y. */
+static void ring_span(const frame_ctx *c, const ring *g, double dy, long i0, long i1, long y)
+{
+    long n = c->p->size, x = wrap_index(i0, n);
+    const double *prof = c->profile + 2 * g->profile;
+    double *h = c->h + (size_t)y * n, *gx = c->gx + (size_t)y * n, *gy = c->gy + (size_t)y * n;
+    double last = g->samples - 1, dy2 = dy * dy;
+    for (long i = i0; i <= i1; ++i, x = x + 1 == n ? 0 : x + 1) {
+        double dx = (double)i + 0.5 - g->cx, r = sqrt(dx * dx + dy2);
+        double u = (r - g->r0) * (1.0 / PROFILE_STEP);
+        if (!(u >= 0 && u < last)) continue;
+        int k = (int)u;
+        double f = u - k, hv = prof[2 * k] + f * (prof[2 * k + 2] - prof[2 * k]);
+        double dhdr = prof[2 * k + 1] + f * (prof[2 * k + 3] - prof[2 * k + 1]);
+        h[x] += hv;
+        if (r > 0) {
+            double s = dhdr / r;
+            gx[x] += s * dx, gy[x] += s * dy;
+        }
+    }
+}
+
+/* Ring g's annulus in unwrapped row j: one span, or two beside its hole.
+ * Texels outside the profile's samples are skipped in ring_span, so the
+ * spans may be generous by a texel. */
 static void ring_row(const frame_ctx *c, const ring *g, long j, long y)
 {
-    long n = c->p->size;
-    double dy = (double)j + 0.5 - g->cy, out = g->radius + c->reach, in = g->radius - c->reach;
+    double dy = (double)j + 0.5 - g->cy, out = g->radius + c->reach, in = g->r0;
     if (fabs(dy) > out) return;
     double half = sqrt(out * out - dy * dy);
     long i0 = (long)ceil(g->cx - 0.5 - half), i1 = (long)floor(g->cx - 0.5 + half);
-    const double *prof = c->profile + 2 * g->profile;
-    double *h = c->h + (size_t)y * n, *gx = c->gx + (size_t)y * n, *gy = c->gy + (size_t)y * n;
-    for (long i = i0; i <= i1; ++i) {
-        double dx = (double)i + 0.5 - g->cx, r = sqrt(dx * dx + dy * dy);
-        if (r < in) continue;
-        double u = (r - g->r0) / PROFILE_STEP;
-        int k = (int)u;
-        if (k < 0 || k >= g->samples - 1) continue;
-        double f = u - k, hv = prof[2 * k] + f * (prof[2 * k + 2] - prof[2 * k]);
-        double dhdr = prof[2 * k + 1] + f * (prof[2 * k + 3] - prof[2 * k + 1]);
-        long x = wrap_index(i, n);
-        h[x] += hv;
-        if (r > 0) gx[x] += dhdr * dx / r, gy[x] += dhdr * dy / r;
+    if (in <= 1 || fabs(dy) >= in - 1) {
+        ring_span(c, g, dy, i0, i1, y);
+        return;
     }
+    double hole = sqrt((in - 1) * (in - 1) - dy * dy);
+    long h0 = (long)ceil(g->cx - 0.5 - hole), h1 = (long)floor(g->cx - 0.5 + hole);
+    ring_span(c, g, dy, i0, h0 - 1, y);
+    ring_span(c, g, dy, h1 + 1, i1, y);
 }
 
 static void frame_row(void *vctx, int y, int thread)
