@@ -219,35 +219,37 @@ static soak_status live_rings(const soak_ripples_params *p, const soak_ripple_im
     return SOAK_OK;
 }
 
-/* RGBA from height and slopes (see soak/bake_ripples.h for the encoding). */
-static void encode(const soak_ripples_params *p, const double *h, const float *slopes, soak_image *out)
+/* RGBA from slopes and height, (dh/dx, dh/dy, h) per texel (see
+ * soak/bake_ripples.h for the encoding). */
+static void encode(const soak_ripples_params *p, const float *field, soak_image *out)
 {
     size_t n = (size_t)p->size * p->size;
     for (size_t i = 0; i < n; ++i) {
-        double nx = -slopes[2 * i], ny = slopes[2 * i + 1], len = sqrt(nx * nx + ny * ny + 1);
+        double nx = -field[3 * i], ny = field[3 * i + 1], len = sqrt(nx * nx + ny * ny + 1);
         float *px = out->pixels + 4 * i;
         px[0] = (float)(0.5 * (nx / len + 1));
         px[1] = (float)(0.5 * (ny / len + 1));
         px[2] = (float)(0.5 * (1 / len + 1));
-        px[3] = (float)fmin(1.0, fmax(0.0, 0.5 + h[i] / (4 * p->amplitude_m)));
+        px[3] = (float)fmin(1.0, fmax(0.0, 0.5 + field[3 * i + 2] / (4 * p->amplitude_m)));
     }
 }
 
-/* Height into h, slopes (metres per metre) into a 2-channel image. */
-static soak_status render_slopes(const soak_ripples_params *p, const ring_set *set, const soak_bake_exec *exec,
-                                 double *h, soak_image *slopes)
+/* Slopes (metres per metre) and height (m) into a 3-channel image. */
+static soak_status render_field(const soak_ripples_params *p, const ring_set *set, const soak_bake_exec *exec,
+                                soak_image *field)
 {
     size_t n = (size_t)p->size * p->size;
-    double *g = calloc(2 * n, sizeof(double));
+    double *g = calloc(3 * n, sizeof(double)), *h = g + 2 * n;
     if (!g) return SOAK_ERR_NOMEM;
     double texel = p->tile_m / p->size;
     frame_ctx c = {p, set->rings, set->n, set->profile, ENVELOPE_SIGMAS * p->width_m / texel, h, g, g + n};
     soak_bake_exec quiet = {exec ? exec->threads : 0, NULL, NULL};
     soak_status st = soak_parallel_rows(p->size, &quiet, frame_row, &c, 0, 1);
-    if (st == SOAK_OK) st = soak_image_alloc(slopes, p->size, p->size, 2);
+    if (st == SOAK_OK) st = soak_image_alloc(field, p->size, p->size, 3);
     for (size_t i = 0; i < n && st == SOAK_OK; ++i) {
-        slopes->pixels[2 * i] = (float)g[i];
-        slopes->pixels[2 * i + 1] = (float)g[n + i];
+        field->pixels[3 * i] = (float)g[i];
+        field->pixels[3 * i + 1] = (float)g[n + i];
+        field->pixels[3 * i + 2] = (float)h[i];
     }
     free(g);
     return st;
@@ -272,19 +274,18 @@ soak_status soak_ripples_frame(const soak_ripples_params *p, const soak_ripple_i
     soak_status st = check_frame_args(p, frame, filter_px, exec);
     if (st != SOAK_OK) return st;
     ring_set set = {NULL, 0, NULL};
-    size_t n = (size_t)p->size * p->size;
-    double *h = calloc(n, sizeof(double)), texel = p->tile_m / p->size;
-    soak_image slopes = {0, 0, 0, NULL}, blurred = {0, 0, 0, NULL};
-    st = h ? live_rings(p, impacts, count, frame, ENVELOPE_SIGMAS * p->width_m / texel, &set) : SOAK_ERR_NOMEM;
-    if (st == SOAK_OK) st = render_slopes(p, &set, exec, h, &slopes);
+    double texel = p->tile_m / p->size;
+    soak_image field = {0, 0, 0, NULL}, blurred = {0, 0, 0, NULL};
+    st = live_rings(p, impacts, count, frame, ENVELOPE_SIGMAS * p->width_m / texel, &set);
+    if (st == SOAK_OK) st = render_field(p, &set, exec, &field);
     if (st == SOAK_OK) st = soak_image_alloc(out, p->size, p->size, 4);
-    if (st == SOAK_OK) encode(p, h, slopes.pixels, out);
-    if (st == SOAK_OK && filter_px > 0) st = soak_map_blur(&slopes, filter_px, 1, exec, &blurred);
+    if (st == SOAK_OK) encode(p, field.pixels, out);
+    if (st == SOAK_OK && filter_px > 0) st = soak_map_blur(&field, filter_px, 1, exec, &blurred);
     if (st == SOAK_OK && filter_px > 0) st = soak_image_alloc(far, p->size, p->size, 4);
-    if (st == SOAK_OK && filter_px > 0) encode(p, h, blurred.pixels, far);
+    if (st == SOAK_OK && filter_px > 0) encode(p, blurred.pixels, far);
     if (exec && exec->progress) exec->progress(exec->progress_user, 1);
-    if (st != SOAK_OK) soak_image_free(out);
-    free(h), free(set.rings), free(set.profile);
-    soak_image_free(&slopes), soak_image_free(&blurred);
+    if (st != SOAK_OK) soak_image_free(out), soak_image_free(far);
+    free(set.rings), free(set.profile);
+    soak_image_free(&field), soak_image_free(&blurred);
     return st;
 }

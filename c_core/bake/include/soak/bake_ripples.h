@@ -26,7 +26,7 @@
  * normalised, u to the right, v up the image (OpenGL / Blender convention);
  * A = 0.5 + h / (4 amplitude) clamped to [0, 1] (the height, for renderers
  * that bump from a height pattern: POV-Ray). The distance version low-passes
- * the slopes with a wrapped Gaussian of filter_px texels before normalising
+ * slopes and height with a wrapped Gaussian of filter_px texels before normalising
  * (a far puddle shows the mean normal, not noise). */
 #ifndef SOAK_BAKE_RIPPLES_H
 #define SOAK_BAKE_RIPPLES_H
@@ -76,8 +76,8 @@ soak_status soak_ripples_impacts(const soak_ripples_params *p, soak_ripple_impac
 /* Frame f (any integer; time f period / frames) of the loop made by the
  * given impacts, RGBA size x size, into out; with filter_px > 0 (at most
  * 1000) also the distance version into far: the same slopes blurred by a
- * wrapped Gaussian of that standard deviation in texels (far may be NULL
- * when filter_px is 0; its alpha is the sharp height). */
+ * wrapped Gaussian of that standard deviation in texels, and the height
+ * with them (far may be NULL when filter_px is 0). */
 soak_status soak_ripples_frame(const soak_ripples_params *p, const soak_ripple_impact *impacts, size_t count,
                                long frame, double filter_px, const soak_bake_exec *exec, soak_image *out,
                                soak_image *far);
