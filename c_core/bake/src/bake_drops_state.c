@@ -141,30 +141,46 @@ static void reset(soak_drops_state *s)
     s->time = 0;
 }
 
-/* Generates the slabs up to the one holding `target`, then applies every
- * pending impact with t < target. */
+/* Generates slabs [next_slab, last] and queues their impacts. */
+static soak_status generate(soak_drops_state *s, long last)
+{
+    soak_drop_impact *fresh = NULL;
+    size_t n = 0;
+    soak_status st = soak_drops_impacts(&s->p, s->exposure.pixels ? &s->exposure : NULL, s->width, s->height,
+                                        s->next_slab, last + 1, &fresh, &n);
+    if (st != SOAK_OK) return st;
+    soak_drop_impact *v = realloc(s->pending, (s->n_pending + n + 1) * sizeof *v);
+    if (!v) {
+        free(fresh);
+        return SOAK_ERR_NOMEM;
+    }
+    if (n) memcpy(v + s->n_pending, fresh, n * sizeof *v);
+    free(fresh);
+    s->pending = v, s->n_pending += n, s->next_slab = last + 1;
+    return SOAK_OK;
+}
+
+#define CATCH_UP_SLABS 64 /* slabs per step of a long replay (progress) */
+
+/* Applies every impact with t < target, generating the slabs up to the one
+ * holding target a few at a time (a chunk of a farm job replays the rain
+ * from t = 0 with progress). The order of additions to every texel is the
+ * impacts' time order however the work is cut. */
 static soak_status advance(soak_drops_state *s, double target, const soak_bake_exec *exec)
 {
     if (target < s->time) reset(s);
     long last = (long)floor(target / SOAK_DROPS_SLAB);
-    if (last >= s->next_slab) {
-        soak_drop_impact *fresh = NULL;
-        size_t n = 0;
-        soak_status st = soak_drops_impacts(&s->p, s->exposure.pixels ? &s->exposure : NULL, s->width, s->height,
-                                            s->next_slab, last + 1, &fresh, &n);
-        if (st != SOAK_OK) return st;
-        soak_drop_impact *v = realloc(s->pending, (s->n_pending + n + 1) * sizeof *v);
-        if (!v) {
-            free(fresh);
-            return SOAK_ERR_NOMEM;
-        }
-        if (n) memcpy(v + s->n_pending, fresh, n * sizeof *v);
-        free(fresh);
-        s->pending = v, s->n_pending += n, s->next_slab = last + 1;
-    }
-    size_t due = 0;
-    while (due < s->n_pending && s->pending[due].t < target) ++due;
-    soak_status st = apply_impacts(s, due, exec);
+    soak_status st = SOAK_OK;
+    do {
+        long upto = last - s->next_slab >= CATCH_UP_SLABS ? s->next_slab + CATCH_UP_SLABS - 1 : last;
+        if (upto >= s->next_slab) st = generate(s, upto);
+        double until = upto < last ? (upto + 1) * SOAK_DROPS_SLAB : target;
+        size_t due = 0;
+        while (st == SOAK_OK && due < s->n_pending && s->pending[due].t < until) ++due;
+        if (st == SOAK_OK) st = apply_impacts(s, due, exec);
+        if (st == SOAK_OK && exec && exec->progress && target > 0)
+            exec->progress(exec->progress_user, 0.9 * fmin(1.0, until / target));
+    } while (st == SOAK_OK && s->next_slab <= last);
     if (st == SOAK_OK) s->time = target;
     return st;
 }
