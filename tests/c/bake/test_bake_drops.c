@@ -159,6 +159,8 @@ static void test_exposure(void)
     check_true("no impact where the exposure is 0", left == 0);
     double mean = 0.5 * simpson(20, NULL) * (size / 2 * 2e-3) * (size * 2e-3) * 64 * SOAK_DROPS_SLAB;
     check_close("impacts where exposure 0.5: 4 sigma of 0.5 n A T", (n - mean) / sqrt(mean), 0, 4);
+    free(v);
+    v = NULL;
     e.pixels[5] = NAN;
     check_status("NaN exposure rejected", soak_drops_impacts(&p, &e, size, size, 0, 1, &v, &n), SOAK_ERR_ARG);
     e.pixels[5] = -1;
