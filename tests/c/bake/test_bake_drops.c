@@ -95,9 +95,12 @@ static void test_counts(void)
     double duration = slabs * SOAK_DROPS_SLAB, area = pow(size * 1e-3, 2);
     double mean = simpson(10, NULL) * area * duration;
     check_close("total impacts within 4 sigma of n A T", (n - mean) / sqrt(mean), 0, 4);
-    double cells[100] = {0}, times[16] = {0};
+    double cells[100] = {0}, times[16] = {0}, phase[64] = {0};
     int sorted = 1;
     for (size_t i = 0; i < n; ++i) {
+        /* position inside the generator's 32-texel cell, 8 x 8 bins: seams or
+         * edge effects of the cells would make it non-uniform */
+        phase[(int)(fmod(v[i].y, SOAK_DROPS_CELL) / 4) * 8 + (int)(fmod(v[i].x, SOAK_DROPS_CELL) / 4)] += 1;
         cells[(int)(v[i].y * bins / size) * bins + (int)(v[i].x * bins / size)] += 1;
         times[(int)(v[i].t / duration * tbins)] += 1;
         if (i && v[i].t < v[i - 1].t) sorted = 0;
@@ -109,7 +112,12 @@ static void test_counts(void)
     /* 99 and 15 degrees of freedom: mean +- 4 sd */
     check_true("chi-square over 10x10 cells within 99 +- 4 sqrt(198)", fabs(chi - 99) < 4 * sqrt(198));
     check_true("chi-square over 16 time bins within 15 +- 4 sqrt(30)", fabs(chit - 15) < 4 * sqrt(30));
-    printf("  chi2 space %.1f (99 dof), time %.1f (15 dof), %zu impacts (mean %.1f)\n", chi, chit, n, mean);
+    double chip = 0, ep = (double)n / 64;
+    for (int c = 0; c < 64; ++c) chip += (phase[c] - ep) * (phase[c] - ep) / ep;
+    check_true("chi-square of positions within the generator's cells within 63 +- 4 sqrt(126)",
+               fabs(chip - 63) < 4 * sqrt(126));
+    printf("  chi2 space %.1f (99 dof), time %.1f (15 dof), within cells %.1f (63 dof), %zu impacts (mean %.1f)\n",
+           chi, chit, chip, n, mean);
     free(v);
 }
 
