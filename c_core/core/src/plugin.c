@@ -4,9 +4,7 @@
 
 #include <dlfcn.h>
 #include <errno.h>
-#include <inttypes.h>
 #include <limits.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -104,7 +102,9 @@ void soak_plugin_slot_fill(soak_plugin_slot *s)
     }
     char where[700];
     snprintf(where, sizeof where, "not found in %.600s", tried[0] ? tried : "any folder");
-    fail(s, where, " (it is built next to the soak executable; SOAK_PLUGIN_DIR names another folder)");
+    fail(s, where,
+         " (it is built next to the soak executable and installed in PREFIX/lib/soak; SOAK_PLUGIN_DIR names "
+         "another folder)");
 }
 
 const void *soak_plugin_slot_table(const soak_plugin_slot *s, char *err, size_t errlen)

@@ -33,8 +33,8 @@ static void check_env_folder(void)
     snprintf(want, sizeof want, "%s/materials.json", dir);
     FILE *f = fopen(want, "w");
     check_true("marker written", f && fputs("{}", f) >= 0 && fclose(f) == 0);
-    check_status("SOAK_DATA_DIR with materials.json", soak_data_path("materials.json", out, sizeof out, err, sizeof err),
-                 SOAK_OK);
+    check_status("SOAK_DATA_DIR with materials.json",
+                 soak_data_path("materials.json", out, sizeof out, err, sizeof err), SOAK_OK);
     check_true("materials.json of SOAK_DATA_DIR", strcmp(out, want) == 0);
     check_status("a scene under SOAK_DATA_DIR",
                  soak_data_path("scenes/default_wet_dry.json", out, sizeof out, err, sizeof err), SOAK_OK);
