@@ -71,13 +71,13 @@ set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_VENDOR "Soak")
 set(CPACK_PACKAGE_CONTACT "Soak maintainers <soak-maintainers@invalid>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "physically based wet materials: models, reference path tracer and bakers")
+# (CPack puts the summary first and indents these lines.)
 set(CPACK_DEBIAN_PACKAGE_DESCRIPTION
-  "physically based wet materials: models, reference path tracer and bakers
- Soak computes how porous and non-porous materials look when wet (film
- optics, pore water, drying), renders them with a reference path tracer
- (soak render), bakes wet maps and parameter volumes (soak bake) and exports
- the material data to POV-Ray, Blender and OSL (soak export). The POV-Ray
- includes and the Blender add-on zip are in /usr/share/soak.")
+  "Soak computes how porous and non-porous materials look when wet (film
+optics, pore water, drying), renders them with a reference path tracer
+(soak render), bakes wet maps and parameter volumes (soak bake) and exports
+the material data to POV-Ray, Blender and OSL (soak export). The POV-Ray
+includes and the Blender add-on zip are in /usr/share/soak.")
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "povray, blender")
