@@ -16,7 +16,7 @@ keep=1
 mirror=$(sed -n "s/^URIs: //p" /etc/apt/sources.list.d/debian.sources 2>/dev/null | head -1)
 cleanup() {
   mountpoint -q "$root/proc" && umount "$root/proc"
-  [ "$keep" = 1 ] || rm -rf "$root"
+  [ "$keep" = 1 ] || rm -rf "$root" "$root.debootstrap.log"
 }
 trap cleanup EXIT
 [ -x "$root/usr/bin/apt-get" ] ||
