@@ -4,21 +4,39 @@
 BUILD      ?= build
 BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc)
+PREFIX     ?= /usr/local
+# The set-up installs what a goal needs (scripts/install-deps.sh's tiers):
+# building the C core only its compile dependencies; the demo adds the
+# renderers, the tests everything. A goal's tier reaches its prerequisites.
+DEPS_TIER  ?= build
+demo gallery povray-gallery: DEPS_TIER = demo
+package: DEPS_TIER = package
+test test-release test-asan blender43: DEPS_TIER = test
+# The project's own builds treat warnings as errors (a plain cmake build does not).
+CMAKE_DEV  = -DSOAK_WERROR=ON
 
-.PHONY: all deps build build-asan blender43 addon exports demo gallery povray-gallery test test-release test-asan bench fuzz clean
+.PHONY: all deps install package build build-asan blender43 addon exports demo gallery povray-gallery test test-release test-asan bench fuzz clean
 
 all: build
 
 deps:
-	@bash scripts/install-deps.sh
+	@bash scripts/install-deps.sh $(DEPS_TIER)
 
 build: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DSOAK_FUZZ_IN_TEST=ON > $(BUILD).configure.log || (cat $(BUILD).configure.log; exit 1)
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DSOAK_FUZZ_IN_TEST=ON $(CMAKE_DEV) > $(BUILD).configure.log || (cat $(BUILD).configure.log; exit 1)
 	@cmake --build $(BUILD) -j $(JOBS)
 
 build-asan: deps
-	@cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOAK_SANITIZE=ON > $(BUILD_ASAN).configure.log || (cat $(BUILD_ASAN).configure.log; exit 1)
+	@cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOAK_SANITIZE=ON $(CMAKE_DEV) > $(BUILD_ASAN).configure.log || (cat $(BUILD_ASAN).configure.log; exit 1)
 	@cmake --build $(BUILD_ASAN) -j $(JOBS)
+
+# Installs soak, its modules, data and manual page under PREFIX (README.md, "Install").
+install: build
+	@cmake --install $(BUILD) --prefix $(PREFIX)
+
+# The Debian package soak_<version>_<arch>.deb, in $(BUILD).
+package: build
+	@cd $(BUILD) && cpack -G DEB
 
 # Debian 13's Blender 4.3 in a root file system inside the build folder (made
 # once, reused): the Blender tests run in 3.4 and in 4.3.
@@ -77,7 +95,7 @@ test: test-release test-asan
 BUILD_FUZZ   ?= build-fuzz
 FUZZ_SECONDS ?= 900
 fuzz: deps
-	@CC=clang CXX=clang++ cmake -S . -B $(BUILD_FUZZ) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOAK_SANITIZE=ON -DSOAK_FUZZ=ON > $(BUILD_FUZZ).configure.log || (cat $(BUILD_FUZZ).configure.log; exit 1)
+	@CC=clang CXX=clang++ cmake -S . -B $(BUILD_FUZZ) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOAK_SANITIZE=ON -DSOAK_FUZZ=ON $(CMAKE_DEV) > $(BUILD_FUZZ).configure.log || (cat $(BUILD_FUZZ).configure.log; exit 1)
 	@cmake --build $(BUILD_FUZZ) -j $(JOBS) --target fuzz_scene fuzz_preset fuzz_image fuzz_mesh
 	@bash tests/fuzz/run.sh $(BUILD_FUZZ) $(FUZZ_SECONDS)
 

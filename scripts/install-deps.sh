@@ -1,16 +1,32 @@
 #!/usr/bin/env bash
-# Installs the Debian bookworm packages Soak needs, only those missing.
+# Installs the Debian bookworm packages Soak needs, only those missing, for
+# one tier of work (each tier includes the ones above it):
+#   build    compile the C core and the soak tool (make build)
+#   package  + what CPack's .deb needs (make package)
+#   demo     + the renderers of the main job: POV-Ray, Blender (make demo)
+#   test     + every tool of the test suite (make test; the default)
+# Usage: scripts/install-deps.sh [build|package|demo|test]
 # Idempotent: a second run does nothing and prints one line.
 set -euo pipefail
 
-packages=(
-  build-essential cmake pkg-config git
-  libopenimageio-dev openimageio-tools
-  libembree-dev libassimp-dev libcjson-dev libopenvdb-dev libboost-dev
-  povray blender xvfb python3 python3-numpy python3-jsonschema
-  python3-matplotlib valgrind debootstrap hyperfine
-  slurm-wlm munge nodejs
+tier=${1:-test}
+build=(
+  build-essential cmake pkg-config
+  libopenimageio-dev libembree-dev libassimp-dev libcjson-dev libopenvdb-dev libboost-dev
 )
+package=(dpkg-dev file)
+demo=(povray blender xvfb python3 openimageio-tools)
+test=(
+  git python3-numpy python3-jsonschema python3-matplotlib valgrind debootstrap hyperfine
+  slurm-wlm munge nodejs man-db
+)
+case "$tier" in
+  build) packages=("${build[@]}") ;;
+  package) packages=("${build[@]}" "${package[@]}") ;;
+  demo) packages=("${build[@]}" "${demo[@]}") ;;
+  test) packages=("${build[@]}" "${package[@]}" "${demo[@]}" "${test[@]}") ;;
+  *) echo "install-deps: unknown tier '$tier' (expected build, package, demo or test)" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do
@@ -20,7 +36,7 @@ for p in "${packages[@]}"; do
 done
 
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps: all ${#packages[@]} Debian packages present"
+  echo "install-deps: all ${#packages[@]} Debian packages of the $tier tier present"
   exit 0
 fi
 
@@ -31,6 +47,6 @@ if [ "$(id -u)" -ne 0 ]; then
     exit 1
   fi
 fi
-echo "install-deps: installing ${missing[*]}"
+echo "install-deps ($tier): installing ${missing[*]}"
 $sudo apt-get update -qq
 DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

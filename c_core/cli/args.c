@@ -107,6 +107,19 @@ int cli_dispatch_help(int argc, char **argv, void (*usage)(FILE *out))
     return -1;
 }
 
+int cli_man_commands(const soak_cli_command *table, int n)
+{
+    int rc = SOAK_EXIT_OK;
+    for (int i = 0; i < n; ++i) {
+        char name[64], man[] = "--man";
+        snprintf(name, sizeof name, "%s", table[i].name);
+        char *argv[] = {name, man, NULL};
+        int r = table[i].run(2, argv);
+        if (r != SOAK_EXIT_OK) rc = r;
+    }
+    return rc;
+}
+
 const soak_cli_command *cli_find(const soak_cli_command *table, int n, const char *name)
 {
     for (int i = 0; i < n; ++i)

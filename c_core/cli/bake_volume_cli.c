@@ -220,12 +220,13 @@ static int check_outputs(const vol_args *a)
                   *name && !slash ? "/" : "");
         return SOAK_EXIT_USAGE;
     }
+    char presets[SOAK_PRESETS_PATH_MAX] = ""; /* not found: soak_presets_load says so */
+    if (a->material && !a->materials) soak_presets_default_path(presets, sizeof presets, NULL, 0);
     soak_io_guard g;
     soak_io_guard_init(&g);
     int ok = soak_io_guard_input(&g, "--map", a->map) == SOAK_OK &&
              soak_io_guard_input(&g, a->materials ? "--materials" : "presets file ($SOAK_MATERIALS or the shipped one)",
-                                 a->material ? (a->materials ? a->materials : soak_presets_default_path()) : NULL) ==
-                 SOAK_OK;
+                                 a->material ? (a->materials ? a->materials : presets) : NULL) == SOAK_OK;
     for (int k = 0; k < 5 + SOAK_VOL_NCHANNELS; ++k) {
         if (k < 5) {
             if (!wanted[k]) continue;

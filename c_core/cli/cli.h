@@ -147,6 +147,15 @@ int cli_opts_parse(const cli_spec *spec, const cli_opt_table *tables, int n_tabl
  * aligned on one column over all the tables. */
 void cli_opts_help(FILE *out, const cli_opt_table *tables, int n_tables);
 
+/* The manual page (man(7) source, `soak --man`), from the same texts and
+ * tables as --help: cli_opts_parse answers --man with cli_man_command (a
+ * subsection "soak CMD": the usage text, each option a tagged paragraph);
+ * a dispatcher prints its usage (cli_man_usage, under title unless NULL),
+ * then runs each entry of its table with --man (cli_man_commands). */
+void cli_man_command(FILE *out, const cli_spec *spec, const cli_opt_table *tables, int n_tables);
+void cli_man_usage(FILE *out, const char *title, void (*usage)(FILE *out));
+int cli_man_commands(const soak_cli_command *table, int n);
+
 /* Returns the value following option argv[*i] (advancing *i), or NULL after
  * printing "option X needs a value". Accepts "--opt=value" too. */
 const char *cli_value(const char *cmd, int argc, char **argv, int *i);

@@ -2,6 +2,7 @@
  * in bake_<kind>_cli.c; the maps themselves are computed by libsoak
  * (soak/bake.h, soak/bake_volume.h). */
 #include <stdio.h>
+#include <string.h>
 
 #include "bake_cli.h"
 #include "cli.h"
@@ -37,6 +38,10 @@ int soak_cmd_bake(int argc, char **argv)
 {
     int rc = cli_dispatch_help(argc, argv, usage);
     if (rc >= 0) return rc;
+    if (strcmp(argv[1], "--man") == 0) {
+        cli_man_usage(stdout, "soak bake", usage);
+        return cli_man_commands(kinds, n_kinds);
+    }
     const soak_cli_command *kind = cli_find(kinds, n_kinds, argv[1]);
     if (kind) return kind->run(argc - 1, argv + 1);
     cli_error("bake", "unknown kind '%s' (expected turbulence, waves, drying, combine, volume, rain, drops or ripples)", argv[1]);

@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 
 #include "cli.h"
+#include "soak/data_dir.h"
 #include "soak/image.h"
 #include "soak/io_guard.h"
 #include "soak/preset.h"
@@ -35,7 +36,7 @@ static const cli_opt demo_opts[] = {
     {"--materials", NULL, CLI_OPT_STRING, F(materials), .meta = "FILE",
      .help = "preset file (default: $SOAK_MATERIALS, else the shipped one)"},
     {"--scene", NULL, CLI_OPT_STRING, F(scene), .meta = "SCENE.json",
-     .help = "scene to render (default scenes/default_wet_dry.json)"},
+     .help = "scene to render (default scenes/default_wet_dry.json\nof the data folder: see soak --help)"},
 };
 #undef F
 
@@ -282,15 +283,38 @@ static int check_before_writing(const char *cmd, const char *dir, const char *ma
     return 0;
 }
 
+/* The presets and the scene of the data folder (soak/data_dir.h) unless
+ * given: n bytes each in materials and scene. */
+static int find_defaults(const char *cmd, demo_args *a, char *materials, char *scene, size_t n)
+{
+    char err[4352];
+    if (!a->materials) {
+        if (soak_presets_default_path(materials, n, err, sizeof err) != SOAK_OK) {
+            cli_error(cmd, "%s", err);
+            return 0;
+        }
+        a->materials = materials;
+    }
+    if (!a->scene) {
+        if (soak_data_path("scenes/default_wet_dry.json", scene, n, err, sizeof err) != SOAK_OK) {
+            cli_error(cmd, "%s", err);
+            return 0;
+        }
+        a->scene = scene;
+    }
+    return 1;
+}
+
 int soak_cmd_demo(int argc, char **argv)
 {
     const char *cmd = "demo";
-    demo_args a = {.dir = "out/demo", .scene = SOAK_SCENES_DIR "/default_wet_dry.json"};
+    demo_args a = {.dir = "out/demo"};
     const cli_spec spec = {cmd, "option", "'soak demo --help'", usage, NULL, NULL};
     const cli_opt_table tables[] = {CLI_TABLE(demo_opts, &a)};
     int rc = cli_opts_parse(&spec, tables, 1, argc, argv);
     if (rc >= 0) return rc;
-    if (!a.materials) a.materials = soak_presets_default_path();
+    char materials[SOAK_PRESETS_PATH_MAX], scene[SOAK_PRESETS_PATH_MAX];
+    if (!find_defaults(cmd, &a, materials, scene, sizeof materials)) return SOAK_EXIT_FAIL;
     soak_preset_db *db = NULL;
     char err[2048] = "";
     if (soak_presets_load(a.materials, &db, err, sizeof err) != SOAK_OK) {

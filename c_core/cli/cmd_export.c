@@ -84,7 +84,9 @@ int soak_cmd_export(int argc, char **argv)
     char err[4352] = "";
     int to_file = a.output && strcmp(a.output, "-") != 0;
     if (to_file) {
-        const char *inputs[1] = {a.file ? a.file : soak_presets_default_path()};
+        char presets[SOAK_PRESETS_PATH_MAX] = ""; /* not found: soak_presets_load says so below */
+        if (!a.file) soak_presets_default_path(presets, sizeof presets, NULL, 0);
+        const char *inputs[1] = {a.file ? a.file : presets};
         if (soak_io_check_output("-o", a.output, inputs, 1, err, sizeof err) != SOAK_OK) {
             cli_error(CMD, "%s (--materials or $SOAK_MATERIALS)", err);
             return SOAK_EXIT_USAGE;

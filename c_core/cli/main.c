@@ -7,6 +7,10 @@
 #include "soak/image.h"
 #include "soak/input_file.h"
 
+#ifndef SOAK_VERSION
+#define SOAK_VERSION "0.1.0"
+#endif
+
 static const soak_cli_command commands[] = {
     {"materials", "list the material presets (--json for machine-readable output)", soak_cmd_materials},
     {"albedo", "dry and wet albedo of a preset, or the closed-form film albedo", soak_cmd_albedo},
@@ -39,7 +43,37 @@ static void usage(FILE *out)
             "  of 1024 MiB and 256 bytes per byte of compressed input); images: at most %d pixels a\n"
             "  side and 1024 MiB as float. Inputs must be regular files (README: Outputs and inputs).\n",
             SOAK_IMAGE_MAX_SIDE);
-    fprintf(out, "\nexample:\n  soak albedo --material sand --wetness 1\n");
+    fprintf(out,
+            "\nother options:\n"
+            "  --version  the version\n"
+            "  --man      this help and every command's as a manual page (man(7) source)\n"
+            "\ndata folder (presets, export schema, demo scene, POV-Ray includes): the first\n"
+            "of these that holds materials.json\n"
+            "  1. $SOAK_DATA_DIR, when set (only it is searched)\n"
+            "  2. share/soak beside the folder of the soak executable\n"
+            "     (PREFIX/bin/soak reads PREFIX/share/soak, wherever PREFIX is)\n"
+            "  3. the source tree, for a soak that runs from its build tree\n"
+            "\nenvironment:\n"
+            "  SOAK_DATA_DIR    the data folder (above)\n"
+            "  SOAK_MATERIALS   the presets file (default: materials.json of the data folder)\n"
+            "  SOAK_PLUGIN_DIR  the folder of the I/O modules (default: beside soak, or\n"
+            "                   PREFIX/lib/soak for an installed soak)\n"
+            "  SOAK_PROGRESS=1  progress bars even when stderr is not a terminal\n"
+            "\nexample:\n  soak albedo --material sand --wetness 1\n");
+}
+
+/* `soak --man`: the manual page, from --help's texts and the option tables. */
+static int print_man(void)
+{
+    printf(".TH SOAK 1 \"\" \"soak %s\" \"User Commands\"\n"
+           ".SH NAME\nsoak \\- physically based wet materials: models, reference tracer and bakers\n"
+           ".SH SYNOPSIS\n\\fBsoak\\fR \\fIcommand\\fR [\\fIoptions\\fR]\n"
+           ".br\n\\fBsoak\\fR \\fIcommand\\fR \\fB\\-\\-help\\fR\n"
+           ".SH DESCRIPTION\n",
+           SOAK_VERSION);
+    cli_man_usage(stdout, NULL, usage);
+    printf(".SH COMMANDS\n");
+    return cli_man_commands(commands, n_commands);
 }
 
 /* Results that never reached stdout (a full disk, /dev/full, a closed pipe)
@@ -59,9 +93,10 @@ int main(int argc, char **argv)
     int rc = cli_dispatch_help(argc, argv, usage);
     if (rc >= 0) return check_stdout(NULL, rc);
     if (strcmp(argv[1], "--version") == 0) {
-        printf("soak 0.1.0\n");
+        printf("soak %s\n", SOAK_VERSION);
         return check_stdout(NULL, SOAK_EXIT_OK);
     }
+    if (strcmp(argv[1], "--man") == 0) return check_stdout(NULL, print_man());
     const soak_cli_command *cmd = cli_find(commands, n_commands, argv[1]);
     if (cmd) return check_stdout(cmd->name, cmd->run(argc - 1, argv + 1));
     fprintf(stderr, "soak: unknown command '%s' (see 'soak --help')\n", argv[1]);

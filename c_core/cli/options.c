@@ -1,8 +1,10 @@
 /* The option tables of cli.h: one reader of argv and one printer of the
- * options part of --help for every command. */
+ * options part of --help (and of the manual page, --man) for every command. */
+#define _POSIX_C_SOURCE 200809L
 #include <limits.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
@@ -154,6 +156,10 @@ int cli_opts_parse(const cli_spec *spec, const cli_opt_table *tables, int n_tabl
             spec->usage(stdout);
             return SOAK_EXIT_OK;
         }
+        if (strcmp(argv[i], "--man") == 0) {
+            cli_man_command(stdout, spec, tables, n_tables);
+            return SOAK_EXIT_OK;
+        }
         void *dst = NULL;
         const cli_opt *o = find(tables, n_tables, argv[i], &dst);
         int r = o ? read_option(spec, o, dst, argc, argv, &i) : not_an_option(spec, argv[i]);
@@ -212,4 +218,153 @@ void cli_opts_help(FILE *out, const cli_opt_table *tables, int n_tables)
             else fprintf(out, "  %-*s  ", width, label);
             print_help_text(out, o, column);
         }
+}
+
+/* ---- --man: the same text as man(7) source ---- */
+
+/* Text as roff: backslashes and minus signs escaped, a line starting with a
+ * control character guarded. Returns 1 when it ended a line. */
+static int man_inline(FILE *out, const char *text)
+{
+    int line_start = 1;
+    for (const char *c = text; *c; ++c) {
+        if (line_start && (*c == '.' || *c == '\'')) fputs("\\&", out);
+        if (*c == '\\') fputs("\\e", out);
+        else if (*c == '-') fputs("\\-", out);
+        else fputc(*c, out);
+        line_start = *c == '\n';
+    }
+    return line_start;
+}
+
+/* The same, ending the last line. */
+static void man_escaped(FILE *out, const char *text)
+{
+    if (!man_inline(out, text)) fputc('\n', out);
+}
+
+/* Text kept as printed (aligned lists, examples). */
+static void man_block(FILE *out, const char *text)
+{
+    if (!text || !text[0]) return;
+    fputs(".PP\n.nf\n", out);
+    man_escaped(out, text);
+    fputs(".fi\n", out);
+}
+
+/* What usage(memstream) printed, or NULL. */
+static char *usage_text(void (*usage)(FILE *out))
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&buf, &len);
+    if (!m) return NULL;
+    usage(m);
+    if (fclose(m) == 0) return buf;
+    free(buf);
+    return NULL;
+}
+
+static char *options_text(const cli_opt_table *tables, int n_tables)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&buf, &len);
+    if (!m) return NULL;
+    cli_opts_help(m, tables, n_tables);
+    if (fclose(m) == 0) return buf;
+    free(buf);
+    return NULL;
+}
+
+/* One option: ".TP", its names in bold, its placeholder in italics, its help. */
+static void man_option(FILE *out, const cli_opt *o)
+{
+    fputs(".TP\n\\fB", out);
+    if (o->alias) man_inline(out, o->alias), fputs("\\fR, \\fB", out);
+    man_inline(out, o->name);
+    fputs("\\fR", out);
+    if (o->meta) fputs(" \\fI", out), man_inline(out, o->meta), fputs("\\fR", out);
+    fputc('\n', out);
+    char *help = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&help, &len);
+    if (!m) return;
+    print_help_text(m, o, 0);
+    if (fclose(m) == 0) man_escaped(out, help);
+    free(help);
+}
+
+static void man_options(FILE *out, const cli_opt_table *tables, int n_tables)
+{
+    for (int t = 0; t < n_tables; ++t)
+        for (size_t k = 0; k < tables[t].n; ++k) {
+            const cli_opt *o = &tables[t].opts[k];
+            if (o->kind == CLI_OPT_HEADING) fputs(".PP\n", out), man_escaped(out, o->help);
+            if (listed(o)) man_option(out, o);
+        }
+}
+
+void cli_man_usage(FILE *out, const char *title, void (*usage)(FILE *out))
+{
+    if (title) fprintf(out, ".SS \"%s\"\n", title);
+    char *text = usage_text(usage);
+    man_block(out, text);
+    free(text);
+}
+
+/* The earliest of the tables' --help texts (each table printed alone) in
+ * text: its index (its place and length in *at, *len), or -1. */
+static int earliest_table(const char *text, const cli_opt_table *tables, int n_tables, const char **at, size_t *len)
+{
+    int best = -1;
+    for (int t = 0; t < n_tables; ++t) {
+        char *opts = options_text(&tables[t], 1);
+        const char *hit = opts && opts[0] ? strstr(text, opts) : NULL;
+        if (hit && (best < 0 || hit < *at)) {
+            best = t;
+            *at = hit;
+            *len = strlen(opts);
+        }
+        free(opts);
+    }
+    return best;
+}
+
+/* Prints text up to each table's part in it, then that table's options;
+ * returns the text after the last part. */
+static char *man_each_table(FILE *out, char *text, const cli_opt_table *tables, int n_tables)
+{
+    const char *at = NULL;
+    size_t len = 0;
+    int t;
+    while (text && (t = earliest_table(text, tables, n_tables, &at, &len)) >= 0) {
+        char *hit = text + (at - text);
+        *hit = '\0';
+        man_block(out, text);
+        man_options(out, &tables[t], 1);
+        text = hit + len;
+    }
+    return text;
+}
+
+/* The usage text with each options part (cli_opts_help's text of all the
+ * tables at once, else of each table alone, wherever usage prints it)
+ * replaced by one tagged paragraph per option. */
+void cli_man_command(FILE *out, const cli_spec *spec, const cli_opt_table *tables, int n_tables)
+{
+    fprintf(out, ".SS \"soak %s\"\n", spec->cmd);
+    char *text = usage_text(spec->usage), *all = options_text(tables, n_tables);
+    char *rest = text, *at = text && all && all[0] ? strstr(text, all) : NULL;
+    if (at) {
+        *at = '\0';
+        man_block(out, rest);
+        man_options(out, tables, n_tables);
+        rest = at + strlen(all);
+    } else {
+        rest = man_each_table(out, text, tables, n_tables);
+    }
+    man_block(out, rest);
+    free(text);
+    free(all);
 }

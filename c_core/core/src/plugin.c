@@ -4,19 +4,21 @@
 
 #include <dlfcn.h>
 #include <errno.h>
-#include <inttypes.h>
 #include <limits.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include "self_path.h"
+
 #ifndef SOAK_PLUGIN_BUILD_DIR
 #define SOAK_PLUGIN_BUILD_DIR ""
 #endif
 
-#define MAX_DIRS 4
+#define MAX_DIRS 5
+/* The modules' folder of an installed copy, relative to its executable's. */
+#define SOAK_PLUGIN_INSTALL_DIR "/../lib/soak"
 
 typedef struct dir_list {
     int n;
@@ -39,29 +41,6 @@ static void add_dir_of(dir_list *l, const char *file)
     if (slash) add_dir(l, file, slash == file ? 1 : (size_t)(slash - file));
 }
 
-/* The file mapped at addr according to /proc/self/maps ("" if none). */
-static void file_mapped_at(uintptr_t addr, char *path, size_t n)
-{
-    path[0] = '\0';
-    FILE *f = fopen("/proc/self/maps", "re");
-    if (!f) return;
-    char line[PATH_MAX + 128];
-    while (fgets(line, sizeof line, f)) {
-        uintptr_t lo = 0, hi = 0;
-        int name_at = 0;
-        if (sscanf(line, "%" SCNxPTR "-%" SCNxPTR " %*s %*s %*s %*s %n", &lo, &hi, &name_at) < 2 || name_at == 0)
-            continue;
-        if (addr < lo || addr >= hi) continue;
-        const char *name = line + name_at;
-        if (name[0] == '/') {
-            snprintf(path, n, "%s", name);
-            path[strcspn(path, "\n")] = '\0';
-        }
-        break;
-    }
-    fclose(f);
-}
-
 static void search_dirs(dir_list *l)
 {
     l->n = 0;
@@ -71,12 +50,16 @@ static void search_dirs(dir_list *l)
         return;
     }
     char path[PATH_MAX];
-    file_mapped_at((uintptr_t)&soak_plugin_slot_fill, path, sizeof path);
-    if (path[0]) add_dir_of(l, path);
-    ssize_t len = readlink("/proc/self/exe", path, sizeof path - 1);
-    if (len > 0) {
-        path[len] = '\0';
-        add_dir_of(l, path);
+    soak_self_file(path, sizeof path);
+    add_dir_of(l, path);
+    soak_self_exe_dir(path, sizeof path);
+    add_dir(l, path, strlen(path));
+    /* An installed copy: PREFIX/bin/soak, its modules in PREFIX/lib/soak. */
+    soak_self_file(path, sizeof path);
+    soak_path_dirname(path);
+    if (path[0] && strlen(path) + sizeof SOAK_PLUGIN_INSTALL_DIR < sizeof path) {
+        strcat(path, SOAK_PLUGIN_INSTALL_DIR);
+        add_dir(l, path, strlen(path));
     }
     add_dir(l, SOAK_PLUGIN_BUILD_DIR, strlen(SOAK_PLUGIN_BUILD_DIR));
 }
@@ -119,7 +102,9 @@ void soak_plugin_slot_fill(soak_plugin_slot *s)
     }
     char where[700];
     snprintf(where, sizeof where, "not found in %.600s", tried[0] ? tried : "any folder");
-    fail(s, where, " (it is built next to the soak executable; SOAK_PLUGIN_DIR names another folder)");
+    fail(s, where,
+         " (it is built next to the soak executable and installed in PREFIX/lib/soak; SOAK_PLUGIN_DIR names "
+         "another folder)");
 }
 
 const void *soak_plugin_slot_table(const soak_plugin_slot *s, char *err, size_t errlen)

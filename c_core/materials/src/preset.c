@@ -9,14 +9,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "soak/data_dir.h"
 #include "soak/fresnel.h"
 #include "soak/input_file.h"
 #include "soak/units.h"
 #include "soak/vdhulst.h"
-
-#ifndef SOAK_DATA_DIR
-#define SOAK_DATA_DIR "c_core/data"
-#endif
 
 #define MAX_ENTRIES 1024
 #define PATH_MAX_LEN 160
@@ -52,11 +49,17 @@ int soak_material_kind_porous(soak_material_kind kind)
     return kind == SOAK_KIND_POROUS_DIELECTRIC || kind == SOAK_KIND_THIN_SHEET;
 }
 
-const char *soak_presets_default_path(void)
+soak_status soak_presets_default_path(char *out, size_t n, char *err, size_t errlen)
 {
+    if (!out || n == 0) return SOAK_ERR_NULL;
     const char *env = getenv("SOAK_MATERIALS");
-    if (env && env[0] != '\0') return env;
-    return SOAK_DATA_DIR "/materials.json";
+    if (!env || env[0] == '\0') return soak_data_path("materials.json", out, n, err, errlen);
+    if (strlen(env) < n) {
+        memcpy(out, env, strlen(env) + 1);
+        return SOAK_OK;
+    }
+    if (err && errlen) snprintf(err, errlen, "SOAK_MATERIALS: the path is longer than %zu bytes", n - 1);
+    return SOAK_ERR_ARG;
 }
 
 __attribute__((format(printf, 4, 5))) static soak_status fail(ctx *c, soak_status st, const char *path,
@@ -594,7 +597,12 @@ soak_status soak_presets_load(const char *path, soak_preset_db **out, char *err,
 {
     if (err && errlen) err[0] = '\0';
     if (!out) return SOAK_ERR_NULL;
-    if (!path) path = soak_presets_default_path();
+    char default_path[SOAK_PRESETS_PATH_MAX];
+    if (!path) {
+        soak_status found = soak_presets_default_path(default_path, sizeof default_path, err, errlen);
+        if (found != SOAK_OK) return found;
+        path = default_path;
+    }
     ctx c = {path, err, errlen, NULL};
     char *text = NULL;
     size_t len = 0;

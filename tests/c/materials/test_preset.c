@@ -272,11 +272,17 @@ static void check_malformed(void)
 
 static void check_default_path(void)
 {
+    char p[SOAK_PRESETS_PATH_MAX] = "", err[1024] = "";
     setenv("SOAK_MATERIALS", "/somewhere/else.json", 1);
-    check_true("SOAK_MATERIALS overrides the default path",
-               strcmp(soak_presets_default_path(), "/somewhere/else.json") == 0);
+    check_status("SOAK_MATERIALS is taken as is", soak_presets_default_path(p, sizeof p, err, sizeof err), SOAK_OK);
+    check_true("SOAK_MATERIALS overrides the default path", strcmp(p, "/somewhere/else.json") == 0);
+    char tiny[8] = "keep";
+    check_status("SOAK_MATERIALS too long for out -> ARG", soak_presets_default_path(tiny, sizeof tiny, err, sizeof err),
+                 SOAK_ERR_ARG);
+    check_true("too long: out untouched", strcmp(tiny, "keep") == 0);
     unsetenv("SOAK_MATERIALS");
-    const char *p = soak_presets_default_path();
+    check_status("default path found from the build tree", soak_presets_default_path(p, sizeof p, err, sizeof err),
+                 SOAK_OK);
     size_t n = strlen(p);
     check_true("default path ends in /materials.json", n >= 15 && strcmp(p + n - 15, "/materials.json") == 0);
 }

@@ -11,7 +11,9 @@
  *      was started through an explicit loader (`ld-linux.so --library-path
  *      ... soak`, as the Blender 4.3 tests do; /proc/self/exe then names the
  *      loader), then the folder of /proc/self/exe;
- *   3. in the build tree's bin/ folder (tests and benchmarks live elsewhere).
+ *   3. in lib/soak beside the executable's folder (an installed copy:
+ *      PREFIX/bin/soak, PREFIX/lib/soak/libsoak_image.so);
+ *   4. in the build tree's bin/ folder (tests and benchmarks live elsewhere).
  * A module that is found but does not load (a library it needs is missing)
  * is an error naming the module and the loader's reason; so is a module
  * found nowhere, naming every folder searched. */

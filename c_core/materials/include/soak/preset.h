@@ -143,9 +143,14 @@ typedef struct soak_preset_db soak_preset_db;
 soak_status soak_presets_load(const char *path, soak_preset_db **db, char *err, size_t errlen);
 void soak_presets_free(soak_preset_db *db);
 
-/* Environment variable SOAK_MATERIALS if set and non-empty, else the
- * compile-time SOAK_DATA_DIR "/materials.json". */
-const char *soak_presets_default_path(void);
+/* The presets file read when none is named: the environment variable
+ * SOAK_MATERIALS if set and non-empty, else materials.json of the data
+ * folder (search order: soak/data_dir.h). Writes it to out (n bytes;
+ * SOAK_PRESETS_PATH_MAX is enough); on failure out is untouched and err
+ * names the folders tried (SOAK_ERR_NOT_FOUND) or the overlong path
+ * (SOAK_ERR_ARG). */
+#define SOAK_PRESETS_PATH_MAX 4096
+soak_status soak_presets_default_path(char *out, size_t n, char *err, size_t errlen);
 
 /* The path the database was loaded from. */
 const char *soak_presets_path(const soak_preset_db *db);
