@@ -5,7 +5,7 @@ BUILD      ?= build
 BUILD_ASAN ?= build-asan
 JOBS       ?= $(shell nproc)
 
-.PHONY: all deps build build-asan blender43 addon exports demo gallery povray-gallery test test-release test-asan bench fuzz clean
+.PHONY: all deps build build-asan blender43 blender52 addon exports demo gallery povray-gallery test test-release test-asan bench fuzz clean
 
 all: build
 
@@ -20,10 +20,14 @@ build-asan: deps
 	@cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOAK_SANITIZE=ON > $(BUILD_ASAN).configure.log || (cat $(BUILD_ASAN).configure.log; exit 1)
 	@cmake --build $(BUILD_ASAN) -j $(JOBS)
 
-# Debian 13's Blender 4.3 in a root file system inside the build folder (made
-# once, reused): the Blender tests run in 3.4 and in 4.3.
+# Debian 13's Blender 4.3 and Debian sid's Blender 5.2, each in a root file
+# system inside the build folder (made once, reused): the Blender tests run in
+# 3.4 (the host's), 4.3 and 5.2.
 blender43: deps
-	@bash scripts/setup-blender43.sh $(CURDIR)/$(BUILD)/trixie-root
+	@bash scripts/setup-blender-root.sh 4.3 $(CURDIR)/$(BUILD)/trixie-root
+
+blender52: deps
+	@bash scripts/setup-blender-root.sh 5.2 $(CURDIR)/$(BUILD)/sid-root
 
 # The Blender add-on, installable in Blender 3.x (bl_info) and 4.2+ (extension manifest).
 addon:
@@ -59,7 +63,7 @@ povray-gallery: build
 CTEST_ARGS = --output-on-failure -j $(JOBS) --output-junit ctest-junit.xml \
   --test-output-size-passed 1000000 --test-output-size-failed 1000000
 
-test-release: build blender43
+test-release: build blender43 blender52
 	@cd $(BUILD) && { ctest $(CTEST_ARGS); rc=$$?; \
 	  /usr/bin/python3 $(CURDIR)/scripts/test_skips.py . ctest-junit.xml || rc=1; exit $$rc; }
 

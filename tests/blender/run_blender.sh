@@ -1,17 +1,20 @@
 #!/bin/bash
 # run_blender.sh SCRIPT ARGS...: the script in headless Blender, under Xvfb
 # (EEVEE needs an X server). Fails (never skips) when the Blender asked for is
-# missing: the README's set-up installs both.
+# missing: the README's set-up installs all three.
 #
 #   SOAK_BLENDER=3.4 (default)  Debian 12's blender on PATH
 #   SOAK_BLENDER=4.3            Debian 13's Blender 4.3 in the root that
-#                               scripts/setup-blender43.sh made at
+#                               scripts/setup-blender-root.sh 4.3 made at
 #                               $SOAK_BLENDER43_ROOT (default build/trixie-root)
+#   SOAK_BLENDER=5.2            Debian sid's Blender 5.2 in the root that
+#                               scripts/setup-blender-root.sh 5.2 made at
+#                               $SOAK_BLENDER52_ROOT (default build/sid-root)
 #   SOAK_BLENDER_UI=1           run with Blender's window (screenshots) instead of -b
 #   SOAK_BLENDER_RAW=1          ARGS are Blender's own command line, no SCRIPT
 #                               (a render farm's blender-render command)
 #
-# In 4.3 the root is entered with chroot inside a private mount namespace
+# In 4.3 and 5.2 the root is entered with chroot inside a private mount namespace
 # (nothing stays mounted afterwards): the repository, the build folder and
 # every folder an argument names are bind-mounted at their own paths, so
 # arguments need no translation. A `--soak BINARY` argument (a bookworm
@@ -46,17 +49,18 @@ if [ "$version" = 3.4 ]; then
   exec "${xvfb[@]}" blender "${blender_args[@]}"
 fi
 
-if [ "$version" != 4.3 ]; then
-  echo "FAIL: SOAK_BLENDER=$version: this suite runs 3.4 (host) and 4.3 (Debian 13 root)"
-  exit 1
-fi
-root=${SOAK_BLENDER43_ROOT:-$repo/build/trixie-root}
-if [ ! -f "$root/.soak-blender43-ready" ]; then
-  echo "FAIL: no Blender 4.3 root at $root (make test runs scripts/setup-blender43.sh)"
+case "$version" in
+  4.3) root=${SOAK_BLENDER43_ROOT:-$repo/build/trixie-root} ;;
+  5.2) root=${SOAK_BLENDER52_ROOT:-$repo/build/sid-root} ;;
+  *) echo "FAIL: SOAK_BLENDER=$version: this suite runs 3.4 (host), 4.3 (Debian 13 root) and 5.2 (Debian sid root)"
+     exit 1 ;;
+esac
+if [ ! -f "$root/.soak-blender${version/./}-ready" ]; then
+  echo "FAIL: no Blender $version root at $root (make test runs scripts/setup-blender-root.sh $version)"
   exit 1
 fi
 if [ "$(id -u)" -ne 0 ]; then
-  echo "FAIL: Blender 4.3 runs in a chroot, which needs root"
+  echo "FAIL: Blender $version runs in a chroot, which needs root"
   exit 1
 fi
 
