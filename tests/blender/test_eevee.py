@@ -43,7 +43,7 @@ import common  # noqa: E402
 A = common.args()
 ZIP, TMP = A["addon"], A["tmp"]
 CASES = json.load(open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "plane_cases.json")))
-EEVEE = "BLENDER_EEVEE_NEXT" if bpy.app.version >= (4, 2, 0) else "BLENDER_EEVEE"
+EEVEE = common.eevee_engine()
 SIZE = 32
 quant = {}  # (tag, engine) -> half-buffer quantisation term of that render
 # EEVEE samples the group's float tables from their GPU copies, which

@@ -626,6 +626,37 @@ def test_rain_direction(ground):
     check("above" in msg, f"rain from below the horizon: {msg}")
 
 
+def test_rain_duration(ground):
+    """Bake Wet Map's Rain (s) does what its tooltip says. 0 s bakes the sky
+    exposure: 1 on open horizontal ground (soak bake rain's normalisation of
+    the exposure), 0 under the ring's tube and the roof, which no ray of the
+    10-degree cone reaches (test_bake's geometry). An hour of 10 mm/h rain
+    (0.5 mm/h evaporation) leaves 9.5 mm on open ground, 47 times the 0.2 mm
+    film a flat surface holds: the surplus spreads over the flat plane, under
+    the ring too, where wetness 1 - exp(-depth / 0.2 mm) > 0.99 needs 0.92 mm
+    (a tenth of the open depth). And each bake of the ground replaces the
+    image its previous bake made (one Ground_wet.exr, no .001, .002...)."""
+    mat = ground.active_material
+    mine = bpy.data.images.new("Ground_wet.exr.user", 4, 4)    # an image of the user's: never replaced
+    r = bpy.ops.soak.bake_wetmap("EXEC_DEFAULT", size=32, rays=32, duration=0.0, occluders="SCENE")
+    check(r == {"FINISHED"}, "bake with 0 s of rain")
+    img = mat.soak.wet_map
+    e = {"open": texel(img, 0.95, 0.95), "under ring": texel(img, 0.75, 0.5), "under roof": texel(img, 0.125, 0.875)}
+    print("0 s of rain, sky exposure:", e)
+    check(abs(e["open"] - 1.0) < 0.02 and e["under ring"] < 0.02 and e["under roof"] < 0.02,
+          f"0 s of rain does not bake the sky exposure (open 1, sheltered 0): {e}")
+    r = bpy.ops.soak.bake_wetmap("EXEC_DEFAULT", size=32, rays=32, duration=3600.0, occluders="SCENE")
+    check(r == {"FINISHED"}, "bake with an hour of rain")
+    img = mat.soak.wet_map
+    h = {"open": texel(img, 0.95, 0.95), "under ring": texel(img, 0.75, 0.5), "under roof": texel(img, 0.125, 0.875)}
+    print("an hour of rain:", h)
+    check(h["under ring"] > 0.99 and h["open"] > 0.99,
+          f"after an hour the water has not spread under the ring as the tooltip says: {h}")
+    names = sorted(i.name for i in bpy.data.images if i.name.startswith("Ground_wet"))
+    check(names == ["Ground_wet.exr", "Ground_wet.exr.user"] and img.name == "Ground_wet.exr"
+          and mine.name == "Ground_wet.exr.user", f"the bakes piled up images: {names}")
+
+
 def test_pending_controls(ob):
     """Controls set in the panel before Make Wet reach the group."""
     mat = textured_material("Pending")
@@ -837,6 +868,7 @@ def main():
     test_panel(ground)
     test_bake({"ground": ground, "torus": torus})
     test_rain_direction(ground)
+    test_rain_duration(ground)
     test_pending_controls(ground)
     test_metal_preset(ground)
     print(f"{len(CHECKS)} checks")
