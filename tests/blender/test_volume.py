@@ -42,6 +42,9 @@ sc.render.resolution_x = sc.render.resolution_y = 16
 sc.render.image_settings.file_format = "OPEN_EXR"
 sc.view_settings.view_transform = "Standard"
 w = bpy.data.worlds.new("black")
+w.color = (0.0, 0.0, 0.0)
+if w.node_tree is not None:         # 5.x worlds always use nodes (grey Background by default)
+    w.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
 sc.world = w
 cd = bpy.data.cameras.new("TopCam")
 cd.type = "ORTHO"
@@ -80,30 +83,32 @@ px, mean = render("volume")
 print("volume render mean", mean)
 if not all(v == v and abs(v) < 1e6 for v in px):
     common.fail("non-finite pixels")
-if not (mean[0] > 0.01 and mean[0] > mean[2]):
-    # Can this Cycles render a VDB volume at all? Blender's own Mesh to Volume, same place and light.
-    ob.hide_render = True
-    bpy.ops.mesh.primitive_cube_add(size=0.04, location=(0.05, 0.05, 0.025))
-    cube = bpy.context.object
-    cube.hide_render = True
-    ref = bpy.data.objects.new("Reference volume", bpy.data.volumes.new("Reference volume"))
-    sc.collection.objects.link(ref)
-    mod = ref.modifiers.new("Mesh to Volume", "MESH_TO_VOLUME")
-    mod.object = cube
-    mat = bpy.data.materials.new("Reference medium")
-    tree = mat.node_tree
-    if tree is None:
-        mat.use_nodes = True
-        tree = mat.node_tree
-    tree.nodes.clear()
-    pv = tree.nodes.new("ShaderNodeVolumePrincipled")
-    tree.links.new(pv.outputs[0], tree.nodes.new("ShaderNodeOutputMaterial").inputs["Volume"])
-    ref.data.materials.append(mat)
-    _, ref_mean = render("reference_volume")
-    print("Blender's own Mesh to Volume, same scene: render mean", ref_mean)
-    if ref_mean[0] > 0.01:
+
+# Can this Cycles render a VDB volume at all? Blender's own Mesh to Volume
+# (a 4 cm cube, density 100 /m: optical depth 4), same place and light.
+ob.hide_render = True
+bpy.ops.mesh.primitive_cube_add(size=0.04, location=(0.05, 0.05, 0.025))
+cube = bpy.context.object
+cube.hide_render = True
+ref = bpy.data.objects.new("Reference volume", bpy.data.volumes.new("Reference volume"))
+sc.collection.objects.link(ref)
+ref.modifiers.new("Mesh to Volume", "MESH_TO_VOLUME").object = cube
+mat = bpy.data.materials.new("Reference medium")
+if mat.node_tree is None:
+    mat.use_nodes = True
+tree = mat.node_tree
+tree.nodes.clear()
+pv = tree.nodes.new("ShaderNodeVolumePrincipled")
+pv.inputs["Density"].default_value = 100.0
+tree.links.new(pv.outputs[0], tree.nodes.new("ShaderNodeOutputMaterial").inputs["Volume"])
+ref.data.materials.append(mat)
+_, ref_mean = render("reference_volume")
+print("Blender's own Mesh to Volume, same scene: render mean", ref_mean)
+if ref_mean[0] > 0.01:
+    if not (mean[0] > 0.01 and mean[0] > mean[2]):
         common.fail(f"the sand volume does not render as a lit, reddish medium: {mean} "
                     f"(this Cycles renders Blender's own volume: {ref_mean})")
+else:
     print(f"RENDER NOT CHECKED: this Blender {bpy.app.version_string}'s Cycles renders no OpenVDB volume "
           f"(Blender's own Mesh to Volume: mean {ref_mean}; the soak volume: {mean}): a limitation of the "
           "build; the import is checked")
