@@ -160,6 +160,11 @@ def main():
     for src, sock in unlinked:
         mat.node_tree.links.new(src, sock)
     failures = []
+    if not all(diffuse[st, EEVEE][0] > 0 for st in ("dry", "wet")):
+        # the group's colour never reached EEVEE's BSDF (5.2: an unlinked Normal group input arrives as 0)
+        common.fail(f"{EEVEE} renders no diffuse light through the group: dry {diffuse['dry', EEVEE][0]:.5f}, "
+                    f"wet {diffuse['wet', EEVEE][0]:.5f} (Cycles {diffuse['dry', 'CYCLES'][0]:.5f}, "
+                    f"{diffuse['wet', 'CYCLES'][0]:.5f})")
     base = {st: diffuse[st, EEVEE][0] / diffuse[st, "CYCLES"][0] for st in ("dry", "wet")}
     sigma1 = rel_se(list(diffuse.values()))
     buffer_term = sum(quant[f"{st}_diffuse", EEVEE] for st in ("dry", "wet"))
