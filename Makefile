@@ -45,11 +45,19 @@ demo: build addon
 
 # The Blender gallery of blender_addon/README.md: the seed scenes of the physics
 # sources (scenes/blender/seeds.py), Cycles, 960x540, into blender_addon/images/
-# (gallery_*.png). About 30 minutes on two shared cores; `make demo` renders
-# the same scenes at 320x180.
+# (gallery_*.png), in the Blender artists run: GALLERY_BLENDER (default 5.2, the
+# Debian sid root `make blender52` makes; 4.3 or 3.4 also work) through
+# tests/blender/run_blender.sh. About 30 minutes on two shared cores in 3.4;
+# `make demo` renders the same scenes at 320x180.
 GALLERY_SAMPLES ?= 16
-gallery: build addon
-	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out blender_addon/images --prefix gallery_ --size 960x540 --samples $(GALLERY_SAMPLES) --max-kb 400 --soak $(BUILD)/bin/soak
+GALLERY_BLENDER ?= 5.2
+gallery: build addon $(if $(filter 5.2,$(GALLERY_BLENDER)),blender52) $(if $(filter 4.3,$(GALLERY_BLENDER)),blender43)
+	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user BLENDER_USER_EXTENSIONS=$(CURDIR)/$(BUILD)/blender_user/extensions \
+	  BLENDER_USER_CONFIG=$(CURDIR)/$(BUILD)/blender_user/config SOAK_BLENDER=$(GALLERY_BLENDER) \
+	  SOAK_BLENDER43_ROOT=$(CURDIR)/$(BUILD)/trixie-root SOAK_BLENDER52_ROOT=$(CURDIR)/$(BUILD)/sid-root \
+	  bash tests/blender/run_blender.sh scenes/blender/render_all.py --addon $(CURDIR)/$(BUILD)/soak_blender.zip \
+	  --out $(CURDIR)/blender_addon/images --prefix gallery_ --size 960x540 --samples $(GALLERY_SAMPLES) --max-kb 400 \
+	  --soak $(CURDIR)/$(BUILD)/bin/soak
 
 # The POV-Ray gallery of povray/README.md: the seven situations of the physics
 # sources (scenes/povray/gallery/), 960x540, beside soak render where it can render

@@ -11,6 +11,9 @@
 #                               scripts/setup-blender-root.sh 5.2 made at
 #                               $SOAK_BLENDER52_ROOT (default build/sid-root)
 #   SOAK_BLENDER_UI=1           run with Blender's window (screenshots) instead of -b
+#   SOAK_XVFB_FBDIR=DIR         Xvfb keeps its frame buffer in DIR/Xvfb_screen0
+#                               (screenshot_panel.py --xwd: 4.x and 5.x read a
+#                               black front buffer under Xvfb)
 #   SOAK_BLENDER_RAW=1          ARGS are Blender's own command line, no SCRIPT
 #                               (a render farm's blender-render command)
 #
@@ -38,7 +41,7 @@ mapfile -d '' blender_args < <(script_args "$@")
 
 xvfb=()
 if command -v xvfb-run >/dev/null; then
-  xvfb=(xvfb-run -a -s "-screen 0 1280x1024x24")
+  xvfb=(xvfb-run -a -s "-screen 0 1280x1024x24${SOAK_XVFB_FBDIR:+ -fbdir $SOAK_XVFB_FBDIR}")
 fi
 
 if [ "$version" = 3.4 ]; then
@@ -87,7 +90,7 @@ for a in "$@"; do
   args+=("$a")
   prev=$a
 done
-for v in BLENDER_USER_SCRIPTS TMPDIR; do
+for v in BLENDER_USER_SCRIPTS BLENDER_USER_EXTENSIONS BLENDER_USER_CONFIG TMPDIR SOAK_XVFB_FBDIR; do
   d=${!v:-}
   if [ -n "$d" ]; then mkdir -p "$d"; binds+=("$d"); fi
 done
