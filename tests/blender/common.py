@@ -51,6 +51,14 @@ def find_fcurve(id_data, path):
     return next((fc for fc in fcurves(id_data) if fc.data_path == path and fc.array_index == 0), None)
 
 
+def use_nodes(idblock):
+    """Gives a material or world its node tree: Use Nodes before 5.0; 5.x
+    data always use nodes (setting use_nodes is deprecated there)."""
+    if bpy.app.version < (5, 0, 0) or idblock.node_tree is None:
+        use_nodes(idblock)
+    return idblock.node_tree
+
+
 def eevee_engine():
     """EEVEE's engine id as each Blender names it (release notes: EEVEE Next
     in 4.2, renamed back in 5.0)."""
@@ -104,7 +112,7 @@ def plane_case_scene(cases, width, height):
     sc.render.image_settings.color_depth = "32"
     sc.view_settings.view_transform = "Standard"
     world = bpy.data.worlds.new("W")
-    world.use_nodes = True
+    use_nodes(world)
     world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
     sc.world = world
     cd = bpy.data.cameras.new("C")
@@ -118,7 +126,7 @@ def plane_case_scene(cases, width, height):
     bpy.ops.mesh.primitive_plane_add(size=2)
     plane = bpy.context.object
     mat = bpy.data.materials.new("M")
-    mat.use_nodes = True
+    use_nodes(mat)
     plane.data.materials.append(mat)
     return sc, plane, mat
 

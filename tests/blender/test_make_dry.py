@@ -16,7 +16,7 @@ A = common.args()
 
 def textured_material():
     mat = bpy.data.materials.new("Textured")
-    mat.use_nodes = True
+    common.use_nodes(mat)
     t = mat.node_tree
     bsdf = t.nodes["Principled BSDF"]
     img = bpy.data.images.new("checker", 8, 8)

@@ -47,7 +47,7 @@ def groups():
 
 def textured_material(name="Textured"):
     mat = bpy.data.materials.new(name)
-    mat.use_nodes = True
+    common.use_nodes(mat)
     t = mat.node_tree
     bsdf = t.nodes["Principled BSDF"]
     img = bpy.data.images.new(name + " checker", 8, 8)
@@ -194,7 +194,7 @@ def test_failures(ob):
 def test_linked(ob):
     path = os.path.join(A["tmp"], "library.blend")
     lib = bpy.data.materials.new("LibMat")
-    lib.use_nodes = True
+    common.use_nodes(lib)
     bpy.data.libraries.write(path, {lib}, fake_user=True)
     bpy.data.materials.remove(lib)
     with bpy.data.libraries.load(path, link=True) as (src, dst):
@@ -402,7 +402,7 @@ def test_two_principled(ob):
     source and one set of controls drive both, Make Dry restores the tree."""
     soak = sys.modules["soak"]
     mat = bpy.data.materials.new("TwoBSDF")
-    mat.use_nodes = True
+    common.use_nodes(mat)
     t = mat.node_tree
     a = t.nodes["Principled BSDF"]
     b = t.nodes.new("ShaderNodeBsdfPrincipled")

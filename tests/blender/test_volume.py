@@ -94,9 +94,7 @@ ref = bpy.data.objects.new("Reference volume", bpy.data.volumes.new("Reference v
 sc.collection.objects.link(ref)
 ref.modifiers.new("Mesh to Volume", "MESH_TO_VOLUME").object = cube
 mat = bpy.data.materials.new("Reference medium")
-if mat.node_tree is None:
-    mat.use_nodes = True
-tree = mat.node_tree
+tree = common.use_nodes(mat)
 tree.nodes.clear()
 pv = tree.nodes.new("ShaderNodeVolumePrincipled")
 pv.inputs["Density"].default_value = 100.0
