@@ -55,7 +55,7 @@ def use_nodes(idblock):
     """Gives a material or world its node tree: Use Nodes before 5.0; 5.x
     data always use nodes (setting use_nodes is deprecated there)."""
     if bpy.app.version < (5, 0, 0) or idblock.node_tree is None:
-        use_nodes(idblock)
+        idblock.use_nodes = True
     return idblock.node_tree
 
 
