@@ -32,12 +32,12 @@ prefix = opts.get("--prefix", "")
 max_kb = float(opts.get("--max-kb", "0"))
 only = set(opts["--only"].split(",")) if "--only" in opts else None
 os.makedirs(out, exist_ok=True)
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon"))
-import install  # noqa: E402  (blender_addon/install.py: as users of this Blender install it)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon", "tools"))
+import soak_install  # noqa: E402  (blender_addon/tools/: as users of this Blender install it)
 
-install.install(opts["--addon"])
+soak_install.install(opts["--addon"])
 if "--soak" in opts:
-    install.preferences().soak_path = os.path.abspath(opts["--soak"])
+    soak_install.preferences().soak_path = os.path.abspath(opts["--soak"])
 
 import seeds  # noqa: E402
 

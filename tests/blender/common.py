@@ -16,20 +16,20 @@ def args():
     return out
 
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon"))
-import install  # noqa: E402  (blender_addon/install.py)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon", "tools"))
+import soak_install  # noqa: E402  (blender_addon/tools/soak_install.py; not on the path of soak/)
 
 
 def install_addon(zip_path):
     """Installs and enables the add-on from the built zip as a user of the
     running Blender does (an add-on in 3.x, an extension in 4.2+); the
     module is `soak` (sys.modules) in every version."""
-    return install.install(zip_path)[0]
+    return soak_install.install(zip_path)[0]
 
 
 def preferences():
     """The installed add-on's preferences (after install_addon)."""
-    return install.preferences()
+    return soak_install.preferences()
 
 
 def fcurves(id_data):

@@ -43,7 +43,11 @@ def install(zip_path):
         import soak  # noqa: F401
     if not hasattr(bpy.types.Material, "soak"):
         raise SystemExit("the add-on registered no Material.soak")
-    return sys.modules[name], name
+    mod = sys.modules[name]
+    source = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "soak")
+    if os.path.abspath(mod.__file__).startswith(source + os.sep):
+        raise SystemExit(f"the add-on was imported from the source tree ({mod.__file__}), not from {zip_path}")
+    return mod, name
 
 
 def preferences():
