@@ -125,12 +125,12 @@ def exact_lookups_required(version=None):
     (Preferences > Viewport > Anisotropic Filtering, default 2x; off, the same
     lookup is right), measured in 4.3.2 under Mesa llvmpipe: a wet material
     renders black. Closest lookups are right whatever the preference, so
-    4.2-4.4 always build the exact path (Closest reads, explicit bilinear),
-    which EEVEE needed anyway for the core's bilinear tables (4.5 is not
-    measured: kept on the safe side). 5.x's EEVEE
-    returns the right Linear value at a constant coordinate again (measured
-    in 5.2.2: 0.25/0.5/0.125 where 4.3 gives 0), so there the user chooses,
-    as in 3.x."""
+    4.2-4.5 always build the exact path (Closest reads, explicit bilinear),
+    which EEVEE needed anyway for the core's bilinear tables (4.4 and 4.5
+    are not measured here: kept on the safe side). 5.x's EEVEE returns the
+    right Linear value at a constant coordinate again (measured in 5.2.2:
+    0.25/0.5/0.125 where 4.3 gives 0), so there the user chooses, as in
+    3.x."""
     v = tuple(version if version is not None else bpy.app.version)
     return (4, 2, 0) <= v < (5, 0, 0)
 
