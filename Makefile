@@ -11,11 +11,11 @@ PREFIX     ?= /usr/local
 DEPS_TIER  ?= build
 demo gallery povray-gallery: DEPS_TIER = demo
 package: DEPS_TIER = package
-test test-release test-asan blender43: DEPS_TIER = test
+test test-release test-asan blender43 blender52: DEPS_TIER = test
 # The project's own builds treat warnings as errors (a plain cmake build does not).
 CMAKE_DEV  = -DSOAK_WERROR=ON
 
-.PHONY: all deps install package build build-asan blender43 addon exports demo gallery povray-gallery test test-release test-asan bench fuzz clean
+.PHONY: all deps install package build build-asan blender43 blender52 addon exports demo gallery povray-gallery test test-release test-asan bench fuzz clean
 
 all: build
 
@@ -38,10 +38,14 @@ install: build
 package: build
 	@cd $(BUILD) && cpack -G DEB
 
-# Debian 13's Blender 4.3 in a root file system inside the build folder (made
-# once, reused): the Blender tests run in 3.4 and in 4.3.
+# Debian 13's Blender 4.3 and Debian sid's Blender 5.2, each in a root file
+# system inside the build folder (made once, reused): the Blender tests run in
+# 3.4 (the host's), 4.3 and 5.2.
 blender43: deps
-	@bash scripts/setup-blender43.sh $(CURDIR)/$(BUILD)/trixie-root
+	@bash scripts/setup-blender-root.sh 4.3 $(CURDIR)/$(BUILD)/trixie-root
+
+blender52: deps
+	@bash scripts/setup-blender-root.sh 5.2 $(CURDIR)/$(BUILD)/sid-root
 
 # The Blender add-on, installable in Blender 3.x (bl_info) and 4.2+ (extension manifest).
 addon:
@@ -59,11 +63,19 @@ demo: build addon
 
 # The Blender gallery of blender_addon/README.md: the seed scenes of the physics
 # sources (scenes/blender/seeds.py), Cycles, 960x540, into blender_addon/images/
-# (gallery_*.png). About 30 minutes on two shared cores; `make demo` renders
-# the same scenes at 320x180.
+# (gallery_*.png), in the Blender artists run: GALLERY_BLENDER (default 5.2, the
+# Debian sid root `make blender52` makes; 4.3 or 3.4 also work) through
+# tests/blender/run_blender.sh. About 30 minutes on two shared cores in 3.4;
+# `make demo` renders the same scenes at 320x180.
 GALLERY_SAMPLES ?= 16
-gallery: build addon
-	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out blender_addon/images --prefix gallery_ --size 960x540 --samples $(GALLERY_SAMPLES) --max-kb 400 --soak $(BUILD)/bin/soak
+GALLERY_BLENDER ?= 5.2
+gallery: build addon $(if $(filter 5.2,$(GALLERY_BLENDER)),blender52) $(if $(filter 4.3,$(GALLERY_BLENDER)),blender43)
+	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user BLENDER_USER_EXTENSIONS=$(CURDIR)/$(BUILD)/blender_user/extensions \
+	  BLENDER_USER_CONFIG=$(CURDIR)/$(BUILD)/blender_user/config SOAK_BLENDER=$(GALLERY_BLENDER) \
+	  SOAK_BLENDER43_ROOT=$(CURDIR)/$(BUILD)/trixie-root SOAK_BLENDER52_ROOT=$(CURDIR)/$(BUILD)/sid-root \
+	  bash tests/blender/run_blender.sh scenes/blender/render_all.py --addon $(CURDIR)/$(BUILD)/soak_blender.zip \
+	  --out $(CURDIR)/blender_addon/images --prefix gallery_ --size 960x540 --samples $(GALLERY_SAMPLES) --max-kb 400 \
+	  --soak $(CURDIR)/$(BUILD)/bin/soak
 
 # The POV-Ray gallery of povray/README.md: the seven situations of the physics
 # sources (scenes/povray/gallery/), 960x540, beside soak render where it can render
@@ -77,7 +89,7 @@ povray-gallery: build
 CTEST_ARGS = --output-on-failure -j $(JOBS) --output-junit ctest-junit.xml \
   --test-output-size-passed 1000000 --test-output-size-failed 1000000
 
-test-release: build blender43
+test-release: build blender43 blender52
 	@cd $(BUILD) && { ctest $(CTEST_ARGS); rc=$$?; \
 	  /usr/bin/python3 $(CURDIR)/scripts/test_skips.py . ctest-junit.xml || rc=1; exit $$rc; }
 

@@ -2,8 +2,12 @@
 
 Principled BSDF input names: Blender 3.x (node_shader_bsdf_principled.cc up
 to 3.6) vs 4.0+ (renamed, panels). Node-group sockets: ``ng.inputs.new``
-(3.x) vs ``ng.interface.new_socket`` (4.0+). The tables are checked against
-the names in Blender's sources by tests/blender/test_compat.py."""
+(3.x) vs ``ng.interface.new_socket`` (4.0+). Animation: ``Action.fcurves``
+(up to 4.x) vs slotted actions' channel bags (5.0 removed the former). EEVEE's
+engine id: ``BLENDER_EEVEE`` (up to 4.1, again from 5.0) vs
+``BLENDER_EEVEE_NEXT`` (4.2-4.4). ``Material.use_nodes``: deprecated in 5.0
+(always true). The tables are checked against the names in Blender's sources
+by tests/blender/test_compat.py."""
 
 import bpy
 
@@ -115,13 +119,104 @@ def coat_base_compensation(b, coat_weight, coat_ior, normal):
 
 
 def exact_lookups_required(version=None):
-    """EEVEE Next (4.2+) returns 0 (or 65504) from a Linear image lookup whose
+    """EEVEE Next (4.2-4.4) returns 0 (or 65504) from a Linear image lookup whose
     coordinate does not vary over the screen (zero derivatives: a constant
     wetness, the per-row parameter column) when anisotropic filtering is on
     (Preferences > Viewport > Anisotropic Filtering, default 2x; off, the same
     lookup is right), measured in 4.3.2 under Mesa llvmpipe: a wet material
     renders black. Closest lookups are right whatever the preference, so
-    4.2+ always builds the exact path (Closest reads, explicit bilinear),
-    which EEVEE needed anyway for the core's bilinear tables."""
-    v = version if version is not None else bpy.app.version
-    return tuple(v) >= (4, 2, 0)
+    4.2-4.5 always build the exact path (Closest reads, explicit bilinear),
+    which EEVEE needed anyway for the core's bilinear tables (4.4 and 4.5
+    are not measured here: kept on the safe side). 5.x's EEVEE returns the
+    right Linear value at a constant coordinate again (measured in 5.2.2:
+    0.25/0.5/0.125 where 4.3 gives 0), so there the user chooses, as in
+    3.x."""
+    v = tuple(version if version is not None else bpy.app.version)
+    return (4, 2, 0) <= v < (5, 0, 0)
+
+
+def eevee_engine():
+    """The render engine id of EEVEE in the running Blender, from the
+    engine enum itself: BLENDER_EEVEE_NEXT in 4.2-4.4, BLENDER_EEVEE before
+    and again from 5.0."""
+    items = bpy.types.RenderSettings.bl_rna.properties["engine"].enum_items.keys()
+    return "BLENDER_EEVEE_NEXT" if "BLENDER_EEVEE_NEXT" in items else "BLENDER_EEVEE"
+
+
+def is_eevee(engine):
+    return engine in ("BLENDER_EEVEE", "BLENDER_EEVEE_NEXT")
+
+
+def eevee_reflection_switch(scene):
+    """(owner, property, hint) of the switch EEVEE needs to reflect the wet
+    film: Screen Space Reflections in EEVEE Legacy (up to 4.1), Raytracing
+    in EEVEE Next and 5.x; None when the running EEVEE has neither."""
+    ee = scene.eevee
+    if hasattr(ee, "use_raytracing"):
+        return ee, "use_raytracing", ("EEVEE reflects the film sharply only with",
+                                      "Raytracing on (else light probes only):")
+    if hasattr(ee, "use_ssr"):
+        return ee, "use_ssr", ("EEVEE shows the liquid film's reflections",
+                               "only with Screen Space Reflections on:")
+    return None
+
+
+def ensure_node_tree(mat):
+    """Gives a new material its node tree (Use Nodes before 5.0; 5.x
+    materials always use nodes)."""
+    if bpy.app.version < (5, 0, 0) or mat.node_tree is None:
+        mat.use_nodes = True
+    return mat.node_tree
+
+
+def material_uses_nodes(mat):
+    """True when the material's node tree is what renders: 5.0 deprecated
+    Material.use_nodes (always true, removal planned for 6.0), so it is read
+    only before 5.0."""
+    if mat.node_tree is None:
+        return False
+    return True if bpy.app.version >= (5, 0, 0) else bool(mat.use_nodes)
+
+
+def _channelbags(id_data):
+    """The F-curve collections animating id_data: the action's own list up
+    to 4.x, the channel bags of the assigned slot in 5.x's slotted actions."""
+    ad = id_data.animation_data
+    if ad is None or ad.action is None:
+        return []
+    act = ad.action
+    if not hasattr(act, "layers"):            # before 4.4: no slotted actions
+        return [act.fcurves]
+    slot = getattr(ad, "action_slot", None)
+    bags = []
+    if slot is not None:
+        for layer in act.layers:
+            for strip in layer.strips:
+                bag = strip.channelbag(slot)
+                if bag is not None:
+                    bags.append(bag.fcurves)
+    if not bags and hasattr(act, "fcurves"):   # 4.4's legacy view of a one-slot action
+        bags.append(act.fcurves)
+    return bags
+
+
+def find_fcurve(id_data, path, index=0):
+    """The F-curve animating id_data's `path` (array `index`), or None."""
+    for fcurves in _channelbags(id_data):
+        fc = fcurves.find(path, index=index)
+        if fc is not None:
+            return fc
+    return None
+
+
+def fcurves(id_data):
+    """Every F-curve animating id_data (a list)."""
+    return [fc for bag in _channelbags(id_data) for fc in bag]
+
+
+def remove_fcurve(id_data, fc):
+    """Removes one F-curve that find_fcurve returned."""
+    for bag in _channelbags(id_data):
+        if any(f == fc for f in bag):
+            bag.remove(fc)
+            return

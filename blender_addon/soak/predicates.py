@@ -2,7 +2,7 @@
 the active material (and why not, through poll_message_set), is OSL
 available, is a group input keyed on this frame."""
 
-from . import nodes
+from . import compat, nodes
 
 
 def osl_available(context):
@@ -29,7 +29,7 @@ def poll_editable(cls, context):
     if mat.library is not None:
         return poll_message(cls, f"Material '{mat.name}' is linked from a library: make it local first "
                                  "(Object > Relations > Make Local)")
-    if mat.node_tree is None or not mat.use_nodes:
+    if not compat.material_uses_nodes(mat):
         return poll_message(cls, f"Material '{mat.name}' does not use nodes: click Use Nodes first")
     return True
 
@@ -45,11 +45,10 @@ def wet_poll(cls, context):
 def control_fcurve(tree, gn, name):
     """The F-curve animating the group node's input `name`, or None."""
     sock = gn.inputs.get(name)
-    ad = tree.animation_data
-    if sock is None or ad is None or ad.action is None:
+    if sock is None:
         return None
     index = list(gn.inputs).index(sock)
-    return ad.action.fcurves.find(f'nodes["{gn.name}"].inputs[{index}].default_value')
+    return compat.find_fcurve(tree, f'nodes["{gn.name}"].inputs[{index}].default_value')
 
 
 def key_icon(context, tree, gn, name):

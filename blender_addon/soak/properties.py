@@ -175,7 +175,7 @@ class SoakMaterialSettings(bpy.types.PropertyGroup):
         name="Exact lookups (EEVEE)", default=False, update=_rebuild,
         description="Read the core's tables exactly: one Closest read per colour channel of the table cell "
                     "and an explicit bilinear blend (EEVEE's image filter is not plain bilinear); slower, same "
-                    "result in Cycles; always on in Blender 4.2+")
+                    "result in Cycles; always on in Blender 4.2-4.5 (EEVEE Next needs it)")
     use_osl: BoolProperty(name="Use OSL shader", default=False,
                           description="Also add the core's OSL shader (Cycles with Open Shading Language only)")
     status: StringProperty(name="Status", default="", options={"SKIP_SAVE"},

@@ -17,19 +17,13 @@ def _engine_hints(layout, context, s):
     """The render settings wet reflections need, with the switch at hand."""
     scene = context.scene
     engine = scene.render.engine
-    if engine == "BLENDER_EEVEE" and hasattr(scene.eevee, "use_ssr"):       # EEVEE Legacy (up to 4.1)
-        if not scene.eevee.use_ssr:
-            box = layout.box()
-            box.label(text="EEVEE shows the liquid film's reflections", icon="INFO")
-            box.label(text="only with Screen Space Reflections on:")
-            box.prop(scene.eevee, "use_ssr")
-    elif engine == "BLENDER_EEVEE_NEXT" and hasattr(scene.eevee, "use_raytracing"):   # EEVEE 4.2+
-        if not scene.eevee.use_raytracing:
-            box = layout.box()
-            box.label(text="EEVEE reflects the film sharply only with", icon="INFO")
-            box.label(text="Raytracing on (else light probes only):")
-            box.prop(scene.eevee, "use_raytracing")
-    if engine.startswith("BLENDER_EEVEE") and not s.exact_lookups and not compat.exact_lookups_required():
+    switch = compat.eevee_reflection_switch(scene) if compat.is_eevee(engine) else None
+    if switch is not None and not getattr(switch[0], switch[1]):
+        box = layout.box()
+        box.label(text=switch[2][0], icon="INFO")
+        box.label(text=switch[2][1])
+        box.prop(switch[0], switch[1])
+    if compat.is_eevee(engine) and not s.exact_lookups and not compat.exact_lookups_required():
         layout.label(text="EEVEE: turn on Exact lookups for the core's values", icon="INFO")
 
 
@@ -61,9 +55,9 @@ class SOAK_PT_wetness(_MaterialPanel, bpy.types.Panel):
         col.prop(s, "preset")
         col.prop(s, "liquid")
         if compat.exact_lookups_required():
-            # 4.2+ always builds the exact path (compat.exact_lookups_required):
+            # 4.2-4.x always build the exact path (compat.exact_lookups_required):
             # the setting cannot change anything there, so say so.
-            col.label(text="Exact lookups: always on in Blender 4.2+", icon="CHECKBOX_HLT")
+            col.label(text="Exact lookups: always on in this Blender (EEVEE needs them)", icon="CHECKBOX_HLT")
         else:
             col.prop(s, "exact_lookups")
         if gn is None:

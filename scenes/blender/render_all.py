@@ -32,10 +32,12 @@ prefix = opts.get("--prefix", "")
 max_kb = float(opts.get("--max-kb", "0"))
 only = set(opts["--only"].split(",")) if "--only" in opts else None
 os.makedirs(out, exist_ok=True)
-bpy.ops.preferences.addon_install(filepath=os.path.abspath(opts["--addon"]), overwrite=True)
-bpy.ops.preferences.addon_enable(module="soak")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon", "tools"))
+import soak_install  # noqa: E402  (blender_addon/tools/: as users of this Blender install it)
+
+soak_install.install(opts["--addon"])
 if "--soak" in opts:
-    bpy.context.preferences.addons["soak"].preferences.soak_path = os.path.abspath(opts["--soak"])
+    soak_install.preferences().soak_path = os.path.abspath(opts["--soak"])
 
 import seeds  # noqa: E402
 

@@ -14,8 +14,10 @@ import bpy
 
 argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 opts = dict(zip(argv[::2], argv[1::2]))
-bpy.ops.preferences.addon_install(filepath=os.path.abspath(opts["--addon"]), overwrite=True)
-bpy.ops.preferences.addon_enable(module="soak")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon", "tools"))
+import soak_install  # noqa: E402  (blender_addon/tools/: as users of this Blender install it)
+
+soak_install.install(opts["--addon"])
 out = os.path.abspath(opts["--out"])
 bpy.context.preferences.view.show_splash = False
 

@@ -16,15 +16,53 @@ def args():
     return out
 
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon", "tools"))
+import soak_install  # noqa: E402  (blender_addon/tools/soak_install.py; not on the path of soak/)
+
+
 def install_addon(zip_path):
-    """Installs and enables the add-on from the built zip (like a user)."""
-    if not os.path.isfile(zip_path):
-        raise SystemExit(f"add-on zip not found: {zip_path} (make addon)")
-    bpy.ops.preferences.addon_install(filepath=zip_path, overwrite=True)
-    bpy.ops.preferences.addon_enable(module="soak")
-    import soak  # noqa: F401
-    assert hasattr(bpy.types.Material, "soak"), "add-on registered no Material.soak"
-    return sys.modules["soak"]
+    """Installs and enables the add-on from the built zip as a user of the
+    running Blender does (an add-on in 3.x, an extension in 4.2+); the
+    module is `soak` (sys.modules) in every version."""
+    return soak_install.install(zip_path)[0]
+
+
+def preferences():
+    """The installed add-on's preferences (after install_addon)."""
+    return soak_install.preferences()
+
+
+def fcurves(id_data):
+    """The F-curves animating id_data, read the way each Blender stores
+    them (independently of the add-on's compat.py): the action's list up to
+    4.x, the assigned slot's channel bag in 5.x (Blender's own
+    bpy_extras.anim_utils)."""
+    ad = id_data.animation_data
+    if ad is None or ad.action is None:
+        return []
+    if bpy.app.version < (5, 0, 0):
+        return list(ad.action.fcurves)
+    from bpy_extras import anim_utils
+    bag = anim_utils.action_get_channelbag_for_slot(ad.action, ad.action_slot)
+    return list(bag.fcurves) if bag is not None else []
+
+
+def find_fcurve(id_data, path):
+    return next((fc for fc in fcurves(id_data) if fc.data_path == path and fc.array_index == 0), None)
+
+
+def use_nodes(idblock):
+    """Gives a material or world its node tree: Use Nodes before 5.0; 5.x
+    data always use nodes (setting use_nodes is deprecated there)."""
+    if bpy.app.version < (5, 0, 0) or idblock.node_tree is None:
+        idblock.use_nodes = True
+    return idblock.node_tree
+
+
+def eevee_engine():
+    """EEVEE's engine id as each Blender names it (release notes: EEVEE Next
+    in 4.2, renamed back in 5.0)."""
+    return "BLENDER_EEVEE_NEXT" if (4, 2, 0) <= bpy.app.version < (5, 0, 0) else "BLENDER_EEVEE"
 
 
 def tree_state(tree):
@@ -74,7 +112,7 @@ def plane_case_scene(cases, width, height):
     sc.render.image_settings.color_depth = "32"
     sc.view_settings.view_transform = "Standard"
     world = bpy.data.worlds.new("W")
-    world.use_nodes = True
+    use_nodes(world)
     world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
     sc.world = world
     cd = bpy.data.cameras.new("C")
@@ -88,7 +126,7 @@ def plane_case_scene(cases, width, height):
     bpy.ops.mesh.primitive_plane_add(size=2)
     plane = bpy.context.object
     mat = bpy.data.materials.new("M")
-    mat.use_nodes = True
+    use_nodes(mat)
     plane.data.materials.append(mat)
     return sc, plane, mat
 

@@ -1,17 +1,23 @@
 #!/bin/bash
 # run_blender.sh SCRIPT ARGS...: the script in headless Blender, under Xvfb
 # (EEVEE needs an X server). Fails (never skips) when the Blender asked for is
-# missing: the README's set-up installs both.
+# missing: the README's set-up installs all three.
 #
 #   SOAK_BLENDER=3.4 (default)  Debian 12's blender on PATH
 #   SOAK_BLENDER=4.3            Debian 13's Blender 4.3 in the root that
-#                               scripts/setup-blender43.sh made at
+#                               scripts/setup-blender-root.sh 4.3 made at
 #                               $SOAK_BLENDER43_ROOT (default build/trixie-root)
+#   SOAK_BLENDER=5.2            Debian sid's Blender 5.2 in the root that
+#                               scripts/setup-blender-root.sh 5.2 made at
+#                               $SOAK_BLENDER52_ROOT (default build/sid-root)
 #   SOAK_BLENDER_UI=1           run with Blender's window (screenshots) instead of -b
+#   SOAK_XVFB_FBDIR=DIR         Xvfb keeps its frame buffer in DIR/Xvfb_screen0
+#                               (screenshot_panel.py --xwd: 4.x and 5.x read a
+#                               black front buffer under Xvfb)
 #   SOAK_BLENDER_RAW=1          ARGS are Blender's own command line, no SCRIPT
 #                               (a render farm's blender-render command)
 #
-# In 4.3 the root is entered with chroot inside a private mount namespace
+# In 4.3 and 5.2 the root is entered with chroot inside a private mount namespace
 # (nothing stays mounted afterwards): the repository, the build folder and
 # every folder an argument names are bind-mounted at their own paths, so
 # arguments need no translation. A `--soak BINARY` argument (a bookworm
@@ -35,7 +41,7 @@ mapfile -d '' blender_args < <(script_args "$@")
 
 xvfb=()
 if command -v xvfb-run >/dev/null; then
-  xvfb=(xvfb-run -a -s "-screen 0 1280x1024x24")
+  xvfb=(xvfb-run -a -s "-screen 0 1280x1024x24${SOAK_XVFB_FBDIR:+ -fbdir $SOAK_XVFB_FBDIR}")
 fi
 
 if [ "$version" = 3.4 ]; then
@@ -46,17 +52,18 @@ if [ "$version" = 3.4 ]; then
   exec "${xvfb[@]}" blender "${blender_args[@]}"
 fi
 
-if [ "$version" != 4.3 ]; then
-  echo "FAIL: SOAK_BLENDER=$version: this suite runs 3.4 (host) and 4.3 (Debian 13 root)"
-  exit 1
-fi
-root=${SOAK_BLENDER43_ROOT:-$repo/build/trixie-root}
-if [ ! -f "$root/.soak-blender43-ready" ]; then
-  echo "FAIL: no Blender 4.3 root at $root (make test runs scripts/setup-blender43.sh)"
+case "$version" in
+  4.3) root=${SOAK_BLENDER43_ROOT:-$repo/build/trixie-root} ;;
+  5.2) root=${SOAK_BLENDER52_ROOT:-$repo/build/sid-root} ;;
+  *) echo "FAIL: SOAK_BLENDER=$version: this suite runs 3.4 (host), 4.3 (Debian 13 root) and 5.2 (Debian sid root)"
+     exit 1 ;;
+esac
+if [ ! -f "$root/.soak-blender${version/./}-ready" ]; then
+  echo "FAIL: no Blender $version root at $root (make test runs scripts/setup-blender-root.sh $version)"
   exit 1
 fi
 if [ "$(id -u)" -ne 0 ]; then
-  echo "FAIL: Blender 4.3 runs in a chroot, which needs root"
+  echo "FAIL: Blender $version runs in a chroot, which needs root"
   exit 1
 fi
 
@@ -83,7 +90,7 @@ for a in "$@"; do
   args+=("$a")
   prev=$a
 done
-for v in BLENDER_USER_SCRIPTS TMPDIR; do
+for v in BLENDER_USER_SCRIPTS BLENDER_USER_EXTENSIONS BLENDER_USER_CONFIG TMPDIR SOAK_XVFB_FBDIR; do
   d=${!v:-}
   if [ -n "$d" ]; then mkdir -p "$d"; binds+=("$d"); fi
 done

@@ -43,7 +43,7 @@ import common  # noqa: E402
 A = common.args()
 ZIP, TMP = A["addon"], A["tmp"]
 CASES = json.load(open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "plane_cases.json")))
-EEVEE = "BLENDER_EEVEE_NEXT" if bpy.app.version >= (4, 2, 0) else "BLENDER_EEVEE"
+EEVEE = common.eevee_engine()
 SIZE = 32
 quant = {}  # (tag, engine) -> half-buffer quantisation term of that render
 # EEVEE samples the group's float tables from their GPU copies, which
@@ -160,6 +160,11 @@ def main():
     for src, sock in unlinked:
         mat.node_tree.links.new(src, sock)
     failures = []
+    if not all(diffuse[st, EEVEE][0] > 0 for st in ("dry", "wet")):
+        # the group's colour never reached EEVEE's BSDF (5.2: an unlinked Normal group input arrives as 0)
+        common.fail(f"{EEVEE} renders no diffuse light through the group: dry {diffuse['dry', EEVEE][0]:.5f}, "
+                    f"wet {diffuse['wet', EEVEE][0]:.5f} (Cycles {diffuse['dry', 'CYCLES'][0]:.5f}, "
+                    f"{diffuse['wet', 'CYCLES'][0]:.5f})")
     base = {st: diffuse[st, EEVEE][0] / diffuse[st, "CYCLES"][0] for st in ("dry", "wet")}
     sigma1 = rel_se(list(diffuse.values()))
     buffer_term = sum(quant[f"{st}_diffuse", EEVEE] for st in ("dry", "wet"))

@@ -144,7 +144,7 @@ def main():
         if True:
             pts = points(t["base_colour"], k)
             mat = bpy.data.materials.new(f"{m['name']}_{liquid}")
-            mat.use_nodes = True
+            common.use_nodes(mat)
             plane.data.materials.clear()
             plane.data.materials.append(mat)
             mat.soak.preset, mat.soak.liquid = m["name"], liquid

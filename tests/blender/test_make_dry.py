@@ -16,7 +16,7 @@ A = common.args()
 
 def textured_material():
     mat = bpy.data.materials.new("Textured")
-    mat.use_nodes = True
+    common.use_nodes(mat)
     t = mat.node_tree
     bsdf = t.nodes["Principled BSDF"]
     img = bpy.data.images.new("checker", 8, 8)
@@ -169,7 +169,7 @@ def main():
         common.fail("the drying keys were lost")
 
     # 4. Bake Wet Map: missing soak, failing soak, working soak
-    prefs = bpy.context.preferences.addons["soak"].preferences
+    prefs = common.preferences()
     prefs.soak_path = os.path.join(A["tmp"], "no_such_soak")
     expect_error(r"soak executable not found")
     bad = os.path.join(A["tmp"], "failing_soak")

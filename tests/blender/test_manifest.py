@@ -5,8 +5,9 @@ Every version: blender_manifest.toml in the zip parses, holds the fields
 applies in strict validation (Blender's bl_pkg/cli/blender_ext.py,
 TERSE_DESCRIPTION_MAX_LENGTH = 64: the tagline and each permission reason
 at most 64 characters, ending in a letter, digit or closing bracket); the
-zip installs and enables (common.install_addon: bl_info in 3.x, the same zip
-in 4.x).
+zip installs and enables as each version's users install it
+(common.install_addon: Install Add-on in 3.x, Install from Disk as an
+extension in 4.2+); the manifest names no website (the project has none).
 Blender 4.2+: `blender --command extension validate` accepts the zip, and
 `blender --command extension build` builds an extension zip from its
 contents that holds the same add-on files."""
@@ -50,6 +51,9 @@ for key, reason in manifest.get("permissions", {}).items():
     terse(f"permissions.{key}", reason)
 if tuple(int(x) for x in manifest.get("blender_version_min", "0.0.0").split(".")) < (4, 2, 0):
     failures.append("blender_version_min below 4.2.0 (extensions start there)")
+# the project has no web page of its own: a website would be a made-up address
+if "website" in manifest:
+    failures.append(f"manifest website '{manifest['website']}': the project has no page; leave it out")
 if manifest.get("type") != "add-on" or manifest.get("id") != "soak":
     failures.append(f"type/id: {manifest.get('type')}/{manifest.get('id')}")
 print(f"tagline {len(manifest['tagline'])} characters, permission reasons "

@@ -47,7 +47,7 @@ def groups():
 
 def textured_material(name="Textured"):
     mat = bpy.data.materials.new(name)
-    mat.use_nodes = True
+    common.use_nodes(mat)
     t = mat.node_tree
     bsdf = t.nodes["Principled BSDF"]
     img = bpy.data.images.new(name + " checker", 8, 8)
@@ -194,7 +194,7 @@ def test_failures(ob):
 def test_linked(ob):
     path = os.path.join(A["tmp"], "library.blend")
     lib = bpy.data.materials.new("LibMat")
-    lib.use_nodes = True
+    common.use_nodes(lib)
     bpy.data.libraries.write(path, {lib}, fake_user=True)
     bpy.data.materials.remove(lib)
     with bpy.data.libraries.load(path, link=True) as (src, dst):
@@ -402,7 +402,7 @@ def test_two_principled(ob):
     source and one set of controls drive both, Make Dry restores the tree."""
     soak = sys.modules["soak"]
     mat = bpy.data.materials.new("TwoBSDF")
-    mat.use_nodes = True
+    common.use_nodes(mat)
     t = mat.node_tree
     a = t.nodes["Principled BSDF"]
     b = t.nodes.new("ShaderNodeBsdfPrincipled")
@@ -435,8 +435,8 @@ def test_two_principled(ob):
     check(all(abs(g.inputs["Fill Time"].default_value - 42.0) < 1e-6 for g in gns), "a control set only one group")
     check(bpy.ops.soak.key_drying() == {"FINISHED"}, "key drying two BSDFs")
     ad = t.animation_data
-    keyed = {g.name for g in gns if ad and ad.action and ad.action.fcurves.find(
-        f'nodes["{g.name}"].inputs[{list(g.inputs).index(g.inputs["Time"])}].default_value')}
+    keyed = {g.name for g in gns if common.find_fcurve(
+        t, f'nodes["{g.name}"].inputs[{list(g.inputs).index(g.inputs["Time"])}].default_value')}
     check(keyed == {g.name for g in gns}, f"Key Drying keyed {keyed}")
     if ad is not None:
         ad.action = None
@@ -499,7 +499,7 @@ def test_key_drying(ob):
     check(mat.soak.schedule is False and mat.soak.drying is False, "checkbox proxies: off by default")
     for _ in range(2):   # twice: the second replaces the first's keys
         check(bpy.ops.soak.key_drying() == {"FINISHED"}, "key_drying")
-    fcs = [fc for fc in t.animation_data.action.fcurves if ".inputs[" in fc.data_path]
+    fcs = [fc for fc in common.fcurves(t) if ".inputs[" in fc.data_path]
     check(len(fcs) == 1, f"Key Drying made {len(fcs)} curves")
     keys = [(k.co[0], k.co[1]) for k in fcs[0].keyframe_points]
     print("Key Drying keys:", keys)
@@ -518,14 +518,14 @@ def test_key_drying(ob):
     sc.frame_set(12)
     wet_path = f'nodes["Soak Wet"].inputs[{list(gn.inputs).index(gn.inputs["Wetness"])}].default_value'
     check(bpy.ops.soak.key_control(name="Wetness") == {"FINISHED"}, "key_control")
-    fc = t.animation_data.action.fcurves.find(wet_path)
+    fc = common.find_fcurve(t, wet_path)
     check(fc is not None and [k.co[0] for k in fc.keyframe_points] == [12.0], "the keyframe button did not key")
     bpy.ops.soak.key_control(name="Wetness")
-    fc = t.animation_data.action.fcurves.find(wet_path)
+    fc = common.find_fcurve(t, wet_path)
     check(fc is None or len(fc.keyframe_points) == 0, "the keyframe button did not delete its key")
     # explicit frames, and a refusal for an empty range (nothing changed)
     check(bpy.ops.soak.key_drying(frame_start=5, frame_end=9) == {"FINISHED"}, "key_drying 5..9")
-    time_fc = [fc for fc in t.animation_data.action.fcurves if fc.keyframe_points and fc.data_path == fcs[0].data_path]
+    time_fc = [fc for fc in common.fcurves(t) if fc.keyframe_points and fc.data_path == fcs[0].data_path]
     keys = [(k.co[0], k.co[1]) for k in time_fc[0].keyframe_points]
     check(keys == [(5.0, 20.0), (9.0, 62.0)], f"explicit frames: {keys}")
     state = common.tree_state(t)
@@ -545,7 +545,7 @@ def texel(img, u, v):
 
 def test_bake(scene_objects):
     ground = scene_objects["ground"]
-    prefs = bpy.context.preferences.addons["soak"].preferences
+    prefs = common.preferences()
     prefs.soak_path = A["soak"]
     mat = textured_material("Ground")
     use(ground, mat)
@@ -624,6 +624,37 @@ def test_rain_direction(ground):
     check(shifted < 0.05, f"slanted rain: the roof's shifted shadow is wet ({shifted:.3f})")
     msg = op_error(bpy.ops.soak.bake_wetmap, size=16, rays=4, rain_from=(1.0, 0.0, -0.5))
     check("above" in msg, f"rain from below the horizon: {msg}")
+
+
+def test_rain_duration(ground):
+    """Bake Wet Map's Rain (s) does what its tooltip says. 0 s bakes the sky
+    exposure: 1 on open horizontal ground (soak bake rain's normalisation of
+    the exposure), 0 under the ring's tube and the roof, which no ray of the
+    10-degree cone reaches (test_bake's geometry). An hour of 10 mm/h rain
+    (0.5 mm/h evaporation) leaves 9.5 mm on open ground, 47 times the 0.2 mm
+    film a flat surface holds: the surplus spreads over the flat plane, under
+    the ring too, where wetness 1 - exp(-depth / 0.2 mm) > 0.99 needs 0.92 mm
+    (a tenth of the open depth). And each bake of the ground replaces the
+    image its previous bake made (one Ground_wet.exr, no .001, .002...)."""
+    mat = ground.active_material
+    mine = bpy.data.images.new("Ground_wet.exr.user", 4, 4)    # an image of the user's: never replaced
+    r = bpy.ops.soak.bake_wetmap("EXEC_DEFAULT", size=32, rays=32, duration=0.0, occluders="SCENE")
+    check(r == {"FINISHED"}, "bake with 0 s of rain")
+    img = mat.soak.wet_map
+    e = {"open": texel(img, 0.95, 0.95), "under ring": texel(img, 0.75, 0.5), "under roof": texel(img, 0.125, 0.875)}
+    print("0 s of rain, sky exposure:", e)
+    check(abs(e["open"] - 1.0) < 0.02 and e["under ring"] < 0.02 and e["under roof"] < 0.02,
+          f"0 s of rain does not bake the sky exposure (open 1, sheltered 0): {e}")
+    r = bpy.ops.soak.bake_wetmap("EXEC_DEFAULT", size=32, rays=32, duration=3600.0, occluders="SCENE")
+    check(r == {"FINISHED"}, "bake with an hour of rain")
+    img = mat.soak.wet_map
+    h = {"open": texel(img, 0.95, 0.95), "under ring": texel(img, 0.75, 0.5), "under roof": texel(img, 0.125, 0.875)}
+    print("an hour of rain:", h)
+    check(h["under ring"] > 0.99 and h["open"] > 0.99,
+          f"after an hour the water has not spread under the ring as the tooltip says: {h}")
+    names = sorted(i.name for i in bpy.data.images if i.name.startswith("Ground_wet"))
+    check(names == ["Ground_wet.exr", "Ground_wet.exr.user"] and img.name == "Ground_wet.exr"
+          and mine.name == "Ground_wet.exr.user", f"the bakes piled up images: {names}")
 
 
 def test_pending_controls(ob):
@@ -763,7 +794,7 @@ def test_panel(ob):
     check(("operator", "soak.make_wet") in states["dry"] and ("operator", "soak.make_dry") in states["wet"],
           "Make Wet / Make Dry not drawn")
     check(any(i[0] == "label" and "refused" in i[1] for i in states["status"]), "status not shown")
-    engine = "BLENDER_EEVEE_NEXT" if bpy.app.version >= (4, 2, 0) else "BLENDER_EEVEE"
+    engine = common.eevee_engine()
     switch = "use_raytracing" if bpy.app.version >= (4, 2, 0) else "use_ssr"
     sc.render.engine = engine
     setattr(sc.eevee, switch, False)
@@ -786,6 +817,9 @@ def test_poll_messages(ob):
     if bpy.app.version >= (3, 0, 0):
         check("not wet" in msg, f"Make Dry's poll message missing: {msg}")
         check("wet first" in msg2, f"Key Drying's poll message missing: {msg2}")
+    if bpy.app.version >= (5, 0, 0):
+        # 5.0 deprecated Material.use_nodes (always true): nothing to refuse
+        return
     mat.use_nodes = False
     msg = op_error(bpy.ops.soak.make_wet)
     if bpy.app.version >= (3, 0, 0):
@@ -834,6 +868,7 @@ def main():
     test_panel(ground)
     test_bake({"ground": ground, "torus": torus})
     test_rain_direction(ground)
+    test_rain_duration(ground)
     test_pending_controls(ground)
     test_metal_preset(ground)
     print(f"{len(CHECKS)} checks")

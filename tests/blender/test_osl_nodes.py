@@ -39,7 +39,7 @@ def main():
     bpy.ops.mesh.primitive_plane_add()
     ob = bpy.context.object
     mat = bpy.data.materials.new("O")
-    mat.use_nodes = True
+    common.use_nodes(mat)
     ob.data.materials.append(mat)
     before = common.tree_state(mat.node_tree)
     sc = bpy.context.scene

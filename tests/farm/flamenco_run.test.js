@@ -4,13 +4,13 @@
 //  1. soak-bake (drying, turbulence): every chunked frame equals the frame of
 //     one soak run over the whole range, pixel for pixel (idiff, no tolerance);
 //  2. soak-drying-animation (the add-on's Image wetness source), its render
-//     tasks in Blender 3.4 and in Blender 4.3 (the Debian 13 root of
-//     tests/blender/run_blender.sh, SOAK_BLENDER43_ROOT): the baked maps equal
+//     tasks in Blender 3.4, 4.3 and 5.2 (the Debian 13 and sid roots of
+//     tests/blender/run_blender.sh, SOAK_BLENDER43_ROOT, SOAK_BLENDER52_ROOT): the baked maps equal
 //     one soak run's; every frame is rendered; where the map of a frame is dry
 //     the render equals the all-dry last frame's, where it is wet the render
 //     is darker, and the frames brighten as the map's mean wetness falls (wet
 //     materials are darker: seed 000). The blend file is made in 3.4 and
-//     opened by 4.3, as a farm's newer Workers would.
+//     opened by 4.3 and 5.2, as a farm's newer Workers would.
 // Usage: node flamenco_run.test.js REPO_ROOT SOAK_BINARY TMP_DIR
 "use strict";
 const assert = require("node:assert/strict");
@@ -187,13 +187,16 @@ check("soak-drying-animation: the shot's blend file (Blender 3.4, the add-on's I
     console.log(`     blend file made (${secs()} s)`);
 });
 
-// Blender 4.3 as a Worker's {blender}: a wrapper around run_blender.sh's
-// raw mode (Blender's own arguments, inside the Debian 13 root).
-const blender43 = path.join(tmp, "blender43");
-fs.writeFileSync(blender43, "#!/bin/sh\nSOAK_BLENDER=4.3 SOAK_BLENDER_RAW=1 exec bash " +
-                 JSON.stringify(path.join(root, "tests/blender/run_blender.sh")) + ' "$@"\n', {mode: 0o755});
+// Blender 4.3 and 5.2 as a Worker's {blender}: wrappers around run_blender.sh's
+// raw mode (Blender's own arguments, inside the Debian 13 / sid root).
+const wrappers = {};
+for (const version of ["4.3", "5.2"]) {
+    wrappers[version] = path.join(tmp, "blender" + version.replace(".", ""));
+    fs.writeFileSync(wrappers[version], `#!/bin/sh\nSOAK_BLENDER=${version} SOAK_BLENDER_RAW=1 exec bash ` +
+                     JSON.stringify(path.join(root, "tests/blender/run_blender.sh")) + ' "$@"\n', {mode: 0o755});
+}
 
-for (const [version, blenderExe] of [["3.4", "blender"], ["4.3", blender43]]) {
+for (const [version, blenderExe] of [["3.4", "blender"], ["4.3", wrappers["4.3"]], ["5.2", wrappers["5.2"]]]) {
     check(`soak-drying-animation 1-4, Blender ${version}: maps equal one run, renders follow the drying`, () => {
         const dir = path.join(animDir, version);
         fs.mkdirSync(dir, {recursive: true});

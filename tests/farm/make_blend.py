@@ -41,14 +41,14 @@ def main():
     sc.view_settings.view_transform = "Standard"
     sc.frame_start, sc.frame_end = 1, 4
     world = bpy.data.worlds.new("Black")
-    world.use_nodes = True
+    common.use_nodes(world)
     world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
     sc.world = world
 
     bpy.ops.mesh.primitive_plane_add(size=2.0)
     plane = bpy.context.active_object
     mat = bpy.data.materials.new("Ground")
-    mat.use_nodes = True
+    common.use_nodes(mat)
     bsdf = mat.node_tree.nodes["Principled BSDF"]
     bsdf.inputs["Base Color"].default_value = (0.5, 0.5, 0.5, 1.0)
     bsdf.inputs["Roughness"].default_value = 0.6

@@ -93,12 +93,35 @@ def export_scene_obj(context, ob, mode, path, collection_name=""):
     return n, m
 
 
-def bake_command(exe, mesh_path, out_path, size, rays, duration, rain_from=(0.0, 0.0, 1.0), spread=10.0):
+def bake_command(exe, mesh_path, out_path, size, rays, duration, rain_from=(0.0, 0.0, 1.0), spread=10.0,
+                 exposure_path=None):
     """rain_from: the direction the rain comes from, world space (the OBJ's
-    frame, Z up); spread: the rain cone's half-angle, degrees."""
-    return [exe, "bake", "rain", mesh_path, "-o", out_path, "--width", str(size), "--height", str(size),
-            "--rays", str(rays), "--duration", str(duration), "--up", "z",
-            "--rain-dir", ",".join(f"{c:.9g}" for c in rain_from), "--spread", f"{spread:.9g}"]
+    frame, Z up); spread: the rain cone's half-angle, degrees; exposure_path:
+    also write the sky exposure there."""
+    cmd = [exe, "bake", "rain", mesh_path, "-o", out_path, "--width", str(size), "--height", str(size),
+           "--rays", str(rays), "--duration", str(duration), "--up", "z",
+           "--rain-dir", ",".join(f"{c:.9g}" for c in rain_from), "--spread", f"{spread:.9g}"]
+    if exposure_path:
+        cmd += ["--exposure", exposure_path]
+    return cmd
+
+
+# The image a bake made is tagged with its object's name: the next bake of
+# the same object replaces it (same name, its users moved to the new one).
+BAKE_TAG = "soak_baked_for"
+
+
+def replace_baked_image(img, owner):
+    """Makes `img` the one baked wet map of object `owner`: an earlier bake's
+    image of it hands its users over and is removed, and `img` takes its
+    name. Images the user made or opened are never touched."""
+    img[BAKE_TAG] = owner
+    for old in [i for i in bpy.data.images if i != img and i.get(BAKE_TAG) == owner]:
+        name = old.name
+        old.user_remap(img)
+        bpy.data.images.remove(old)
+        img.name = name
+    return img
 
 
 class SOAK_OT_bake_wetmap(bpy.types.Operator):
@@ -111,8 +134,12 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
                                 description="Width and height of the wet map, pixels")
     rays: bpy.props.IntProperty(name="Rays", default=32, min=1, max=4096,
                                 description="Rays per texel for the sky exposure (more: less noise, slower)")
-    duration: bpy.props.FloatProperty(name="Rain (s)", default=600.0, min=0.0, soft_max=86400.0,
-                                      description="Seconds of rain (10 mm/h); 0 bakes the sky exposure only")
+    duration: bpy.props.FloatProperty(
+        name="Rain (s)", default=600.0, min=0.0, soft_max=86400.0,
+        description="Seconds of rain (10 mm/h). A shelter's dry shadow lasts about 76 s: then the surface holds "
+                    "more than its 0.2 mm film and the water runs downhill and spreads over flat ground, under "
+                    "shelters too (a flat floor is wet almost everywhere after 10 minutes). 0 bakes the sky "
+                    "exposure instead (1 open to the rain, 0 sheltered)")
     occluders: bpy.props.EnumProperty(
         name="Shelter", default="SCENE",
         description="What blocks the rain besides the mesh itself",
@@ -173,14 +200,17 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
         self._dir = tempfile.mkdtemp(prefix="soak_bake_")
         mesh = os.path.join(self._dir, "mesh.obj")
         self._out = os.path.join(self._dir, f"{bpy.path.clean_name(ob.name)}_wet.exr")
+        # no rain: the wetness would be all zero; the map is the sky exposure
+        self._exposure = self._out if self.duration == 0.0 else None
+        wet_out = os.path.join(self._dir, "wetness.exr") if self._exposure else self._out
         try:
             self._counts = export_scene_obj(context, ob, self.occluders, mesh, self.collection)
         except OSError as e:
             shutil.rmtree(self._dir, ignore_errors=True)
             self.report({"ERROR"}, f"cannot write the mesh for soak: {e}")
             return False
-        cmd = bake_command(exe, mesh, self._out, self.size, self.rays, self.duration, tuple(self.rain_from),
-                           self.spread)
+        cmd = bake_command(exe, mesh, wet_out, self.size, self.rays, self.duration, tuple(self.rain_from),
+                           self.spread, self._exposure)
         try:
             self._proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         except OSError as e:
@@ -188,6 +218,7 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
             self.report({"ERROR"}, f"cannot run {exe}: {e}")
             return False
         self._mat = ob.active_material
+        self._owner = ob.name
         return True
 
     def _finish(self, context):
@@ -216,8 +247,10 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
             s.status = ""
             self.report({"ERROR"}, f"wet map baked ({img.name}) but not wired: {msg}")
             return {"CANCELLED"}
+        replace_baked_image(img, self._owner)
         n, m = self._counts
-        self.report({"INFO"}, f"wet map baked: {img.name} ({n} triangles, sheltered by {m} occluder triangles)")
+        what = "sky exposure (no rain)" if self._exposure else "wet map"
+        self.report({"INFO"}, f"{what} baked: {img.name} ({n} triangles, sheltered by {m} occluder triangles)")
         return {"FINISHED"}
 
     def execute(self, context):  # blocking variant (scripts, tests)

@@ -10,6 +10,8 @@ import os
 import bpy
 from bpy_extras.io_utils import ImportHelper
 
+from .. import compat
+
 GRIDS = ("sigma_s_r", "sigma_s_g", "sigma_s_b", "sigma_a_r", "sigma_a_g", "sigma_a_b", "g1", "g2", "w")
 
 
@@ -34,8 +36,7 @@ def _math(tree, op, a, b, x, y):
 
 def volume_material(name):
     mat = bpy.data.materials.new(name)
-    mat.use_nodes = True
-    t = mat.node_tree
+    t = compat.ensure_node_tree(mat)
     t.nodes.clear()
     out = t.nodes.new("ShaderNodeOutputMaterial")
     out.location = (900, 0)

@@ -5,7 +5,7 @@ import json
 
 import bpy
 
-from .. import nodes, osl_nodes
+from .. import compat, nodes, osl_nodes
 from ..data import SoakDataError
 from ..predicates import key_icon, osl_available, poll_editable, poll_message, wet_poll
 
@@ -146,18 +146,16 @@ class SOAK_OT_key_drying(bpy.types.Operator):
         gn.inputs["Fill Time"].default_value = fill
         index = list(gn.inputs).index(gn.inputs["Time"])
         path = f'nodes["{gn.name}"].inputs[{index}].default_value'
-        ad = tree.animation_data
-        if ad is not None and ad.action is not None:
-            old = ad.action.fcurves.find(path)
-            if old is not None:
-                ad.action.fcurves.remove(old)
+        old = compat.find_fcurve(tree, path)
+        if old is not None:
+            compat.remove_fcurve(tree, old)
         gn.inputs["Schedule"].default_value = 1.0
         gn.inputs["Drying"].default_value = 1.0
         t = gn.inputs["Time"]
         for frame, value in ((self.frame_start, start), (self.frame_end, start + fill)):
             t.default_value = value
             t.keyframe_insert("default_value", frame=frame)
-        fc = tree.animation_data.action.fcurves.find(path)
+        fc = compat.find_fcurve(tree, path)
         if fc is not None:
             for k in fc.keyframe_points:
                 k.interpolation = "LINEAR"

@@ -64,7 +64,7 @@ const SOAK_PY_WETMAP = `
 import bpy, sys
 a = sys.argv[sys.argv.index("--") + 1:]
 pattern, first, last, only = a[0], int(a[1]), int(a[2]), a[3]
-nodes = [n for m in bpy.data.materials if m.use_nodes and (not only or m.name == only)
+nodes = [n for m in bpy.data.materials if m.node_tree is not None and (not only or m.name == only)
          for n in m.node_tree.nodes if n.bl_idname == "ShaderNodeTexImage" and n.get("soak_role") == "source"]
 if not nodes:
     raise SystemExit("Soak: no material " + (repr(only) + " " if only else "") + "has a Soak Image wetness source")
