@@ -299,7 +299,8 @@ def _connect_specular_metal(tree, gn, bsdf, settings):
     want = metal_preset(bsdf, gn, settings.preset)
     info = json.loads(gn.node_tree.get(GROUP_TAG, "{}"))
     if info.get("metal") != want:
-        build_group(gn.node_tree, settings.preset, settings.liquid, settings.exact_lookups, metal=want)
+        build_group(gn.node_tree, settings.preset, settings.liquid, settings.exact_lookups, metal=want,
+                    quality=settings.quality)
     for role, name in (("specular", "Specular"), ("metallic", "Metallic")):
         s = compat.principled_input(bsdf, role)
         if s.is_linked and s.links[0].from_node == gn:
@@ -349,7 +350,7 @@ def _insert(mat, bsdf, settings):
     restore = {"bsdf": bsdf.name, "inputs": {}, "nodes": [],
                "bsdf_out": [[l.to_node.name, l.to_socket.identifier] for l in bsdf.outputs[0].links]}
     ng = bpy.data.node_groups.new("Soak Wet", "ShaderNodeTree")
-    build_group(ng, settings.preset, settings.liquid, settings.exact_lookups)
+    build_group(ng, settings.preset, settings.liquid, settings.exact_lookups, quality=settings.quality)
     gn = tree.nodes.new("ShaderNodeGroup")
     gn.node_tree = ng
     gn.name = gn.label = "Soak Wet"
@@ -625,7 +626,7 @@ def _rebuild(mat, gn, settings):
     links_out = [(s.name, l.to_socket) for s in gn.outputs for l in s.links]
     fill_default = _fill_time_is_default(gn, old_info.get("preset", ""))
     ng = bpy.data.node_groups.new("Soak Wet", "ShaderNodeTree")
-    build_group(ng, settings.preset, settings.liquid, settings.exact_lookups)
+    build_group(ng, settings.preset, settings.liquid, settings.exact_lookups, quality=settings.quality)
     gn.node_tree = ng
     for s in gn.inputs:
         if keep.get(s.name) is not None:

@@ -60,6 +60,7 @@ class SOAK_PT_wetness(_MaterialPanel, bpy.types.Panel):
         col = layout.column()
         col.prop(s, "preset")
         col.prop(s, "liquid")
+        col.prop(s, "quality")
         if compat.exact_lookups_required():
             # 4.2+ always builds the exact path (compat.exact_lookups_required):
             # the setting cannot change anything there, so say so.

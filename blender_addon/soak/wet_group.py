@@ -52,6 +52,22 @@ INPUTS = (
     ("Metallic", "factor", 0.0, 0.0, 1.0),
 )
 
+# What each quality models (the panel's Quality; blender_addon/README.md
+# gives each one's Cycles overhead and its colour error against the core):
+#   exact        one Closest read per channel of a table cell and an explicit
+#                bilinear blend, as the core interpolates (else Linear
+#                lookups: the engine's filter; EEVEE 4.2-4.4 always exact)
+#   view_factor  the liquid interface's transmission towards the viewer
+#                (dropped: the colour is the normal-incidence one at every
+#                angle, too light at grazing views)
+#   bump         the spill-edge bump from the wet map (dropped: Spill Edge
+#                does nothing)
+QUALITY = {
+    "DRAFT": {"exact": False, "view_factor": False, "bump": False},
+    "BALANCED": {"exact": False, "view_factor": True, "bump": True},
+    "EXACT": {"exact": True, "view_factor": True, "bump": True},
+}
+
 # the group's stages, left to right: each a labelled frame and its own columns
 STAGES = ("Liquid: Wetness x Wet Map x fill schedule",
           "Spill-edge bump",
@@ -223,12 +239,12 @@ def _view_factor(b, t, images, rows, normal):
     return lerp(b, row(rows.v0), row(rows.v1), rows.fy)
 
 
-def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3)):
+def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view=True):
     """The core's wetness function of one preset's class for the input colour
     (times the preset's view factor at the view through `normal`):
     (colour, roughness, coat weight, base specular factor) sockets, and a
     reader of further parameter pixels. stages: the STAGES indices of the
-    lookups and of the view factor."""
+    lookups and of the view factor; view: False leaves the view factor out."""
     t = data.table(preset, liquid_name)
     images = data.lookup_images(preset, liquid_name, exact)
     b.stage = STAGES[stages[0]]
@@ -238,7 +254,7 @@ def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3)):
     b.link(_param(b, images.params, t, rows, 3), spec.inputs[0])
     rough = b.math("MULTIPLY", gin.outputs["Roughness"], spec.outputs[2], clamp=True)
     b.stage = STAGES[stages[1]]
-    view = _view_factor(b, t, images, rows, normal)
+    view = _view_factor(b, t, images, rows, normal) if view else None
     if view is not None:
         colour = vec(b, "MULTIPLY", colour, view)
 
@@ -304,9 +320,24 @@ def _socket_hints(tree):
     ins["Normal"].hide_value = True
 
 
-def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat):
+def _bump(b, gin, spill_edges):
+    """The shading normal bumped by the wet map at spill edges. Without them,
+    a Bump node with no height: the Normal input, or where that is unlinked
+    the shading normal (a group input passed straight through gives
+    (0, 0, 0) in Cycles and EEVEE, 5.2 measured), which Cycles folds away
+    (BumpNode::constant_fold)."""
+    bump = b.node("ShaderNodeBump")
+    if spill_edges:
+        b.link(gin.outputs["Spill Edge"], bump.inputs["Strength"])
+        b.link(gin.outputs["Wet Map"], bump.inputs["Height"])
+    bump.inputs["Distance"].default_value = 0.02
+    b.link(gin.outputs["Normal"], bump.inputs["Normal"])
+    return bump.outputs["Normal"]
+
+
+def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view):
     """The metallic part's own function (a conductor preset) mixed in by Metallic."""
-    mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact, normal, stages=(4, 4))
+    mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact, normal, stages=(4, 4), view=view)
     b.stage = STAGES[5]
     f = b.math("MINIMUM", b.math("MAXIMUM", gin.outputs["Metallic"], 0.0), 1.0)
     colour = lerp(b, colour, mc, f)
@@ -315,11 +346,14 @@ def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat
     return colour, rough, coat
 
 
-def build_group(tree, preset, liquid_name, exact=False, metal=None):
+def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BALANCED"):
     """(Re)builds the inside of a Soak Wet group for a preset and liquid.
     metal: a conductor preset whose function the metallic part of the
-    material gets (mixed by the Metallic input), None for none. Sockets that
-    already match INPUTS/OUTPUTS are kept (the node's links and values too)."""
+    material gets (mixed by the Metallic input), None for none. quality: one
+    of QUALITY's keys, the terms the group models (exact lookups, view
+    factor, bump). Sockets that already match INPUTS/OUTPUTS are kept (the
+    node's links and values too)."""
+    terms = QUALITY[quality]
     m = data.material(preset)
     if metal is not None and data.material(metal)["kind"] != "conductor":
         raise data.SoakDataError(f"'{metal}' is not a conductor preset")
@@ -327,22 +361,19 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None):
     if not _sockets_match(tree):
         _make_sockets(tree)
     _socket_hints(tree)
-    tree[GROUP_TAG] = json.dumps({"preset": preset, "liquid": liquid_name, "exact": bool(exact), "metal": metal})
-    exact = bool(exact) or compat.exact_lookups_required()
+    tree[GROUP_TAG] = json.dumps({"preset": preset, "liquid": liquid_name, "exact": bool(exact), "metal": metal,
+                                  "quality": quality})
+    exact = bool(exact) or terms["exact"] or compat.exact_lookups_required()
     b = Builder(tree)
     gin = _Inputs(b)
     b.stage = STAGES[0]
     L = _liquid_schedule(b, gin)
     b.stage = STAGES[1]
-    bump = b.node("ShaderNodeBump")
-    b.link(gin.outputs["Spill Edge"], bump.inputs["Strength"])
-    b.link(gin.outputs["Wet Map"], bump.inputs["Height"])
-    bump.inputs["Distance"].default_value = 0.02
-    b.link(gin.outputs["Normal"], bump.inputs["Normal"])
-    normal = bump.outputs["Normal"]
-    colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact, normal)
+    normal = _bump(b, gin, terms["bump"])
+    view = terms["view_factor"]
+    colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact, normal, view=view)
     if metal is not None:
-        colour, rough, coat = _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat)
+        colour, rough, coat = _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view)
     b.stage = STAGES[6]
     spec = b.math("MULTIPLY", gin.outputs["Specular"], factor)
     # Blender's own coat dims what lies under it (4.x); the core's values
