@@ -59,7 +59,7 @@ def _rebuild(self, context):
         gn = nodes.find_group_node(self.id_data.node_tree)
         info = json.loads(gn.node_tree.get(nodes.GROUP_TAG, "{}")) if gn.node_tree is not None else {}
         _revert(self, {"preset": info.get("preset"), "liquid": info.get("liquid"),
-                       "exact_lookups": info.get("exact")})
+                       "exact_lookups": info.get("exact"), "quality": info.get("quality", "BALANCED")})
 
 
 def _source(self, context):
@@ -176,6 +176,16 @@ class SoakMaterialSettings(bpy.types.PropertyGroup):
         description="Read the core's tables exactly: one Closest read per colour channel of the table cell "
                     "and an explicit bilinear blend (EEVEE's image filter is not plain bilinear); slower, same "
                     "result in Cycles; always on in Blender 4.2-4.5 (EEVEE Next needs it)")
+    quality: EnumProperty(
+        name="Quality", update=_rebuild, default="BALANCED",
+        description="What the group models, fastest first (the add-on's README gives each one's render cost "
+                    "and colour error); after Make Wet the group is rebuilt in place",
+        items=(("DRAFT", "Draft", "Leaves out the view factor (wet colours stay the head-on ones at grazing "
+                "views) and the spill-edge bump (Spill Edge does nothing); the fastest"),
+               ("BALANCED", "Balanced", "Everything the core models, tables read through the engine's "
+                "linear filter"),
+               ("EXACT", "Exact", "As Balanced, with the tables read exactly (a Closest read per colour "
+                "channel and the core's bilinear blend); the slowest")))
     use_osl: BoolProperty(name="Use OSL shader", default=False,
                           description="Also add the core's OSL shader (Cycles with Open Shading Language only)")
     status: StringProperty(name="Status", default="", options={"SKIP_SAVE"},

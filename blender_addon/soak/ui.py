@@ -54,6 +54,7 @@ class SOAK_PT_wetness(_MaterialPanel, bpy.types.Panel):
         col = layout.column()
         col.prop(s, "preset")
         col.prop(s, "liquid")
+        col.prop(s, "quality")
         if compat.exact_lookups_required():
             # 4.2-4.x always build the exact path (compat.exact_lookups_required):
             # the setting cannot change anything there, so say so.

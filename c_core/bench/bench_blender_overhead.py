@@ -6,14 +6,16 @@ render thread):
   coat     the same material with the coat the wet state switches on
            (weight = the group's Coat Weight output, read back from a
            render of it), no group: what any wet look costs in Cycles;
-  wet      after Make Wet (default or --exact 1 lookups).
+  wet      after Make Wet (default or --exact 1 lookups), once per
+           quality of --qualities (the panel's Quality; default BALANCED).
 
 wet/dry is what an artist pays; wet/coat is the group's own cost (its
-lookups and math). Prints each run, then min and median per state.
-Not a test: nothing here asserts a time.
+lookups and math). Prints each run, then min and median per state, and
+the group's node count per quality. Not a test: nothing here asserts a time.
 
 blender -b --factory-startup --python bench_blender_overhead.py -- --addon ZIP [--repeat 3] [--exact 0|1]
-(c_core/bench/bench_blender_overhead.sh runs it in Blender 3.4 and 4.3)"""
+    [--qualities DRAFT,BALANCED,EXACT]
+(c_core/bench/bench_blender_overhead.sh runs it in Blender 3.4, 4.3 and 5.2)"""
 import os
 import statistics
 import sys
@@ -27,6 +29,7 @@ import blender_bench_plane  # noqa: E402
 opts = blender_bench_plane.options()
 repeat = int(opts.get("--repeat", "3"))
 exact = bool(int(opts.get("--exact", "0")))
+qualities = opts.get("--qualities", "BALANCED").split(",")
 COAT = ("Clearcoat", "Coat Weight")[bpy.app.version >= (4, 0, 0)]
 mat, tree, bsdf = blender_bench_plane.textured_plane(opts["--addon"], exact)
 
@@ -61,26 +64,39 @@ def render_cpu():
     return time.process_time() - t0
 
 
+def group_nodes():
+    """Nodes of the Soak Wet group that compute (frames and group inputs
+    and outputs left out)."""
+    gn = next(n for n in tree.nodes if n.type == "GROUP")
+    return sum(1 for n in gn.node_tree.nodes if n.type not in ("FRAME", "GROUP_INPUT", "GROUP_OUTPUT"))
+
+
 coat = coat_weight_of_wet_state()
-times = {"dry": [], "coat": [], "wet": []}
+states = ["dry", "coat"] + [f"wet {q}" for q in qualities]
+times = {s: [] for s in states}
+count = {}
 for r in range(repeat):
-    for state in ("dry", "coat", "wet"):
+    for state in states:
         if state == "coat":
             bsdf.inputs[COAT].default_value = coat
-        if state == "wet":
+        if state.startswith("wet"):
             bsdf.inputs[COAT].default_value = 0.0
+            mat.soak.quality = state.split()[1]
             bpy.ops.soak.make_wet()
+            count[state] = group_nodes()
         times[state].append(render_cpu())
-        if state == "wet":
+        if state.startswith("wet"):
             bpy.ops.soak.make_dry()
         print(f"run {r} {state}: {times[state][-1]:.3f} s CPU")
         sys.stdout.flush()
 bsdf.inputs[COAT].default_value = 0.0
 mins = {k: min(v) for k, v in times.items()}
 meds = {k: statistics.median(v) for k, v in times.items()}
-print(f"Blender {bpy.app.version_string}, exact lookups {int(exact)}, coat weight {coat:.3f}")
-for k in ("dry", "coat", "wet"):
+print(f"Blender {bpy.app.version_string}, exact lookups {int(exact)}, coat weight {coat:.3f}, "
+      f"load average {os.getloadavg()[0]:.1f}")
+for k in states:
     print(f"{k}: min {mins[k]:.3f} s, median {meds[k]:.3f} s CPU")
-print(f"ratio wet/dry: min {mins['wet'] / mins['dry']:.3f}, median {meds['wet'] / meds['dry']:.3f}")
-print(f"ratio wet/coat (the group's own cost): min {mins['wet'] / mins['coat']:.3f}, "
-      f"median {meds['wet'] / meds['coat']:.3f}")
+for k in states[2:]:
+    print(f"ratio {k}/dry: min {mins[k] / mins['dry']:.3f}, median {meds[k] / meds['dry']:.3f}; "
+          f"{k}/coat (the group's own cost): min {mins[k] / mins['coat']:.3f}, "
+          f"median {meds[k] / meds['coat']:.3f}; {count[k]} nodes")

@@ -1,7 +1,9 @@
 #!/bin/bash
 # The Soak Wet group's Cycles CPU cost on a close-up textured plane, in
-# Blender 3.4 and 4.3, default and exact lookups (bench_blender_overhead.py:
-# dry / dry+coat / wet interleaved, min and median of REPEAT).
+# Blender 3.4, 4.3 and 5.2, each Quality (bench_blender_overhead.py:
+# dry / dry+coat / wet Draft / Balanced / Exact interleaved, min and median
+# of REPEAT). VERSIONS (default "3.4 4.3 5.2") and RUN_BLENDER (default
+# tests/blender/run_blender.sh) from the environment.
 # usage: c_core/bench/bench_blender_overhead.sh [BUILD_DIR] [REPEAT] [BEFORE_REF]
 # BEFORE_REF (a git commit): also the add-on as it was there (blender_addon/
 # and osl/ from `git archive`), run after the current one for each version
@@ -21,14 +23,15 @@ if [ -n "$BEFORE" ]; then
   /usr/bin/python3 "$TMP/before/blender_addon/build_zip.py" "$TMP/soak_before.zip" > /dev/null
   zips+=(soak_before)
 fi
-for ver in 3.4 4.3; do
-  for exact in 0 1; do
-    for z in "${zips[@]}"; do
-      echo "### Blender $ver, exact lookups $exact, add-on $z"
-      SOAK_BLENDER=$ver SOAK_BLENDER43_ROOT="$BUILD/trixie-root" BLENDER_USER_SCRIPTS="$TMP/user_${ver}_$z" \
-        bash "$ROOT/tests/blender/run_blender.sh" "$ROOT/c_core/bench/bench_blender_overhead.py" \
-        --addon "$TMP/$z.zip" --repeat "$REPEAT" --exact "$exact" 2>&1 |
-        grep -E '^(run |Blender [0-9]|dry:|coat:|wet:|ratio)'
-    done
+RUN=${RUN_BLENDER:-$ROOT/tests/blender/run_blender.sh}
+for ver in ${VERSIONS:-3.4 4.3 5.2}; do
+  for z in "${zips[@]}"; do
+    echo "### Blender $ver, add-on $z"
+    qualities=DRAFT,BALANCED,EXACT
+    [ "$z" = soak ] || qualities=BALANCED     # an add-on from before the Quality setting
+    SOAK_BLENDER=$ver SOAK_BLENDER43_ROOT="${SOAK_BLENDER43_ROOT:-$BUILD/trixie-root}" BLENDER_USER_SCRIPTS="$TMP/user_${ver}_$z" \
+      bash "$RUN" "$ROOT/c_core/bench/bench_blender_overhead.py" \
+      --addon "$TMP/$z.zip" --repeat "$REPEAT" --qualities "$qualities" 2>&1 |
+      grep -E '^(run |Blender [0-9]|dry:|coat:|wet|ratio)'
   done
 done

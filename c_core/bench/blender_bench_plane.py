@@ -22,7 +22,7 @@ def textured_plane(addon, exact):
     sc.render.engine = "CYCLES"
     sc.cycles.samples = 64
     sc.cycles.use_denoising = False
-    sc.cycles.threads_mode = "FIXED"
+    sc.render.threads_mode = "FIXED"   # (sc.cycles.threads_mode, an alias, is gone in 5.x)
     sc.render.threads = 1
     sc.render.resolution_x = sc.render.resolution_y = 128
     for o in list(bpy.data.objects):

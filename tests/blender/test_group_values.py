@@ -22,7 +22,14 @@ liquid's absorption (a second method for the core's closed form); 1 for
 conductors. Blender 4.x: its coat dims what lies under it by
 (1 - coat * F(view)); the group undoes that, so Base Color and Specular are
 expected times 1 / (1 - coat * F0(n_liquid)) (the camera looks along the
-normal; F0: the json's film_normal_reflectance)."""
+normal; F0: the json's film_normal_reflectance).
+
+--quality DRAFT|BALANCED|EXACT (the panel's Quality): each quality's
+colour is held to the same tolerance plus the named terms it leaves out,
+computed here from the json export: Draft's view factor, the colour times
+|1 - view factor at the camera's cosine 1| (its spill-edge bump does
+nothing on this flat, uniformly wet plane: no term). The worst error
+printed is the one blender_addon/README.md publishes per version."""
 import json
 import math
 import os
@@ -39,6 +46,8 @@ ENGINE = A.get("engine", "CYCLES")
 TOL = float(A.get("tol", 0.005 + 2e-4))
 N = int(A.get("n", 16))  # N x N test points per render
 ROUNDS = int(A.get("rounds", 1))  # renders per preset and liquid (different points)
+QUALITY = A.get("quality", "BALANCED")
+DROPS_VIEW_FACTOR = QUALITY == "DRAFT"
 ONLY = A.get("presets", "").split(",") if A.get("presets") else None
 LIQUIDS = A.get("liquids", "").split(",") if A.get("liquids") else None
 
@@ -134,6 +143,7 @@ def main():
     ref = json.load(open(ref_path))
     sc, plane = setup()
     worst = {"colour": 0.0, "coat": 0.0, "rough": 0.0, "spec": 0.0}
+    worst_dropped = 0.0
     liquids = {l["name"]: l for l in ref["liquids"]}
     coat_dims = bpy.app.version >= (4, 0, 0)
     failures = []
@@ -150,6 +160,7 @@ def main():
             mat.soak.preset, mat.soak.liquid = m["name"], liquid
             mat.soak.colour_source = "MATERIAL"
             mat.soak.exact_lookups = bool(int(A.get("exact", "0")))
+            mat.soak.quality = QUALITY
             bpy.context.view_layer.objects.active = plane
             if bpy.ops.soak.make_wet() != {"FINISHED"}:
                 common.fail(f"make_wet {m['name']} {liquid}")
@@ -187,9 +198,12 @@ def main():
                     c = interp(kn["wetness"], kn["film_coverage"], w)
                     area = c + (1 - c) * interp(kn["wetness"], kn["water_specular_weight"], w)
                     keep = 1 / (1 - area * liquids[liquid]["film_normal_reflectance"]) if coat_dims else 1.0
+                    dropped = 0.0          # the named terms the quality leaves out
                     if what == "colour":
                         vf = [interp(kn["wetness"], [f[-1][c] for f in kn["view_factor"]], w) for c in range(3)]
                         exp = [x * f * keep for x, f in zip(want, vf)]
+                        if DROPS_VIEW_FACTOR:
+                            dropped = max(abs(x * keep * (1 - f)) for x, f in zip(want, vf))
                     elif what == "coat":
                         exp = [area] * 3
                     elif what == "spec":
@@ -201,13 +215,16 @@ def main():
                         exp = [r] * 3
                     e = max(abs(g - x) for g, x in zip(got, exp))
                     worst[what] = max(worst[what], e)
-                    if e > TOL:
+                    worst_dropped = max(worst_dropped, dropped) if what == "colour" else worst_dropped
+                    if e > TOL + dropped:
                         failures.append(f"{m['name']}/{liquid} {what} dry={dry} w={w}: {got} vs {exp}")
             bpy.data.materials.remove(mat)
             for n in ("dry", "wet"):
                 bpy.data.images.remove(bpy.data.images[n])
     print(f"worst |Blender - core|: colour {worst['colour']:.5f}, coat {worst['coat']:.5f}, "
           f"roughness {worst['rough']:.5f}, specular factor {worst['spec']:.5f} (tolerance {TOL})")
+    print(f"quality {QUALITY}: worst colour error {worst['colour']:.5f} (Blender {bpy.app.version_string}); "
+          f"allowance for the terms it leaves out up to {worst_dropped:.5f}")
     if failures:
         common.fail(f"{len(failures)} points off, e.g. " + "; ".join(failures[:5]))
     print("PASS")

@@ -262,8 +262,10 @@ def test_rebuild(ob):
     gn.inputs["Time"].keyframe_insert("default_value", frame=11)
     bpy.context.scene.frame_set(1)
     wet_lum = render_lum("rebuild_sand")
-    for attr, value in (("preset", "concrete"), ("liquid", "coffee"), ("exact_lookups", True),
-                        ("exact_lookups", False), ("liquid", "water"), ("preset", "sand")):
+    changes = (("preset", "concrete"), ("liquid", "coffee"), ("exact_lookups", True), ("quality", "DRAFT"),
+               ("exact_lookups", False), ("quality", "EXACT"), ("liquid", "water"), ("quality", "BALANCED"),
+               ("preset", "sand"))
+    for attr, value in changes:
         setattr(mat.soak, attr, value)
         check(mat.soak.status == "", f"{attr}={value}: refused: {mat.soak.status}")
         gn = t.nodes["Soak Wet"]
@@ -271,7 +273,8 @@ def test_rebuild(ob):
         check(all(fed.values()), f"{attr}={value}: links to the Principled BSDF lost: {fed}")
         info = __import__("json").loads(gn.node_tree["soak_group"])
         check(info["preset"] == mat.soak.preset and info["liquid"] == mat.soak.liquid
-              and info["exact"] == mat.soak.exact_lookups, f"{attr}={value}: group not rebuilt: {info}")
+              and info["exact"] == mat.soak.exact_lookups and info["quality"] == mat.soak.quality,
+              f"{attr}={value}: group not rebuilt: {info}")
         vals = (gn.inputs["Wetness"].default_value, gn.inputs["Fill Time"].default_value,
                 gn.inputs["Spill Edge"].default_value)
         check(abs(vals[0] - 0.8) < 1e-6 and abs(vals[1] - 123.0) < 1e-4 and abs(vals[2] - 0.5) < 1e-6,
@@ -287,7 +290,8 @@ def test_rebuild(ob):
     check(len([g for g in bpy.data.node_groups if g.name.startswith("Soak Wet")]) == 1,
           f"rebuilds left node groups behind: {groups()}")
     back_lum = render_lum("rebuild_sand_again")
-    print(f"rebuild: dry {dry_lum:.5f}, wet sand {wet_lum:.5f}, after 6 changes back to sand {back_lum:.5f}")
+    print(f"rebuild: dry {dry_lum:.5f}, wet sand {wet_lum:.5f}, after {len(changes)} changes back to sand "
+          f"{back_lum:.5f}")
     check(wet_lum < 0.9 * dry_lum, f"the wet material is not darker than the dry one: {wet_lum} vs {dry_lum}")
     check(abs(back_lum - wet_lum) <= 1e-6 + 1e-5 * wet_lum,
           f"sand -> ... -> sand renders differently: {back_lum} vs {wet_lum}")
