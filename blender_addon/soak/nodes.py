@@ -133,7 +133,7 @@ def check_editable(mat):
     if getattr(mat, "override_library", None) is not None:
         raise RuntimeError(f"material '{mat.name}' is a library override: its node tree cannot be edited; "
                            "make it local first (Object > Relations > Make Local)")
-    if mat.node_tree is None or not mat.use_nodes:
+    if not compat.material_uses_nodes(mat):
         raise RuntimeError(f"material '{mat.name}' does not use nodes")
 
 
