@@ -128,7 +128,7 @@ double soak_mask_value(const soak_image *mask, size_t i)
 {
     const float *px = mask->pixels + i * (size_t)mask->channels;
     if (mask->channels < 3) return px[0];
-    return 0.2126 * px[0] + 0.7152 * px[1] + 0.0722 * px[2]; /* Rec. 709 luma */
+    return soak_rgb_luminance(soak_rgb3(px[0], px[1], px[2]));
 }
 
 static soak_status check_mask(const soak_image *mask)
