@@ -123,10 +123,4 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
                            const soak_bake_exec *exec, soak_rain_result *out, char *err, size_t errlen);
 void soak_rain_result_free(soak_rain_result *r);
 
-/* Poisson(lambda) count drawn with rng (exposed for tests): inversion of
- * the CDF for lambda <= 30, rounded normal approximation above; 0 for
- * lambda <= 0 or NaN. */
-struct soak_rng;
-long soak_rain_poisson(double lambda, struct soak_rng *rng);
-
 #endif
