@@ -199,8 +199,8 @@ static int run_step(const char *cmd, int (*fn)(int, char **), int argc, char **a
     return rc == SOAK_EXIT_OK;
 }
 
-/* Seed 000's procedural wetness (thresholded turbulence), the same pattern
- * drying border-first (seed 002) half-way, and a beach with four waves. */
+/* [JLD99]'s procedural wetness (thresholded turbulence), the same pattern
+ * drying border-first ([Hnat06]) half-way, and a beach with four waves. */
 static int bake_maps(const char *cmd, const char *dir)
 {
     char turb_exr[4096], turb_png[4096], dry_png[4096], waves_png[4096];

@@ -1,6 +1,6 @@
 /* The traced layer (soak/bsdf.h, SOAK_BSDF_WALK): a smooth liquid film of
  * index n2 over an opaque base, followed bounce by bounce (Lekner & Dorf
- * 1988 as used in seed 000 sec. 2.1 / 3.1). Reflect at the film top with
+ * 1988 as used in [JLD99] sec. 2.1 / 3.1). Reflect at the film top with
  * probability F12(cos1) (delta lobe); otherwise refract in, scatter off the
  * base, and at the underside leave with probability 1 - F21 or go back down
  * (total internal reflection beyond the critical angle).

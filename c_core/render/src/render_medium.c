@@ -1,12 +1,12 @@
-/* Wet material over a scattering medium: seed 000 (Jensen, Legakis, Dorsey
+/* Wet material over a scattering medium: [JLD99] (Jensen, Legakis, Dorsey
  * 1999) sec. 3.1-3.2 traced explicitly.
  *
  * Interfaces: air (1) | liquid film (n2) | material (n3), flat and parallel
  * (the film is thin). A path crosses them as a small Markov chain: at each
  * interface it is reflected with the exact Fresnel probability -- F12 at
- * air/film, F23^k at film/material as seed 000 Eq. 2 (k is the seed's
+ * air/film, F23^k at film/material as [JLD99] Eq. 2 (k is [JLD99]'s
  * exponent; k = 1 smooth) -- or transmitted, and may bounce inside the film
- * any number of times (total internal reflection included). Seed 000 Eq. 1-4
+ * any number of times (total internal reflection included). [JLD99] Eq. 1-4
  * keep the first crossing only; following the reflected parts conserves
  * energy (white furnace test). Throughput factors for radiance: 1/n^2 into
  * a denser medium, n^2 back out (corrected Eq. 1/2, see soak/jensen.h), so a
@@ -17,7 +17,7 @@
  * material's own surface (its roughness, which the liquid does not change),
  * so it applies to the dry interface too; with k > 1 the dry surface has a
  * weak specular lobe and the wet one gains the liquid's smooth reflection
- * (seed 000 sec. 4.2: "more specular due to the smoother air-water
+ * ([JLD99] sec. 4.2: "more specular due to the smoother air-water
  * interface"). The reflected share is traced as a mirror reflection.
  *
  * Inside: the random walk of soak/medium.h (soak_medium_walk_rgb), the same
@@ -33,7 +33,7 @@
  * crosses the layer stack upward (rt_cross_stack), reflected back in or
  * leaving.
  *
- * Next-event estimation inside the medium (seed 000 sec. 3.1: "for the shadow
+ * Next-event estimation inside the medium ([JLD99] sec. 3.1: "for the shadow
  * rays ... we use Equation 4"): for each delta light (sun, point) the light
  * direction wl in air is refracted through the flat film at the surface
  * normal (of the face last crossed, or the opposite one for a light behind

@@ -1,6 +1,6 @@
 /* Volume photon map for caustics into wet media (Jensen & Christensen,
  * "Efficient simulation of light transport in scenes with participating
- * media using photon maps", SIGGRAPH 1998; used by seed 000 sec. 4.3 for the
+ * media using photon maps", SIGGRAPH 1998; used by [JLD99] sec. 4.3 for the
  * caustic of the cognac glass).
  *
  * Only the light a path tracer cannot reach is stored: photons leave the sun

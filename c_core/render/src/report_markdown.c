@@ -97,7 +97,7 @@ static void md_reading(FILE *f)
                "  its wet/dry errors are largest there (the full material's ratio reaches about\n"
                "  8 on asphalt at 80 degrees).\n"
                "- `porous` and `porous-ggx` darken the dry albedo with their own pore model\n"
-               "  (seed 002) instead of the chain's calibrated subsurface albedo and interface\n"
+               "  (Hnat et al. 2006) instead of the chain's calibrated subsurface albedo and interface\n"
                "  (soak/wetness.h steps 4-5): their error is the difference between the two\n"
                "  wetting models, largest soaked.\n"
                "- Conductors: `ggx-conductor` is the dry base; `ww`/`ww-triace` model the film\n"

@@ -1,6 +1,6 @@
 /* Rain wetting of a mesh, baked into its UV texture.
  *
- * Seed 002 (Hnat et al. 2006, sec. 3.3.1 and 5) computes a mesh's rain wet
+ * [Hnat06] (Hnat et al. 2006, sec. 3.3.1 and 5) computes a mesh's rain wet
  * map as the light map of an emissive plane above it, then adds drop impacts
  * rendered into a "drops texture". We compute the real quantities instead:
  *
@@ -25,7 +25,7 @@
  *      rain sky: p uniform in solid angle over the cone of half-angle
  *        `spread` around `rain_dir`; F_open = rain_dir.up (1 + cos spread)/2
  *        (mean cosine of the cone, times the tilt).
- *      hemisphere sky (seed 002's emissive sky, = ambient occlusion): u
+ *      hemisphere sky ([Hnat06]'s emissive sky, = ambient occlusion): u
  *        cosine-distributed about n, E = (1/N) sum V_i; open plane 1.
  *
  * 3. Rain over time, steps of dt = duration / steps:
