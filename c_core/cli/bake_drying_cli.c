@@ -1,4 +1,4 @@
-/* soak bake drying: a wet region drying from its borders (seed 002 sec. 3.3)
+/* soak bake drying: a wet region drying from its borders ([Hnat06] sec. 3.3)
  * or by evaporation and capillary diffusion. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -55,7 +55,7 @@ static void usage(FILE *out)
             "Wetness of a drying region. MASK is any image OpenImageIO reads (luma of RGB); texels\n"
             "above --threshold start wet. Without MASK the whole --width x --height surface is wet\n"
             "and only --noise decides the drying order; with MASK, --width/--height must match it.\n\n"
-            "  --mode schedule   (default) seed 002's pore schedule run as emptying: texel drying\n"
+            "  --mode schedule   (default) Hnat et al. 2006's pore schedule run as emptying: texel drying\n"
             "                    starts at t0 = (1 - t_fill) * d/d_max (d = exact Euclidean distance\n"
             "                    to the nearest dry texel, so borders dry first), optionally mixed\n"
             "                    with fBm noise; wetness = 1 - fill_fraction(t, t0, t_fill); the whole\n"

@@ -39,7 +39,7 @@ static void usage(FILE *out)
 {
     fprintf(out,
             "usage: soak bake turbulence [options] -o OUT\n\n"
-            "Gradient-noise wetness map (improved Perlin noise, seed 000's procedural wetness):\n"
+            "Gradient-noise wetness map (improved Perlin noise, Jensen et al. 1999's procedural wetness):\n"
             "fBm (signed, about [-1,1]) or turbulence (sum of |noise|, [0,1]), normalised by the\n"
             "sum of octave amplitudes; optionally thresholded to a wet/dry mask with a soft edge.\n"
             "Sequences: --time 0 and --frame-time 1/24 by default.\n\n"

@@ -110,7 +110,7 @@ static const cli_opt volume_opts[] = {
     {"--wetness", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 1, F(wetness), SEEN(have_wetness), .meta = "W",
      .help = "uniform surface wetness %R (default 1, without --map)"},
     {"--noise", NULL, CLI_OPT_FLAG, .flag = 1, F(noise),
-     .help = "3D noise wetness instead (seed 000's turbulence wetness),\nset by --seed and the noise options below"},
+     .help = "3D noise wetness instead (Jensen et al. 1999's turbulence wetness),\nset by --seed and the noise options below"},
     {"--seed", NULL, CLI_OPT_INT, .ilo = 0, .ihi = INT64_MAX, F(turb.params.seed), .meta = "N",
      .help = "noise seed (default 0)"},
     {"--material", NULL, CLI_OPT_STRING, F(material), .meta = "NAME",
@@ -120,7 +120,7 @@ static const cli_opt volume_opts[] = {
     {"--df3-bits", NULL, CLI_OPT_CUSTOM, .parse = read_bits, .meta = "8|16|32", .help = "df3 value size (default 16)"},
     {"--threads", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_BAKE_MAX_THREADS, F(threads), .meta = "N",
      .help = "worker threads, %R (default: every core)"},
-    {"", NULL, CLI_OPT_HEADING, .help = "raw parameters instead of a preset (phase defaults: seed 000's paper):"},
+    {"", NULL, CLI_OPT_HEADING, .help = "raw parameters instead of a preset (phase defaults: Jensen et al. 1999's paper):"},
     SIGMA("--dry-sigma-s", dry.sigma_s, have_dry_s, "dry scattering coefficient per --unit (without --material)"),
     SIGMA("--dry-sigma-a", dry.sigma_a, have_dry_a, "dry absorption coefficient per --unit (without --material)"),
     LOBE("--dry-g1", dry.g1, -VOL_MAX_G, VOL_MAX_G, "G", "first HG lobe of the dry phase, %R (default 0.05)"),
@@ -177,7 +177,7 @@ static void defaults(vol_args *a)
     a->bits = 16;
     a->liquid = "water";
     soak_turbulence_defaults(&a->turb.params);
-    /* seed 000 sec. 4.1, wet paper */
+    /* [JLD99] sec. 4.1, wet paper */
     a->dry.g1 = 0.05, a->dry.g2 = -0.05, a->dry.w = 0.2;
     a->wet.g1 = 0.8, a->wet.g2 = -0.1, a->wet.w = 0.1;
 }

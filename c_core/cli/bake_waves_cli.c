@@ -1,4 +1,4 @@
-/* soak bake waves: beach wetness left by the last waves (seed 000 sec. 4.2). */
+/* soak bake waves: beach wetness left by the last waves ([JLD99] sec. 4.2). */
 #include <stdio.h>
 #include <string.h>
 
@@ -15,7 +15,7 @@ typedef struct waves_job {
 #define F(field) CLI_FIELD(waves_job, field)
 static const cli_opt waves_opts[] = {
     {"--waves", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_WAVES_MAX_WAVES, F(p.waves), .meta = "N",
-     .help = "waves still visible, %R (default 4, as in seed 000)"},
+     .help = "waves still visible, %R (default 4, as in Jensen et al. 1999)"},
     {"--direction", NULL, CLI_OPT_DOUBLE, .lo = -SOAK_WAVES_MAX_DIRECTION, .hi = SOAK_WAVES_MAX_DIRECTION,
      F(p.direction_deg), .meta = "DEG",
      .help = "inland direction, degrees from +x towards the image bottom (default 90)"},

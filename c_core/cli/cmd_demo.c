@@ -125,10 +125,10 @@ static int preset_row(const char *cmd, const soak_preset *p, const soak_liquid *
     }
     /* Diffuse albedo (what darkens) and the film's specular share of the
      * total hemispherical reflectance (what makes wet surfaces glossy). */
-    double ld = 0.2126 * dry.albedo.r + 0.7152 * dry.albedo.g + 0.0722 * dry.albedo.b;
-    double lw = 0.2126 * wet.albedo.r + 0.7152 * wet.albedo.g + 0.0722 * wet.albedo.b;
-    double spec = 0.2126 * (wet.albedo_total.r - wet.albedo.r) + 0.7152 * (wet.albedo_total.g - wet.albedo.g) +
-                  0.0722 * (wet.albedo_total.b - wet.albedo.b);
+    double ld = soak_rgb_luminance(dry.albedo);
+    double lw = soak_rgb_luminance(wet.albedo);
+    double spec = soak_rgb_luminance(soak_rgb3(wet.albedo_total.r - wet.albedo.r, wet.albedo_total.g - wet.albedo.g,
+                                               wet.albedo_total.b - wet.albedo.b));
     double ratio = ld > 0 ? lw / ld : 1.0;
     printf("%-12s %-21s (%.3f, %.3f, %.3f)   (%.3f, %.3f, %.3f)   %7.2f   %9.3f\n", p->name,
            soak_material_kind_name(p->kind), dry.albedo.r, dry.albedo.g, dry.albedo.b, wet.albedo.r, wet.albedo.g,
@@ -199,8 +199,8 @@ static int run_step(const char *cmd, int (*fn)(int, char **), int argc, char **a
     return rc == SOAK_EXIT_OK;
 }
 
-/* Seed 000's procedural wetness (thresholded turbulence), the same pattern
- * drying border-first (seed 002) half-way, and a beach with four waves. */
+/* [JLD99]'s procedural wetness (thresholded turbulence), the same pattern
+ * drying border-first ([Hnat06]) half-way, and a beach with four waves. */
 static int bake_maps(const char *cmd, const char *dir)
 {
     char turb_exr[4096], turb_png[4096], dry_png[4096], waves_png[4096];

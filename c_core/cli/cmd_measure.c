@@ -116,7 +116,7 @@ static const cli_opt measure_opts[] = {
     {"--g", NULL, CLI_OPT_DOUBLE, .lo = -SOAK_HG_G_MAX, .hi = SOAK_HG_G_MAX, F(setup.phase.g1), SEEN(have_g),
      .meta = "G", .help = "single Henyey-Greenstein lobe (default 0: isotropic)"},
     {"--g1", NULL, CLI_OPT_DOUBLE, .lo = -SOAK_HG_G_MAX, .hi = SOAK_HG_G_MAX, F(setup.phase.g1), SEEN(have_g1),
-     .meta = "G", .help = "two-term HG (seed 000 Eq. 5): --g1, --g2 and --w"},
+     .meta = "G", .help = "two-term HG (Jensen et al. 1999, Eq. 5): --g1, --g2 and --w"},
     {"--g2", NULL, CLI_OPT_DOUBLE, .lo = -SOAK_HG_G_MAX, .hi = SOAK_HG_G_MAX, F(setup.phase.g2), SEEN(have_g2),
      .meta = "G", .help = "the second lobe"},
     {"--w", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 1, F(setup.phase.w), SEEN(have_w), .meta = "W",

@@ -7,10 +7,10 @@
 #include <string.h>
 
 #include "soak/bake_rain.h"
-#include "soak/rng.h"
+#include "soak/poisson.h"
 
 #define PI 3.14159265358979323846
-#define POISSON_EXACT_MAX 30.0 /* soak_rain_poisson inverts its CDF up to here */
+#define POISSON_EXACT_MAX 30.0 /* soak_rng_poisson inverts its CDF up to here */
 
 void soak_drops_defaults(soak_drops_params *p)
 {
@@ -96,7 +96,7 @@ static soak_status gen_cell(const gen_ctx *g, long slab, uint32_t cell, impact_l
     soak_rng_seed(&rng, soak_seed_derive(g->p->seed, (uint64_t)slab), cell);
     double parts = ceil(lambda / POISSON_EXACT_MAX);
     long count = 0;
-    for (double k = 0; k < parts; ++k) count += soak_rain_poisson(lambda / parts, &rng);
+    for (double k = 0; k < parts; ++k) count += soak_rng_poisson(lambda / parts, &rng);
     for (long i = 0; i < count; ++i) {
         soak_drop_impact imp = {x0 + soak_rng_uniform(&rng) * cw, y0 + soak_rng_uniform(&rng) * ch,
                                 (slab + soak_rng_uniform(&rng)) * SOAK_DROPS_SLAB, 0, cell, (uint32_t)i};

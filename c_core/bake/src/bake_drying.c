@@ -1,6 +1,6 @@
 /* Drying of a wet region given by a mask.
  *
- * Schedule mode (seed 002, Hnat et al. 2006, sec. 3.3): pores hold water
+ * Schedule mode ([Hnat06], Hnat et al. 2006, sec. 3.3): pores hold water
  * between a start time t0 and t0 + t_fill with the piecewise-linear Delta-t
  * schedule of sec. 3.3.2 (soak_fill_fraction). We run that schedule as
  * emptying: wetness(t) = 1 - fill_fraction(t, t0, t_fill), so t_fill = 0 is
@@ -11,7 +11,7 @@
  * paper's relative time range). Porous materials dry "more stochastically"
  * (same section, Perlin noise): t0 is blended with fBm by noise_amount.
  *
- * Diffusion mode (ours; the seeds have no drying dynamics): water depth u
+ * Diffusion mode (ours; the sources ([JLD99], [Lag13], [Hnat06]) have no drying dynamics): water depth u
  * obeys du/dt = D lap(u) - E [u > 0]: constant-rate evaporation E from the
  * wet surface (the "constant rate period" of drying porous media) and
  * lateral capillary spreading as diffusion. Water spreads into the thin
@@ -128,7 +128,7 @@ double soak_mask_value(const soak_image *mask, size_t i)
 {
     const float *px = mask->pixels + i * (size_t)mask->channels;
     if (mask->channels < 3) return px[0];
-    return 0.2126 * px[0] + 0.7152 * px[1] + 0.0722 * px[2]; /* Rec. 709 luma */
+    return soak_rgb_luminance(soak_rgb3(px[0], px[1], px[2]));
 }
 
 static soak_status check_mask(const soak_image *mask)

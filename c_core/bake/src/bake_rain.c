@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "soak/rng.h"
+#include "soak/poisson.h"
 
 #include "bake_rain_flow.h"
 
@@ -56,27 +56,6 @@ soak_status soak_rain_check(const soak_rain_params *p)
         !(p->saturation_depth > 0 && p->saturation_depth <= SOAK_RAIN_MAX_SATURATION))
         return SOAK_ERR_ARG;
     return SOAK_OK;
-}
-
-long soak_rain_poisson(double lambda, soak_rng *rng)
-{
-    if (!(lambda > 0.0)) return 0;
-    if (lambda > 30.0) {
-        /* Normal approximation (Box-Muller), rounded; error O(1/sqrt(lambda)). */
-        double u1 = 1.0 - soak_rng_uniform(rng), u2 = soak_rng_uniform(rng);
-        double z = sqrt(-2.0 * log(u1)) * cos(2.0 * SOAK_PI * u2);
-        double k = floor(lambda + sqrt(lambda) * z + 0.5);
-        return k > 0 ? (long)k : 0;
-    }
-    /* Inversion: walk the CDF P(k) = e^-lambda lambda^k / k!. */
-    double u = soak_rng_uniform(rng), pk = exp(-lambda), cdf = pk;
-    long k = 0;
-    while (u > cdf && k < 1000) {
-        ++k;
-        pk *= lambda / (double)k;
-        cdf += pk;
-    }
-    return k;
 }
 
 /* ---- step 1: surface sampling ---- */
@@ -369,7 +348,7 @@ static void drops_row(void *ctx, int y, int thread)
         if (!(lambda > 0.0)) continue;
         soak_rng rng;
         soak_rng_seed(&rng, j->step_seed, (uint64_t)i);
-        j->deposit[i] = (float)(soak_rain_poisson(lambda, &rng) * j->drop_volume);
+        j->deposit[i] = (float)(soak_rng_poisson(lambda, &rng) * j->drop_volume);
     }
 }
 

@@ -8,7 +8,7 @@
 
 #include "soak/bake_drops.h"
 #include "soak/bake_rain.h"
-#include "soak/rng.h"
+#include "soak/poisson.h"
 
 #define PI 3.14159265358979323846
 #define ENVELOPE_SIGMAS 3.5 /* ring drawn within R +- 3.5 w (envelope 2e-3 there) */
@@ -72,7 +72,7 @@ soak_status soak_ripples_impacts(const soak_ripples_params *p, soak_ripple_impac
     soak_rng_seed(&rng, p->seed, 0x726970706c6573ULL); /* "ripples" */
     double parts = ceil(lambda / POISSON_EXACT_MAX);
     long n = 0;
-    for (double k = 0; k < parts; ++k) n += soak_rain_poisson(lambda / parts, &rng);
+    for (double k = 0; k < parts; ++k) n += soak_rng_poisson(lambda / parts, &rng);
     if (n == 0) return SOAK_OK;
     soak_ripple_impact *v = malloc((size_t)n * sizeof *v);
     if (!v) return SOAK_ERR_NOMEM;

@@ -9,7 +9,7 @@
  * by wrapping the indices before hashing.
  * Sums: fBm = sum_o g^o n(L^o p); turbulence = sum_o g^o |n(L^o p)| (Perlin
  * 1985, "An image synthesizer", the function Jensen et al. 1999 use for the
- * beach wetness, seed 000 sec. 4.2). Both are divided by sum_o g^o. Every
+ * beach wetness, [JLD99] sec. 4.2). Both are divided by sum_o g^o. Every
  * octave has its own derived seed, so octaves are independent and the
  * variance of the sum is var(n) sum_o g^(2o) / (sum_o g^o)^2. */
 #include "soak/bake.h"

@@ -1,4 +1,4 @@
-/* Beach wetness left by the last waves (seed 000, Jensen et al. 1999,
+/* Beach wetness left by the last waves ([JLD99], Jensen et al. 1999,
  * sec. 4.2: the beach wetness is "a sum of turbulence functions simulating
  * the water left from the four previous waves"; the paper gives no formula,
  * this is our model of it).
@@ -27,7 +27,7 @@ void soak_waves_defaults(soak_waves_params *p)
 {
     if (!p) return;
     p->seed = 0;
-    p->waves = 4; /* seed 000: "the four previous waves" */
+    p->waves = 4; /* [JLD99]: "the four previous waves" */
     p->direction_deg = 90;
     p->shore = -0.2;
     p->reach_min = 0.05;

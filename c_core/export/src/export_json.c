@@ -15,8 +15,6 @@
 
 #define JSON_DIGITS 7
 
-static soak_rgb rgb_scale(soak_rgb c, double s) { return (soak_rgb){c.r * s, c.g * s, c.b * s}; }
-
 /* Mean free path 1 / sigma_t in metres; 0 where the medium does not
  * interact (no scattering, no absorption). */
 static soak_rgb mean_free_path_m(soak_rgb ss, soak_rgb sa)
@@ -168,8 +166,8 @@ static soak_status add_material(soak_json *j, cJSON *list, const soak_preset_db 
         if (!t) return SOAK_ERR_NOMEM;
         if (conductor) {
             /* the metal seen from inside the liquid: relative complex index */
-            soak_json_rgb(j, t, "ior_n_under_liquid", rgb_scale(p->ior_n, 1.0 / l->ior));
-            soak_json_rgb(j, t, "ior_k_under_liquid", rgb_scale(p->ior_k, 1.0 / l->ior));
+            soak_json_rgb(j, t, "ior_n_under_liquid", soak_rgb_scale(p->ior_n, 1.0 / l->ior));
+            soak_json_rgb(j, t, "ior_k_under_liquid", soak_rgb_scale(p->ior_k, 1.0 / l->ior));
         }
         st = add_knot_table(j, t, p, l);
         if (st == SOAK_OK) st = add_base_table(j, t, p, l);

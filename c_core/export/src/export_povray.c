@@ -114,8 +114,6 @@ static void out(pov_out *o, const char *fmt, ...)
 
 static double clamp(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
 
-static double luminance(soak_rgb c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
-
 /* GGX alpha -> POV-Ray roughness (1 / Blinn exponent). */
 static double pov_roughness(double alpha)
 {
@@ -190,8 +188,8 @@ static soak_status fill_knot(const soak_preset *p, const soak_liquid *l, double 
     for (int k = 0; k < 3; ++k) soak_rgb_set(&t->v[V_PIGMENT][i], k, clamp(soak_rgb_at(w.albedo, k), 0.0, 1.0));
     t->v[V_REFLECT_METAL][i] = metal ? w.albedo_total : (soak_rgb){0, 0, 0};
     t->v[V_SHEET_T][i] = sheet_t;
-    double yp = luminance(t->v[V_PIGMENT][i]);
-    t->s[S_BACK][i] = p->kind == SOAK_KIND_THIN_SHEET && yp > 1e-6 ? luminance(sheet_t) / yp : 0.0;
+    double yp = soak_rgb_luminance(t->v[V_PIGMENT][i]);
+    t->s[S_BACK][i] = p->kind == SOAK_KIND_THIN_SHEET && yp > 1e-6 ? soak_rgb_luminance(sheet_t) / yp : 0.0;
     return fill_medium(&w, l->ior, t, i);
 }
 

@@ -62,6 +62,6 @@ int bsdf_film_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_b
     s->pdf = (1 - pm) * s->wi.z * SOAK_INV_PI;
     soak_rgb f = film_f(b, s->wi, wo);
     if (!(s->pdf > 0)) return 0;
-    s->weight = bsdf_rgb_scale(f, s->wi.z / s->pdf);
+    s->weight = soak_rgb_scale(f, s->wi.z / s->pdf);
     return 1;
 }

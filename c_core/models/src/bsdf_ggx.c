@@ -61,6 +61,6 @@ void bsdf_ggx_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, 
 int bsdf_ggx_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s)
 {
     if (!(wo.z > 0) || !bsdf_ggx_reflect_sample(b->d.alpha, wo, u[1], u[2], &s->wi, &s->pdf)) return 0;
-    s->weight = bsdf_rgb_scale(ggx_f(b, s->wi, wo), s->wi.z / s->pdf);
+    s->weight = soak_rgb_scale(ggx_f(b, s->wi, wo), s->wi.z / s->pdf);
     return 1;
 }

@@ -12,7 +12,7 @@ soak_status bsdf_lambert_setup(soak_bsdf *b)
 void bsdf_lambert_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf)
 {
     int up = wi.z > 0 && wo.z > 0;
-    *f = up ? bsdf_rgb_scale(b->d.albedo, SOAK_INV_PI) : soak_rgb3(0, 0, 0);
+    *f = up ? soak_rgb_scale(b->d.albedo, SOAK_INV_PI) : soak_rgb3(0, 0, 0);
     *pdf = up ? wi.z * SOAK_INV_PI : 0.0;
 }
 

@@ -98,7 +98,7 @@ soak_status bsdf_model_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3
     soak_status st = bsdf_model_eval(b, s->wi, wo, &f, &s->pdf);
     if (st != SOAK_OK) return st;
     if (!(s->pdf > 0)) return SOAK_OK;
-    s->weight = bsdf_rgb_scale(f, s->wi.z / s->pdf);
+    s->weight = soak_rgb_scale(f, s->wi.z / s->pdf);
     *ok = 1;
     return SOAK_OK;
 }

@@ -1,6 +1,6 @@
 /* The traced layer (soak/bsdf.h, SOAK_BSDF_WALK): a smooth liquid film of
  * index n2 over an opaque base, followed bounce by bounce (Lekner & Dorf
- * 1988 as used in seed 000 sec. 2.1 / 3.1). Reflect at the film top with
+ * 1988 as used in [JLD99] sec. 2.1 / 3.1). Reflect at the film top with
  * probability F12(cos1) (delta lobe); otherwise refract in, scatter off the
  * base, and at the underside leave with probability 1 - F21 or go back down
  * (total internal reflection beyond the critical angle).
@@ -59,7 +59,7 @@ void soak_bsdf_walk_light(const soak_bsdf *b, const soak_bsdf_walk *w, soak_vec3
     soak_rgb fb;
     double pb;
     bsdf_base_eval(b, l2, w->up, &fb, &pb);
-    *f = bsdf_rgb_mul(bsdf_rgb_scale(fb, T / (n2 * n2)), leg(b, cos2));
+    *f = soak_rgb_mul(soak_rgb_scale(fb, T / (n2 * n2)), leg(b, cos2));
     *pdf = pb * T * wi.z / (n2 * n2 * cos2);
 }
 
@@ -70,12 +70,12 @@ soak_walk_event soak_bsdf_walk_step(const soak_bsdf *b, soak_bsdf_walk *w, const
     soak_bsdf_sample bs = {.eta = 1};
     if (!bsdf_base_sample(b, w->up, u, &bs)) return SOAK_WALK_DEAD;
     soak_vec3 wi = bs.wi;
-    *weight = bsdf_rgb_mul(bs.weight, leg(b, wi.z)); /* the way up */
+    *weight = soak_rgb_mul(bs.weight, leg(b, wi.z)); /* the way up */
     double cos_air;
     double F = bsdf_fresnel(wi.z, 1.0 / n2, &cos_air);
     if (u[3] < F) {
         w->up = bsdf_mirror(wi); /* reflected back down, scattered up again next */
-        *weight = bsdf_rgb_mul(*weight, leg(b, wi.z));
+        *weight = soak_rgb_mul(*weight, leg(b, wi.z));
         return SOAK_WALK_BOUNCE;
     }
     s->wi = soak_v3_norm(soak_v3(wi.x * n2, wi.y * n2, cos_air));

@@ -55,7 +55,7 @@ static inline double film_brdf_fast(const film_fast *f, soak_vec3 wi, soak_vec3 
     return ti * to * att * f->scale;
 }
 
-/* Seed 001, refract_1_33: fit of (eta cos_i - cos_t) for eta = 1/1.33 on cos_i in [0, 1]. */
+/* [Lag13], refract_1_33: fit of (eta cos_i - cos_t) for eta = 1/1.33 on cos_i in [0, 1]. */
 #define R133_ETA 0.7518796992481203 /* 1 / 1.33 */
 #define R133_C0 (-0.666308423880957)
 #define R133_C1 0.7518796992481197

@@ -1,6 +1,6 @@
 /* Smooth absorbing liquid film over a Lambertian base.
  * Source: Lekner & Dorf 1988 (Appl. Opt. 27(7)), non-absorbing film;
- * Beer-Lambert absorption added here (coefficients: seed 001, Lagarde).
+ * Beer-Lambert absorption added here (coefficients: [Lag13], Lagarde).
  *
  * Derivation. Air above (index 1), film of index n and optical thickness
  * tau = alpha * thickness, Lambertian base of albedo A (no Fresnel term at the

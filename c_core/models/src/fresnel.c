@@ -1,7 +1,7 @@
 /* Fresnel reflectance. Dielectric: Born & Wolf, Principles of Optics (7th
  * ed.) sec. 1.5.2, amplitude ratios r_s, r_p averaged for unpolarised light.
  * Conductor: the closed form of the complex-index Fresnel equations used in
- * seed 001 (Lagarde, v1.3 correction of Weidlich-Wilkie's code); we keep the
+ * [Lag13] (Lagarde, v1.3 correction of Weidlich-Wilkie's code); we keep the
  * algebra but guard the 0/0 cases at grazing incidence. */
 #include "soak/fresnel.h"
 

@@ -1,5 +1,5 @@
 /* Henyey-Greenstein phase function (Henyey & Greenstein 1941) and the
- * two-term mixture of seed 000 Eq. 5, corrected (see soak/hg.h): lobe
+ * two-term mixture of [JLD99] Eq. 5, corrected (see soak/hg.h): lobe
  * p_g(c) = (1 - g^2) / (4 pi (1 + g^2 - 2 g c)^{3/2}). */
 #include "soak/hg.h"
 

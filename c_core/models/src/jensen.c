@@ -1,4 +1,4 @@
-/* Jensen-Legakis-Dorsey two-layer surface: seed 000, Eq. 1-4. Readings and
+/* Jensen-Legakis-Dorsey two-layer surface: [JLD99], Eq. 1-4. Readings and
  * corrections of the seed are listed in soak/jensen.h.
  *
  * Down: air (n1) -> liquid (n2) -> material (n3). Snell's invariant

@@ -235,7 +235,7 @@ static soak_status porous_setup(const soak_model_params *p, soak_model_ctx *c)
     memset(&m->p, 0, sizeof m->p);
     m->p.kd = p->albedo;
     m->p.ks = p->ks;
-    /* Beckmann RMS slope from GGX alpha (same second moment) and seed 001's
+    /* Beckmann RMS slope from GGX alpha (same second moment) and [Lag13]'s
      * Blinn-Phong exponent n = 2/m^2 - 2, clamped at 0. */
     m->p.m = p->roughness;
     double n = 2.0 / (p->roughness * p->roughness) - 2.0;
@@ -316,7 +316,7 @@ static const soak_model models[] = {
      NULL, ww_setup, ww_eval, .mirror = ww_mirror},
     {"ww-triace", "Tri-Ace fast path of ww: F_bottom, linear absorption, no refraction", "ww", ww_triace_setup_marked,
      ww_triace_eval, .mirror = ww_triace_mirror, .eval_fast = ww_triace_eval_fast},
-    {"porous", "Merillou porous post-process with Hnat wetting on Blinn-Phong (seed 002)", NULL, porous_setup,
+    {"porous", "Merillou porous post-process with Hnat wetting on Blinn-Phong (Hnat et al. 2006)", NULL, porous_setup,
      porous_eval, porous_sample, porous_pdf, NULL, NULL},
     {"porous-ggx", "energy-conserving porous wetting on a GGX + Fresnel base", NULL, porous_ggx_setup,
      porous_ggx_eval, porous_ggx_sample, porous_ggx_pdf, NULL, NULL},

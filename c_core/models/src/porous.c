@@ -1,5 +1,5 @@
 /* Merillou porous BRDF post-process and Hnat's wet extension on Blinn-Phong.
- * Formulas, sources and corrections to the seeds: soak/porous.h. */
+ * Formulas, sources and corrections to the sources: soak/porous.h. */
 #include "soak/porous.h"
 #include "porous_internal.h"
 
@@ -11,7 +11,7 @@
 /* ---- building blocks ---- */
 
 /* Schlick 1994: k = sqrt(2 m^2 / pi) = m sqrt(2/pi) (see porous.h for why not
- * seed 002's 2 m^2 / pi). G1(0) = 0 also for k = 0 (m = 0). */
+ * [Hnat06]'s 2 m^2 / pi). G1(0) = 0 also for k = 0 (m = 0). */
 static double schlick_g1(double k, double c)
 {
     if (!(c > 0.0)) return 0.0;
@@ -34,8 +34,8 @@ soak_status soak_porous_Gp(double m, double cos_i, double cos_o, double *Gp)
     return SOAK_OK;
 }
 
-/* Seed 002 sec. 3.1 with the square restored (seed 001 has it) and the mean
- * of the two polar angles (seed 001's code multiplies them: typo). Clamp at
+/* [Hnat06] sec. 3.1 with the square restored ([Lag13] has it) and the mean
+ * of the two polar angles ([Lag13]'s code multiplies them: typo). Clamp at
  * 0: see porous.h. */
 double soak_porous_nb_raw(double sp, double theta_i, double theta_o)
 {
@@ -78,7 +78,7 @@ soak_status soak_porous_Ap(double ka, double nb, double *Ap)
     return SOAK_OK;
 }
 
-/* Seed 002 sec. 3.3.2 table of dt, divided by t_fill. */
+/* [Hnat06] sec. 3.3.2 table of dt, divided by t_fill. */
 soak_status soak_fill_fraction(double t, double t0, double t_fill, double *frac)
 {
     if (!frac) return SOAK_ERR_NULL;
@@ -144,7 +144,7 @@ soak_status soak_porous_validate(const soak_porous_params *p)
     return SOAK_OK;
 }
 
-/* Seed 002 Eq. 2 (k_d-poro-wet) and Eq. 3 (k_s-poro-wet, split into the
+/* [Hnat06] Eq. 2 (k_d-poro-wet) and Eq. 3 (k_s-poro-wet, split into the
  * material and water lobes). The porous diffuse part
  * k_d aG (1-A_p) + k_s aG (1-A_p) = aG (k_s+k_d)^(n_b+1) fades with (1 - fill). */
 static soak_porous_coeffs coeffs_raw(const soak_porous_params *p, double fill, soak_vec3 wi, soak_vec3 wo)

@@ -203,7 +203,7 @@ static double weight_avg(const soak_porous_ggx *c, double fill)
 }
 
 /* rho_eff of porous.h: non-porous diffuse plus the porous part, which keeps
- * r^(n_b + 1) of the light entering a pore (seed 002 Eq. 2 with k_s + k_d
+ * r^(n_b + 1) of the light entering a pore ([Hnat06] Eq. 2 with k_s + k_d
  * replaced by the wall albedo r) and fades as the pores fill. */
 static double rho_eff(const soak_porous_ggx *c, double fill, double aG, double theta_i, double theta_o)
 {

@@ -1,5 +1,5 @@
 /* Weidlich-Wilkie layered BRDF with a smooth water film (exact model):
- * setup, eval, sample. Derivation, corrections to seed 001 and the energy
+ * setup, eval, sample. Derivation, corrections to [Lag13] and the energy
  * argument are in soak/ww.h. */
 #include "soak/ww.h"
 
@@ -25,7 +25,7 @@ void soak_ww_default(soak_ww *m)
 
 void soak_ww_copper(soak_rgb *n, soak_rgb *k)
 {
-    /* Seed 001 (Lagarde), RenderMonkey code: filmetrics spectra convolved
+    /* [Lag13] (Lagarde), RenderMonkey code: filmetrics spectra convolved
      * with the CIE colour matching functions. */
     if (n) *n = soak_rgb3(3.406149, 2.161600, 1.504326);
     if (k) *k = soak_rgb3(5.225178, 3.756258, 3.018729);

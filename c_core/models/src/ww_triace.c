@@ -1,4 +1,4 @@
-/* Tri-Ace fast paths for the water-over-base Weidlich-Wilkie BRDF (seed 001,
+/* Tri-Ace fast paths for the water-over-base Weidlich-Wilkie BRDF ([Lag13],
  * "Refract vector", "Fresnel term", "Absorption term"; Gotanda, tri-Ace).
  * Declared and documented in soak/ww.h; accuracy against soak_ww_eval is
  * measured in tests/c/models/test_ww.c. The per-sample path has no pow/exp, and
@@ -84,7 +84,7 @@ soak_status soak_ww_triace_setup(const soak_ww *m, soak_ww_triace *fast)
         r.fbottom = f23 * t21;
         /* Diffuse counterpart of F_bottom: (1 - F23)^2 for the way in and out
          * of the base, (1 - F21) for leaving the film, all at normal
-         * incidence (seed 001 notes F_bottom must not be applied to the
+         * incidence ([Lag13] notes F_bottom must not be applied to the
          * diffuse term). */
         r.diffuse = m->kd * SOAK_INV_PI * t21 * (1.0 - f23) * (1.0 - f23);
     }

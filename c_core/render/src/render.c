@@ -88,18 +88,18 @@ static soak_rgb radiance(rt_thread *t, soak_vec3 org, soak_vec3 dir)
         if (!found) {
             if (s->env.type != SOAK_ENV_NONE) {
                 double w = path.prev_delta ? 1.0 : rt_power(path.prev_pdf, rt_env_pdf(c, path.dir));
-                path.L = rgb_add(path.L, rgb_scale(rgb_mul(path.beta, rt_env_eval(c, path.dir)), w));
+                path.L = soak_rgb_add(path.L, soak_rgb_scale(soak_rgb_mul(path.beta, rt_env_eval(c, path.dir)), w));
             }
             break;
         }
-        if (path.inside) path.beta = rgb_mul(path.beta, rgb_exp(path.absorb, hit.t));
+        if (path.inside) path.beta = soak_rgb_mul(path.beta, rgb_exp(path.absorb, hit.t));
         const soak_material *m = &s->materials[s->objects[hit.object_id].material];
         if (m->type == SOAK_MAT_EMITTER) {
             int li = light_of_object(s, hit.object_id);
             if (li >= 0 && soak_v3_dot(path.dir, hit.ng) < 0) {
                 double w = path.prev_delta ? 1.0
                                            : rt_power(path.prev_pdf, rt_sphere_light_pdf(&s->lights[li], path.prev_pos));
-                path.L = rgb_add(path.L, rgb_scale(rgb_mul(path.beta, m->radiance), w));
+                path.L = soak_rgb_add(path.L, soak_rgb_scale(soak_rgb_mul(path.beta, m->radiance), w));
             }
             break;
         }
@@ -110,7 +110,7 @@ static soak_rgb radiance(rt_thread *t, soak_vec3 org, soak_vec3 dir)
              * fires while the throughput stays at 1 (albedo 1). */
             double q = fmin(1.0, rt_rr_weight(&path));
             if (!(q > 0) || rt_rand(t) >= q) break;
-            path.beta = rgb_scale(path.beta, 1.0 / q);
+            path.beta = soak_rgb_scale(path.beta, 1.0 / q);
         }
     }
     if (!(soak_is_finite(path.L.r) && soak_is_finite(path.L.g) && soak_is_finite(path.L.b))) {

@@ -15,8 +15,6 @@
 
 #include "render_internal.h"
 
-static double luminance(double r, double g, double b) { return 0.2126 * r + 0.7152 * g + 0.0722 * b; }
-
 soak_status rt_env_build(rt_env *env, const soak_environment *e)
 {
     memset(env, 0, sizeof *env);
@@ -35,7 +33,7 @@ soak_status rt_env_build(rt_env *env, const soak_environment *e)
         double *cc = env->col_cdf + (size_t)i * (W + 1);
         for (int j = 0; j < W; ++j) {
             const float *p = im->pixels + ((size_t)i * W + j) * C;
-            double y = C >= 3 ? luminance(p[0], p[1], p[2]) : p[0];
+            double y = C >= 3 ? soak_rgb_luminance(soak_rgb3(p[0], p[1], p[2])) : p[0];
             cc[j + 1] = cc[j] + y * band;
         }
         env->row_cdf[i + 1] = env->row_cdf[i] + cc[W];
@@ -161,7 +159,7 @@ int rt_light_sample_at(rt_thread *t, int light, soak_vec3 p, rt_light_sample *s)
         if (!(r2 > 0)) return 0;
         s->dist = sqrt(r2);
         s->wi = soak_v3_scale(d, 1.0 / s->dist);
-        s->L = rgb_scale(l->value, 1.0 / r2);
+        s->L = soak_rgb_scale(l->value, 1.0 / r2);
         s->pdf = 0;
         return rgb_max(s->L) > 0;
     }

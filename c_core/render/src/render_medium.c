@@ -1,12 +1,12 @@
-/* Wet material over a scattering medium: seed 000 (Jensen, Legakis, Dorsey
+/* Wet material over a scattering medium: [JLD99] (Jensen, Legakis, Dorsey
  * 1999) sec. 3.1-3.2 traced explicitly.
  *
  * Interfaces: air (1) | liquid film (n2) | material (n3), flat and parallel
  * (the film is thin). A path crosses them as a small Markov chain: at each
  * interface it is reflected with the exact Fresnel probability -- F12 at
- * air/film, F23^k at film/material as seed 000 Eq. 2 (k is the seed's
+ * air/film, F23^k at film/material as [JLD99] Eq. 2 (k is [JLD99]'s
  * exponent; k = 1 smooth) -- or transmitted, and may bounce inside the film
- * any number of times (total internal reflection included). Seed 000 Eq. 1-4
+ * any number of times (total internal reflection included). [JLD99] Eq. 1-4
  * keep the first crossing only; following the reflected parts conserves
  * energy (white furnace test). Throughput factors for radiance: 1/n^2 into
  * a denser medium, n^2 back out (corrected Eq. 1/2, see soak/jensen.h), so a
@@ -17,7 +17,7 @@
  * material's own surface (its roughness, which the liquid does not change),
  * so it applies to the dry interface too; with k > 1 the dry surface has a
  * weak specular lobe and the wet one gains the liquid's smooth reflection
- * (seed 000 sec. 4.2: "more specular due to the smoother air-water
+ * ([JLD99] sec. 4.2: "more specular due to the smoother air-water
  * interface"). The reflected share is traced as a mirror reflection.
  *
  * Inside: the random walk of soak/medium.h (soak_medium_walk_rgb), the same
@@ -33,7 +33,7 @@
  * crosses the layer stack upward (rt_cross_stack), reflected back in or
  * leaving.
  *
- * Next-event estimation inside the medium (seed 000 sec. 3.1: "for the shadow
+ * Next-event estimation inside the medium ([JLD99] sec. 3.1: "for the shadow
  * rays ... we use Equation 4"): for each delta light (sun, point) the light
  * direction wl in air is refracted through the flat film at the surface
  * normal (of the face last crossed, or the opposite one for a light behind
@@ -106,7 +106,7 @@ static soak_status grid_coeffs(const void *ctx, soak_vec3 pos, soak_medium_point
 
 soak_medium_rgb rt_medium_rgb(const soak_scene_medium *m)
 {
-    soak_rgb st = rgb_add(m->sigma_s, m->sigma_a), albedo;
+    soak_rgb st = soak_rgb_add(m->sigma_s, m->sigma_a), albedo;
     for (int c = 0; c < 3; ++c) {
         double t = soak_rgb_at(st, c);
         soak_rgb_set(&albedo, c, t > 0 ? fmin(1.0, soak_rgb_at(m->sigma_s, c) / t) : 1.0);
@@ -339,7 +339,7 @@ static void add_delta_light(nee_ctx *c, const soak_light *l, soak_vec3 x, soak_v
         double r2 = soak_v3_dot(dl, dl);
         if (!(r2 > 0)) return;
         dist_light = sqrt(r2);
-        E = rgb_scale(E, 1.0 / r2);
+        E = soak_rgb_scale(E, 1.0 / r2);
     }
     double cover = soak_scene_wetness(c->obj, e->h.p, e->h.u, e->h.v) * m->film_coverage;
     double Tf = film_shadow(m, cover, e->cos1);
@@ -352,11 +352,11 @@ static void add_delta_light(nee_ctx *c, const soak_light *l, soak_vec3 x, soak_v
         return;
     if (!(rgb_max(Tm) > 0)) return;
     if (!rt_visible(t, soak_geometry_offset(e->h.p, e->n, e->wl), e->wl, dist_light)) return;
-    soak_rgb L = rgb_mul(rgb_mul(beta, Tm), E);
+    soak_rgb L = soak_rgb_mul(soak_rgb_mul(beta, Tm), E);
     /* 1/n3^2: the radiance factor of entering, left out of beta (rt_cross_stack). */
-    L = rgb_scale(L, e->inv_q * ph * Tf * e->cos1 / (e->cos3 * n3 * n3 * c->path->eta_scale)); /* walk weights: see rt_wet_medium */
+    L = soak_rgb_scale(L, e->inv_q * ph * Tf * e->cos1 / (e->cos3 * n3 * n3 * c->path->eta_scale)); /* walk weights: see rt_wet_medium */
     if (cover > 0 && m->film_thickness > 0) L = film_absorbed(m, cover, e->cos1, Tf, L);
-    c->path->L = rgb_add(c->path->L, L);
+    c->path->L = soak_rgb_add(c->path->L, L);
 }
 
 /* Caustic in-scattering from the photon map: sigma_s L_s / sigma_s, times 1/n3^2. */
@@ -366,7 +366,7 @@ static soak_rgb caustic_light(const nee_ctx *c, soak_vec3 x, soak_vec3 d_in, soa
     soak_rgb g = rt_photons_gather(c->t->ctx->caustics, x, d_in, &local->phase, c->object_id);
     soak_rgb ss = local->sigma_s;
     soak_rgb ls = soak_rgb3(ss.r > 0 ? g.r / ss.r : 0, ss.g > 0 ? g.g / ss.g : 0, ss.b > 0 ? g.b / ss.b : 0);
-    return rgb_scale(rgb_mul(beta, ls), 1.0 / (n3 * n3 * c->path->eta_scale));
+    return soak_rgb_scale(soak_rgb_mul(beta, ls), 1.0 / (n3 * n3 * c->path->eta_scale));
 }
 
 /* Vertex hook of the walk: delta lights by next-event estimation (see the
@@ -390,7 +390,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
         }
         add_delta_light(c, l, x, d_in, beta, local, &e);
     }
-    if (c->t->ctx->caustics) c->path->L = rgb_add(c->path->L, caustic_light(c, x, d_in, beta, local));
+    if (c->t->ctx->caustics) c->path->L = soak_rgb_add(c->path->L, caustic_light(c, x, d_in, beta, local));
     return 1;
 }
 
@@ -498,7 +498,7 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     nc.path = path;
     /* The walk's roulette plays on its weight: start it at beta * eta_scale
      * (rt_rr_weight's convention) and undo the scale on what it returns. */
-    soak_walk_options opt = rt_walk_options(rgb_scale(path->beta, path->eta_scale));
+    soak_walk_options opt = rt_walk_options(soak_rgb_scale(path->beta, path->eta_scale));
     opt.on_vertex = medium_vertex;
     opt.vertex_ctx = &nc;
     soak_walk_result_rgb w;
@@ -513,7 +513,7 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     if (w.end == SOAK_WALK_CAPPED) t->n.capped++;
     if (w.end != SOAK_WALK_EXITED) return;
     path->alive = 1;
-    path->beta = rgb_scale(w.weight, 1.0 / path->eta_scale);
+    path->beta = soak_rgb_scale(w.weight, 1.0 / path->eta_scale);
     path->dir = w.dir;
     path->org = soak_geometry_offset(surf.hit.p, surf.n_ref, w.dir);
     path->prev_delta = 1;

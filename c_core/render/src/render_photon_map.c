@@ -93,5 +93,5 @@ soak_rgb rt_photons_gather(const rt_photon_map *map, soak_vec3 x, soak_vec3 d_in
                 }
             }
     double vol = 4.0 / 3.0 * SOAK_PI * r2 * map->radius;
-    return rgb_scale(sum, 1.0 / vol);
+    return soak_rgb_scale(sum, 1.0 / vol);
 }

@@ -1,6 +1,6 @@
 /* Volume photon map for caustics into wet media (Jensen & Christensen,
  * "Efficient simulation of light transport in scenes with participating
- * media using photon maps", SIGGRAPH 1998; used by seed 000 sec. 4.3 for the
+ * media using photon maps", SIGGRAPH 1998; used by [JLD99] sec. 4.3 for the
  * caustic of the cognac glass).
  *
  * Only the light a path tracer cannot reach is stored: photons leave the sun
@@ -94,7 +94,7 @@ static int trace_photon(rt_thread *t, soak_vec3 org, soak_vec3 dir, soak_rgb pow
         soak_hit h;
         int found = 0;
         if (soak_geometry_intersect(sc->geometry, &r, &h, &found) != SOAK_OK || !found) return 1;
-        if (inside) power = rgb_mul(power, rgb_exp(absorb, h.t));
+        if (inside) power = soak_rgb_mul(power, rgb_exp(absorb, h.t));
         const soak_object *obj = &sc->objects[h.object_id];
         const soak_material *m = &sc->materials[obj->material];
         if (m->type == SOAK_MAT_DIELECTRIC) {
@@ -134,8 +134,6 @@ static int trace_photon(rt_thread *t, soak_vec3 org, soak_vec3 dir, soak_rgb pow
     }
     return 1;
 }
-
-static double luminance(soak_rgb c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
 static int should_stop(const volatile sig_atomic_t *cancel, double deadline)
 {
@@ -196,11 +194,11 @@ static double light_fluxes(const photon_source *src, double *flux)
     for (int i = 0; i < sc->n_lights; ++i) {
         const soak_light *l = &sc->lights[i];
         if (l->type == SOAK_LIGHT_DIRECTIONAL) {
-            flux[i] = luminance(l->value) * SOAK_PI * R * R;
+            flux[i] = soak_rgb_luminance(l->value) * SOAK_PI * R * R;
         } else if (l->type == SOAK_LIGHT_POINT) {
             double d = soak_v3_len(soak_v3_sub(src->center, l->position));
             double omega = d > R ? 2 * SOAK_PI * (R * R / (d * d)) / (1 + sqrt(1 - R * R / (d * d))) : 4 * SOAK_PI;
-            flux[i] = luminance(l->value) * omega;
+            flux[i] = soak_rgb_luminance(l->value) * omega;
         }
         total += flux[i];
     }
@@ -216,7 +214,7 @@ static void emit_from_sun(rt_thread *t, const photon_source *src, const soak_lig
     double rr = R * sqrt(rt_rand(t)), phi = 2 * SOAK_PI * rt_rand(t);
     *org = soak_v3_add(src->center, rt_to_world(&f, soak_v3(rr * cos(phi), rr * sin(phi), src->far)));
     *dir = soak_v3_scale(l->direction, -1.0);
-    *power = rgb_scale(l->value, SOAK_PI * R * R / (src->n * prob));
+    *power = soak_rgb_scale(l->value, SOAK_PI * R * R / (src->n * prob));
 }
 
 /* A point-light photon: uniform in the cone around the sphere (the whole
@@ -233,7 +231,7 @@ static void emit_from_point(rt_thread *t, const photon_source *src, const soak_l
     rt_frame f = rt_frame_make(d > 0 ? soak_v3_scale(to, 1.0 / d) : soak_v3(0, 0, 1));
     *dir = soak_v3_norm(rt_to_world(&f, soak_v3(st * cos(phi), st * sin(phi), ct)));
     *org = l->position;
-    *power = rgb_scale(l->value, 2 * SOAK_PI * one_minus / (src->n * prob));
+    *power = soak_rgb_scale(l->value, 2 * SOAK_PI * one_minus / (src->n * prob));
 }
 
 /* Chooses a light by flux and emits a photon from it; 0 when the chosen

@@ -53,7 +53,7 @@ int rt_cross_stack(rt_thread *t, const rt_stack *s, double p, int start_low, soa
             if (film) {
                 double cos1 = sqrt(fmax(0.0, 1 - p * p));
                 if (rt_rand(t) < rt_fresnel(cos1, s->n2, NULL)) return 0;
-                if (absorbing) *beta = rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
+                if (absorbing) *beta = soak_rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
                 layer = 1;
                 up = 0;
             } else {
@@ -68,18 +68,18 @@ int rt_cross_stack(rt_thread *t, const rt_stack *s, double p, int start_low, soa
             F = pow_k(F, s->k);
             if (rt_rand(t) < F) return 1;
             if (!film) return 0;
-            if (absorbing) *beta = rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
+            if (absorbing) *beta = soak_rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
             layer = 1;
             up = 1;
         } else if (up) { /* in the film going up to the air */
             double F = p >= 1.0 ? 1.0 : rt_fresnel(cos_film, 1.0 / s->n2, NULL);
             if (rt_rand(t) >= F) return 0;
-            if (absorbing) *beta = rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
+            if (absorbing) *beta = soak_rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
             up = 0;
         } else { /* in the film going down to the material */
             double F = pow_k(rt_fresnel(cos_film, s->n3 / s->n2, NULL), s->k);
             if (rt_rand(t) >= F) return 1;
-            if (absorbing) *beta = rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
+            if (absorbing) *beta = soak_rgb_mul(*beta, rgb_exp(s->alpha, s->h / cos_film));
             up = 1;
         }
     }

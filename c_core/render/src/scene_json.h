@@ -1,5 +1,6 @@
-/* Private helpers of the scene parser: JSON access with error messages of
- * the form "<file>: <json path>: <reason>". */
+/* Private helpers of the scene parser (scene_json.c): JSON access with
+ * error messages of the form "<file>: <json path>: <reason>", and the
+ * messages for text that is not JSON. */
 #ifndef SOAK_SCENE_JSON_H
 #define SOAK_SCENE_JSON_H
 
@@ -40,6 +41,14 @@ void sj_path(char *buf, size_t n, const char *parent, const char *key);
 void sj_index(char *buf, size_t n, const char *parent, int i);
 /* Resolves a relative file name against base_dir and records it as an input. */
 soak_status sj_file(scene_ctx *c, const char *file, const char *path, char *out, size_t n);
+
+/* The message for text cJSON could not parse, stopped at `at`:
+ * "<name>: line L, column C: JSON syntax error" (naming NaN/Infinity when
+ * the text there reads like them, or the nesting limit when it is passed). */
+void sj_syntax_error(const char *text, const char *at, const char *name, char *err, size_t errlen);
+/* The first key that appears twice in one object anywhere in the tree;
+ * NULL when there is none. */
+const char *sj_duplicate_key(const cJSON *root);
 
 /* scene_material.c */
 soak_status scene_parse_material(scene_ctx *c, const cJSON *j, const char *path, soak_material *m);

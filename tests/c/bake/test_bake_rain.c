@@ -6,7 +6,6 @@
  *  - mass balance on the bowl without evaporation and splat: total volume
  *    vs the analytic expectation rainfall * duration * sum(E_i A_i), within
  *    4 Poisson standard deviations;
- *  - Poisson sampler: mean and variance vs lambda;
  *  - same bytes on 1 and 2 threads; a mesh without UVs is refused. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -16,7 +15,6 @@
 
 #include "check.h"
 #include "soak/bake_rain.h"
-#include "soak/rng.h"
 
 /* Grid mesh (n x n quads) over uv in [0,1]^2 with z = f(x, y), x, y = uv * L
  * centred; CCW seen from +z. */
@@ -256,32 +254,6 @@ static void test_bowl(void)
     mesh_free(&m);
 }
 
-static void test_poisson(void)
-{
-    double lambdas[] = {0.05, 3.0, 25.0, 80.0};
-    for (int k = 0; k < 4; ++k) {
-        soak_rng rng;
-        soak_rng_seed(&rng, 11, (uint64_t)k);
-        const int n = 200000;
-        double s = 0, s2 = 0;
-        for (int i = 0; i < n; ++i) {
-            double c = (double)soak_rain_poisson(lambdas[k], &rng);
-            s += c;
-            s2 += c * c;
-        }
-        double mean = s / n, var = s2 / n - mean * mean, L = lambdas[k];
-        char what[96];
-        snprintf(what, sizeof what, "Poisson(%g) mean (4 standard errors)", L);
-        check_close(what, mean, L, 4.0 * sqrt(L / n));
-        snprintf(what, sizeof what, "Poisson(%g) variance (4 standard errors)", L);
-        /* var of the sample variance ~ (mu4 - sigma^4)/n, mu4 = L(1 + 3L) for Poisson */
-        check_close(what, var, L, 4.0 * sqrt((L * (1 + 3 * L) - L * L) / n));
-    }
-    soak_rng rng;
-    soak_rng_seed(&rng, 1, 1);
-    check_true("Poisson(0) and Poisson(NaN) are 0", soak_rain_poisson(0.0, &rng) == 0 && soak_rain_poisson(NAN, &rng) == 0);
-}
-
 static void test_params(void)
 {
     soak_rain_params p;
@@ -300,7 +272,6 @@ static void test_params(void)
 int main(void)
 {
     test_params();
-    test_poisson();
     test_open_plane();
     test_roof();
     test_well();

@@ -52,8 +52,8 @@ static void check_measured(const soak_preset_db *db, const soak_liquid *water)
         /* Before the fix the chain gave 0.50 here; the old stacked model must be outside. */
         double r = 0.0;
         soak_preset old = *sand;
-        old.phase_wet.g1 = 0.7; /* seed 000's eyeballed value */
-        check_true("seed 000's wet g misses the measurement",
+        old.phase_wet.g1 = 0.7; /* [JLD99]'s eyeballed value */
+        check_true("[JLD99]'s wet g misses the measurement",
                    soak_wetness_measured_ratio(&old, water, sand->measured_wetness, &r) == SOAK_OK &&
                        fabs(r - sand->measured_ratio) > sand->measured_spread);
         /* Clapp & Hornberger 1978, Table 2: sand porosity 0.395. */

@@ -1,4 +1,4 @@
-/* Preset loader: the shipped file against the seeds' published numbers and
+/* Preset loader: the shipped file against the sources' published numbers and
  * independent formulas; malformed files written here must fail with the
  * right status and a message naming the JSON path. */
 #define _POSIX_C_SOURCE 200809L
@@ -76,22 +76,22 @@ static void check_shipped(void)
         check_true(what, ok);
     }
 
-    /* Published numbers (seed 000, 001). */
+    /* Published numbers ([JLD99], 001). */
     const soak_preset *sand = soak_presets_find(db, "sand"), *paper = soak_presets_find(db, "paper");
     const soak_preset *copper = soak_presets_find(db, "copper"), *lime = soak_presets_find(db, "limestone");
     const soak_preset *clay = soak_presets_find(db, "clay"), *concrete = soak_presets_find(db, "concrete");
     const soak_preset *marble = soak_presets_find(db, "marble");
     if (sand && paper && copper && lime && clay && concrete && marble) {
         check_close("sand porosity (Clapp & Hornberger 1978, Table 2: sand 0.395)", sand->porosity, 0.395, 0);
-        check_close("concrete porosity (seed 001: concrete pot 25%)", concrete->porosity, 0.25, 0);
-        check_true("limestone porosity in seed 001's 30-45%", soak_in_range(lime->porosity, 0.30, 0.45));
-        check_true("clay porosity in seed 001's 40-50%", soak_in_range(clay->porosity, 0.40, 0.50));
-        check_close("sand dry forward g (seed 000)", sand->phase_dry.g1, 0.2, 0);
-        check_close("paper thickness 0.8 mm (seed 000), in m", paper->thickness_m, 0.8e-3, 1e-18);
+        check_close("concrete porosity ([Lag13]: concrete pot 25%)", concrete->porosity, 0.25, 0);
+        check_true("limestone porosity in [Lag13]'s 30-45%", soak_in_range(lime->porosity, 0.30, 0.45));
+        check_true("clay porosity in [Lag13]'s 40-50%", soak_in_range(clay->porosity, 0.40, 0.50));
+        check_close("sand dry forward g ([JLD99])", sand->phase_dry.g1, 0.2, 0);
+        check_close("paper thickness 0.8 mm ([JLD99]), in m", paper->thickness_m, 0.8e-3, 1e-18);
         check_true("paper is a thin sheet", paper->kind == SOAK_KIND_THIN_SHEET);
         check_true("marble is non-porous", marble->kind == SOAK_KIND_NONPOROUS_DIELECTRIC);
         check_true("copper is a conductor", copper->kind == SOAK_KIND_CONDUCTOR);
-        /* seed 000 paper: dry (0.05, -0.05, w 0.2), wet g2 -0.1 with w 0.1, w weighting the backward lobe.
+        /* [JLD99] paper: dry (0.05, -0.05, w 0.2), wet g2 -0.1 with w 0.1, w weighting the backward lobe.
          * The wet g1 (and sand's wet g) are calibrated against measurements:
          * tests/c/materials/test_calibration.c; copper's n, k and water's absorption
          * are checked against their measured tables there too. */

@@ -1,7 +1,7 @@
 /* Wetness mapping: references are the published van de Hulst formula and a
  * bisection inverse written here, Lekner & Dorf's closed form and the
  * incoherent film sum written here from Fresnel's normal-incidence formula,
- * the seed's paper phase numbers, and identities (w = 0 is the dry preset,
+ * [JLD99]'s paper phase numbers, and identities (w = 0 is the dry preset,
  * the table equals the function, monotonicity). */
 #include <math.h>
 #include <stdio.h>
@@ -308,7 +308,7 @@ static void check_paper(const soak_preset_db *db, const soak_liquid *water)
     soak_wetness_eval(paper, water, &in, &dry);
     in.wetness = 1.0;
     soak_wetness_eval(paper, water, &in, &wet);
-    /* mean cosine of two HG lobes = w g1 + (1 - w) g2 (seed 000 Eq. 5) of the
+    /* mean cosine of two HG lobes = w g1 + (1 - w) g2 ([JLD99] Eq. 5) of the
      * preset's phases (0.03 dry; wet 0.44 by the transport-ratio rule of
      * materials.json when written; calibration may move them) */
     const soak_hg2 pd = paper->phase_dry, pw = paper->phase_wet;

@@ -1,5 +1,5 @@
 /* Henyey-Greenstein: normalisation and mean cosine by quadrature (this is
- * what proves the correction of seed 000 Eq. 5: the printed "- g1^2" in the
+ * what proves the correction of [JLD99] Eq. 5: the printed "- g1^2" in the
  * first denominator and the missing 1/(4 pi) both break normalisation),
  * sampling vs the analytic CDF (chi-square), inverse-CDF accuracy for
  * g -> 0 and |g| -> 1, and invalid inputs. */
@@ -45,7 +45,7 @@ static double hg2_value(double c, const void *ctx)
 }
 static double hg2_moment(double c, const void *ctx) { return c * hg2_value(c, ctx); }
 
-/* The seed's printed form of the first lobe, for the record: not normalised. */
+/* [JLD99]'s printed form of the first lobe, for the record: not normalised. */
 static double seed_typo_lobe(double c, const void *ctx)
 {
     double g = *(const double *)ctx;
@@ -99,7 +99,7 @@ int main(void)
         snprintf(what, sizeof what, "HG g=%g mean cosine = g", gs[i]);
         check_close(what, integrate(hg2_moment, &p), gs[i], tol);
     }
-    /* Two-term sets of seed 000 (paper dry/wet, Fig. 4 b/c). */
+    /* Two-term sets of [JLD99] (paper dry/wet, Fig. 4 b/c). */
     const soak_hg2 sets[] = {{0.05, -0.05, 0.8}, {0.8, -0.1, 0.9}, {0.5, 0.2, 0.5}, {0.8, 0.1, 0.8}};
     for (int i = 0; i < 4; ++i) {
         char what[80];

@@ -64,7 +64,7 @@ static void set_rough(soak_model_params *p) { p->roughness = 1.0; }
 static void set_dry_pores(soak_model_params *p) { p->fill = 0.0; }
 static void set_copper_red(soak_model_params *p)
 {
-    /* copper, red channel, relative to air (seed 001) */
+    /* copper, red channel, relative to air ([Lag13]) */
     p->ior = 3.406149;
     p->k = 5.225178;
 }

@@ -1,8 +1,8 @@
 /* Porous BRDF (Merillou), wet porous model (Hnat) and the energy-conserving
  * GGX variant. References: explicit geometric sums and Taylor series for A_p,
  * the Smith-Beckmann masking for the scaling of Schlick's k, closed forms
- * for Blinn-Phong normal-incidence albedo, seed 001's simplified form and
- * seed 002's Eq. 2-3 written out here, reciprocity, and directional albedo by
+ * for Blinn-Phong normal-incidence albedo, [Lag13]'s simplified form and
+ * [Hnat06]'s Eq. 2-3 written out here, reciprocity, and directional albedo by
  * an independent panel quadrature over the outgoing hemisphere. */
 #include <math.h>
 #include <stdio.h>
@@ -204,7 +204,7 @@ static void test_Gp(void)
     check_rel("G_p Schlick-Smith closed form", g, ci / (ci - k * ci + k) * co / (co - k * co + k), 1e-15);
     /* Why sqrt: near grazing the exact Smith masking of slope m depends on
      * cos / m, so doubling m halves G1. Schlick with k ~ m reproduces that;
-     * k ~ m^2 (seed 002) would quarter it. */
+     * k ~ m^2 ([Hnat06]) would quarter it. */
     double g1, g2, mu = 1e-4;
     soak_porous_Gp(0.2, mu, 1.0, &g1);
     soak_porous_Gp(0.4, mu, 1.0, &g2);
@@ -234,7 +234,7 @@ static void test_nb(void)
 
 static soak_porous_params paper_params(double porosity, double sp)
 {
-    /* seed 001: Sp = 1.3, Kd = 0.7, Ks = 0.05, Kwater = 0.02, m = 0.19, power 2/m^2 - 2 */
+    /* [Lag13]: Sp = 1.3, Kd = 0.7, Ks = 0.05, Kwater = 0.02, m = 0.19, power 2/m^2 - 2 */
     soak_porous_params p = {0.7, 0.05, 0.19, 2.0 / (0.19 * 0.19) - 2.0, porosity, sp, 0.02, 200.0,
                             SOAK_BLINN_NORM_ENERGY};
     return p;
@@ -242,7 +242,7 @@ static soak_porous_params paper_params(double porosity, double sp)
 
 static void test_forms(tu_rng *rng)
 {
-    /* seed 001's simplified form and seed 002 Eq. 2-3, evaluated here from
+    /* [Lag13]'s simplified form and [Hnat06] Eq. 2-3, evaluated here from
      * the building blocks, against soak_porous_eval / coeffs. */
     double worst_simpl = 0.0, worst_eq = 0.0;
     for (int s = 0; s < 2000; ++s) {
@@ -282,9 +282,9 @@ static void test_forms(tu_rng *rng)
         worst_eq = fmax(worst_eq, fabs(c.ks_mat - p.ks * (1.0 - aG)) / (p.ks + 1e-300));
         worst_eq = fmax(worst_eq, fabs(c.ks_water - p.ks_water * aG * fill) / (p.ks_water + 1e-300));
     }
-    check_close("seed 001 simplified form == seed 002 k_s/k_d-poro == eval: max rel diff", worst_simpl, 0.0,
+    check_close("[Lag13] simplified form == [Hnat06] k_s/k_d-poro == eval: max rel diff", worst_simpl, 0.0,
                 1e-12);
-    check_close("coefficients vs seed 002 Eq. 2-3: max rel diff", worst_eq, 0.0, 1e-12);
+    check_close("coefficients vs [Hnat06] Eq. 2-3: max rel diff", worst_eq, 0.0, 1e-12);
 }
 
 static void test_bp_norm(void)
@@ -301,14 +301,14 @@ static void test_bp_norm(void)
         check_rel("Blinn-Phong energy 1/A(n) normal-incidence albedo = 1", E, 1.0, 1e-6);
         p.norm = SOAK_BLINN_NORM_SEED001;
         E = dir_albedo(bp_fn, &ctx, 0.0, 0.02);
-        check_rel("seed 001 (n+2)/(2pi) normal-incidence albedo vs closed form", E,
+        check_rel("[Lag13] (n+2)/(2pi) normal-incidence albedo vs closed form", E,
                   4.0 * (n + pow(2.0, -n / 2.0)) / (n + 4.0), 1e-6);
     }
 }
 
 static void test_bp_energy(void)
 {
-    /* Paper examples (seed 001): porosity 0..0.3 with Sp 1.3, and 0.35 with Sp 2. */
+    /* Paper examples ([Lag13]): porosity 0..0.3 with Sp 1.3, and 0.35 with Sp 2. */
     const double por[] = {0.0, 0.1, 0.2, 0.3, 0.35};
     const double sps[] = {1.3, 1.3, 1.3, 1.3, 2.0};
     double worst_of[2] = {0.0, 0.0};
@@ -329,16 +329,16 @@ static void test_bp_energy(void)
                 }
         printf("info: Blinn-Phong wet porous, paper parameters, %s normalisation: max directional albedo "
                "%.6f (theta_i %.0f deg)\n",
-               norm ? "seed-001 (n+2)/(2pi)" : "energy 1/A(n)", worst, at_t * 180.0 / SOAK_PI);
+               norm ? "[Lag13] (n+2)/(2pi)" : "energy 1/A(n)", worst, at_t * 180.0 / SOAK_PI);
         worst_of[norm] = worst;
     }
     check_true("Blinn-Phong, paper parameters, energy normalisation: albedo <= 1", worst_of[0] <= 1.0);
-    /* The seed-001 lobe exceeds 1 alone for large n (closed form above), but
+    /* The [Lag13] lobe exceeds 1 alone for large n (closed form above), but
      * with the paper's small Ks the whole model stays below 1: asserted in
      * every case, not only where it holds. */
-    check_true("Blinn-Phong, paper parameters, seed-001 normalisation: albedo <= 1", worst_of[1] <= 1.0);
-    /* (n+2)/(2pi) A(n) = 4 (n + 2^(-n/2)) / (n+4) >= 1 for n >= 0: the seed-001 lobe is the brighter. */
-    check_true("seed-001 normalisation brighter than the energy one", worst_of[1] > worst_of[0]);
+    check_true("Blinn-Phong, paper parameters, [Lag13] normalisation: albedo <= 1", worst_of[1] <= 1.0);
+    /* (n+2)/(2pi) A(n) = 4 (n + 2^(-n/2)) / (n+4) >= 1 for n >= 0: the [Lag13] lobe is the brighter. */
+    check_true("[Lag13] normalisation brighter than the energy one", worst_of[1] > worst_of[0]);
 }
 
 static void test_bp_identities(tu_rng *rng)

@@ -589,7 +589,7 @@ static void sweep_porous_ggx(tallies *ts, soak_rng *r, int setups, int evals, lo
 }
 
 /* Porous fill darkens: the diffuse coefficient and both darkening factors
- * are non-increasing in the fill fraction (seed 002 Eq. 2). */
+ * are non-increasing in the fill fraction ([Hnat06] Eq. 2). */
 static void monotone_porous(soak_rng *r)
 {
     long rises = 0, sets = 0;

@@ -126,7 +126,7 @@ static void test_formula_and_reciprocity(tu_rng *rng)
     mats[2] = conductor(1.33, cn.r, ck.r, 0.2);
     mats[3] = conductor(1.33, cn.b, ck.b, 1.0);
     mats[4] = dielectric(2.0, 3.0, 1e-3, 1.0);
-    mats[0].absorption = 3.5e-3; /* seed 001 red, per cm */
+    mats[0].absorption = 3.5e-3; /* [Lag13] red, per cm */
     mats[0].thickness = 50.0;
     double worst_ref = 0.0, worst_rec = 0.0;
     for (int k = 0; k < 5; ++k)
@@ -297,7 +297,7 @@ static void test_fbottom(void)
     soak_rgb cn, ck;
     soak_ww_copper(&cn, &ck);
     for (int c = 0; c < 4; ++c) {
-        double n3 = c < 3 ? soak_rgb_at(cn, c) : 1.65, k3 = c < 3 ? soak_rgb_at(ck, c) : 9.22; /* Al red, seed 001 */
+        double n3 = c < 3 ? soak_rgb_at(cn, c) : 1.65, k3 = c < 3 ? soak_rgb_at(ck, c) : 9.22; /* Al red, [Lag13] */
         double Fb, F21, F23;
         soak_triace_fbottom_conductor(1.33, n3, k3, &Fb);
         soak_fresnel_dielectric(1.0, 1.0 / 1.33, &F21, NULL);

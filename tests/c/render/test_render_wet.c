@@ -1,5 +1,5 @@
 // ctest-label: slow
-/* The path tracer against independent references and seed 000's claims.
+/* The path tracer against independent references and [JLD99]'s claims.
  *
  *  1. A flat film over a Lambertian base under a uniform sky of radiance 1:
  *     by reciprocity the radiance toward the camera equals the directional-
@@ -15,7 +15,7 @@
  *     in test_measure_*.c and test_medium.c); what this compares is the
  *     renderer's use of it -- geometry, the camera, the boundary crossing
  *     and the index factors -- against the walk on an infinite slab.
- *  3. Seed 000's observations (Jensen, Legakis, Dorsey 1999, sec. 4):
+ *  3. [JLD99]'s observations (Jensen, Legakis, Dorsey 1999, sec. 4):
  *     wet paper darker than dry lit from the viewer's side and brighter lit
  *     from behind (4.1); wet sand darker than dry (4.2, Twomey et al.); a
  *     rock with a scattering base under a water film barely darker on top
@@ -211,7 +211,7 @@ static int wet_dry(const char *what, const char *material, const char *object, d
 
 static void test_paper(void)
 {
-    /* Paper 0.8 mm thick (seed 000 sec. 4.1), units mm. Seed 000 gives the
+    /* Paper 0.8 mm thick ([JLD99] sec. 4.1), units mm. [JLD99] gives the
      * dry phase g1 0.05, g2 -0.05, w 0.2 and the wet g1 0.8, g2 -0.1, w 0.1;
      * with w weighting the g1 lobe as in its Eq. 5 the wet mean cosine would
      * be -0.01 (no forward scattering at all), contradicting the text ("makes
@@ -290,7 +290,7 @@ static void test_backlit_film_pores(void)
 static void test_sand(void)
 {
     /* Sand: dry grains scatter nearly isotropically; water in the pores makes
-     * scattering forward (seed 000 sec. 2.2, Twomey et al. 1986) and adds a
+     * scattering forward ([JLD99] sec. 2.2, Twomey et al. 1986) and adds a
      * film. Units mm; albedo 0.96 per event. */
     const char *sand = "{\"type\": \"wet\", \"film\": {\"ior\": 1.33, \"k\": 2},"
                        " \"base\": {\"type\": \"medium\", \"sigma_s\": 9.6, \"sigma_a\": 0.4, \"ior\": 1.55,"

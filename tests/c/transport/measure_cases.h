@@ -221,8 +221,8 @@ static inline void record_cos(void *ctx, soak_vec3 a, soak_vec3 b)
 static inline void case_hg(long long scatters)
 {
     const soak_hg2 sets[4] = {
-        {0.05, -0.05, 0.2}, /* seed 000 sec. 4.1, dry paper */
-        {0.8, -0.1, 0.1},   /* seed 000 sec. 4.1, wet paper */
+        {0.05, -0.05, 0.2}, /* [JLD99] sec. 4.1, dry paper */
+        {0.8, -0.1, 0.1},   /* [JLD99] sec. 4.1, wet paper */
         {0.95, 0.95, 1.0},
         {-0.95, -0.95, 1.0},
     };

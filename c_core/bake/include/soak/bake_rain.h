@@ -1,6 +1,6 @@
 /* Rain wetting of a mesh, baked into its UV texture.
  *
- * Seed 002 (Hnat et al. 2006, sec. 3.3.1 and 5) computes a mesh's rain wet
+ * [Hnat06] (Hnat et al. 2006, sec. 3.3.1 and 5) computes a mesh's rain wet
  * map as the light map of an emissive plane above it, then adds drop impacts
  * rendered into a "drops texture". We compute the real quantities instead:
  *
@@ -25,7 +25,7 @@
  *      rain sky: p uniform in solid angle over the cone of half-angle
  *        `spread` around `rain_dir`; F_open = rain_dir.up (1 + cos spread)/2
  *        (mean cosine of the cone, times the tilt).
- *      hemisphere sky (seed 002's emissive sky, = ambient occlusion): u
+ *      hemisphere sky ([Hnat06]'s emissive sky, = ambient occlusion): u
  *        cosine-distributed about n, E = (1/N) sum V_i; open plane 1.
  *
  * 3. Rain over time, steps of dt = duration / steps:
@@ -122,11 +122,5 @@ typedef struct soak_rain_result {
 soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const soak_rain_params *p,
                            const soak_bake_exec *exec, soak_rain_result *out, char *err, size_t errlen);
 void soak_rain_result_free(soak_rain_result *r);
-
-/* Poisson(lambda) count drawn with rng (exposed for tests): inversion of
- * the CDF for lambda <= 30, rounded normal approximation above; 0 for
- * lambda <= 0 or NaN. */
-struct soak_rng;
-long soak_rain_poisson(double lambda, struct soak_rng *rng);
 
 #endif

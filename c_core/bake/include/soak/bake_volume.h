@@ -1,9 +1,9 @@
 /* 3D parameter volumes for subsurface scattering of wet materials.
  *
- * Seed 000 (Jensen, Legakis, Dorsey 1999, sections 3.2 and 4) renders wet
+ * [JLD99] (Jensen, Legakis, Dorsey 1999, sections 3.2 and 4) renders wet
  * materials as participating media whose scattering coefficient sigma_s,
  * absorption coefficient sigma_a and two-term Henyey-Greenstein phase
- * parameters (g1, g2, w; seed 000 Eq. 5, see soak/hg.h) are modulated by a
+ * parameters (g1, g2, w; [JLD99] Eq. 5, see soak/hg.h) are modulated by a
  * wetness function: dry values where the material is dry, wet values where
  * it is wet. This module bakes that modulation into voxel grids.
  *
@@ -19,7 +19,7 @@
  *  - a uniform surface wetness with the same profile;
  *  - a 3D wetness function evaluated at voxel centres (used as is).
  *
- * Penetration profile (our model; the seeds give none): water drawn in by
+ * Penetration profile (our model; the sources give none): water drawn in by
  * capillarity fills the pores behind a wetting front (Lucas-Washburn), so
  * the material is saturated near the surface and dry beyond the front. We
  * smooth the front with the C1 cubic:
@@ -81,7 +81,7 @@ soak_status soak_volume_bake(soak_volume *v, const soak_vol_medium *rows, int n_
  * Every voxel is computed independently, so the result does not depend on
  * the thread count; wetness3d must then be thread-safe. */
 
-/* 3D noise wetness (seed 000 sec. 4.2: wetness "modelled using a sum of
+/* 3D noise wetness ([JLD99] sec. 4.2: wetness "modelled using a sum of
  * turbulence functions"): the octave sum of soak_noise3 (soak/bake.h;
  * octave o uses seed soak_seed_derive(seed, o) at frequency
  * frequency * lacunarity^o cells per `length`), normalised by sum gain^o.

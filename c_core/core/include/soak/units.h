@@ -1,6 +1,8 @@
-/* Length units at libsoak's boundaries. Inside the library every length is
- * in metres and every coefficient (extinction, scattering, absorption) in
- * 1/m; fields carry the unit in their name (_m, _per_m). Files and front
+/* Length units at libsoak's boundaries (c_core/ARCHITECTURE.md, Units): a
+ * length and its coefficients (extinction, scattering, absorption) share
+ * one unit, named in the field when it is fixed (_m, _per_m: presets and
+ * the wetness chain, in metres); a field without one is in the length unit
+ * of whoever fills it (the scene's in the renderer). Files and front
  * ends keep their own documented units -- materials.json in mm and 1/mm,
  * POV-Ray's subsurface in mm, a scene or a baked volume in its length unit
  * -- and are converted here, once where they are read and once where they

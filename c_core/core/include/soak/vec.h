@@ -65,6 +65,12 @@ static inline soak_rgb soak_rgb3(double r, double g, double b)
     soak_rgb c = {r, g, b};
     return c;
 }
+static inline soak_rgb soak_rgb_add(soak_rgb a, soak_rgb b) { return soak_rgb3(a.r + b.r, a.g + b.g, a.b + b.b); }
+static inline soak_rgb soak_rgb_mul(soak_rgb a, soak_rgb b) { return soak_rgb3(a.r * b.r, a.g * b.g, a.b * b.b); }
+static inline soak_rgb soak_rgb_scale(soak_rgb a, double s) { return soak_rgb3(a.r * s, a.g * s, a.b * s); }
+/* Relative luminance Y of a linear RGB colour with Rec. 709 (sRGB)
+ * primaries and D65 white (ITU-R BT.709-6, the luminance equation). */
+static inline double soak_rgb_luminance(soak_rgb c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 static inline double soak_rgb_at(soak_rgb c, int i) { return i == 0 ? c.r : (i == 1 ? c.g : c.b); }
 /* Largest channel (plain comparisons: no libm call in the tracer's loops). */
 static inline double soak_rgb_max(soak_rgb c)

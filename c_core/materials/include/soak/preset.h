@@ -92,7 +92,7 @@ typedef struct soak_preset {
     soak_hg2 phase_wet; /* equals phase_dry for non-porous kinds */
     const char *phase_source;
 
-    double t_fill;            /* default pore fill time (seed 002 relative units), >= 0 */
+    double t_fill;            /* default pore fill time ([Hnat06] relative units), >= 0 */
     double film_thickness_m;  /* default film thickness, m, >= 0 */
     const char *wetting_source;
 

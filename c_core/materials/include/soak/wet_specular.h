@@ -10,7 +10,7 @@
  *      R12 = F0(n_liquid), R23 = F0(n / n_liquid), e = exp(-2 sigma_a h);
  *    over the coverage c it replaces the dry F0(n):
  *      base_factor = (1 - c) + c R_under / F0(n)   (channel mean).
- *    Below saturation the grains' tops stay in air (seed 002, Merillou/Hnat:
+ *    Below saturation the grains' tops stay in air ([Hnat06], Merillou/Hnat:
  *    the material's specular weight does not change with pore filling), so
  *    only the film counts. Sand under its water film: 0.11.
  *    Conductors: 1 (their specular is the base colour, wetness.h step 5).

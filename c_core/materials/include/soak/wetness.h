@@ -6,31 +6,31 @@
  *
  * Formula chain (per colour channel where it applies):
  *
- * 1. Schedule (Hnat et al. 2006, seed 002 sec. 3.3.2, Delta t table): a point
+ * 1. Schedule (Hnat et al. 2006, [Hnat06] sec. 3.3.2, Delta t table): a point
  *    whose wet-map start time is t0 receives liquid over the pore fill time
  *    t_fill:  progress P = clamp((t - t0) / t_fill, 0, 1); with t_fill = 0
- *    the step P = (t >= t0 ? 1 : 0) (seed 002: "straight border"). One
+ *    the step P = (t >= t0 ? 1 : 0) ([Hnat06]: "straight border"). One
  *    owner: soak_fill_fraction (soak/porous.h), right-continuous in t.
  *    Delivered liquid L = w * P, w in [0,1] the wetness (wet-map amount).
  *
  * 2. Saturation point. w is read as the volume fraction of liquid in the
  *    surface layer, so the pores are full at L = w_sat = porosity (open
- *    porosity alpha of seed 001/002); non-porous kinds have w_sat = 0.
+ *    porosity alpha of [Lag13]/[Hnat06]); non-porous kinds have w_sat = 0.
  *      pore fill        f = min(L / w_sat, 1)              (0 if w_sat = 0)
  *      film coverage    c = max(L - w_sat, 0) / (1 - w_sat)
  *    Below saturation there is no film; above it, the excess liquid lies on
  *    top as a film of the given thickness over the area fraction c
- *    (Lagarde, seed 001: "when pores are filled ... water propagates onto
+ *    (Lagarde, [Lag13]: "when pores are filled ... water propagates onto
  *    the material as a thin layer"). The coverage form keeps every output
  *    continuous in w.
  *
- * 3. Phase function and medium (Jensen et al. 1999, seed 000 sec. 3.2/4):
+ * 3. Phase function and medium (Jensen et al. 1999, [JLD99] sec. 3.2/4):
  *    each of g1, g2, w_lobe is lerped dry -> wet by f; g = mean cosine
  *    w_lobe g1 + (1 - w_lobe) g2. The liquid occupies the volume fraction
  *    porosity * f, and its coefficients add (Beer-Lambert for a mixture):
  *      sigma_s = omega_dry sigma_t + porosity f sigma_s,liquid
  *      sigma_a = (1 - omega_dry) sigma_t + porosity f sigma_a,liquid
- *    (seed 000's cognac: a coloured liquid modulates sigma_s and sigma_a; a
+ *    ([JLD99]'s cognac: a coloured liquid modulates sigma_s and sigma_a; a
  *    clear one leaves them practically unchanged).
  *
  * 4. Subsurface albedo (van de Hulst 1980, soak/vdhulst.h):
@@ -68,13 +68,13 @@
  *    specular lobe).
  *    Why: the chain used to model no interface over saturated pores and
  *    then stacked the film's TIR on a phase change whose wet values
- *    (seed 000) were eyeballed to the WHOLE darkening -- interface included
+ *    ([JLD99]) were eyeballed to the WHOLE darkening -- interface included
  *    -- so the interface darkening counted twice (wet/dry 0.23-0.39). The
  *    wet phase values are now calibrated against measured wet/dry ratios
  *    with the interface modelled here (docs/calibration.md).
  *
  * 6. Roughness and specular weights: GGX alpha lerps dry -> wet by f (pores
- *    filled with a flat liquid surface); Merillou/Hnat (seed 002 Eq. 3) at
+ *    filled with a flat liquid surface); Merillou/Hnat ([Hnat06] Eq. 3) at
  *    G_p = 1: the material's specular weight is 1 - porosity, the water in
  *    the pores adds a mirror-like specular of weight porosity * f. Front ends
  *    evaluating G_p multiply porosity by it. Hnat's removal of the pores'

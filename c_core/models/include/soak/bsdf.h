@@ -25,7 +25,7 @@
  *                   mirror lobe (ww's film top) is the delta lobe.
  * A film (film_ior > 1) makes a LAMBERT / GGX base a layered BSDF: smooth
  * liquid of index n2 and Beer-Lambert absorption over the base, with every
- * interreflection between base and film underside (seed 000 sec. 2.1 / 3.1,
+ * interreflection between base and film underside ([JLD99] sec. 2.1 / 3.1,
  * Lekner & Dorf 1988):
  *   - closed form over LAMBERT (soak/film.h): a delta mirror lobe of
  *     reflectance F12(cos_o) plus the diffuse Lekner-Dorf BSDF; eval / sample
@@ -73,8 +73,8 @@ typedef struct soak_bsdf_desc {
     const soak_model *model;      /* MODEL */
     soak_model_params params[3];  /* MODEL, per channel */
     double film_ior;   /* [1, 3]; 1 = no film */
-    soak_rgb film_absorption; /* 1/length, [0, 1e9] */
-    double film_thickness;    /* length, [0, 1e3] */
+    soak_rgb film_absorption; /* per length unit, [0, 1e9] */
+    double film_thickness;    /* length unit (any: only their product counts), [0, 1e3] */
     int film_traced;   /* 1: walk through the film even over Lambert */
 } soak_bsdf_desc;
 

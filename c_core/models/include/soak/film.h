@@ -2,7 +2,7 @@
  * between the base and the underside of the film surface.
  * Source: J. Lekner & M. C. Dorf, "Why some things are darker when wet",
  * Applied Optics 27(7):1278-1280, 1988; absorption by Beer-Lambert with the
- * water coefficients alpha = (0.35, 0.04, 0) 1/m of seed 001 (Lagarde).
+ * water coefficients alpha = (0.35, 0.04, 0) 1/m of [Lag13] (Lagarde).
  * The derivation (with absorption, which Lekner & Dorf leave out) is at the
  * top of src/film.c.
  *

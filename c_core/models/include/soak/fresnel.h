@@ -1,7 +1,7 @@
 /* Fresnel reflectance: exact dielectric (both directions, total internal
  * reflection), exact conductor (complex index), Schlick, and cosine-weighted
  * hemispherical averages. Source: Born & Wolf, Principles of Optics, 7th ed.,
- * sec. 1.5; conductor form as in seed 001's FresnelConductor (Lagarde, v1.3).
+ * sec. 1.5; conductor form as in [Lag13]'s FresnelConductor (Lagarde, v1.3).
  *
  * Conventions: cos_i in [0,1] is the cosine of the angle of incidence on the
  * incident side; eta = n_transmitted / n_incident (> 0). eta < 1 is the

@@ -1,6 +1,6 @@
 /* Henyey-Greenstein phase functions, single and two-term.
- * Source: Henyey & Greenstein 1941; two-term form from seed 000 Eq. 5
- * (Jensen, Legakis, Dorsey 1999), CORRECTED: the seed prints the first
+ * Source: Henyey & Greenstein 1941; two-term form from [JLD99] Eq. 5
+ * (Jensen, Legakis, Dorsey 1999), CORRECTED: [JLD99] prints the first
  * denominator as (1 - 2 g1 cos - g1^2)^1.5; the correct term is
  * (1 - 2 g1 cos + g1^2)^1.5, and each lobe carries the 1/(4 pi) that makes
  * it integrate to 1 over the sphere (both tested by quadrature).
@@ -18,8 +18,8 @@
 #define SOAK_HG_G_MAX 0.999999
 
 typedef struct soak_hg2 {
-    double g1; /* first lobe asymmetry, [-G_MAX, G_MAX] (seed 000: forward, >= 0) */
-    double g2; /* second lobe asymmetry (seed 000: backward, <= 0) */
+    double g1; /* first lobe asymmetry, [-G_MAX, G_MAX] ([JLD99]: forward, >= 0) */
+    double g2; /* second lobe asymmetry ([JLD99]: backward, <= 0) */
     double w;  /* weight of the g1 lobe, [0,1] */
 } soak_hg2;
 

@@ -1,4 +1,4 @@
-/* Jensen-Legakis-Dorsey two-layer surface (seed 000, Eq. 1-4): a smooth
+/* Jensen-Legakis-Dorsey two-layer surface ([JLD99], Eq. 1-4): a smooth
  * liquid film (index n2) between air (n1) and a scattering material (n3).
  *
  * Readings and corrections of the seed (each tested in tests/c/models/test_jensen.c):
@@ -14,7 +14,7 @@
  *    is the inverse, (n3/n1)^2; the flux (energy) fraction carries no n
  *    factor. We expose the flux transmittance and the radiance factor
  *    separately.
- *  - Shadow rays: the seed applies Eq. 4 to the light entering at the shadow
+ *  - Shadow rays: [JLD99] applies Eq. 4 to the light entering at the shadow
  *    ray's hit point from a distant light. Eq. 4's (n1/n3)^2 belongs to
  *    light leaving the material; for light entering, a distant (delta)
  *    light of irradiance E0 (perpendicular to its beam) is carried by flux:
@@ -29,7 +29,7 @@
  *    refracted direction into the liquid").
  *  - k raises F23 to a power ("simulating surface roughness"); k = 1 is a
  *    smooth interface. For k > 1, F^k <= F at every angle, so transmission
- *    never decreases; the seed says the gain is largest at non-grazing
+ *    never decreases; [JLD99] says the gain is largest at non-grazing
  *    angles, which holds because (1 - F12) -> 0 at grazing incidence
  *    (tested for water over n3 = 1.5). We accept k in [0.01, 100].
  *  - Going up from inside, either interface can totally reflect: T = 0.
@@ -68,7 +68,7 @@ soak_status soak_jensen_radiance_out(const soak_jensen_layer *l, double cos3, do
 soak_status soak_jensen_reflect_top(const soak_jensen_layer *l, double cos1, double *R);
 
 /* Transmittance for a shadow ray from a distant light at cos1 entering the
- * material (seed 000 uses Eq. 4 on shadow rays; see above): the flux
+ * material ([JLD99] uses Eq. 4 on shadow rays; see above): the flux
  * fraction, equal to soak_jensen_transmit_down's T. The beam inside has
  * perpendicular irradiance E0 * T * cos1 / cos3. */
 soak_status soak_jensen_shadow(const soak_jensen_layer *l, double cos1, double *T);

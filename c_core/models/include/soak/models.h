@@ -17,8 +17,8 @@ typedef struct soak_model_params {
     double k;          /* base extinction for conductors (default 0) */
     double roughness;  /* GGX alpha of the base, [1e-4,1] (default 0.3) */
     double n_film;     /* liquid index, [1,3] (default SOAK_WATER_IOR = 1.333; 1 = no film) */
-    double absorption; /* liquid absorption coefficient, 1/m (default 0.35) */
-    double thickness;  /* film thickness, m (default 1e-3) */
+    double absorption; /* liquid absorption coefficient per length unit (default 0.35: water, 1/m) */
+    double thickness;  /* film thickness in that length unit (default 1e-3: 1 mm in m) */
     double porosity;   /* [0,1] (default 0.3) */
     double sp;         /* pore depth/diameter (default 2) */
     double fill;       /* pore fill fraction, [0,1] (default 1) */

@@ -2,19 +2,19 @@
  *
  * 1. Merillou, Dischler, Ghazanfarpour, "A BRDF postprocess to integrate
  *    porosity on rendered surfaces", IEEE TVCG 6(4), 2000, as summarised in
- *    seed 002 sec. 3.1 and seed 001 "Real time porous material": a separable
+ *    [Hnat06] sec. 3.1 and [Lag13] "Real time porous material": a separable
  *    BRDF k_s F_s + k_d F_d gets new coefficients k_s-poro, k_d-poro built from
  *    the pore shadowing/masking G_p, the pore light loss A_p and the mean
  *    number of bounces n_b inside a pore.
  * 2. Hnat, Porquet, Merillou, Ghazanfarpour, "Real-time wetting of porous
- *    media" (seed 002 sec. 3.2-3.3, Eq. 2-3): pores fill with water over a
+ *    media" ([Hnat06] sec. 3.2-3.3, Eq. 2-3): pores fill with water over a
  *    time t_fill; the porous diffuse part fades out and a water specular lobe
  *    fades in with the fill fraction dt/t_fill.
  * 3. soak_porous_ggx_*: our energy-conserving variant on a GGX base (see the
  *    comment above soak_porous_ggx_params).
  *
- * Corrections to the seeds (each is tested in tests/c/models/test_porous.c):
- *  - G_p: seed 002 Eq. 1 prints Schlick's constant as k = 2 m^2 / pi; seed 001
+ * Corrections to the sources (each is tested in tests/c/models/test_porous.c):
+ *  - G_p: [Hnat06] Eq. 1 prints Schlick's constant as k = 2 m^2 / pi; [Lag13]
  *    gives k = sqrt(2 m^2 / pi), Schlick's (1994) form for RMS slope m. We use
  *    the square root: Smith masking depends on the slope only through
  *    cos / (m sin), so the knee of the Schlick rational must scale linearly
@@ -22,8 +22,8 @@
  *    (Schlick's rational is only a rough fit of Smith-Beckmann: the shapes
  *    differ by up to ~0.4 near grazing whatever k; we keep the published
  *    model.)
- *  - n_b: seed 002 drops the square of the bracket; seed 001's shader code
- *    multiplies acos(N.V) * acos(N.L) where its own formula (and seed 002)
+ *  - n_b: [Hnat06] drops the square of the bracket; [Lag13]'s shader code
+ *    multiplies acos(N.V) * acos(N.L) where its own formula (and [Hnat06])
  *    averages the two angles (a typo: sum, not product).
  *  - n_b is clamped to >= 0 (not >= 1): the fit is proportional to s_p, so a
  *    pore of zero depth (s_p -> 0) must give no extra loss (A_p -> 0); the
@@ -32,16 +32,16 @@
  *    make A_p < 0 (a pore brighter than the flat surface): that is what the
  *    clamp removes.
  *  - A_p = k_a (1 - (1-k_a)^n_b) / (1 - (1-k_a)) is a geometric sum equal to
- *    1 - (1-k_a)^n_b; seed 001 says the published seed 002 misses the power
- *    n_b (our extraction of seed 002 has it). Evaluated as
+ *    1 - (1-k_a)^n_b; [Lag13] says the published [Hnat06] misses the power
+ *    n_b (our extraction of [Hnat06] has it). Evaluated as
  *    -expm1(n_b log1p(-k_a)):
  *    no 0/0 at k_a = 0 and full relative precision for tiny k_a.
- *  - Eq. 3 of seed 002 adds k_s-water to the coefficient of the material's
+ *  - Eq. 3 of [Hnat06] adds k_s-water to the coefficient of the material's
  *    own specular lobe, although the text calls the water "almost mirror-like";
- *    seed 001 gives the water its own Blinn-Phong lobe (power 200). We follow
- *    seed 001: the water term has its own exponent (water_power).
- *  - Seed 001's "simplified" form (1 - a G_p) f_r + a G_p (k_s+k_d)^(n_b+1) F_d
- *    is algebraically IDENTICAL to the k_s-poro/k_d-poro form of seed 002 when
+ *    [Lag13] gives the water its own Blinn-Phong lobe (power 200). We follow
+ *    [Lag13]: the water term has its own exponent (water_power).
+ *  - [Lag13]'s "simplified" form (1 - a G_p) f_r + a G_p (k_s+k_d)^(n_b+1) F_d
+ *    is algebraically IDENTICAL to the k_s-poro/k_d-poro form of [Hnat06] when
  *    k_a = 1 - k_s - k_d (expand: k_d (1 - aG_p) + aG_p (1-A_p)(k_s+k_d)
  *    = k_d (1 - aG_p A_p) + k_s aG_p (1-A_p), and 1 - A_p = (k_s+k_d)^n_b).
  *    It differs only if k_a is taken independently of k_s + k_d. Tested.
@@ -55,7 +55,7 @@
 #include "soak/status.h"
 #include "soak/vec.h"
 
-#define SOAK_POROUS_M_MAX 1.0      /* RMS slope range [0, 1] (seed 002 Tab. 1) */
+#define SOAK_POROUS_M_MAX 1.0      /* RMS slope range [0, 1] ([Hnat06] Tab. 1) */
 #define SOAK_POROUS_SP_MAX 50.0    /* pore depth / diameter */
 #define SOAK_POROUS_POWER_MAX 1e4  /* Blinn-Phong exponents */
 #define SOAK_POROUS_NB_MAX 1e4     /* accepted by soak_porous_Ap */
@@ -74,13 +74,13 @@
 
 /* ---- building blocks ---- */
 
-/* Schlick-Smith pore shadowing/masking (seed 002 Eq. 1, corrected k):
+/* Schlick-Smith pore shadowing/masking ([Hnat06] Eq. 1, corrected k):
  * G_p = G1(cos_i) G1(cos_o), G1(c) = c / (c (1 - k) + k), k = m sqrt(2/pi).
  * cos in [0,1]; G1(0) = 0 for every m (also m = 0, the limit from c > 0 being
  * 1 there is a discontinuity we resolve towards the grazing value). */
 soak_status soak_porous_Gp(double m, double cos_i, double cos_o, double *Gp);
 
-/* Mean number of bounces in a pore (seed 002 sec. 3.1, square restored):
+/* Mean number of bounces in a pore ([Hnat06] sec. 3.1, square restored):
  * n_b = s_p [3.7 - 2 ((theta_i + theta_o)/2 - 2 pi / (s_p + 6))^2], clamped
  * to >= 0. Angles in [0, pi/2] (radians), s_p in [0, SOAK_POROUS_SP_MAX]. */
 soak_status soak_porous_nb(double sp, double theta_i, double theta_o, double *nb);
@@ -89,7 +89,7 @@ soak_status soak_porous_nb(double sp, double theta_i, double theta_o, double *nb
  * A_p = 1 - (1 - k_a)^n_b. k_a in [0,1], n_b in [0, SOAK_POROUS_NB_MAX]. */
 soak_status soak_porous_Ap(double ka, double nb, double *Ap);
 
-/* Fill fraction dt / t_fill of seed 002 sec. 3.3.2:
+/* Fill fraction dt / t_fill of [Hnat06] sec. 3.3.2:
  *   dt = 0 for t < t0, t - t0 for t0 <= t < t0 + t_fill, t_fill afterwards.
  * t_fill = 0 is instantaneous filling: a step, 0 for t < t0 and 1 for
  * t >= t0. Right-continuous in t for every t_fill (0 before t0, complete
@@ -99,13 +99,13 @@ soak_status soak_porous_Ap(double ka, double nb, double *Ap);
  * t, t0 finite, t_fill in [0, +finite]. Result in [0,1], non-decreasing. */
 soak_status soak_fill_fraction(double t, double t0, double t_fill, double *frac);
 
-/* Wet-map value to wetting start time. Seed 002 sec. 3.3.1 stores 1 for
+/* Wet-map value to wetting start time. [Hnat06] sec. 3.3.1 stores 1 for
  * "first wet" and 0 for "never wet during the simulation" (t in [0,1]); we
  * map t0 = 1 - value, so value 1 starts filling at t = 0 and value 0 at
  * t = 1, i.e. never within the run (the fill is 0 at t = t0). value in [0,1]. */
 soak_status soak_wetmap_t0(double value, double *t0);
 
-/* ---- Merillou + Hnat on Blinn-Phong (seed 001 code, seed 002 Eq. 2-3) ---- */
+/* ---- Merillou + Hnat on Blinn-Phong ([Lag13] code, [Hnat06] Eq. 2-3) ---- */
 
 typedef enum soak_blinn_norm {
     /* cos^n(theta_h) / A(n), A(n) = 8 pi (n + 2^(-n/2)) / ((n+2)(n+4)), the
@@ -120,10 +120,10 @@ typedef enum soak_blinn_norm {
      * normal incidence reaches 1.077 near n = 8 -- with k_s = 1 the porous
      * model reflected up to 1.07 of the light.) */
     SOAK_BLINN_NORM_ENERGY = 0,
-    /* (n + 2) / (2 pi) cos^n(theta_h), seed 001's shader. This normalises the
+    /* (n + 2) / (2 pi) cos^n(theta_h), [Lag13]'s shader. This normalises the
      * distribution of half vectors (integral of D cos(theta_h) = 1), not the
      * BRDF lobe: used directly as a BRDF its albedo at normal incidence tends
-     * to 4 for large n. Kept to reproduce seed 001's pictures. */
+     * to 4 for large n. Kept to reproduce [Lag13]'s pictures. */
     SOAK_BLINN_NORM_SEED001 = 1
 } soak_blinn_norm;
 
@@ -132,12 +132,12 @@ typedef struct soak_porous_params {
     double ks;          /* specular coefficient, [0,1], ks + kd <= 1 */
     double m;           /* RMS slope for G_p, [0, SOAK_POROUS_M_MAX] */
     double spec_power;  /* Blinn-Phong exponent n, [0, SOAK_POROUS_POWER_MAX];
-                           seed 001 links it to m by n = 2/m^2 - 2 */
+                           [Lag13] links it to m by n = 2/m^2 - 2 */
     double porosity;    /* alpha_poro, fraction of surface in open pores, [0,1] */
     double sp;          /* pore depth / diameter, [0, SOAK_POROUS_SP_MAX] */
     double ks_water;    /* water specular coefficient, [0, SOAK_POROUS_KS_WATER_MAX]
-                           (seed 001: 0.02, water's F0) */
-    double water_power; /* exponent of the water lobe (seed 001: 200) */
+                           ([Lag13]: 0.02, water's F0) */
+    double water_power; /* exponent of the water lobe ([Lag13]: 200) */
     soak_blinn_norm norm;
 } soak_porous_params;
 
@@ -146,7 +146,7 @@ soak_status soak_porous_validate(const soak_porous_params *p);
 /* The coefficients of one direction pair (all dimensionless). */
 typedef struct soak_porous_coeffs {
     double Gp, nb, Ap;
-    double kd_wet;   /* k_d-poro-wet, seed 002 Eq. 2 (k_d-poro at fill 0) */
+    double kd_wet;   /* k_d-poro-wet, [Hnat06] Eq. 2 (k_d-poro at fill 0) */
     double ks_mat;   /* k_s (1 - alpha G_p): material specular, Eq. 3 first term */
     double ks_water; /* k_s-water alpha G_p fill: water specular, Eq. 3 second term */
 } soak_porous_coeffs;
@@ -159,7 +159,7 @@ soak_status soak_porous_coeffs_eval(const soak_porous_params *p, double fill, so
  * the normalised Blinn-Phong lobe selected by p->norm. Reciprocal. With
  * SOAK_BLINN_NORM_ENERGY the directional albedo is <= 1 for every valid
  * parameter set (see SOAK_BLINN_NORM_ENERGY and SOAK_POROUS_KS_WATER_MAX);
- * SOAK_BLINN_NORM_SEED001 reproduces seed 001 and is not conserving. */
+ * SOAK_BLINN_NORM_SEED001 reproduces [Lag13] and is not conserving. */
 soak_status soak_porous_eval(const soak_porous_params *p, double fill, soak_vec3 wi, soak_vec3 wo, double *f);
 
 /* Importance sampling: a one-sample mixture of a cosine lobe and the two
@@ -186,8 +186,8 @@ soak_status soak_porous_albedo_factor(const soak_porous_params *p, double fill, 
  *   f_mat   GGX dielectric (roughness, eta): the non-porous surface;
  *   f_water GGX dielectric (water_roughness, eta_water): the water surface in
  *           the filled pores (replaces Eq. 3's k_s-water: F0(1.33) = 0.020,
- *           seed 001's Kwater);
- *   G_p     GGX height-correlated Smith G2 of the material roughness (seed 001
+ *           [Lag13]'s Kwater);
+ *   G_p     GGX height-correlated Smith G2 of the material roughness ([Lag13]
  *           suggests G_p = the base BRDF's G);
  *   D = rho_eff (1 - E_s(mu_i)) (1 - E_s(mu_o)) / (pi (1 - E_s_avg)),
  *   rho_eff = albedo (1 - a G_p) + a G_p r (1 - A_p(n_b, k_a = 1 - r)) (1 - fill),
@@ -202,7 +202,7 @@ soak_status soak_porous_albedo_factor(const soak_porous_params *p, double fill, 
  * against an independent quadrature at ~1e-6 (tests/c/models/test_porous.c).
  * Reciprocal: every term is symmetric in (wi, wo). Porosity 0 makes fill
  * irrelevant. Light entering filled pores through the water surface is
- * taken as absorbed (the darkening of seed 002).
+ * taken as absorbed (the darkening of [Hnat06]).
  * The simpler weight (1 - F(mu_i))(1 - F(mu_o)) bounds the albedo only where
  * the specular albedo E(mu) <= F(mu), which nothing guarantees for a rough
  * surface with porosity; weighting by 1 - E_s makes the bound hold by

@@ -1,9 +1,9 @@
 /* Weidlich-Wilkie layered BRDF with a smooth water film on top of a GGX base,
  * and the Tri-Ace fast paths for it.
  * Sources: A. Weidlich, A. Wilkie, "Arbitrarily Layered Micro-Facet
- * Surfaces", GRAPHITE 2007; seed 001 (Lagarde 2013), "Realtime double layer
+ * Surfaces", GRAPHITE 2007; [Lag13] (Lagarde 2013), "Realtime double layer
  * material" and its RenderMonkey code; Tri-Ace approximations as reported in
- * seed 001 ("Refract vector", "Fresnel term", "Absorption term"), after
+ * [Lag13] ("Refract vector", "Fresnel term", "Absorption term"), after
  * Y. Gotanda (tri-Ace), "Beyond a Simple Physically Based Blinn-Phong Model".
  *
  * Exact model (soak_ww_eval). Air (index 1) above a flat, smooth water film
@@ -11,13 +11,13 @@
  * local frame, normal +z, both in the upper hemisphere. Inside the water,
  * wi' and wo' are the Snell-refracted directions through the flat film
  * (tangential part scaled by 1/n; refraction about the macro normal, which is
- * the only consistent choice for a mirror-flat top -- WW's code and seed 001
+ * the only consistent choice for a mirror-flat top -- WW's code and [Lag13]
  * refract about the half vector, a heuristic for rough top layers).
  *   f(wi, wo) = T12(cos_i) * f_base(wi', wo') * a * T21(cos_o') / n^2
  *   a = exp(-alpha_abs * d * (1/cos_i' + 1/cos_o'))
  * plus a delta (mirror) lobe of weight F12(cos_i) (soak_ww_specular).
  * Corrections and choices, each tested:
- *  - Seed 001 prints a = e^{alpha d (1/theta_i' 1/theta_r')}: the exponent
+ *  - [Lag13] prints a = e^{alpha d (1/theta_i' 1/theta_r')}: the exponent
  *    needs a minus sign, the two path lengths add ('+'), and they are
  *    d / cos(theta') (cosines, not angles).
  *  - The 1/n^2 factor: radiance crossing a smooth interface from index n_a
@@ -25,14 +25,14 @@
  *    (equivalently, etendue n^2 cos dw is conserved: cos_o dw_o =
  *    n^2 cos_o' dw_o'). Irradiance E on top delivers flux T12 E to the base;
  *    the base's radiance L' = f_base T12 E a, leaving through the film as
- *    L = T21 L' / n^2. WW 2007 and seed 001 omit the 1/n^2; without it a
+ *    L = T21 L' / n^2. WW 2007 and [Lag13] omit the 1/n^2; without it a
  *    glossy base whose lobe fits inside the escape cone returns up to
  *    n^2 T12 T21 ~ 1.7 of the incident energy. With it the directional albedo
  *    is T12 * int_{cone} f_base a T21 cos' dw' <= T12 * albedo_base <= 1 - F12.
  *  - Reciprocity: Fresnel reflectance is the same on both sides of an
  *    interface for Snell-paired angles, so T12(cos_i) = T21(cos_i') and
  *    f = T21(cos_i') T21(cos_o') f_base a / n^2 is symmetric.
- *  - WW's t = 1 - F21 G (seed 001) becomes T21 for the smooth film (G = 1).
+ *  - WW's t = 1 - F21 G ([Lag13]) becomes T21 for the smooth film (G = 1).
  *  - Interreflections between the base and the underside of the film are
  *    omitted, as in WW (soak/film.h has them for a Lambertian base); light
  *    reflected back down by the film is lost, so energy stays <= 1.
@@ -48,7 +48,7 @@
  *  - SOAK_WW_CONDUCTOR: GGX Cook-Torrance with complex index
  *    (n_base + i k_base) / n_water, no diffuse term.
  * All per colour channel: for RGB call once per channel (soak_ww_copper gives
- * seed 001's copper constants). */
+ * [Lag13]'s copper constants). */
 #ifndef SOAK_WW_H
 #define SOAK_WW_H
 
@@ -58,7 +58,7 @@
 #define SOAK_WW_N_WATER 1.33
 #define SOAK_WW_N_WATER_MIN 1.0
 #define SOAK_WW_N_WATER_MAX 3.0
-#define SOAK_WW_ABSORPTION_MAX 1e6 /* 1/length */
+#define SOAK_WW_ABSORPTION_MAX 1e6 /* per length unit */
 #define SOAK_WW_THICKNESS_MAX 1e3  /* same length unit as 1/absorption */
 #define SOAK_WW_N_DIELECTRIC_MIN 1.0
 #define SOAK_WW_N_DIELECTRIC_MAX 3.0
@@ -75,7 +75,7 @@ typedef struct soak_ww {
     soak_ww_base base;
     double n_water;    /* film index relative to air, [1, 3]; 1 = no interface */
     double absorption; /* Beer-Lambert coefficient of the water, [0, 1e6] per length unit */
-    double thickness;  /* film thickness, [0, 1e3] length units; 0 = no absorption */
+    double thickness;  /* film thickness, [0, 1e3] in that length unit; 0 = no absorption */
     double alpha;      /* GGX roughness of the base, [1e-4, 1] (soak/ggx.h) */
     double n_base;     /* base index relative to air: dielectric [1, 3], conductor [0.01, 100] */
     double k_base;     /* conductor extinction relative to air, [0, 100]; ignored (but must be
@@ -87,7 +87,7 @@ typedef struct soak_ww {
 void soak_ww_default(soak_ww *m);
 soak_status soak_ww_validate(const soak_ww *m);
 
-/* Seed 001's copper, index relative to vacuum, per RGB channel:
+/* [Lag13]'s copper, index relative to vacuum, per RGB channel:
  * n = (3.406149, 2.161600, 1.504326), k = (5.225178, 3.756258, 3.018729). */
 void soak_ww_copper(soak_rgb *n, soak_rgb *k);
 
@@ -116,20 +116,20 @@ soak_status soak_ww_sample(const soak_ww *m, soak_vec3 wo, double u0, double u1,
 /* ---- Tri-Ace fast paths (ww_triace.c) ----
  * Accuracy against the exact model is measured in tests/c/models/test_ww.c. */
 
-/* Seed 001 / Tri-Ace: F_bottom(n2, n3) = F0(n2, n3) (1 - F0(n2, 1)), the
+/* [Lag13] / Tri-Ace: F_bottom(n2, n3) = F0(n2, n3) (1 - F0(n2, 1)), the
  * normal-incidence value of (1 - F21) F23. n2: film index, n3: base index,
  * both relative to air; [SOAK_ETA_MIN, SOAK_ETA_MAX]. */
 soak_status soak_triace_fbottom_dielectric(double n2, double n3, double *F);
-/* Seed 001's conductor extension: ((n3-n2)^2 + k3^2) / ((n3+n2)^2 + k3^2) (1 - F0(n2, 1)). */
+/* [Lag13]'s conductor extension: ((n3-n2)^2 + k3^2) / ((n3+n2)^2 + k3^2) (1 - F0(n2, 1)). */
 soak_status soak_triace_fbottom_conductor(double n2, double n3, double k3, double *F);
 
 /* Linear absorption a ~ max(0, 1 - alpha' (1/cos_l + 1/cos_v)), the first-order
  * Taylor form of exp(-alpha' (1/cos_l + 1/cos_v)) with alpha' = alpha_abs d.
- * Seed 001 prints '1/N.L 1/N.V' (a product); the path lengths add, so it is
+ * [Lag13] prints '1/N.L 1/N.V' (a product); the path lengths add, so it is
  * the sum. cos in (0, 1], alpha' in [0, 1e9]. */
 soak_status soak_triace_absorption_linear(double alpha_prime, double cos_l, double cos_v, double *a);
 
-/* Polynomial refraction for eta = 1/1.33 (air into water), seed 001:
+/* Polynomial refraction for eta = 1/1.33 (air into water), [Lag13]:
  *   t = i / 1.33 + (c0 + c1 cos_i + c2 cos_i^2) n,  cos_i = -i.n,
  * (c0, c1, c2) = (-0.666308423880957, 0.7518796992481197, -0.34853799144237796)
  * fitted to (eta cos_i - cos_t). i: unit incident direction (toward the
@@ -150,7 +150,7 @@ typedef struct soak_ww_triace {
 /* Accepts the liquid's index n_water in [SOAK_WW_TRIACE_N_MIN,
  * SOAK_WW_TRIACE_N_MAX] (water 1.333, and the shipped coffee, cola, wine);
  * others return SOAK_ERR_ARG. The Fresnel terms (r0_top, fbottom, diffuse)
- * and inv_n2 use n_water; the refraction polynomial is seed 001's fit for
+ * and inv_n2 use n_water; the refraction polynomial is [Lag13]'s fit for
  * 1.33 at every accepted index. Its error (tests/c/models/test_ww.c, printed table):
  * at n_water = 1.333 the fast path equals the exact model at normal
  * incidence without absorption, and its largest relative error over the
@@ -165,7 +165,7 @@ soak_status soak_ww_triace_setup(const soak_ww *m, soak_ww_triace *fast);
  *   [F_bottom D(h') G2/(4 cos_i' cos_o') + diffuse],
  * with wi', wo' from soak_refract_1_33 (renormalised) and a_lin evaluated
  * with the refracted cosines (>= 0.66, so 1/cos is bounded; with the
- * unrefracted N.L, N.V seed 001 shows the linear form fails at grazing).
+ * unrefracted N.L, N.V [Lag13] shows the linear form fails at grazing).
  * No pow/exp; equals soak_ww_eval exactly at normal incidence without
  * absorption. Not reciprocal: Schlick T12 at cos_i but a constant exit
  * transmission (1 - F0(1.33, 1)) inside F_bottom, which is the dominant

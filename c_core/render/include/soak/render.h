@@ -2,9 +2,9 @@
  *
  * Unidirectional path tracing with next-event estimation and multiple
  * importance sampling (power heuristic, Veach 1997 ch. 9) for surfaces; the
- * wet surface of seed 000 (Jensen, Legakis, Dorsey 1999) Eq. 1-4 is traced
+ * wet surface of [JLD99] (Jensen, Legakis, Dorsey 1999) Eq. 1-4 is traced
  * explicitly: reflection at the film top, transmission into the film and the
- * material, a subsurface random walk (two-term HG, seed 000 Eq. 5 as
+ * material, a subsurface random walk (two-term HG, [JLD99] Eq. 5 as
  * corrected in soak/hg.h), Fresnel with total internal reflection on the way
  * out, and Eq. 4 transmittance on shadow rays from inside the medium. An
  * optional volume photon map carries caustics (light through dielectrics)

@@ -96,11 +96,11 @@ typedef struct soak_material {
     /* conductor, and the ggx base of wet: complex index relative to vacuum/air, GGX alpha */
     soak_rgb eta, k;
     double alpha;
-    /* wet: film (seed 000 Eq. 1-4) and base */
+    /* wet: film ([JLD99] Eq. 1-4) and base */
     double film_ior;       /* n2, [1, 3] */
     double film_k;         /* Fresnel exponent k of the film-material interface */
-    double film_thickness; /* length units, for absorption */
-    soak_rgb film_absorption; /* 1/length */
+    double film_thickness; /* scene length unit, for absorption */
+    soak_rgb film_absorption; /* per scene length unit */
     double film_coverage;  /* probability of the film at a wet point, [0,1] (1 unless a preset says less) */
     double film_pore_share; /* of those draws, the share that is pore water: the same interface at zero
                              * thickness (wetness.h step 5); from a preset's chain, or the film's
@@ -147,7 +147,7 @@ typedef struct soak_scene {
     char path[1024];
     int width, height, spp, max_depth;
     long long caustic_photons; /* volume photon map for caustics into media; 0 = off */
-    double caustic_radius;     /* photon gather radius (length units) */
+    double caustic_radius;     /* photon gather radius (scene length unit) */
     soak_camera camera;
     soak_environment env;
     soak_light *lights;

@@ -6,7 +6,7 @@
  *    heterogeneous media: Woodcock et al. 1965; Novak et al., "Monte Carlo
  *    methods for volumetric light transport simulation", CGF 37(2), 2018,
  *    sec. 4-5 (delta tracking, ratio tracking);
- *  - two-term Henyey-Greenstein phase function: soak/hg.h (seed 000 Eq. 5,
+ *  - two-term Henyey-Greenstein phase function: soak/hg.h ([JLD99] Eq. 5,
  *    corrected there);
  *  - RGB: spectral MIS over the three channels (one-sample balance heuristic,
  *    as in hero-wavelength sampling, Wilkie et al., EGSR 2014) with the
@@ -14,7 +14,7 @@
  *    Burley, "Practical and controllable subsurface scattering for production
  *    path tracing", SIGGRAPH 2016 talk).
  *
- * Units: sigma_t is in 1/length, positions in the same length unit. The
+ * Units: positions in any length unit, sigma_t per that unit. The
  * single-scattering albedo is sigma_s/sigma_t; absorption is carried in the
  * weight (weight *= albedo per real collision), so no path is terminated
  * for absorption except by Russian roulette, which keeps the estimate

@@ -1,0 +1,91 @@
+/* Queries from inside one object (soak/geometry.h): an isolated sphere is
+ * answered analytically, a segment inside a clear ball needs no traversal. */
+#include "geometry_internal.h"
+
+static const geo_object *local_sphere(const soak_geometry *g, unsigned id)
+{
+    const geo_object *o = id < g->count ? &g->objects[id] : NULL;
+    return o && o->kind == SOAK_SHAPE_SPHERE && o->isolated ? o : NULL;
+}
+
+soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int want_uv,
+                                          soak_hit *hit, int *found)
+{
+    if (!g || !ray || !hit || !found) return SOAK_ERR_NULL;
+    const geo_object *o = g->committed ? local_sphere(g, object_id) : NULL;
+    if (!o) return geo_intersect_scene(g, ray, want_uv, hit, found);
+    if (!ray_ok(ray)) return SOAK_ERR_ARG;
+    double t0, t1, t;
+    *found = 0;
+    if (!sphere_roots(o->center, o->radius, ray->org, ray->dir, &t0, &t1)) return SOAK_OK;
+    t = t0 > ray->tnear ? t0 : t1;
+    if (!(t > ray->tnear && t < ray->tfar)) return SOAK_OK;
+    hit->t = t;
+    hit->p = soak_v3_add(ray->org, soak_v3_scale(ray->dir, t));
+    if (want_uv) {
+        sphere_surface(o, hit->p, &hit->ng, &hit->u, &hit->v);
+    } else { /* the walk's many boundary hits need no texture lookup (atan2, acos) */
+        hit->ng = soak_v3_norm(soak_v3_sub(hit->p, o->center));
+        hit->u = hit->v = 0;
+    }
+    hit->ns = hit->ng;
+    hit->prim_id = 0;
+    hit->object_id = object_id;
+    *found = 1;
+    return SOAK_OK;
+}
+
+/* 1 when the segment of ray lies inside object id's clear ball (see
+ * mark_clear_ball): no surface on it, no traversal needed. */
+static int segment_clear(const soak_geometry *g, unsigned id, const soak_ray *ray)
+{
+    if (!g->committed || id >= g->count || !(g->objects[id].clear_r2 > 0) || !(ray->tfar < INFINITY)) return 0;
+    const geo_object *o = &g->objects[id];
+    soak_vec3 a = soak_v3_sub(soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tnear)), o->clear_c);
+    soak_vec3 b = soak_v3_sub(soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tfar)), o->clear_c);
+    return soak_v3_dot(a, a) < o->clear_r2 && soak_v3_dot(b, b) < o->clear_r2;
+}
+
+soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int *occluded)
+{
+    if (!g || !ray || !occluded) return SOAK_ERR_NULL;
+    const geo_object *o = g->committed ? local_sphere(g, object_id) : NULL;
+    if (!o) {
+        if (!ray_ok(ray)) return SOAK_ERR_ARG;
+        if (segment_clear(g, object_id, ray)) {
+            *occluded = 0; /* a ball is convex: the whole segment is in it */
+            return SOAK_OK;
+        }
+        return soak_geometry_occluded(g, ray, occluded);
+    }
+    if (!ray_ok(ray)) return SOAK_ERR_ARG;
+    /* From inside (the walk's case) the segment crosses the convex surface
+     * iff it ends outside: two squared distances, no root. */
+    double r2 = o->radius * o->radius;
+    soak_vec3 a = soak_v3_sub(soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tnear)), o->center);
+    if (soak_v3_dot(a, a) < r2 && ray->tfar < INFINITY) {
+        soak_vec3 b = soak_v3_sub(soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tfar)), o->center);
+        *occluded = soak_v3_dot(b, b) >= r2;
+        return SOAK_OK;
+    }
+    double t0, t1;
+    int n = sphere_roots(o->center, o->radius, ray->org, ray->dir, &t0, &t1);
+    *occluded = n && ((t0 > ray->tnear && t0 < ray->tfar) || (t1 > ray->tnear && t1 < ray->tfar));
+    return SOAK_OK;
+}
+
+int soak_geometry_object_isolated(const soak_geometry *g, unsigned object_id)
+{
+    return g && g->committed && local_sphere(g, object_id) != NULL;
+}
+
+double soak_geometry_clear_distance(const soak_geometry *g, unsigned object_id, soak_vec3 p)
+{
+    if (!g || !g->committed || object_id >= g->count) return 0.0;
+    const geo_object *o = &g->objects[object_id];
+    const geo_object *sph = local_sphere(g, object_id);
+    soak_vec3 c = sph ? sph->center : o->clear_c;
+    double r = sph ? sph->radius : sqrt(o->clear_r2);
+    double d = r - soak_v3_len(soak_v3_sub(p, c));
+    return d > 0 ? d : 0.0;
+}
