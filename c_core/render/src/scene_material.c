@@ -432,6 +432,11 @@ static void preset_base(const preset_chain *pc, double m_per_unit, soak_material
          * scenes/README.md). */
         m->base = SOAK_BASE_LAMBERT;
         m->albedo = w->albedo_subsurface;
+        /* The material's own rough interface over that base (wetness.h step
+         * 6: GGX alpha of the chain, Merillou/Hnat weight 1 - porosity). */
+        m->ior = pc->ior;
+        m->alpha = w->ggx_alpha;
+        m->coat_weight = w->specular_weight;
     } else {
         /* Thin sheets keep their traced medium (translucency) under a smooth
          * boundary of the fibres' index: an index-matched boundary would match
