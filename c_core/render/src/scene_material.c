@@ -458,8 +458,9 @@ static void preset_base(const preset_chain *pc, double m_per_unit, soak_material
  * documented key), converted here once to metres per unit. */
 static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
 {
-    static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", NULL};
+    static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", "interface", NULL};
     preset_request r;
+    double interface = 1;
     soak_status st = sj_keys(c, j, path, keys);
     if (st == SOAK_OK) st = sj_str(c, j, "name", path, 1, &r.name);
     if (st == SOAK_OK) st = sj_num(c, j, "wetness", path, 0, 1, 0, 0, &r.wetness);
@@ -468,6 +469,7 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     if (st == SOAK_OK) st = sj_num_gt(c, j, "unit_mm", path, 0, 1e9, 0, 1000, &unit_mm);
     r.m_per_unit = soak_m_from_mm(unit_mm);
     if (st == SOAK_OK) st = sj_str(c, j, "model", path, 0, &r.model);
+    if (st == SOAK_OK) st = sj_num(c, j, "interface", path, 0, 1, 0, 1, &interface);
     if (st != SOAK_OK) return st;
     preset_chain pc;
     st = eval_preset(c, path, &r, m, &pc);
@@ -475,6 +477,9 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     m->type = SOAK_MAT_WET;
     preset_film(&pc.w, r.m_per_unit, m);
     preset_base(&pc, r.m_per_unit, m);
+    /* "interface": 0 leaves the material's own specular interface out: what a
+     * front end draws with its highlights off (tests/povray/flat_ground.py) */
+    if (interface < 0.5) m->coat_weight = 0.0;
     if (!r.model) return SOAK_OK;
     char mp[320];
     sj_path(mp, sizeof mp, path, "model");
