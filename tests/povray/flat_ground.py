@@ -490,7 +490,8 @@ def main():
     back = np.array([0.3, 0.2, -0.933])
     back = back / np.linalg.norm(back)
     sheets = wetness_levels(exp, SHEETS)
-    sh = render_pair(soak, root, tmp, "sheet", sheets, back, 0.0, 0.8 / UNIT_MM, spp, sheet=True)
+    paper_m = next(m for m in exp["materials"] if m["name"] == "paper")["sheet_thickness_m"]
+    sh = render_pair(soak, root, tmp, "sheet", sheets, back, 0.0, paper_m * 1e3 / UNIT_MM, spp, sheet=True)
     collect("backlit", sheets, sh, coverage)
     if report:
         preset = render_pair(soak, root, tmp, "preset", patches, SUN_DIR, SKY_L, 2.0, spp)
@@ -505,7 +506,7 @@ def main():
     #   light: the interface's light half (light_term: POV-Ray's diffuse cannot follow the sun's angle);
     #   metals: 0.03 (POV-Ray mirror at F0 under the film vs GGX alpha 0.05 directional albedo);
     #   back-lit paper: reported, not asserted. Backside diffuse with the two-flux
-    #           transmittance (0.8 mm paper, optical depth 42: neither POV-Ray's media nor its
+    #           transmittance (0.1 mm paper, optical depth 5.3: neither POV-Ray's media nor its
     #           subsurface fit) is 20-35 % below the traced slab; the asserted back-lit sheet is
     #           tests/povray/media_slab.py (a sheet thin enough for POV-Ray's media).
     def budget_terms(tag, ref, err, name="", w=0.0, liquid=None, on_knot=False):
