@@ -23,7 +23,7 @@ typedef struct measure_args {
     int have_g1, have_w;
     const char *material;
     const char *liquid;
-    int have_wetness, have_channel, have_base_alpha;
+    int have_wetness, have_channel, have_base_alpha, have_coat;
     double wetness;
     int channel;
 } measure_args;
@@ -38,8 +38,9 @@ static int read_config(const char *cmd, const cli_opt *o, const char *v, void *d
     if (strcmp(v, "film") == 0) *c = SOAK_MEASURE_FILM;
     else if (strcmp(v, "halfspace") == 0) *c = SOAK_MEASURE_HALFSPACE;
     else if (strcmp(v, "slab") == 0) *c = SOAK_MEASURE_SLAB;
+    else if (strcmp(v, "coated") == 0) *c = SOAK_MEASURE_COATED;
     else {
-        cli_error(cmd, "--config: unknown configuration '%s' (expected film, halfspace or slab)", v);
+        cli_error(cmd, "--config: unknown configuration '%s' (expected film, halfspace, slab or coated)", v);
         return 0;
     }
     return 1;
@@ -95,7 +96,9 @@ static const cli_opt measure_opts[] = {
     {"--config", NULL, CLI_OPT_CUSTOM, .parse = read_config, SEEN(have_config), .meta = "NAME",
      .help = "film: smooth liquid film over a Lambertian base;\n"
              "halfspace: semi-infinite scattering medium;\n"
-             "slab: scattering slab of optical thickness --tau"},
+             "slab: scattering slab of optical thickness --tau;\n"
+             "coated: rough dielectric interface (--coat-*) over a Lambertian\n"
+             "base, under a film when --ior > 1 (the renderer's preset surface)"},
     {"--incidence", NULL, CLI_OPT_CUSTOM, .parse = read_incidence, .meta = "I",
      .help = "normal (default), diffuse, or an angle in degrees [0, 90)"},
     {"--quantity", NULL, CLI_OPT_CHOICE, .choices = quantities, F(setup.quantity), .meta = "R|T",
@@ -110,6 +113,13 @@ static const cli_opt measure_opts[] = {
      SEEN(have_base_alpha), .meta = "A", .help = "absorption coefficient of the liquid, %R 1/m (default 0)"},
     {"--film-thickness", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = SOAK_FILM_MAX_THICKNESS, F(setup.film_thickness),
      SEEN(have_base_alpha), .meta = "D", .help = "film thickness, %R m (default 0: no absorption)"},
+    {"", NULL, CLI_OPT_HEADING, .help = "coated (with --base-albedo and the film's options):"},
+    {"--coat-ior", NULL, CLI_OPT_DOUBLE, .lo = SOAK_MEASURE_MIN_IOR, .hi = SOAK_MEASURE_MAX_IOR, F(setup.coat_ior),
+     SEEN(have_coat), .meta = "N", .help = "index of the interface relative to air, %R (default 1.5)"},
+    {"--coat-alpha", NULL, CLI_OPT_DOUBLE, .lo = 1e-4, .hi = 1, F(setup.coat_alpha), SEEN(have_coat), .meta = "A",
+     .help = "its GGX width, %R (default 0.1)"},
+    {"--coat-weight", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 1, F(setup.coat_weight), SEEN(have_coat), .meta = "KS",
+     .help = "its specular weight (1 - porosity), %R (default 1)"},
     {"", NULL, CLI_OPT_HEADING, .help = "halfspace, slab (lengths in mean free paths):"},
     {"--albedo", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 1, F(setup.albedo), SEEN(have_albedo), .meta = "W",
      .help = "single-scattering albedo, %R (required)"},
@@ -148,7 +158,7 @@ static const cli_opt measure_opts[] = {
 static void usage(FILE *out)
 {
     fprintf(out,
-            "usage: soak measure --config film|halfspace|slab [options]\n\n"
+            "usage: soak measure --config film|halfspace|slab|coated [options]\n\n"
             "Traces photons through a canonical plane-parallel configuration and prints\n"
             "its reflectance (or a slab's transmittance). The last line of the output is\n"
             "'value ± standard error'.\n\n");
@@ -157,12 +167,15 @@ static void usage(FILE *out)
     fprintf(out,
             "\nA preset sets the medium: halfspace (the default for a preset): the wet medium's\n"
             "omega and phase, index-matched unless --ior; slab: a thin sheet, tau = sigma_t *\n"
-            "sheet thickness; film: the film over the wet subsurface albedo. The model's own\n"
-            "value is printed alongside.\n\n"
+            "sheet thickness; film: the film over the wet subsurface albedo; coated: the\n"
+            "material's rough interface (its index, the chain's GGX width and weight\n"
+            "1 - porosity) over the subsurface albedo, under the film where one lies (the\n"
+            "surface soak render shades). The model's own value is printed alongside.\n\n"
             "examples:\n"
             "  soak measure --config film --base-albedo 0.5 --ior 1.33 --incidence normal --paths 200000\n"
             "  soak measure --config halfspace --albedo 0.9 --incidence 60\n"
             "  soak measure --config slab --tau 2 --albedo 0.9 --g 0.5 --quantity T\n"
+            "  soak measure --config coated --base-albedo 0.4 --coat-ior 1.5 --coat-alpha 0.25 --incidence 60\n"
             "  soak measure --material sand --wetness 1 --incidence diffuse --channel r\n");
 }
 
@@ -195,8 +208,8 @@ static int check_preset_mode(measure_args *a)
         return 0;
     }
     if (a->have_albedo || a->have_tau || a->have_g || a->have_g1 || a->have_g2 || a->have_w || a->have_base ||
-        a->have_base_alpha) {
-        cli_error(CMD, "--material: replaces --albedo/--g*/--tau/--base-albedo/--film-*; give one or the other");
+        a->have_base_alpha || a->have_coat) {
+        cli_error(CMD, "--material: replaces --albedo/--g*/--tau/--base-albedo/--film-*/--coat-*; give one or the other");
         return 0;
     }
     if (!a->have_config) s->config = SOAK_MEASURE_HALFSPACE;
@@ -211,12 +224,12 @@ static int check_preset_mode(measure_args *a)
 static int check_config(measure_args *a)
 {
     soak_measure_setup *s = &a->setup;
-    if (s->config == SOAK_MEASURE_FILM) {
+    if (s->config == SOAK_MEASURE_FILM || s->config == SOAK_MEASURE_COATED) {
         if (!a->have_base) {
-            cli_error(CMD, "--base-albedo is required for --config film");
+            cli_error(CMD, "--base-albedo is required for --config %s", s->config == SOAK_MEASURE_FILM ? "film" : "coated");
             return 0;
         }
-        if (!a->have_ior) s->ior = SOAK_WATER_IOR;
+        if (!a->have_ior) s->ior = s->config == SOAK_MEASURE_FILM ? SOAK_WATER_IOR : 1.0;
         if (a->have_albedo || a->have_tau || a->have_g || a->have_g1) {
             cli_error(CMD, "--albedo/--tau/--g*: not used by --config film (it has no scattering medium)");
             return 0;
@@ -225,6 +238,10 @@ static int check_config(measure_args *a)
     }
     if (!a->have_albedo) {
         cli_error(CMD, "--albedo is required for --config %s", s->config == SOAK_MEASURE_SLAB ? "slab" : "halfspace");
+        return 0;
+    }
+    if (a->have_coat) {
+        cli_error(CMD, "--coat-*: only --config coated has an interface");
         return 0;
     }
     if (s->config == SOAK_MEASURE_SLAB && !a->have_tau) {
@@ -243,7 +260,7 @@ static int check_combination(measure_args *a)
     soak_measure_setup *s = &a->setup;
     if (a->material || a->have_wetness || a->have_channel || a->liquid) return check_preset_mode(a);
     if (!a->have_config) {
-        cli_error(CMD, "--config is required (film, halfspace or slab)");
+        cli_error(CMD, "--config is required (film, halfspace, slab or coated)");
         return 0;
     }
     if (a->have_g && (a->have_g1 || a->have_g2 || a->have_w)) {
@@ -304,9 +321,15 @@ static int preset_setup(measure_args *a, const soak_preset *p, const soak_wet_pa
 {
     soak_measure_setup *s = &a->setup;
     int rc = -1;
-    if (s->config == SOAK_MEASURE_FILM) {
+    if (s->config == SOAK_MEASURE_COATED) {
+        /* the chain's interface (wetness.h step 6); the film where one lies */
+        s->coat_ior = p->ior;
+        s->coat_alpha = wp->ggx_alpha;
+        s->coat_weight = wp->specular_weight;
+    }
+    if (s->config == SOAK_MEASURE_FILM || s->config == SOAK_MEASURE_COATED) {
         s->base_albedo = soak_rgb_at(wp->albedo_subsurface, c);
-        s->ior = wp->film_ior;
+        s->ior = s->config == SOAK_MEASURE_COATED && !wp->film ? 1.0 : wp->film_ior;
         s->film_alpha = soak_rgb_at(wp->film_absorption_per_m, c);
         s->film_thickness = wp->film_thickness_m;
         if (!(s->film_alpha <= SOAK_FILM_MAX_ALPHA && s->film_thickness <= SOAK_FILM_MAX_THICKNESS)) {
@@ -357,14 +380,19 @@ static void on_progress(void *ctx, double fraction)
 
 static const char *config_name(soak_measure_config c)
 {
-    return c == SOAK_MEASURE_FILM ? "film" : (c == SOAK_MEASURE_SLAB ? "slab" : "halfspace");
+    return c == SOAK_MEASURE_FILM     ? "film"
+           : c == SOAK_MEASURE_SLAB   ? "slab"
+           : c == SOAK_MEASURE_COATED ? "coated"
+                                      : "halfspace";
 }
 
 static void print_setup(const soak_measure_setup *s)
 {
     printf("config: %s, ior %g", config_name(s->config), s->ior);
-    if (s->config == SOAK_MEASURE_FILM) {
+    if (s->config == SOAK_MEASURE_FILM || s->config == SOAK_MEASURE_COATED) {
         printf(", base albedo %g", s->base_albedo);
+        if (s->config == SOAK_MEASURE_COATED)
+            printf(", interface ior %g alpha %g weight %g", s->coat_ior, s->coat_alpha, s->coat_weight);
         if (s->film_alpha > 0.0 && s->film_thickness > 0.0)
             printf(", absorption %g 1/m over %g m", s->film_alpha, s->film_thickness);
     } else {

@@ -67,12 +67,12 @@ def mean_exr(path):
     return [x / (w * h) for x in s]
 
 
-def soak_render(name, material, back_lit=False):
+def soak_render(name, material, back_lit=False, sheet_m=0.0):
     sun = dict(CASES["sun"])
     if back_lit:
         sun["direction"] = [sun["direction"][0], sun["direction"][1], -sun["direction"][2]]
     unit = CASES["soak_unit_mm"]
-    t = (0.8 if material.get("name") == "paper" else 200.0) * 1e-3 / (unit * 1e-3)  # 0.8 mm / 0.2 m slabs
+    t = (sheet_m if sheet_m > 0 else 0.2) / (unit * 1e-3)  # a sheet's own thickness / 0.2 m slabs
     k = 1.0 / (unit * 1e-3)  # metres -> scene units
     scene = {
         "render": {"width": CASES["render"]["width"], "height": CASES["render"]["height"],
@@ -353,8 +353,12 @@ def main():
             # black base in a white furnace (no sun) shows (the coat's share
             # included, an upper bound: the group undoes the coat's)
             layer[0] = furnace(sc, name)
+        # "interface": 0: the Lambertian body alone under the liquid, without the material's
+        # own rough interface, so that the reference's image is the diffuse part compared
+        # below (the Principled BSDF's own specular lobe is taken out by the black-base render)
         ls = soak_render(name, {"type": "preset", "name": preset, "wetness": wetness, "liquid": liquid,
-                                "unit_mm": CASES["soak_unit_mm"]}, back_lit)
+                                "unit_mm": CASES["soak_unit_mm"], "interface": 0}, back_lit,
+                         ref[preset].get("sheet_thickness_m", 0.0))
         return lb, spec, ls
 
     def check(label, got, want, tol):

@@ -442,15 +442,27 @@ static soak_status parse_wetting_group(const mat_reader *r, soak_preset *p)
     return st;
 }
 
+/* A sheet's thickness: given, or the grammage over the bulk density (ISO 534's
+ * apparent density: 80 g/m^2 at 800 kg/m^3 is 0.1 mm), one or the other. */
 static soak_status parse_sheet_group(const mat_reader *r, soak_preset *p)
 {
-    static const char *const sheet_keys[] = {"thickness_mm", "source", NULL};
+    static const char *const all_keys[] = {"thickness_mm", "grammage_g_m2", "density_kg_m3", "source", NULL};
+    static const char *const given_keys[] = {"thickness_mm", "source", NULL};
+    static const char *const mass_keys[] = {"grammage_g_m2", "density_kg_m3", "source", NULL};
+    const cJSON *sheet = cJSON_GetObjectItemCaseSensitive(r->m, "sheet");
+    const int by_mass = cJSON_IsObject(sheet) && cJSON_GetObjectItemCaseSensitive(sheet, "grammage_g_m2") != NULL;
     const cJSON *g = NULL;
     char gp[PATH_MAX_LEN];
-    soak_status st = open_material_group(r, "sheet", sheet_keys, NULL, &g, gp);
-    double sheet_mm = 0.0;
-    if (st == SOAK_OK) st = get_number(r->c, g, gp, "thickness_mm", 1e-3, 1000.0, &sheet_mm);
-    p->thickness_m = soak_m_from_mm(sheet_mm);
+    soak_status st = open_material_group(r, "sheet", by_mass ? mass_keys : given_keys, all_keys, &g, gp);
+    double sheet_mm = 0.0, g_m2 = 0.0, kg_m3 = 0.0;
+    if (st == SOAK_OK && !by_mass) {
+        st = get_number(r->c, g, gp, "thickness_mm", 1e-3, 1000.0, &sheet_mm);
+        p->thickness_m = soak_m_from_mm(sheet_mm);
+    } else if (st == SOAK_OK) {
+        st = get_number(r->c, g, gp, "grammage_g_m2", 1.0, 1e5, &g_m2);
+        if (st == SOAK_OK) st = get_number(r->c, g, gp, "density_kg_m3", 10.0, 1e4, &kg_m3);
+        p->thickness_m = 1e-3 * g_m2 / kg_m3; /* g/m^2 -> kg/m^2, over kg/m^3 */
+    }
     if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->sheet_source);
     return st;
 }

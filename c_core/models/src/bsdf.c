@@ -12,6 +12,7 @@ void soak_bsdf_desc_default(soak_bsdf_desc *d, soak_bsdf_kind kind)
     d->eta = soak_rgb3(1.5, 1.5, 1.5);
     d->alpha = 0.1;
     d->ior = 1.5;
+    d->coat_weight = 1.0;
     d->film_ior = 1.0;
     for (int ch = 0; ch < 3; ++ch) soak_model_params_default(&d->params[ch]);
 }
@@ -22,7 +23,8 @@ static soak_status film_check(const soak_bsdf_desc *d)
     for (int ch = 0; ch < 3; ++ch)
         if (!soak_in_range(soak_rgb_at(d->film_absorption, ch), 0, 1e9)) return SOAK_ERR_ARG;
     if (d->film_ior == 1.0) return SOAK_OK;
-    return d->kind == SOAK_BSDF_LAMBERT || d->kind == SOAK_BSDF_GGX_CONDUCTOR || d->kind == SOAK_BSDF_GGX_DIELECTRIC
+    return d->kind == SOAK_BSDF_LAMBERT || d->kind == SOAK_BSDF_GGX_CONDUCTOR || d->kind == SOAK_BSDF_GGX_DIELECTRIC ||
+                   d->kind == SOAK_BSDF_COATED
                ? SOAK_OK
                : SOAK_ERR_ARG; /* glass and the models carry their own interfaces */
 }
@@ -35,6 +37,7 @@ static soak_status base_setup(soak_bsdf *b)
     case SOAK_BSDF_GGX_DIELECTRIC: return bsdf_ggx_setup(b);
     case SOAK_BSDF_GLASS: return bsdf_glass_setup(b);
     case SOAK_BSDF_MODEL: return bsdf_model_setup(b);
+    case SOAK_BSDF_COATED: return bsdf_coated_setup(b);
     }
     return SOAK_ERR_ARG;
 }
@@ -51,6 +54,7 @@ static void layer_setup(soak_bsdf *b)
     }
     b->d.eta = bsdf_rgb_scale(b->d.eta, 1.0 / n2);
     b->d.k = bsdf_rgb_scale(b->d.k, 1.0 / n2);
+    if (b->d.kind == SOAK_BSDF_COATED) bsdf_coated_tables(b); /* the interface is now material/liquid */
     b->flags |= SOAK_BSDF_WALK;
 }
 
@@ -71,12 +75,15 @@ int soak_bsdf_get_flags(const soak_bsdf *b) { return b ? b->flags : 0; }
 void bsdf_base_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf)
 {
     if (b->d.kind == SOAK_BSDF_LAMBERT) bsdf_lambert_eval(b, wi, wo, f, pdf);
+    else if (b->d.kind == SOAK_BSDF_COATED) bsdf_coated_eval(b, wi, wo, f, pdf);
     else bsdf_ggx_eval(b, wi, wo, f, pdf);
 }
 
 int bsdf_base_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s)
 {
-    return b->d.kind == SOAK_BSDF_LAMBERT ? bsdf_lambert_sample(b, wo, u, s) : bsdf_ggx_sample(b, wo, u, s);
+    if (b->d.kind == SOAK_BSDF_LAMBERT) return bsdf_lambert_sample(b, wo, u, s);
+    if (b->d.kind == SOAK_BSDF_COATED) return bsdf_coated_sample(b, wo, u, s);
+    return bsdf_ggx_sample(b, wo, u, s);
 }
 
 static int finite_rgb(soak_rgb c) { return soak_is_finite(c.r) && soak_is_finite(c.g) && soak_is_finite(c.b); }

@@ -57,12 +57,19 @@ soak_status bsdf_model_setup(soak_bsdf *b);
 soak_status bsdf_model_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
 soak_status bsdf_model_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s, int *ok);
 
+/* Rough dielectric interface over Lambert (bsdf_coated.c); the tables are
+ * rebuilt when a film makes eta relative to the liquid. */
+soak_status bsdf_coated_setup(soak_bsdf *b);
+void bsdf_coated_tables(soak_bsdf *b);
+void bsdf_coated_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
+int bsdf_coated_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s);
+
 /* Closed-form film over Lambert (bsdf_film.c). */
 soak_status bsdf_film_setup(soak_bsdf *b);
 void bsdf_film_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
 int bsdf_film_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s);
 
-/* The base alone (no film), for the walk: dispatch over LAMBERT / GGX. */
+/* The base alone (no film), for the walk: dispatch over LAMBERT / GGX / COATED. */
 void bsdf_base_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
 int bsdf_base_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s);
 

@@ -5,7 +5,13 @@
 
 static void base_desc(const soak_material *m, soak_bsdf_desc *d)
 {
-    if (m->type == SOAK_MAT_LAMBERT || (m->type == SOAK_MAT_WET && m->base == SOAK_BASE_LAMBERT)) {
+    if (m->type == SOAK_MAT_WET && m->base == SOAK_BASE_LAMBERT && m->coat_weight > 0) {
+        soak_bsdf_desc_default(d, SOAK_BSDF_COATED);
+        d->albedo = m->albedo;
+        d->eta = soak_rgb3(m->ior, m->ior, m->ior);
+        d->alpha = m->alpha;
+        d->coat_weight = m->coat_weight;
+    } else if (m->type == SOAK_MAT_LAMBERT || (m->type == SOAK_MAT_WET && m->base == SOAK_BASE_LAMBERT)) {
         soak_bsdf_desc_default(d, SOAK_BSDF_LAMBERT);
         d->albedo = m->albedo;
     } else if (m->type == SOAK_MAT_DIELECTRIC) {

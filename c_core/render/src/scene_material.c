@@ -438,6 +438,11 @@ static void preset_base(const preset_chain *pc, double m_per_unit, soak_material
          * scenes/README.md). */
         m->base = SOAK_BASE_LAMBERT;
         m->albedo = w->albedo_subsurface;
+        /* The material's own rough interface over that base (wetness.h step
+         * 6: GGX alpha of the chain, Merillou/Hnat weight 1 - porosity). */
+        m->ior = pc->ior;
+        m->alpha = w->ggx_alpha;
+        m->coat_weight = w->specular_weight;
     } else {
         /* Thin sheets keep their traced medium (translucency) under a smooth
          * boundary of the fibres' index: an index-matched boundary would match
@@ -459,8 +464,10 @@ static void preset_base(const preset_chain *pc, double m_per_unit, soak_material
  * documented key), converted here once to metres per unit. */
 static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
 {
-    static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", "base_colour", NULL};
+    static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", "base_colour",
+                                       "interface", NULL};
     preset_request r;
+    double interface = 1;
     soak_status st = sj_keys(c, j, path, keys);
     r.has_base = cJSON_GetObjectItemCaseSensitive(j, "base_colour") != NULL;
     if (st == SOAK_OK) st = sj_rgb(c, j, "base_colour", path, 0, 1, 0, soak_rgb3(0, 0, 0), &r.base);
@@ -471,6 +478,7 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     if (st == SOAK_OK) st = sj_num_gt(c, j, "unit_mm", path, 0, 1e9, 0, 1000, &unit_mm);
     r.m_per_unit = soak_m_from_mm(unit_mm);
     if (st == SOAK_OK) st = sj_str(c, j, "model", path, 0, &r.model);
+    if (st == SOAK_OK) st = sj_num(c, j, "interface", path, 0, 1, 0, 1, &interface);
     if (st != SOAK_OK) return st;
     preset_chain pc;
     st = eval_preset(c, path, &r, m, &pc);
@@ -484,6 +492,9 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     m->type = SOAK_MAT_WET;
     preset_film(&pc.w, r.m_per_unit, m);
     preset_base(&pc, r.m_per_unit, m);
+    /* "interface": 0 leaves the material's own specular interface out: what a
+     * front end draws with its highlights off (tests/povray/flat_ground.py) */
+    if (interface < 0.5) m->coat_weight = 0.0;
     if (!r.model) return SOAK_OK;
     char mp[320];
     sj_path(mp, sizeof mp, path, "model");

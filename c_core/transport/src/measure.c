@@ -3,6 +3,8 @@
  * form. */
 #include "soak/measure.h"
 
+#include "measure_internal.h"
+
 #include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
@@ -25,6 +27,9 @@ void soak_measure_setup_default(soak_measure_setup *s)
     s->base_albedo = 0.5;
     s->film_alpha = 0.0;
     s->film_thickness = 0.0;
+    s->coat_ior = 1.5;
+    s->coat_alpha = 0.1;
+    s->coat_weight = 1.0;
     s->albedo = 1.0;
     s->phase.g1 = 0.0;
     s->phase.g2 = 0.0;
@@ -42,7 +47,8 @@ void soak_measure_setup_default(soak_measure_setup *s)
 soak_status soak_measure_validate(const soak_measure_setup *s)
 {
     if (!s) return SOAK_ERR_NULL;
-    if (s->config != SOAK_MEASURE_FILM && s->config != SOAK_MEASURE_HALFSPACE && s->config != SOAK_MEASURE_SLAB)
+    if (s->config != SOAK_MEASURE_FILM && s->config != SOAK_MEASURE_HALFSPACE && s->config != SOAK_MEASURE_SLAB &&
+        s->config != SOAK_MEASURE_COATED)
         return SOAK_ERR_ARG;
     if (s->quantity != SOAK_MEASURE_R && s->quantity != SOAK_MEASURE_T) return SOAK_ERR_ARG;
     if (s->quantity == SOAK_MEASURE_T && s->config != SOAK_MEASURE_SLAB) return SOAK_ERR_ARG;
@@ -53,9 +59,13 @@ soak_status soak_measure_validate(const soak_measure_setup *s)
         s->max_events < 1)
         return SOAK_ERR_ARG;
     if (s->roulette != 0 && s->roulette != 1) return SOAK_ERR_ARG;
-    if (s->config == SOAK_MEASURE_FILM) {
+    if (s->config == SOAK_MEASURE_FILM || s->config == SOAK_MEASURE_COATED) {
         if (!soak_in_range(s->base_albedo, 0.0, 1.0) || !soak_in_range(s->film_alpha, 0.0, SOAK_FILM_MAX_ALPHA) ||
             !soak_in_range(s->film_thickness, 0.0, SOAK_FILM_MAX_THICKNESS))
+            return SOAK_ERR_ARG;
+        if (s->config == SOAK_MEASURE_COATED &&
+            (!soak_in_range(s->coat_ior, SOAK_MEASURE_MIN_IOR, SOAK_MEASURE_MAX_IOR) ||
+             !soak_in_range(s->coat_alpha, 1e-4, 1.0) || !soak_in_range(s->coat_weight, 0.0, 1.0)))
             return SOAK_ERR_ARG;
         return SOAK_OK;
     }
@@ -104,6 +114,7 @@ static soak_status trace_path(job *jb, soak_rng *rng, double *r_out, double *t_o
     *r_out = *t_out = *capped_w = 0.0;
     *events = 0;
     *capped = 0;
+    if (s->config == SOAK_MEASURE_COATED) return measure_coated_path(s, d, rng, r_out, events, capped);
     if (s->ior != 1.0) {
         /* Air to medium: eta = ior. */
         double cos_t;
@@ -191,7 +202,7 @@ static soak_status setup_job(const soak_measure_setup *s, job *jb)
     jb->slab.ior = s->ior;
     jb->slab.base_albedo = 0.0;
     jb->slab.diffuse_base = 0;
-    if (s->config == SOAK_MEASURE_FILM) {
+    if (s->config == SOAK_MEASURE_FILM || s->config == SOAK_MEASURE_COATED) {
         /* A purely absorbing layer over the base; geometry matters only
          * through absorption, so a non-absorbing film gets unit thickness. */
         int absorbing = s->film_alpha > 0.0 && s->film_thickness > 0.0;

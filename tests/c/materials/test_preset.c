@@ -87,7 +87,7 @@ static void check_shipped(void)
         check_true("limestone porosity in [Lag13]'s 30-45%", soak_in_range(lime->porosity, 0.30, 0.45));
         check_true("clay porosity in [Lag13]'s 40-50%", soak_in_range(clay->porosity, 0.40, 0.50));
         check_close("sand dry forward g ([JLD99])", sand->phase_dry.g1, 0.2, 0);
-        check_close("paper thickness 0.8 mm ([JLD99]), in m", paper->thickness_m, 0.8e-3, 1e-18);
+        check_close("paper thickness 80 g/m^2 / 800 kg/m^3 = 0.1 mm, in m", paper->thickness_m, 0.08 / 800.0, 1e-18);
         check_true("paper is a thin sheet", paper->kind == SOAK_KIND_THIN_SHEET);
         check_true("marble is non-porous", marble->kind == SOAK_KIND_NONPOROUS_DIELECTRIC);
         check_true("copper is a conductor", copper->kind == SOAK_KIND_CONDUCTOR);

@@ -6,7 +6,9 @@
  * (soak_wetness_albedo_sun, by reciprocity), where the film absorbs over its
  * thickness and the pore water over none; the estimate must agree within 4
  * standard errors + 2e-4 (the renderer in test_render_wet: + 1e-3). The
- * thick-film-everywhere estimate it replaces was 19 % low. */
+ * thick-film-everywhere estimate it replaces was 19 % low. The preset is
+ * taken with "interface": 0: the chain's directional total has no lobe of
+ * the material's own (that stack is tests/c/render/test_render_coated.c's). */
 #include <math.h>
 #include <stdio.h>
 
@@ -47,7 +49,7 @@ int main(void)
                        " \"camera\": {\"position\": [0, 0, 5], \"look_at\": [0, 0, 0], \"up\": [0, 1, 0]},"
                        " \"environment\": {\"type\": \"constant\", \"radiance\": 1},"
                        " \"materials\": {\"m\": {\"type\": \"preset\", \"name\": \"brick\", \"liquid\": \"coffee\","
-                       " \"wetness\": 0.5}},"
+                       " \"wetness\": 0.5, \"interface\": 0}},"
                        " \"objects\": [{\"type\": \"plane\", \"size\": [4, 4], \"material\": \"m\"}]}";
     if (check_true("brick and coffee", p && l) && check_status("chain", soak_wetness_eval(p, l, &in, &w), SOAK_OK) &&
         check_true("both a film and uncovered pore water",

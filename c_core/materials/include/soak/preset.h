@@ -23,7 +23,8 @@
  * albedo {rgb, source}, roughness {ggx_alpha_dry, ggx_alpha_wet, source},
  * ior {n, k, source}, porosity {alpha, s_p, source}, medium {sigma_t_per_mm,
  * source}, phase {dry {g1, g2, w}, wet {g1, g2, w}, source}, wetting {t_fill,
- * film_thickness_mm, source}, sheet {thickness_mm, source}, measured
+ * film_thickness_mm, source}, sheet {thickness_mm, or grammage_g_m2 and
+ * density_kg_m3 (thickness = grammage / density), source}, measured
  * {wet_dry_ratio, spread, dry_albedo, wetness, quantity, source}}; a liquid {name,
  * display_name, ior, sigma_a_per_mm, sigma_s_per_mm, source}.
  *

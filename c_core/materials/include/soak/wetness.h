@@ -79,7 +79,12 @@
  *    the pores adds a mirror-like specular of weight porosity * f. Front ends
  *    evaluating G_p multiply porosity by it. Hnat's removal of the pores'
  *    diffuse contribution (Eq. 2) is NOT applied: step 4 already darkens,
- *    and applying both would count the same effect twice.
+ *    and applying both would count the same effect twice. The reference
+ *    tracer renders this interface: a preset's surface is soak/bsdf.h
+ *    COATED (GGX of width ggx_alpha at the preset's index, weight
+ *    specular_weight, over the Lambertian body of albedo_subsurface; under
+ *    the liquid its index is n / n_liquid), traced facet by facet by
+ *    `soak measure --config coated` as a second method.
  *
  * Limitations: the semi-infinite formula is used for thin sheets too (their
  * front-lit albedo; translucency needs a volumetric renderer with sigma_s,

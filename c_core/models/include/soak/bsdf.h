@@ -23,6 +23,21 @@
  *                   one, else a one-sample mixture of a cosine lobe and GGX
  *                   visible normals at the model's roughness; a model's
  *                   mirror lobe (ww's film top) is the delta lobe.
+ *   COATED          a rough dielectric interface (GGX of width alpha, index
+ *                   eta, weight coat_weight = ks) over a Lambertian base of
+ *                   albedo A, the interfaces' light summed in closed form
+ *                   (bsdf_coated.c):
+ *                     f = ks f_ggx(wi, wo)
+ *                       + A (1 - ks E(wi)) (1 - ks E(wo)) / (pi (1 - A ks E_avg))
+ *                   E(mu): the GGX lobe's directional albedo, E_avg = 2 int E mu dmu.
+ *                   It is what a first-surface interface gives (the grains'
+ *                   facets of a granular material: light that is not reflected
+ *                   by the facets enters the body unrefracted, and light leaving
+ *                   the body meets the same facets from below and is sent back
+ *                   with the same probability ks E); soak measure --config coated
+ *                   traces that stack photon by photon. Energy: the directional
+ *                   albedo is ks E(wo) + (1 - ks E(wo)) A (1 - ks E_avg) / (1 - A ks E_avg)
+ *                   <= 1 for A <= 1 (= 1 at A = 1); symmetric in wi, wo.
  * A film (film_ior > 1) makes a LAMBERT / GGX base a layered BSDF: smooth
  * liquid of index n2 and Beer-Lambert absorption over the base, with every
  * interreflection between base and film underside ([JLD99] sec. 2.1 / 3.1,
@@ -60,8 +75,12 @@ typedef enum soak_bsdf_kind {
     SOAK_BSDF_GGX_CONDUCTOR,
     SOAK_BSDF_GGX_DIELECTRIC,
     SOAK_BSDF_GLASS,
-    SOAK_BSDF_MODEL
+    SOAK_BSDF_MODEL,
+    SOAK_BSDF_COATED
 } soak_bsdf_kind;
+
+/* Nodes of the COATED interface's albedo table E(mu), mu = i / (N - 1). */
+#define SOAK_BSDF_COAT_NODES 48
 
 /* What set-up reads; fields a kind does not use are ignored. */
 typedef struct soak_bsdf_desc {
@@ -69,6 +88,7 @@ typedef struct soak_bsdf_desc {
     soak_rgb albedo;   /* LAMBERT, [0, 1] */
     soak_rgb eta, k;   /* GGX: index relative to air; k = 0 for GGX_DIELECTRIC */
     double alpha;      /* GGX width, (0, 1]; below SOAK_GGX_ALPHA_MIN raised to it */
+    double coat_weight; /* COATED: ks, the interface's specular weight, [0, 1] */
     double ior;        /* GLASS, [1, 3] */
     const soak_model *model;      /* MODEL */
     soak_model_params params[3];  /* MODEL, per channel */
@@ -78,7 +98,8 @@ typedef struct soak_bsdf_desc {
     int film_traced;   /* 1: walk through the film even over Lambert */
 } soak_bsdf_desc;
 
-/* A desc of the given kind with neutral values (no film, alpha 0.1, ior 1.5). */
+/* A desc of the given kind with neutral values (no film, alpha 0.1, ior 1.5,
+ * coat_weight 1). */
 void soak_bsdf_desc_default(soak_bsdf_desc *d, soak_bsdf_kind kind);
 
 typedef struct soak_bsdf {
@@ -87,6 +108,8 @@ typedef struct soak_bsdf {
     int closed_film;    /* Lekner-Dorf closed form over Lambert */
     soak_film_ctx film[3];
     soak_model_ctx model[3];
+    double coat_E[3][SOAK_BSDF_COAT_NODES]; /* COATED: E(mu) per channel */
+    double coat_E_avg[3];                    /* 2 int E(mu) mu dmu of the interpolant */
 } soak_bsdf;
 
 typedef struct soak_bsdf_sample {

@@ -107,6 +107,11 @@ typedef struct soak_material {
                              * "pore_share" (default 0). Surface and medium bases, and soak advise's
                              * estimates (accuracy.h) */
     soak_base_type base;
+    /* a preset's lambert base: the material's own rough interface over it
+     * (soak/bsdf.h COATED: GGX of width alpha, index ior relative to air,
+     * specular weight coat_weight = 1 - porosity, wetness.h step 6); under
+     * the liquid its index is relative to the liquid. 0: no interface. */
+    double coat_weight;
     soak_scene_medium medium;     /* wet state (and dry when has_dry == 0) */
     soak_scene_medium dry_medium; /* base medium where the object is dry */
     int has_dry;

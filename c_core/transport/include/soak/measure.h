@@ -12,6 +12,15 @@
  *  - HALFSPACE: semi-infinite medium below z = 0, extinction 1 (lengths are
  *    optical depths), single-scattering albedo, two-term HG phase function,
  *    relative index ior with Fresnel boundary (1 = index-matched).
+ *  - COATED: the material's own rough interface over its body, as the
+ *    renderer's preset materials have it (soak/bsdf.h COATED): a GGX
+ *    microsurface of width coat_alpha and index coat_ior (relative to the
+ *    air; to the film's liquid under a film) whose facets reflect with
+ *    probability coat_weight x Fresnel and masking, over a Lambertian body
+ *    of albedo base_albedo, under a smooth film of index ior (1 = none) with
+ *    absorption film_alpha over film_thickness. Traced facet by facet
+ *    (measure_coated.c), first-surface: light leaving the body meets the
+ *    same facets from below.
  *  - SLAB: as HALFSPACE with optical thickness tau and the same interface
  *    at its bottom face; T = all light leaving downwards (unscattered beam
  *    included).
@@ -32,7 +41,8 @@
 typedef enum soak_measure_config {
     SOAK_MEASURE_FILM,
     SOAK_MEASURE_HALFSPACE,
-    SOAK_MEASURE_SLAB
+    SOAK_MEASURE_SLAB,
+    SOAK_MEASURE_COATED
 } soak_measure_config;
 
 typedef enum soak_measure_quantity {
@@ -58,6 +68,10 @@ typedef struct soak_measure_setup {
     double base_albedo;     /* [0, 1] */
     double film_alpha;      /* absorption coefficient 1/m, [0, 1e6] */
     double film_thickness;  /* m, [0, 1e3]; 0 = no absorption */
+    /* COATED (with base_albedo and the film's fields) */
+    double coat_ior;        /* [1, 3], relative to the air */
+    double coat_alpha;      /* GGX width [1e-4, 1] */
+    double coat_weight;     /* [0, 1] */
     /* HALFSPACE, SLAB */
     double albedo;          /* single-scattering albedo [0, 1] */
     soak_hg2 phase;
