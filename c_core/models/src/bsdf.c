@@ -52,8 +52,8 @@ static void layer_setup(soak_bsdf *b)
         b->closed_film = 1;
         return;
     }
-    b->d.eta = bsdf_rgb_scale(b->d.eta, 1.0 / n2);
-    b->d.k = bsdf_rgb_scale(b->d.k, 1.0 / n2);
+    b->d.eta = soak_rgb_scale(b->d.eta, 1.0 / n2);
+    b->d.k = soak_rgb_scale(b->d.k, 1.0 / n2);
     if (b->d.kind == SOAK_BSDF_COATED) bsdf_coated_tables(b); /* the interface is now material/liquid */
     b->flags |= SOAK_BSDF_WALK;
 }

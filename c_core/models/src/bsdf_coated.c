@@ -2,7 +2,7 @@
  *
  * The interface reflects the GGX single-scattering lobe of soak/ggx.h
  * (Walter et al. 2007, height-correlated Smith G2 of Heitz 2014) with weight
- * ks (the Merillou/Hnat specular weight, seed 002 Eq. 3 at G_p = 1); what it
+ * ks (the Merillou/Hnat specular weight, [Hnat06] Eq. 3 at G_p = 1); what it
  * does not reflect, 1 - ks E(wo), enters the base unrefracted. The base
  * sends A of it back up, cosine-distributed; there it meets the interface
  * from below, leaves with probability 1 - ks E(mu) or goes back down. The
@@ -155,6 +155,6 @@ int bsdf_coated_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak
     if (!(s->wi.z > 0)) return 0;
     s->pdf = coated_pdf(b, P, s->wi, wo);
     if (!(s->pdf > 0)) return 0;
-    s->weight = bsdf_rgb_scale(coated_f(b, s->wi, wo), s->wi.z / s->pdf);
+    s->weight = soak_rgb_scale(coated_f(b, s->wi, wo), s->wi.z / s->pdf);
     return 1;
 }

@@ -21,10 +21,6 @@ static inline double bsdf_fresnel(double cos_i, double eta, double *cos_t)
     return F;
 }
 
-/* The old names of soak/vec.h's soak_rgb_scale/_mul, for bsdf.c only
- * until its BSDF-contract rework lands (issue 36). */
-#define bsdf_rgb_scale soak_rgb_scale
-#define bsdf_rgb_mul soak_rgb_mul
 static inline soak_vec3 bsdf_mirror(soak_vec3 w) { return soak_v3(-w.x, -w.y, w.z); }
 
 /* Beer-Lambert transmittance of the film along a leg at cos (1 when the film does not absorb). */

@@ -108,11 +108,6 @@ static inline double rt_rand(rt_thread *t)
  * start a new Sobol pair so they are stratified jointly. */
 void rt_rand2(rt_thread *t, double *u1, double *u2);
 
-/* The old names of soak/vec.h's soak_rgb_mul/_scale/_add, for
- * render_surface.c only until its BSDF-contract rework lands (issue 36). */
-#define rgb_mul soak_rgb_mul
-#define rgb_scale soak_rgb_scale
-#define rgb_add soak_rgb_add
 /* fmax's result (a NaN argument is ignored) without the libm call, which
  * the compiler keeps unless NaN semantics are given up (-ffinite-math-only,
  * which would also break the isnan-based input checks). Signed zeros may

@@ -85,8 +85,8 @@ static void sample_lights(rt_thread *t, const soak_hit *hit, soak_vec3 ng, const
         if (!(rgb_max(fv) > 0)) continue;
         double mis = ls.pdf > 0 ? rt_power(ls.pdf, pdf) : 1.0;
         if (!rt_visible(t, p_out, ls.wi, ls.dist)) continue;
-        soak_rgb contrib = rgb_scale(rgb_mul(path->beta, rgb_mul(fv, ls.L)), l1.z * mis / (ls.pdf > 0 ? ls.pdf : 1.0));
-        path->L = rgb_add(path->L, contrib);
+        soak_rgb contrib = soak_rgb_scale(soak_rgb_mul(path->beta, soak_rgb_mul(fv, ls.L)), l1.z * mis / (ls.pdf > 0 ? ls.pdf : 1.0));
+        path->L = soak_rgb_add(path->L, contrib);
     }
 }
 
@@ -114,7 +114,7 @@ static void reflect(rt_thread *t, const soak_hit *hit, const soak_bsdf *b, rt_pa
         path->alive = 0;
         return;
     }
-    path->beta = rgb_mul(path->beta, s.weight);
+    path->beta = soak_rgb_mul(path->beta, s.weight);
     if (s.delta) continue_delta(path, hit, ng, &f, s.wi);
     else continue_path(path, hit, ng, rt_to_world(&f, s.wi), s.pdf);
 }
@@ -125,7 +125,7 @@ static int film_roulette(rt_thread *t, rt_path *path)
     double q = fmin(1.0, rt_rr_weight(path));
     if (q >= 1.0) return 1;
     if (rt_rand(t) >= q) return 0;
-    path->beta = rgb_scale(path->beta, 1.0 / q);
+    path->beta = soak_rgb_scale(path->beta, 1.0 / q);
     return 1;
 }
 
@@ -145,7 +145,7 @@ static void walk(rt_thread *t, const soak_hit *hit, const soak_bsdf *b, rt_path 
         continue_delta(path, hit, ng, &f, s.wi);
         return;
     }
-    path->beta = rgb_mul(path->beta, weight);
+    path->beta = soak_rgb_mul(path->beta, weight);
     for (int bounce = 0; bounce < RT_FILM_MAX_BOUNCES; ++bounce) {
         sample_lights(t, hit, ng, &f, wl, b, eval_walk, &w, path);
         double u[4];
@@ -153,7 +153,7 @@ static void walk(rt_thread *t, const soak_hit *hit, const soak_bsdf *b, rt_path 
         u[3] = rt_rand(t);
         ev = soak_bsdf_walk_step(b, &w, u, &s, &weight);
         if (ev == SOAK_WALK_DEAD) return;
-        path->beta = rgb_mul(path->beta, weight);
+        path->beta = soak_rgb_mul(path->beta, weight);
         if (ev == SOAK_WALK_EXIT) {
             path->alive = 1;
             continue_path(path, hit, ng, rt_to_world(&f, s.wi), s.pdf);
@@ -179,7 +179,7 @@ static void dielectric(rt_thread *t, const soak_hit *hit, const soak_material *m
     }
     path->dir = soak_v3_norm(rt_to_world(&f, s.wi));
     if (s.eta != 1.0) {
-        path->beta = rgb_mul(path->beta, s.weight);
+        path->beta = soak_rgb_mul(path->beta, s.weight);
         path->eta_scale *= s.eta * s.eta; /* kept out of roulette (rt_rr_weight) */
         path->inside = wo.z > 0;
         path->absorb = m->absorption;
