@@ -30,7 +30,7 @@
 
 SOAK_FN soak_clamp01(float x) { return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x); }
 
-/* Hnat et al. 2006 (seed 002 sec. 3.3.2): delivered liquid L = w P, the
+/* Hnat et al. 2006 ([Hnat06] sec. 3.3.2): delivered liquid L = w P, the
  * progress P = clamp((t - t0) / t_fill, 0, 1), a step at t0 when t_fill = 0
  * (soak/wetness.h step 1). */
 SOAK_FN soak_delivered(float wetness, float time, float t0, float t_fill)

@@ -3,13 +3,13 @@ scratch (no .blend) with the Soak add-on's operators, as an artist would:
 build a dry material, set the Wetness panel, Make Wet (Key Drying, Bake Wet
 Map where the scene needs them).
 
-  wet_paper_front / wet_paper_back  seed 000 sec. 4.1, Fig. 5
-  beach_rock                        seed 000 sec. 4.2, Fig. 6 (four states in one picture)
-  cognac_table                      seed 000 sec. 4.3, Fig. 7
-  bricks_drying                     seed 002 sec. 3.3 / Fig. 6 (drying, four frames)
-  bas_relief_rain                   seed 002 sec. 3.3.1 / Fig. 7 (rain bake with sky exposure)
-  flowerpot_porosity                seed 002 Fig. 5 (porosity sweep)
-  film_copper                       seed 001 (films over a dielectric ground; copper under water)
+  wet_paper_front / wet_paper_back  [JLD99] sec. 4.1, Fig. 5
+  beach_rock                        [JLD99] sec. 4.2, Fig. 6 (four states in one picture)
+  cognac_table                      [JLD99] sec. 4.3, Fig. 7
+  bricks_drying                     [Hnat06] sec. 3.3 / Fig. 6 (drying, four frames)
+  bas_relief_rain                   [Hnat06] sec. 3.3.1 / Fig. 7 (rain bake with sky exposure)
+  flowerpot_porosity                [Hnat06] Fig. 5 (porosity sweep)
+  film_copper                       [Lag13] (films over a dielectric ground; copper under water)
 
 Each build function empties the file, builds its scene and returns a list of
 renders: (name, [frames]); several frames are tiled 2 x 2 into one picture
@@ -417,7 +417,7 @@ def build_wet_paper(back_lit):
 
 
 def build_beach_rock():
-    """Seed 000 Fig. 6 (a)-(d) side by side, left to right: dry rock on dry
+    """[JLD99] Fig. 6 (a)-(d) side by side, left to right: dry rock on dry
     sand; rock wet at its foot on sand with the lines of the last waves;
     rock covered with water on the same sand; all soaked."""
     sc = _reset()
@@ -517,7 +517,7 @@ def _wood(name, scale=1.0, rough=0.2):
 
 
 def build_cognac_table():
-    """Seed 000 Fig. 7: cognac spilled from a tipped glass on a polished wood
+    """[JLD99] Fig. 7: cognac spilled from a tipped glass on a polished wood
     table. Cognac: the add-on's nearest liquid is cola (a caramel-coloured
     clear liquid, index 1.3325; the core has no measured cognac)."""
     sc = _reset()
@@ -566,7 +566,7 @@ def build_cognac_table():
 
 
 def build_bricks_drying():
-    """Seed 002 Fig. 6: a brick wall splashed with water (noise patches),
+    """[Hnat06] Fig. 6: a brick wall splashed with water (noise patches),
     drying over 40 frames (Key Drying), frames 1, 14, 27 and 40."""
     sc = _reset()
     wall = _plane("Wall", (3.2, 1.8), loc=(0, 0, 0.9), rot=(math.radians(90), 0, 0))
@@ -637,7 +637,7 @@ def _relief_heights(n):
 
 
 def build_bas_relief_rain():
-    """Seed 002 Fig. 7: rain on a carved stone panel under a cornice; the wet
+    """[Hnat06] Fig. 7: rain on a carved stone panel under a cornice; the wet
     map is the add-on's Bake Wet Map (soak bake rain, sheltered by the whole
     visible scene): ledges and the tops of the carvings catch the rain, the
     strip under the cornice stays dry."""
@@ -707,7 +707,7 @@ POROSITY_SWEEP = (("marble", 0.0), ("asphalt", 0.05), ("concrete", 0.25), ("bric
 
 
 def build_flowerpot_porosity():
-    """Seed 002 Fig. 5: the same terracotta pot, the same wetting (pores just
+    """[Hnat06] Fig. 5: the same terracotta pot, the same wetting (pores just
     full: Wetness = the preset's porosity, no film yet), with the wetting
     class of presets of increasing porosity, left to right: the more porous,
     the darker and glossier. The leftmost (porosity 0) stays dry."""
@@ -744,7 +744,7 @@ FILM_STEPS = (0.0, 0.25, 0.5, 0.75, 1.0)
 
 
 def build_film_copper():
-    """Seed 001: the same ground dry, with pores full, and under a growing
+    """[Lag13]: the same ground dry, with pores full, and under a growing
     water film (concrete tiles, back row; Wetness 0, 0.25 = concrete's
     porosity, then film coverage 1/3, 2/3, 1), and polished copper under the
     same wetness (front row; copper has no pores: the film grows from 0)."""

@@ -1,4 +1,4 @@
-// The beach rock in four wetness states (seed 000 sec. 4.2): dry, mixed (wet
+// The beach rock in four wetness states ([JLD99] sec. 4.2): dry, mixed (wet
 // below a wave line), pores full (the rock covered: darker, no film yet) and
 // all wet (a water film: darker and glossy).
 #version 3.7;

@@ -1,7 +1,7 @@
 // Cotton gauze lit from behind, rendered as POV-Ray participating media
 // (soak.inc's two-term Henyey-Greenstein media; a sheet thin enough for
 // POV-Ray's single scattering). Left: dry. Middle: wet with water (water in
-// the fibres makes the scattering more forward: brighter from behind, seed 000
+// the fibres makes the scattering more forward: brighter from behind, [JLD99]
 // sec. 4.1). Right: a coffee spill whose wetness is a `soak bake volume` df3
 // wetness volume (Use_Map=1, made by povray/render_scenes.sh: gauze_wet.png
 // -> gauze_vol.inc + gauze_vol_wetness.df3), else a round procedural spill.

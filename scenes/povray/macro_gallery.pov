@@ -4,7 +4,7 @@
 //     wetted by a round spill: the core's wetness function darkens each
 //     colour per channel;
 //   2 Soak_Wet_Material_Bumped + Soak_Spill_Normal: red wine spilled on oak,
-//     the raised rim a drying spill leaves (seed 000's cognac);
+//     the raised rim a drying spill leaves ([JLD99]'s cognac);
 //   3 Soak_Schedule_Fn: sand wetting from the left, frozen at Time = 0.5 (t0
 //     grows across the tile, t_fill = Soak_T_Fill("sand")): the wet front;
 //   4 Soak_Wet_Colour: the wet colour of a dry colour at parse time, as a

@@ -1,5 +1,5 @@
 // Wet paper, lit from the front (the wet spot is darker) or from behind
-// (Back=1: the wet spot is brighter), seed 000 sec. 4.1.
+// (Back=1: the wet spot is brighter), [JLD99] sec. 4.1.
 // povray +Iwet_paper.pov +Lpovray Declare=Back=1
 #version 3.7;
 #ifndef(Back) #declare Back = 0; #end

@@ -9,7 +9,7 @@
 //     one soak run's; every frame is rendered; where the map of a frame is dry
 //     the render equals the all-dry last frame's, where it is wet the render
 //     is darker, and the frames brighten as the map's mean wetness falls (wet
-//     materials are darker: seed 000). The blend file is made in 3.4 and
+//     materials are darker: [JLD99]). The blend file is made in 3.4 and
 //     opened by 4.3 and 5.2, as a farm's newer Workers would.
 // Usage: node flamenco_run.test.js REPO_ROOT SOAK_BINARY TMP_DIR
 "use strict";

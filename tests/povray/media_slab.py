@@ -26,7 +26,7 @@
    omega (1 - (1/2 - E3(tau)) / tau) for a slab of optical depth tau (uniform
    isotropic source; E3 the exponential integral), which bounds the shortfall
    (a one-sided budget, + 4 standard errors of the reference, + 0.01 table and
-   lobe split). Wet brighter than dry from behind in both (seed 000 sec. 4.1:
+   lobe split). Wet brighter than dry from behind in both ([JLD99] sec. 4.1:
    water makes the scattering more forward).
 3. A 20 um sheet of cotton soaked with coffee (whose absorption changes the
    medium with wetness) with the wetness from a `soak bake volume --format df3`

@@ -1,6 +1,6 @@
 """What the seed scenes must show (rendered small by povray/render_scenes.sh):
 wet paper darker than dry when lit from the front, brighter from behind
-(seed 000 sec. 4.1); the porosity sweep's wet pots darker as porosity grows;
+([JLD99] sec. 4.1); the porosity sweep's wet pots darker as porosity grows;
 the drying bricks lighter frame by frame; the gauze brighter from behind when
 wet (media, forward scattering) and the coffee spill of its df3 volume visible;
 the marble fins (subsurface) glow with the light crossing them from behind;

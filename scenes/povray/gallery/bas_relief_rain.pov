@@ -1,4 +1,4 @@
-// Gallery: a carved limestone panel after a shower (seed 002 sec. 3.3.1, Fig. 7). The
+// Gallery: a carved limestone panel after a shower ([Hnat06] sec. 3.3.1, Fig. 7). The
 // wet map is `soak bake rain` on the panel's own mesh (relief.obj, written with
 // relief.inc by relief_mesh.py; render_gallery.sh bakes it): ten minutes of fine rain
 // from the viewer's side and steeply above, no runoff (the stone takes the water where

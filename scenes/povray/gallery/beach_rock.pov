@@ -1,4 +1,4 @@
-// Gallery: the beach rock in four states (seed 000 sec. 4.2, Fig. 6 a-d, left to
+// Gallery: the beach rock in four states ([JLD99] sec. 4.2, Fig. 6 a-d, left to
 // right): dry; wet at its foot below the last wave's line; pores full; all wet with a
 // film. On sand wet up to the water line, in a low evening sun.
 #version 3.7;

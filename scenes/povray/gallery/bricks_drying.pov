@@ -1,4 +1,4 @@
-// Gallery: a brick wall drying after a splash (seed 002 sec. 3.3, Fig. 6): the start map
+// Gallery: a brick wall drying after a splash ([Hnat06] sec. 3.3, Fig. 6): the start map
 // of `soak bake drying --start-map` (1 - t0 on wet texels) read as written by
 // Soak_Drying_Map_Fn with the preset's fill time; Clock 0 .. 1 runs the animation (the
 // gallery shows four frames). The borders of the wet patches dry first.

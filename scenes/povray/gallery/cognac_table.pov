@@ -1,4 +1,4 @@
-// Gallery: spilled cognac on an oak table (seed 000 sec. 4.3, Fig. 7), against the
+// Gallery: spilled cognac on an oak table ([JLD99] sec. 4.3, Fig. 7), against the
 // light of a low sun through the window behind it (the mullions' shadows cross the
 // boards). The table is the user's own pigment, oak boards from POV-Ray's wood
 // pattern, wetted by the core's any-colour table (Soak_Wet_User_Texture_Fn): in the

@@ -1,4 +1,4 @@
-// Gallery: a sheet of paper with a wet blot (seed 000 sec. 4.1, Fig. 5), lying on an
+// Gallery: a sheet of paper with a wet blot ([JLD99] sec. 4.1, Fig. 5), lying on an
 // oak desk and lit from the front (the blot is darker), or (Declare=Back=1) held up
 // against a bright window, lit from behind (the blot is brighter: water lets more
 // light through the fibres).

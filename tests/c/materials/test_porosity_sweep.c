@@ -1,4 +1,4 @@
-/* Seed 002 (Hnat et al. 2006), Fig. 5: "when alpha_poro increases, surface
+/* [Hnat06] (Hnat et al. 2006), Fig. 5: "when alpha_poro increases, surface
  * becomes darker and more specular". The flowerpot sweep's set-up
  * (scenes/povray/flowerpot_porosity.pov): one terracotta colour
  * (0.555, 0.212, 0.11), pores just full (wetness = porosity, no film), under
@@ -83,7 +83,7 @@ int main(void)
             darker &= lum(wet[i]) < lum(wet[i - 1]);
             glossier &= mirror[i] > mirror[i - 1];
         }
-        check_true("wet pots darker with porosity (seed 002 Fig. 5)", darker);
+        check_true("wet pots darker with porosity ([Hnat06] Fig. 5)", darker);
         check_true("wet pots more specular with porosity: the water's mirror weight rises", glossier);
         double de = delta_e(wet[0], wet[N_SWEEP - 1]);
         char what[160];
