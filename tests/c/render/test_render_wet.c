@@ -394,7 +394,8 @@ static void test_preset_film_and_pores(void)
 }
 
 /* A user's colour wetted by a preset's class: the scene's "base_colour" must
- * trace what soak_wet_params_for_base says (its directional total). */
+ * trace what soak_wet_params_for_base says (its directional total, which has
+ * no lobe of the material's own interface: "interface": 0 leaves it out). */
 static void test_preset_base_colour(void)
 {
     soak_preset_db *db = NULL;
@@ -410,7 +411,8 @@ static void test_preset_base_colour(void)
         check_status("sun albedo", soak_wetness_albedo_sun(p, l, &w, 1.0, &dir, &total), SOAK_OK)) {
         char text[2048];
         sky_plane_scene(text, sizeof text, 0.0,
-                        "{\"type\": \"preset\", \"name\": \"sand\", \"wetness\": 0.5, \"base_colour\": [0.2, 0.45, 0.7]}");
+                        "{\"type\": \"preset\", \"name\": \"sand\", \"wetness\": 0.5, \"base_colour\": [0.2, 0.45, 0.7],"
+                        " \"interface\": 0}");
         double m, se;
         if (render_mean("sand class, blue-green colour", text, 65536, &m, &se)) {
             double ref = (total.r + total.g + total.b) / 3;
