@@ -474,7 +474,10 @@ soak_status soak_scene_parse(const char *text, const char *name, const char *bas
     }
     const char *dup = sj_duplicate_key(root);
     if (dup) {
-        if (err && errlen) snprintf(err, errlen, "%s: duplicate key \"%s\"", c.name, dup);
+        if (err && errlen) {
+            snprintf(err, errlen, "%s: duplicate key \"%s\"", c.name, dup);
+            soak_message_printable(err); /* the key comes from the file */
+        }
         cJSON_Delete(root);
         return SOAK_ERR_PARSE;
     }

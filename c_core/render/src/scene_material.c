@@ -651,5 +651,6 @@ soak_status soak_scene_set_model(soak_scene *scene, const char *material, const 
                     : (!md ? "no such model"
                            : (st == SOAK_ERR_UNSUPPORTED ? "no model describes it (dielectric, emitter or medium base)"
                                                          : soak_status_str(st))));
+    if (st != SOAK_OK && err && errlen) soak_message_printable(err);
     return st;
 }
