@@ -89,7 +89,7 @@ fi
 
 # ---- images ----
 "$PY" - "$D" <<'PY'
-import struct, sys, zlib
+import random, struct, sys, zlib
 d = sys.argv[1]
 def chunk(t, data=b"", length=None):
     n = len(data) if length is None else length
@@ -113,9 +113,43 @@ head, tail = png(65536, 1, zlib.compress(b"\0" + b"\xc8" * 65536))
 open(f"{d}/wide.png", "wb").write(head + tail)
 open(f"{d}/pnghead.png", "wb").write(head)
 open(f"{d}/hdrhead.hdr", "wb").write(b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n")
+# Genuine pixel data: zero rows with enough random rows to make the IDAT
+# N bytes (random bytes do not compress), so no padding is involved.
+def payload(w, h, n):
+    c, rnd, out = zlib.compressobj(9), random.Random(7), []
+    noisy = max(1, n // w)
+    for y in range(h):
+        body = bytes(rnd.getrandbits(8) for _ in range(w)) if y % (h // noisy) == 0 else b"\0" * w
+        out.append(c.compress(b"\0" + body))
+    return b"".join(out + [c.flush()])
+head, tail = png(16384, 16384, payload(16384, 16384, 1150000))
+open(f"{d}/dense1g.png", "wb").write(head + tail)
+head, tail = png(10800, 10800, payload(10800, 10800, 1650000))
+open(f"{d}/dense445.png", "wb").write(head + tail)
 PY
 bounded "padded PNG bomb" "bomb\.png: the PNG header claims 16384x16384x1 pixels \(1024 MiB as float\) from [0-9]+ bytes of pixel data \(IDAT\)" \
   -- "$SOAK" bake drying "$D/bomb.png" --time 0.5 -o "$D/o.png"
+# 1.5 MB of real pixel data decoding to 1 GiB of floats: render peaked at
+# 1.2 GB when the rule allowed 1024 float bytes per byte; at 256 it is refused.
+map_scene() { # map_scene MAP > scene
+  printf '{"camera": {"position": [0, -4, 0], "look_at": [0, 0, 0]}, "environment": {"type": "constant", "radiance": 1},
+ "materials": {"w": {"type": "wet", "base": {"type": "lambert", "albedo": 0.5}}},
+ "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "w", "wetness": {"type": "map", "file": "%s"}}]}\n' "$1"
+}
+map_scene dense1g.png >"$D/dense1g.json"
+bounded "1.5 MB of pixel data claiming 1 GiB" "dense1g\.png: the PNG header claims 16384x16384x1 pixels \(1024 MiB as float\) from [0-9]+ bytes of pixel data \(IDAT\): more than 256 float bytes" \
+  -- "$SOAK" render "$D/dense1g.json" "${R[@]:1}"
+# 1.9 MB decoding to 445 MiB of floats is within the rule: read, rendered
+# within 1 GB (the goal for any input under 2 MB).
+map_scene dense445.png >"$D/dense445.json"
+if [ "$asan" = 1 ]; then skip "a 445 MiB decode is not measured in a sanitizer build" "1.9 MB PNG decoding to 445 MiB"
+else
+  /usr/bin/time -o "$D/rss" -f '%M' timeout 120 "$SOAK" render "$D/dense445.json" "${R[@]:1}" >"$D/out" 2>"$SOAK_TMP/last.err"
+  rc=$?; kb=$(tail -n 1 "$D/rss")
+  [ "$rc" = 0 ] && ok "1.9 MB PNG decoding to 445 MiB: rendered" || bad "1.9 MB PNG decoding to 445 MiB: exit $rc: $(head -c 300 "$SOAK_TMP/last.err")"
+  if number "$kb" && [ "$kb" -lt "$ONE_GB_KB" ]; then ok "1.9 MB PNG decoding to 445 MiB: peak $kb KB < 1 GB"
+  else bad "1.9 MB PNG decoding to 445 MiB: peak '$kb' KB"; fi
+fi
 for ext in png tif jpg exr; do
   truncate -s 256M "$D/zeros.$ext"
   bounded "256 MiB of zeros named .$ext" "zeros\.$ext: not a valid [A-Za-z]+ file: it does not start with the [A-Za-z]+ signature" \
@@ -175,6 +209,16 @@ mkfifo "$D/fifo.bin"
 mesh_scene fifo_buf.gltf >"$D/fifo_buf.json"
 bounded "glTF buffer that is a FIFO" "fifo\.bin: cannot read this buffer named by .*fifo_buf\.gltf: it is a FIFO" \
   -- "$SOAK" render "$D/fifo_buf.json" "${R[@]:1}"
+# Binary glTF: the same buffer "uri" inside the GLB's JSON chunk (glTF 2.0 sec. 4.4).
+gltf fifo.bin | python3 -c '
+import struct, sys
+j = sys.stdin.buffer.read().rstrip(b"\n")
+j += b" " * (-len(j) % 4)
+sys.stdout.buffer.write(struct.pack("<4sII", b"glTF", 2, 12 + 8 + len(j)) + struct.pack("<I4s", len(j), b"JSON") + j)' \
+  >"$D/fifo_buf.glb"
+mesh_scene fifo_buf.glb >"$D/fifo_glb.json"
+bounded "GLB buffer that is a FIFO" "fifo\.bin: cannot read this buffer named by .*fifo_buf\.glb: it is a FIFO" \
+  -- "$SOAK" render "$D/fifo_glb.json" "${R[@]:1}"
 printf 'mtllib fifo.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >"$D/mtl.obj"
 mkfifo "$D/fifo.mtl"
 mesh_scene mtl.obj >"$D/mtl.json"

@@ -1,5 +1,5 @@
 /* The files a mesh names, checked before the reader opens them: a glTF's
- * buffers (the "uri" of each buffer that is not a data: URI) and an OBJ's
+ * or GLB's buffers (the "uri" of each buffer that is not a data: URI) and an OBJ's
  * material libraries ("mtllib" lines). Each must pass the input policy
  * (soak/input_file.h: a regular file; a FIFO would block Assimp's open
  * forever) and counts, with the mesh, against SOAK_MAX_MESH_MB; their
@@ -8,6 +8,7 @@
 #define _GNU_SOURCE
 #include <ctype.h>
 #include <errno.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -45,16 +46,13 @@ static soak_status add_file(const char *mesh, const char *name, const char *what
     return st;
 }
 
-static soak_status gltf_buffers(const char *path, soak_mesh_inputs *in, char *err, size_t errlen)
+/* Every buffer "uri" of a glTF JSON text that is not a data: URI. */
+static soak_status json_buffers(const char *path, const char *text, size_t n, soak_mesh_inputs *in, char *err,
+                                size_t errlen)
 {
-    char *text = NULL;
-    size_t n = 0;
-    if (in->total_bytes > GLTF_TEXT_MAX) return SOAK_OK;
-    soak_status st = soak_input_read(path, SOAK_INPUT_MESH, &text, &n, err, errlen);
-    if (st != SOAK_OK) return st;
     cJSON *j = cJSON_ParseWithLength(text, n);
-    free(text);
     const cJSON *buffers = cJSON_GetObjectItemCaseSensitive(j, "buffers"), *b;
+    soak_status st = SOAK_OK;
     cJSON_ArrayForEach(b, buffers)
     {
         const cJSON *uri = cJSON_GetObjectItemCaseSensitive(b, "uri");
@@ -63,6 +61,42 @@ static soak_status gltf_buffers(const char *path, soak_mesh_inputs *in, char *er
         if (st != SOAK_OK) break;
     }
     cJSON_Delete(j);
+    return st;
+}
+
+static soak_status gltf_buffers(const char *path, soak_mesh_inputs *in, char *err, size_t errlen)
+{
+    char *text = NULL;
+    size_t n = 0;
+    if (in->total_bytes > GLTF_TEXT_MAX) return SOAK_OK;
+    soak_status st = soak_input_read(path, SOAK_INPUT_MESH, &text, &n, err, errlen);
+    if (st != SOAK_OK) return st;
+    st = json_buffers(path, text, n, in, err, errlen);
+    free(text);
+    return st;
+}
+
+static uint32_t le32(const unsigned char *b)
+{
+    return (uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16 | (uint32_t)b[3] << 24;
+}
+
+/* Binary glTF (GLB, glTF 2.0 sec. 4.4): a 12-byte header, then the JSON
+ * chunk (length, type "JSON", text), whose buffers may name files as a
+ * .gltf's do. A file that is not a GLB is left to the reader's own error. */
+static soak_status glb_buffers(const char *path, soak_mesh_inputs *in, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return SOAK_OK; /* the mesh itself was checked: reported by the reader */
+    unsigned char head[20];
+    soak_status st = SOAK_OK;
+    if (fread(head, 1, sizeof head, f) == sizeof head && !memcmp(head, "glTF", 4) && !memcmp(head + 16, "JSON", 4)) {
+        uint32_t n = le32(head + 12);
+        char *text = n > 0 && (long long)n <= GLTF_TEXT_MAX && (long long)n + 20 <= in->total_bytes ? malloc(n) : NULL;
+        if (text && fread(text, 1, n, f) == n) st = json_buffers(path, text, n, in, err, errlen);
+        free(text);
+    }
+    fclose(f);
     return st;
 }
 
@@ -90,6 +124,7 @@ soak_status soak_mesh_external_files(const char *path, soak_mesh_inputs *in, cha
     soak_status st = soak_input_check_part(path, SOAK_INPUT_MESH, NULL, &in->total_bytes, err, errlen);
     if (st != SOAK_OK) return st;
     if (!strcasecmp(ext, "gltf")) return gltf_buffers(path, in, err, errlen);
+    if (!strcasecmp(ext, "glb")) return glb_buffers(path, in, err, errlen);
     if (!strcasecmp(ext, "obj")) return obj_materials(path, in, err, errlen);
     return SOAK_OK;
 }

@@ -45,14 +45,17 @@ void soak_image_free(soak_image *img);
 /* Compression-ratio rule: above SOAK_IMAGE_FREE_BYTES of float pixels, an
  * image may claim at most SOAK_IMAGE_MAX_RATIO float bytes per byte of its
  * compressed pixel data (PNG: the IDAT chunks; OpenEXR: the offset tables
- * and chunks after the headers; other formats: the whole file) (deflate's own limit is 1032:1 on the packed samples; 1024 float
- * bytes per file byte is 256:1 on 8-bit samples, 32:1 on 1-bit ones), so a
+ * and chunks after the headers; other formats: the whole file), so a
  * small file cannot make the reader allocate and decode gigabytes (a 249 KB
- * PNG claiming 16000 x 16000). Below the floor any ratio is allowed
- * (uniform masks compress far better). Inputs that are not regular files
+ * PNG claiming 16000 x 16000). 256 float bytes per byte is 64:1 on 8-bit
+ * samples and 8:1 on 1-bit ones (deflate's own limit is 1032:1 on the
+ * packed samples); it keeps any input under 2 MB below 512 MiB of float
+ * pixels, where 1024 let 1.15 MB of real pixel data decode to 1 GiB and
+ * `soak render` peak at 1.2 GB (issue 35). Below the floor any ratio is
+ * allowed (uniform masks compress far better). Inputs that are not regular files
  * are refused before they are opened. */
 #define SOAK_IMAGE_FREE_BYTES (256.0 * 1024.0 * 1024.0)
-#define SOAK_IMAGE_MAX_RATIO 1024.0
+#define SOAK_IMAGE_MAX_RATIO 256.0
 
 /* Reads any format OIIO reads, converting to float. err gets a message
  * naming the file on failure. A NaN or infinite pixel is an error
