@@ -41,7 +41,8 @@ static void usage(FILE *out)
             "  a mesh counts with the files it names; its reader's memory: SOAK_MESH_MEMORY_MB, time:\n"
             "  SOAK_MESH_TIMEOUT (s); working memory of a bake: SOAK_MAX_MEMORY_MB (default the larger\n"
             "  of 1024 MiB and 256 bytes per byte of compressed input); images: at most %d pixels a\n"
-            "  side and 1024 MiB as float. Inputs must be regular files (README: Outputs and inputs).\n",
+            "  side and 1024 MiB as float, their decoder's time: SOAK_IMAGE_TIMEOUT (s, default 10 + 1\n"
+            "  per MiB). Inputs must be regular files (README: Outputs and inputs).\n",
             SOAK_IMAGE_MAX_SIDE);
     fprintf(out,
             "\nother options:\n"

@@ -161,6 +161,10 @@ bounded "PNG header + 2 GiB of zeros" "pnghead\.png: PNG chunk 1 at byte 33 has 
 bounded "HDR header + 2 GiB of zeros" "hdrhead\.hdr: Radiance HDR header without its end" \
   -- "$SOAK" bake drying "$D/hdrhead.hdr" --time 0.5 -o "$D/o.png"
 "$SOAK" bake turbulence --width 64 --height 64 -o "$D/t.png" 2>/dev/null || bad "fixture t.png"
+# Image reads have a time limit (the decoder runs in a child): a limit of
+# 1 us has passed before the child has started, every time.
+bounded "image reader past its time limit" "t\.png: the image reader did not finish within 1e-06 s: .*\(SOAK_IMAGE_TIMEOUT sets the limit\)" \
+  -- env SOAK_IMAGE_TIMEOUT=1e-6 "$SOAK" bake drying "$D/t.png" --time 0.5 -o "$D/o.png"
 "$PY" - "$D" <<'PY'
 import sys
 d = sys.argv[1]

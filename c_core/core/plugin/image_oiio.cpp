@@ -14,6 +14,7 @@
 #include <cstring>
 #include <exception>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -52,21 +53,6 @@ float srgb_encode(float v)
     return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
-// The pixels of soak_image_alloc (core/src/image.c), which frees them.
-soak_status alloc_pixels(soak_image *img, int width, int height, int channels)
-{
-    if (!(width >= 1 && width <= 65536 && height >= 1 && height <= 65536 && channels >= 1 && channels <= 4))
-        return SOAK_ERR_ARG;
-    img->pixels = (float *)std::calloc((size_t)width * height * channels, sizeof(float));
-    if (!img->pixels) return SOAK_ERR_NOMEM;
-    img->width = width;
-    img->height = height;
-    img->channels = channels;
-    return SOAK_OK;
-}
-
-// Header checks before any decoding (soak/image.h's limits), then the
-// pixels as float.
 // The reader path's extension names, opened on path, and no other:
 // ImageInput::open(path) tries every reader OIIO has after the named one
 // refuses the file (its DICOM reader walked 256 MiB of zeros for 18.5 s).
@@ -87,11 +73,9 @@ std::unique_ptr<ImageInput> open_named_reader(const char *path, char *err, size_
     return in;
 }
 
-soak_status read_image(const char *path, long long payload_bytes, soak_image *img, char *err, size_t errlen)
+// soak/image.h's limits on the header of an open reader.
+soak_status check_spec(const char *path, const ImageSpec &spec, long long payload_bytes, char *err, size_t errlen)
 {
-    auto in = open_named_reader(path, err, errlen);
-    if (!in) return SOAK_ERR_IO;
-    const ImageSpec &spec = in->spec();
     if (spec.width > SOAK_IMAGE_MAX_SIDE || spec.height > SOAK_IMAGE_MAX_SIDE) {
         set_err(err, errlen, std::string(path) + ": a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                                  " image is larger than " + std::to_string(SOAK_IMAGE_MAX_SIDE) +
@@ -122,14 +106,37 @@ soak_status read_image(const char *path, long long payload_bytes, soak_image *im
                                  " MiB (a decompression bomb or a corrupt header)");
         return SOAK_ERR_ARG;
     }
-    soak_status st = alloc_pixels(img, spec.width, spec.height, ch);
-    if (st != SOAK_OK) {
-        set_err(err, errlen, std::string(path) + ": image size out of range or out of memory");
-        return st;
-    }
-    if (!in->read_image(0, 0, 0, ch, TypeDesc::FLOAT, img->pixels)) {
-        set_err(err, errlen, std::string(path) + ": truncated or unreadable image data: " + in->geterror());
-        return SOAK_ERR_IO;
+    return SOAK_OK;
+}
+
+// The pixels as float, a band of rows at a time, to the sink: the reader's
+// own buffers stay native (8-bit PNG: a quarter of the floats).
+soak_status read_to_sink(const char *path, long long payload_bytes, const soak_image_sink *sink, char *err,
+                         size_t errlen)
+{
+    auto in = open_named_reader(path, err, errlen);
+    if (!in) return SOAK_ERR_IO;
+    const ImageSpec spec = in->spec();
+    soak_status st = check_spec(path, spec, payload_bytes, err, errlen);
+    if (st != SOAK_OK) return st;
+    int ch = spec.nchannels < 4 ? spec.nchannels : 4;
+    if (sink->begin(sink->ctx, spec.width, spec.height, ch) != 0) return SOAK_ERR_IO;
+    size_t row = (size_t)spec.width * ch;
+    // Tiled files (.tx) are read whole: read_scanlines on them raised
+    // SIGFPE in OpenImageIO 2.4.
+    int band = spec.tile_width > 0 ? spec.height
+                                   : (int)std::max<size_t>(1, ((size_t)4 << 20) / (row * sizeof(float)));
+    std::vector<float> buf((size_t)std::min(band, spec.height) * row);
+    for (int y = 0; y < spec.height; y += band) {
+        int n = std::min(band, spec.height - y);
+        bool ok = band == spec.height
+                      ? in->read_image(0, 0, 0, ch, TypeDesc::FLOAT, buf.data())
+                      : in->read_scanlines(0, 0, spec.y + y, spec.y + y + n, 0, 0, ch, TypeDesc::FLOAT, buf.data());
+        if (!ok) {
+            set_err(err, errlen, std::string(path) + ": truncated or unreadable image data: " + in->geterror());
+            return SOAK_ERR_IO;
+        }
+        if (sink->rows(sink->ctx, buf.data(), (size_t)n * row) != 0) return SOAK_ERR_IO;
     }
     in->close();
     return SOAK_OK;
@@ -296,11 +303,26 @@ soak_status probe_image(const char *path, int *width, int *height, int *channels
     return SOAK_OK;
 }
 
-// The table's entries: C++ exceptions (allocation failures) become status codes.
-soak_status plugin_read(const char *path, long long payload_bytes, soak_image *img, char *err, size_t errlen)
+// No worker threads in the library: reads run in a forked child
+// (core/src/image_contain.c), which inherits the pools' bookkeeping but not
+// their threads, so an EXR read after an EXR write waited forever for
+// OpenEXR's workers. Our images are read and written whole, once.
+void no_worker_threads()
 {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        OIIO::attribute("threads", 1);
+        OIIO::attribute("exr_threads", -1);
+    });
+}
+
+// The table's entries: C++ exceptions (allocation failures) become status codes.
+soak_status plugin_read_to(const char *path, long long payload_bytes, const soak_image_sink *sink, char *err,
+                           size_t errlen)
+{
+    no_worker_threads();
     try {
-        return read_image(path, payload_bytes, img, err, errlen);
+        return read_to_sink(path, payload_bytes, sink, err, errlen);
     } catch (const std::exception &e) {
         set_err(err, errlen, std::string(path) + ": cannot read image: " + e.what());
         return SOAK_ERR_NOMEM;
@@ -309,6 +331,7 @@ soak_status plugin_read(const char *path, long long payload_bytes, soak_image *i
 
 soak_status plugin_probe(const char *path, int *width, int *height, int *channels, char *err, size_t errlen)
 {
+    no_worker_threads();
     try {
         return probe_image(path, width, height, channels, err, errlen);
     } catch (const std::exception &e) {
@@ -320,6 +343,7 @@ soak_status plugin_probe(const char *path, int *width, int *height, int *channel
 soak_status plugin_encode(const char *path, const char *ext, const soak_image *img, const soak_image_write_opts *opts,
                           unsigned char **bytes, size_t *n_bytes, char *err, size_t errlen)
 {
+    no_worker_threads();
     try {
         return encode_image(path, ext, img, opts, bytes, n_bytes, err, errlen);
     } catch (const std::exception &e) {
@@ -330,6 +354,7 @@ soak_status plugin_encode(const char *path, const char *ext, const soak_image *i
 
 soak_status plugin_write_tx(const char *tmp, const char *path, const soak_image *img, char *err, size_t errlen)
 {
+    no_worker_threads();
     try {
         return write_tx(tmp, path, img, err, errlen);
     } catch (const std::exception &e) {
@@ -340,5 +365,5 @@ soak_status plugin_write_tx(const char *tmp, const char *path, const soak_image 
 
 } // namespace
 
-extern "C" __attribute__((visibility("default"))) const soak_image_plugin soak_image_plugin_v2 = {
-    plugin_read, plugin_probe, plugin_encode, plugin_write_tx};
+extern "C" __attribute__((visibility("default"))) const soak_image_plugin soak_image_plugin_v3 = {
+    plugin_read_to, plugin_probe, plugin_encode, plugin_write_tx};

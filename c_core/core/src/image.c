@@ -11,6 +11,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "image_contain.h"
 #include "image_plugin.h"
 #include "stderr_capture.h"
 #include "soak/image_check.h"
@@ -107,10 +108,7 @@ soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t
     if (st != SOAK_OK) return st;
     const soak_image_plugin *p = image_plugin(path, err, errlen);
     if (!p) return SOAK_ERR_UNSUPPORTED;
-    soak_stderr_capture quiet;
-    soak_stderr_capture_begin(&quiet);
-    st = p->read(path, payload, img, err, errlen);
-    soak_stderr_capture_end(&quiet);
+    st = soak_image_read_contained(p, path, payload, img, err, errlen);
     if (st != SOAK_OK) {
         one_line(err, errlen);
         soak_image_free(img);

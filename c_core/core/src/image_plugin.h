@@ -1,8 +1,9 @@
 /* The table libsoak_image.so (core/plugin/image_oiio.cpp, OpenImageIO)
- * exports as soak_image_plugin_v2; image.c calls it after the checks that
- * need no image library. The module calls nothing of libsoak: pixels it
- * returns are calloc'ed (soak_image_free frees them), encoded bytes
- * malloc'ed (the caller frees them). No C++ exception leaves it. */
+ * exports as soak_image_plugin_v3; image.c calls it after the checks that
+ * need no image library, in a child process with a time limit
+ * (image_contain.c). The module calls nothing of libsoak: pixels go to the
+ * caller's sink, encoded bytes are malloc'ed (the caller frees them). No
+ * C++ exception leaves it. */
 #ifndef SOAK_IMAGE_PLUGIN_H
 #define SOAK_IMAGE_PLUGIN_H
 
@@ -10,13 +11,23 @@
 
 #include "soak/image.h"
 
+/* Where a read delivers its pixels: begin once with the size, then rows
+ * in order as floats, channels interleaved; a non-zero return stops the
+ * read (the sink has set nothing: the caller knows why). */
+typedef struct soak_image_sink {
+    void *ctx;
+    int (*begin)(void *ctx, int width, int height, int channels);
+    int (*rows)(void *ctx, const float *values, size_t n_values);
+} soak_image_sink;
+
 typedef struct soak_image_plugin {
     /* Decodes path (a regular file whose compressed pixel data is
-     * payload_bytes, soak/image_check.h) into img (channels capped at 4)
+     * payload_bytes, soak/image_check.h) to sink (channels capped at 4)
      * with the reader its extension names and no other, refusing from the
      * header what soak/image.h's limits refuse. Finite values are checked
      * by the caller. */
-    soak_status (*read)(const char *path, long long payload_bytes, soak_image *img, char *err, size_t errlen);
+    soak_status (*read_to)(const char *path, long long payload_bytes, const soak_image_sink *sink, char *err,
+                           size_t errlen);
     /* The size and channels (capped at 4) the header of path declares,
      * through the same reader as read, without decoding pixels. */
     soak_status (*probe)(const char *path, int *width, int *height, int *channels, char *err, size_t errlen);
@@ -30,6 +41,6 @@ typedef struct soak_image_plugin {
 } soak_image_plugin;
 
 #define SOAK_IMAGE_PLUGIN_FILE "libsoak_image.so"
-#define SOAK_IMAGE_PLUGIN_SYMBOL "soak_image_plugin_v2"
+#define SOAK_IMAGE_PLUGIN_SYMBOL "soak_image_plugin_v3"
 
 #endif

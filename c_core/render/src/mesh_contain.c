@@ -41,6 +41,7 @@
 #include <unistd.h>
 
 #include "mesh_import.h"
+#include "soak/child_process.h"
 #include "soak/input_file.h"
 
 /* The time limit is the last line of defence after mesh_check.c: a fixed
@@ -48,7 +49,6 @@
  * release build; a sanitizer build about ten times slower). */
 #define TIMEOUT_BASE_S 10.0
 #define TIMEOUT_S_PER_MIB 1.0
-#define TIMEOUT_MAX_S 1e6
 #define MEMORY_BASE_MIB 1024.0
 #define MEMORY_PER_BYTE 32.0
 #define CHILD_STDERR_MAX (64 << 10)
@@ -76,26 +76,6 @@ int soak_mesh_format_ok(const char *path)
     for (size_t i = 0; i < sizeof ok / sizeof ok[0]; ++i)
         if (strcasecmp(dot + 1, ok[i]) == 0) return 1;
     return 0;
-}
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
-/* Seconds the import of a file of size bytes may take: SOAK_MESH_TIMEOUT
- * when set to a number in (0, 1e6], else proportional to the size. */
-static double timeout_s(long long size)
-{
-    double t = TIMEOUT_BASE_S + TIMEOUT_S_PER_MIB * (double)size / 1048576.0;
-    if (t > TIMEOUT_MAX_S) t = TIMEOUT_MAX_S;
-    const char *e = getenv("SOAK_MESH_TIMEOUT");
-    if (!e || !*e) return t;
-    char *end = NULL;
-    double user = strtod(e, &end);
-    return (*end == '\0' && user > 0 && user <= TIMEOUT_MAX_S) ? user : t;
 }
 
 /* Bytes the reader's address space may grow by: SOAK_MESH_MEMORY_MB when
@@ -131,41 +111,6 @@ static void limit_memory(double budget)
 #endif
 }
 
-static int write_all(int fd, const void *data, size_t n)
-{
-    const char *p = data;
-    while (n > 0) {
-        ssize_t w = write(fd, p, n);
-        if (w < 0 && errno == EINTR) continue;
-        if (w <= 0) return -1;
-        p += w;
-        n -= (size_t)w;
-    }
-    return 0;
-}
-
-/* 0 when n bytes arrived before the deadline, -1 on EOF/error, -2 on
- * timeout, -3 when a caught signal interrupted the wait. */
-static int read_all(int fd, void *data, size_t n, double deadline)
-{
-    char *p = data;
-    while (n > 0) {
-        double left = deadline - now_s();
-        if (left <= 0) return -2;
-        struct pollfd pfd = {fd, POLLIN, 0};
-        int r = poll(&pfd, 1, left > 1e6 ? 1000000000 : (int)(left * 1000) + 1);
-        if (r < 0 && errno == EINTR) return -3; /* a signal the process catches: an interrupt */
-        if (r < 0) return -1;
-        if (r == 0) continue;
-        ssize_t got = read(fd, p, n);
-        if (got < 0 && errno == EINTR) continue;
-        if (got <= 0) return -1;
-        p += got;
-        n -= (size_t)got;
-    }
-    return 0;
-}
-
 static void child_main(int fd, int err_fd, double budget, const char *path, int require_uvs, pid_t parent)
 {
     /* Dies with the parent; the check after it catches a parent that died
@@ -189,12 +134,13 @@ static void child_main(int fd, int err_fd, double budget, const char *path, int 
         h.n_triangles = m.n_triangles;
         h.has_uvs = m.uvs != NULL;
     }
-    int bad = write_all(fd, &h, sizeof h);
+    int bad = soak_write_all(fd, &h, sizeof h);
     if (!bad && h.status == SOAK_OK) {
         size_t nv = m.n_vertices, nt = m.n_triangles;
-        bad = write_all(fd, m.positions, 3 * nv * sizeof(double)) || write_all(fd, m.normals, 3 * nv * sizeof(double)) ||
-              (m.uvs && write_all(fd, m.uvs, 2 * nv * sizeof(double))) ||
-              write_all(fd, m.indices, 3 * nt * sizeof(unsigned));
+        bad = soak_write_all(fd, m.positions, 3 * nv * sizeof(double)) ||
+              soak_write_all(fd, m.normals, 3 * nv * sizeof(double)) ||
+              (m.uvs && soak_write_all(fd, m.uvs, 2 * nv * sizeof(double))) ||
+              soak_write_all(fd, m.indices, 3 * nt * sizeof(unsigned));
     }
     _exit(bad ? 3 : 0); /* no atexit handlers, no leak report for Assimp's state */
 }
@@ -267,9 +213,9 @@ static void child_fate(const reader *r, int timed_out, char *err, size_t errlen)
 static soak_status receive(int fd, const reader *rd, double deadline, soak_mesh *out, char *err, size_t errlen)
 {
     reply_header h;
-    int r = read_all(fd, &h, sizeof h, deadline);
+    int r = soak_read_all(fd, &h, sizeof h, deadline);
     if (r != 0) {
-        child_fate(rd, r == -2 ? 1 : r == -3 ? -3 : 0, err, errlen);
+        child_fate(rd, r == SOAK_READ_TIMEOUT ? 1 : r == SOAK_READ_INTERRUPTED ? -3 : 0, err, errlen);
         return SOAK_ERR_PARSE;
     }
     h.message[sizeof h.message - 1] = '\0';
@@ -302,13 +248,13 @@ static soak_status receive(int fd, const reader *rd, double deadline, soak_mesh 
                      (unsigned long long)h.n_vertices, (unsigned long long)h.n_triangles);
         return SOAK_ERR_NOMEM;
     }
-    r = read_all(fd, m.positions, 3 * m.n_vertices * sizeof(double), deadline);
-    if (!r) r = read_all(fd, m.normals, 3 * m.n_vertices * sizeof(double), deadline);
-    if (!r && m.uvs) r = read_all(fd, m.uvs, 2 * m.n_vertices * sizeof(double), deadline);
-    if (!r) r = read_all(fd, m.indices, 3 * m.n_triangles * sizeof(unsigned), deadline);
+    r = soak_read_all(fd, m.positions, 3 * m.n_vertices * sizeof(double), deadline);
+    if (!r) r = soak_read_all(fd, m.normals, 3 * m.n_vertices * sizeof(double), deadline);
+    if (!r && m.uvs) r = soak_read_all(fd, m.uvs, 2 * m.n_vertices * sizeof(double), deadline);
+    if (!r) r = soak_read_all(fd, m.indices, 3 * m.n_triangles * sizeof(unsigned), deadline);
     if (r != 0) {
         soak_mesh_free(&m);
-        child_fate(rd, r == -2 ? 1 : r == -3 ? -3 : 0, err, errlen);
+        child_fate(rd, r == SOAK_READ_TIMEOUT ? 1 : r == SOAK_READ_INTERRUPTED ? -3 : 0, err, errlen);
         return SOAK_ERR_PARSE;
     }
     child_fate(rd, 0, NULL, 0);
@@ -385,11 +331,12 @@ soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, c
     soak_status st = open_and_check(path, &size, &in, err, errlen);
     if (st == SOAK_OK) st = soak_mesh_reader_open(path, err, errlen); /* in the parent: the child only imports */
     if (st != SOAK_OK) return st;
-    reader r = {-1, -1, timeout_s(in.stored_bytes), memory_budget(in.stored_bytes), path};
+    double limit_s = soak_time_limit_s("SOAK_MESH_TIMEOUT", TIMEOUT_BASE_S, TIMEOUT_S_PER_MIB, in.stored_bytes);
+    reader r = {-1, -1, limit_s, memory_budget(in.stored_bytes), path};
     int fds[2];
     st = start_reader(&r, fds, require_uvs, err, errlen);
     if (st != SOAK_OK) return st;
-    st = receive(fds[0], &r, now_s() + r.limit_s, mesh, err, errlen);
+    st = receive(fds[0], &r, soak_monotonic_s() + r.limit_s, mesh, err, errlen);
     close(fds[0]);
     if (r.err_fd >= 0) close(r.err_fd);
     return st;
