@@ -57,7 +57,7 @@ static const cli_opt rain_opts[] = {
      .help = "also write the sky exposure (1 = open horizontal surface)"},
     {"--water", NULL, CLI_OPT_STRING, F(water_path), .meta = "PATH", .help = "also write the water depth (m)"},
     {"--film", NULL, CLI_OPT_STRING, F(film_path), .meta = "PATH",
-     .help = "also write the falling film thickness on slopes while rain falls (m)"},
+     .help = "also write the falling film thickness while rain falls (m; use .exr)"},
     {"--no-film", NULL, CLI_OPT_FLAG, .flag = 1, F(no_film),
      .help = "no falling film: slopes keep only the flat film times n.up (walls drain)"},
     {"--rays", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RAIN_MAX_RAYS, F(p.rays), .meta = "N",
@@ -111,8 +111,8 @@ static void usage(FILE *out)
             "that fills concave upward-facing regions (puddles); inclined, vertical and\n"
             "overhanging faces keep the laminar film (Nusselt 1916) of the water running over\n"
             "them, thicker where the flow collects (streaks), dripping off at overhangs.\n"
-            "Lengths in the mesh unit\n"
-            "(metres), times in seconds. Same seed, same bytes, on any number of threads.\n"
+            "Lengths in the mesh unit (metres), times in seconds. Same seed, same bytes, on\n"
+            "any number of threads.\n"
             "-o is the wetness map, w = 1 - exp(-depth/saturation).\n\n"
             "options:\n");
     const cli_opt_table tables[] = RAIN_TABLES(NULL, NULL);
@@ -242,7 +242,11 @@ int soak_bake_rain_main(int argc, char **argv)
     const char *paths[4] = {o.output, a.exposure_path, a.water_path, a.film_path};
     const soak_image *imgs[4] = {&res.wetness, &res.exposure, &res.water, &res.film};
     rc = write_outputs(paths, imgs, 4);
-    soak_rain_result_free(&res);
     if (rc == SOAK_EXIT_OK) printf("%s: %ldx%ld rain wetness from %s\n", o.output, o.width, o.height, a.mesh_path);
+    const soak_rain_runoff *r = &res.runoff;
+    if (rc == SOAK_EXIT_OK && r->in > 0.0) /* m^3/s -> L/h */
+        printf("steady rain on the mesh %.4g L/h: %.1f %% drips off, %.1f %% collects in puddles, %.1f %% evaporates\n",
+               r->in * 3.6e6, 100.0 * r->dripped / r->in, 100.0 * r->held / r->in, 100.0 * r->evaporated / r->in);
+    soak_rain_result_free(&res);
     return rc;
 }

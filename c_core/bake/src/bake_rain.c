@@ -196,7 +196,9 @@ static void connect_row(void *ctx, int y, int thread)
         }
         /* Steepest-descent step leaves the surface: an open edge. */
         if (best >= 0 && !(s->adj[i] >> best & 1u)) s->drip[i] = (float)best_drop;
-        if (soak_v3_dot(n, up) <= 0.0) s->drip[i] = -1.0f; /* faces down: everything mobile drips */
+        /* Faces down (an overhang): everything mobile drips. A vertical face
+         * (n.up = 0 up to the float normal's rounding) carries its film down. */
+        if (soak_v3_dot(n, up) < -SOAK_RAIN_OVERHANG_TOL) s->drip[i] = -1.0f;
     }
 }
 

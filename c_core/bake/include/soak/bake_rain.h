@@ -47,7 +47,8 @@
  *      s = p.up + depth, at most half the largest level difference per
  *      iteration (so levels never cross: flat puddles form in concave,
  *      upward-facing regions). A texel whose downhill direction leads off
- *      the surface (an open edge) or that faces down drains its mobile water
+ *      the surface (an open edge) or that faces down (n.up < -1e-6, an
+ *      overhang; an exactly vertical face is not one) drains its mobile water
  *      off the mesh (drips). flow_iterations routing sweeps per step.
  *    - falling film (film = 1): a face steeper than flat keeps, besides
  *      the static film retention * max(0, n.up), the film that runs over it
@@ -115,6 +116,9 @@ typedef enum soak_rain_sky {
 #define SOAK_RAIN_WATER_DENSITY 998.2
 #define SOAK_RAIN_GRAVITY 9.80665
 #define SOAK_RAIN_FILM_MAX 1e-3
+/* n.up below -this is an overhang (drips); float normals round n.up of a
+ * vertical face to ~1e-7. */
+#define SOAK_RAIN_OVERHANG_TOL 1e-6
 
 typedef struct soak_rain_params {
     uint64_t seed;
