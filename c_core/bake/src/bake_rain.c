@@ -386,6 +386,58 @@ static soak_status add_film(const rain_surface *s, const soak_rain_params *p, co
     return st;
 }
 
+/* What moves the water of a step: the sweeps and, with the film, the
+ * cascade down the slopes (its order and scratch; order NULL without). */
+typedef struct water_flow {
+    const soak_rain_flow_grid *grid;
+    soak_rain_flow_plan *plan;
+    size_t *order, count;
+    double *inflow;
+    unsigned char *fast; /* 1 where the film is thicker than the static retention */
+    double sigma_texels, evaporation;
+} water_flow;
+
+/* Step `step` of step 3: drops, splat, cascade, sweeps, evaporation. */
+static soak_status rain_step(water_job *j, const water_flow *f, int step, const soak_bake_exec *exec)
+{
+    const rain_surface *s = j->s;
+    size_t n = (size_t)s->w * s->h;
+    double lo = 0.7 + 0.3 * step / j->p->steps, dripped;
+    j->step_seed = soak_seed_derive(j->p->seed, (uint64_t)step + 1);
+    soak_status st = soak_parallel_rows(s->h, exec, drops_row, j, lo, lo);
+    if (st == SOAK_OK && f->sigma_texels >= 0.3) {
+        soak_image in = {s->w, s->h, 1, j->deposit}, blurred = {0, 0, 0, NULL};
+        st = soak_map_blur(&in, fmin(f->sigma_texels, 1000.0), 0, exec, &blurred);
+        if (st == SOAK_OK) memcpy(j->deposit, blurred.pixels, n * sizeof *j->deposit);
+        soak_image_free(&blurred);
+    }
+    if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, add_deposit_row, j, lo, lo);
+    if (st == SOAK_OK && f->order)
+        st = soak_rain_flow_cascade(f->grid, f->fast, f->order, f->count, j->depth, f->inflow, &dripped);
+    if (st == SOAK_OK) st = soak_rain_flow_run(f->plan, j->depth, j->p->flow_iterations, exec, lo, lo);
+    j->evaporation = f->evaporation;
+    if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, evaporate_row, j, lo, lo);
+    return st;
+}
+
+/* The film (step 3b) and what the cascade needs, when the film is on and
+ * the water flows at all. */
+static soak_status prepare_film(const rain_surface *s, const soak_rain_params *p, const float *exposure,
+                                water_job *j, water_flow *f, double *film, soak_rain_runoff *runoff)
+{
+    if (!p->film) return SOAK_OK;
+    size_t n = (size_t)s->w * s->h;
+    f->fast = malloc(n);
+    if (!f->fast) return SOAK_ERR_NOMEM;
+    for (size_t i = 0; i < n; ++i) f->fast[i] = 0; /* the static retention is in j->retain until add_film */
+    soak_status st = add_film(s, p, f->grid, exposure, j->retain, film, runoff);
+    for (size_t i = 0; i < n && st == SOAK_OK; ++i) f->fast[i] = film[i] > 0.0 && film[i] == j->retain[i];
+    if (st != SOAK_OK || p->flow_iterations == 0) return st;
+    f->inflow = malloc(n * sizeof *f->inflow);
+    if (!f->inflow) return SOAK_ERR_NOMEM;
+    return soak_rain_flow_order(f->grid, &f->order, &f->count);
+}
+
 static soak_status run_water(const rain_surface *s, const soak_rain_params *p, const float *exposure,
                              const soak_bake_exec *exec, double *depth, double *film, soak_rain_runoff *runoff)
 {
@@ -399,41 +451,28 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
     j.deposit = malloc(n * sizeof *j.deposit);
     j.retain = malloc(n * sizeof *j.retain);
     unsigned char *covered = malloc(n);
-    if (!j.deposit || !j.retain || !covered) {
-        free(j.deposit);
-        free(j.retain);
-        free(covered);
-        return SOAK_ERR_NOMEM;
-    }
-    for (size_t i = 0; i < n; ++i) covered[i] = s->tri[i] >= 0;
+    water_flow f;
+    memset(&f, 0, sizeof f);
     soak_rain_flow_grid grid = {s->w, s->h, covered, s->adj, s->area, s->drip, s->level, j.retain};
+    f.grid = &grid;
+    soak_status st = j.deposit && j.retain && covered ? SOAK_OK : SOAK_ERR_NOMEM;
     soak_vec3 up = soak_v3_norm(p->up);
-    for (size_t i = 0; i < n; ++i)
-        j.retain[i] = s->tri[i] >= 0 ? p->retention * fmax(0.0, soak_v3_dot(fget(s->nrm, i), up)) : 0.0;
-    soak_rain_flow_plan *flow = NULL;
-    soak_status st = p->film ? add_film(s, p, &grid, exposure, j.retain, film, runoff) : SOAK_OK;
-    if (st == SOAK_OK) st = soak_rain_flow_create(&grid, exec, SOAK_RAIN_FLOW_AUTO, &flow);
-    double dt = p->duration / p->steps;
-    double rain_m_s = p->rainfall_mm_h / 3.6e6, evap = p->evaporation_mm_h / 3.6e6 * dt;
-    j.drop_volume = SOAK_PI / 6.0 * p->drop_diameter * p->drop_diameter * p->drop_diameter;
-    j.lambda_per_area = rain_m_s / j.drop_volume * dt; /* drops per m^2 of open horizontal surface per step */
-    double sigma_texels = s->mean_texel > 0.0 ? p->splat_radius / s->mean_texel : 0.0;
-    for (int step = 0; step < p->steps && st == SOAK_OK; ++step) {
-        double lo = 0.7 + 0.3 * step / p->steps;
-        j.step_seed = soak_seed_derive(p->seed, (uint64_t)step + 1);
-        st = soak_parallel_rows(s->h, exec, drops_row, &j, lo, lo);
-        if (st == SOAK_OK && sigma_texels >= 0.3) {
-            soak_image in = {s->w, s->h, 1, j.deposit}, blurred = {0, 0, 0, NULL};
-            st = soak_map_blur(&in, fmin(sigma_texels, 1000.0), 0, exec, &blurred);
-            if (st == SOAK_OK) memcpy(j.deposit, blurred.pixels, n * sizeof *j.deposit);
-            soak_image_free(&blurred);
-        }
-        if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, add_deposit_row, &j, lo, lo);
-        if (st == SOAK_OK) st = soak_rain_flow_run(flow, depth, p->flow_iterations, exec, lo, lo);
-        j.evaporation = evap;
-        if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, evaporate_row, &j, lo, lo);
+    for (size_t i = 0; i < n && st == SOAK_OK; ++i) {
+        covered[i] = s->tri[i] >= 0;
+        j.retain[i] = covered[i] ? p->retention * fmax(0.0, soak_v3_dot(fget(s->nrm, i), up)) : 0.0;
     }
-    soak_rain_flow_destroy(flow);
+    if (st == SOAK_OK) st = prepare_film(s, p, exposure, &j, &f, film, runoff);
+    if (st == SOAK_OK) st = soak_rain_flow_create(&grid, exec, SOAK_RAIN_FLOW_AUTO, &f.plan);
+    double dt = p->duration / p->steps;
+    f.evaporation = p->evaporation_mm_h / 3.6e6 * dt;
+    j.drop_volume = SOAK_PI / 6.0 * p->drop_diameter * p->drop_diameter * p->drop_diameter;
+    j.lambda_per_area = p->rainfall_mm_h / 3.6e6 / j.drop_volume * dt; /* drops per m^2 of open horizontal surface per step */
+    f.sigma_texels = s->mean_texel > 0.0 ? p->splat_radius / s->mean_texel : 0.0;
+    for (int step = 0; step < p->steps && st == SOAK_OK; ++step) st = rain_step(&j, &f, step, exec);
+    soak_rain_flow_destroy(f.plan);
+    free(f.order);
+    free(f.inflow);
+    free(f.fast);
     free(j.deposit);
     free(j.retain);
     free(covered);

@@ -371,3 +371,65 @@ soak_status soak_rain_flow_discharge(const soak_rain_flow_grid *g, const double 
     free(inflow);
     return SOAK_OK;
 }
+
+/* ---- cascade: the routing's shares at the film's speed ---- */
+
+soak_status soak_rain_flow_order(const soak_rain_flow_grid *g, size_t **order, size_t *count)
+{
+    if (!g || !order || !count) return SOAK_ERR_NULL;
+    *order = NULL;
+    *count = 0;
+    size_t n = (size_t)g->w * g->h, m = 0;
+    size_t *idx = malloc((n ? n : 1) * sizeof *idx), *tmp = malloc((n ? n : 1) * sizeof *tmp);
+    if (!idx || !tmp) {
+        free(idx);
+        free(tmp);
+        return SOAK_ERR_NOMEM;
+    }
+    for (size_t i = 0; i < n; ++i)
+        if (g->covered[i]) idx[m++] = i;
+    sort_by_level(idx, tmp, m, g->level);
+    free(tmp);
+    *order = idx;
+    *count = m;
+    return SOAK_OK;
+}
+
+/* Texel i keeps up to its retention of what it holds and receives (all of
+ * it where it is not fast or nothing is lower: a pit or flat) and passes
+ * the rest on. */
+static double cascade_texel(const soak_rain_flow_grid *g, const unsigned char *fast, size_t i, double *depth,
+                            double *inflow)
+{
+    double a = g->area[i], have = depth[i] * a + inflow[i], keep = g->retain[i] * a;
+    inflow[i] = 0.0;
+    if (!fast[i] || !(have > keep)) {
+        depth[i] = have / a;
+        return 0.0;
+    }
+    depth[i] = g->retain[i];
+    double q = have - keep;
+    if (g->drip[i] < 0.0f) return q;
+    int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
+    double nb[8], diff[9], sum, mx;
+    for (int d = 0; d < 8; ++d)
+        nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
+    route_drops(g, i, g->level[i], nb, 0.0, diff, &sum, &mx);
+    if (!(sum > 0.0)) {
+        depth[i] = have / a;
+        return 0.0;
+    }
+    for (int d = 0; d < 8; ++d)
+        if (diff[d] > 0.0) inflow[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] += q * diff[d] / sum;
+    return q * diff[8] / sum;
+}
+
+soak_status soak_rain_flow_cascade(const soak_rain_flow_grid *g, const unsigned char *fast, const size_t *order,
+                                   size_t count, double *depth, double *inflow, double *dripped)
+{
+    if (!g || !fast || (!order && count) || !depth || !inflow || !dripped) return SOAK_ERR_NULL;
+    *dripped = 0.0;
+    for (size_t k = 0; k < count; ++k) inflow[order[k]] = 0.0;
+    for (size_t k = 0; k < count; ++k) *dripped += cascade_texel(g, fast, order[k], depth, inflow);
+    return SOAK_OK;
+}

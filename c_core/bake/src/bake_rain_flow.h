@@ -75,4 +75,18 @@ typedef struct soak_rain_flow_balance {
 soak_status soak_rain_flow_discharge(const soak_rain_flow_grid *g, const double *source, double loss,
                                      double *discharge, soak_rain_flow_balance *balance);
 
+/* The covered texels of g, highest level first, ties by index (the order
+ * of soak_rain_flow_discharge); *order is malloc'ed (free it). */
+soak_status soak_rain_flow_order(const soak_rain_flow_grid *g, size_t **order, size_t *count);
+/* The water on the film's faces moved at the film's speed (soak/bake_rain.h
+ * step 3b): one pass down the order in which every fast texel keeps up to
+ * retain of what it holds and receives and passes the rest on in the
+ * routing's shares, off open edges and down-facing texels; a texel that is
+ * not fast, or has no lower neighbour (pits, flats), keeps all it gets, for
+ * the sweeps to level. depth in metres; inflow is scratch (w * h);
+ * *dripped the volume (m^3) that left. Volume before = volume after +
+ * dripped, up to rounding. */
+soak_status soak_rain_flow_cascade(const soak_rain_flow_grid *g, const unsigned char *fast, const size_t *order,
+                                   size_t count, double *depth, double *inflow, double *dripped);
+
 #endif

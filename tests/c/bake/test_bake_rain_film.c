@@ -6,6 +6,8 @@
  *  - where the rain goes on the meshes: on the planes in = rainfall * E *
  *    area and all of it drips off; on the relief in = rainfall * (the wall
  *    rectangle's share of the rain) and in = dripped + held + evaporated;
+ *  - the cascade (water on the film's faces moved at the film's speed)
+ *    conserves volume (before = after + dripped) on that grid;
  *  - mass balance of the steady discharge on a grid with holes, drip edges,
  *    down-facing texels and pits: in = dripped + held + evaporated (1e-9),
  *    and each texel's continuity against shares recomputed here;
@@ -256,6 +258,46 @@ static void test_discharge_balance(void)
     free(inflow), free(retain);
 }
 
+/* The cascade on the same grid: volume before = volume after + dripped; a
+ * fast texel with a lower neighbour ends at most at its retention; a texel
+ * that is not fast loses nothing. */
+static void test_cascade_balance(void)
+{
+    const int w = 57, h = 43;
+    size_t n = (size_t)w * h, *order = NULL, count = 0;
+    flow_grid d = {calloc(n, 1), calloc(n, 1), calloc(n, sizeof(float)), calloc(n, sizeof(float)),
+                   calloc(n, sizeof(double)), calloc(n, sizeof(double)), calloc(n, sizeof(double))};
+    double *retain = calloc(n, sizeof(double)), *depth = calloc(n, sizeof(double)), *before = calloc(n, sizeof(double));
+    double *inflow = calloc(n, sizeof(double));
+    unsigned char *fast = calloc(n, 1);
+    soak_rng r;
+    soak_rng_seed(&r, 37, 40);
+    grid_fill(&d, w, h, &r);
+    for (size_t i = 0; i < n; ++i) {
+        retain[i] = 5e-5 * soak_rng_uniform(&r);
+        depth[i] = before[i] = d.covered[i] ? 2e-4 * soak_rng_uniform(&r) : 0.0;
+        fast[i] = soak_rng_uniform(&r) < 0.8;
+    }
+    soak_rain_flow_grid g = {w, h, d.covered, d.adj, d.area, d.drip, d.level, retain};
+    double dripped = 0.0, v0 = 0.0, v1 = 0.0;
+    if (!check_status("cascade order", soak_rain_flow_order(&g, &order, &count), SOAK_OK) ||
+        !check_status("cascade", soak_rain_flow_cascade(&g, fast, order, count, depth, inflow, &dripped), SOAK_OK))
+        return;
+    int kept = 1;
+    for (size_t i = 0; i < n; ++i) {
+        if (!d.covered[i]) continue;
+        v0 += before[i] * d.area[i];
+        v1 += depth[i] * d.area[i];
+        if (!fast[i] && depth[i] < before[i]) kept = 0;
+    }
+    printf("cascade: volume before %.6g, after %.6g, dripped %.6g m^3\n", v0, v1, dripped);
+    check_true("cascade: some water drips, some stays", dripped > 0.0 && v1 > 0.0);
+    check_rel("cascade: volume before = after + dripped", v1 + dripped, v0, 1e-12);
+    check_true("cascade: a texel that is not fast loses nothing", kept);
+    free(d.covered), free(d.adj), free(d.area), free(d.drip), free(d.level), free(d.source), free(d.discharge);
+    free(retain), free(depth), free(before), free(inflow), free(fast), free(order);
+}
+
 /* ---- a bas-relief-like wall ---- */
 
 static double smooth_step(double x, double a, double b)
@@ -365,6 +407,7 @@ int main(void)
     test_formula_edges();
     test_nusselt_planes();
     test_discharge_balance();
+    test_cascade_balance();
     test_relief();
     return check_finish();
 }

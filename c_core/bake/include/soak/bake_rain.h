@@ -71,7 +71,15 @@
  *      a texel axis and, with the routing's shares, along a diagonal). The
  *      film is kept as the texel's retention (the larger of the two), so
  *      the water of the time loop fills it, the flow passes what exceeds it
- *      on downhill, and mass is conserved. Where flow collects the film
+ *      on downhill, and mass is conserved. The film moves at u_s, 5-20 mm/s
+ *      for films of 20-50 um: across a face within one step, where the
+ *      sweeps move water one texel each. So each step, before the sweeps, a
+ *      cascade (private soak_rain_flow_cascade, the same shares in the same
+ *      order as the discharge) passes the water above the film of every
+ *      texel whose film is thicker than its static retention on downhill at
+ *      once; it stops in the first texel without such a film (ledges,
+ *      floors, puddles), where the sweeps take over (not with
+ *      flow_iterations 0: then no water moves). Where flow collects the film
  *      thickens (streaks); below an edge where the water drips it ends.
  *      sin theta = 0 (flat) has no film; a film over SOAK_RAIN_FILM_MAX is
  *      cut there (the laminar form does not hold: a sheet of water whose
