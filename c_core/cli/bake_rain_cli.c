@@ -14,8 +14,8 @@
 
 typedef struct rain_args {
     soak_rain_params p;
-    int have_dir, up_axis;
-    const char *mesh_path, *exposure_path, *water_path;
+    int have_dir, up_axis, no_film;
+    const char *mesh_path, *exposure_path, *water_path, *film_path;
 } rain_args;
 
 /* Rain direction components: any finite vector (normalised by the bake). */
@@ -56,6 +56,10 @@ static const cli_opt rain_opts[] = {
     {"--exposure", NULL, CLI_OPT_STRING, F(exposure_path), .meta = "PATH",
      .help = "also write the sky exposure (1 = open horizontal surface)"},
     {"--water", NULL, CLI_OPT_STRING, F(water_path), .meta = "PATH", .help = "also write the water depth (m)"},
+    {"--film", NULL, CLI_OPT_STRING, F(film_path), .meta = "PATH",
+     .help = "also write the falling film thickness while rain falls (m; use .exr)"},
+    {"--no-film", NULL, CLI_OPT_FLAG, .flag = 1, F(no_film),
+     .help = "no falling film: slopes keep only the flat film times n.up (walls drain)"},
     {"--rays", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RAIN_MAX_RAYS, F(p.rays), .meta = "N",
      .help = "rays per texel, %R (default 64)"},
     {"--sky", NULL, CLI_OPT_CHOICE, .choices = skies, F(p.sky), .meta = "rain|hemisphere",
@@ -104,8 +108,11 @@ static void usage(FILE *out)
             "Rain wet map of a mesh (OBJ, PLY, glTF/GLB...; it must have UVs) at a texture\n"
             "resolution: per-texel sky exposure by ray casting through the mesh (Embree), drop\n"
             "impacts as a Poisson process with a splat kernel, evaporation, and downhill flow\n"
-            "that fills concave upward-facing regions (puddles). Lengths in the mesh unit\n"
-            "(metres), times in seconds. Same seed, same bytes, on any number of threads.\n"
+            "that fills concave upward-facing regions (puddles); inclined, vertical and\n"
+            "overhanging faces keep the laminar film (Nusselt 1916) of the water running over\n"
+            "them, thicker where the flow collects (streaks), dripping off at overhangs.\n"
+            "Lengths in the mesh unit (metres), times in seconds. Same seed, same bytes, on\n"
+            "any number of threads.\n"
             "-o is the wetness map, w = 1 - exp(-depth/saturation).\n\n"
             "options:\n");
     const cli_opt_table tables[] = RAIN_TABLES(NULL, NULL);
@@ -169,6 +176,7 @@ static int parse_args(int argc, char **argv, rain_args *a, bake_opts *o)
     a->p.up = soak_v3(k == 0 ? s : 0, k == 1 ? s : 0, k == 2 ? s : 0);
     if (!a->have_dir) a->p.rain_dir = a->p.up;
     a->p.seed = o->seed;
+    a->p.film = !a->no_film;
     if (soak_v3_dot(a->p.rain_dir, a->p.up) <= 1e-6 * soak_v3_len(a->p.rain_dir)) {
         cli_error(CMD, "--rain-dir: the rain must come from above (positive component along --up)");
         return SOAK_EXIT_USAGE;
@@ -181,18 +189,21 @@ static int parse_args(int argc, char **argv, rain_args *a, bake_opts *o)
 static int check_outputs(const rain_args *a, const bake_opts *o)
 {
     const char *inputs[1] = {a->mesh_path};
-    const char *extra[2] = {a->exposure_path, a->water_path};
+    const char *extra[3] = {a->exposure_path, a->water_path, a->film_path};
+    static const char *const names[3] = {"--exposure", "--water", "--film"};
     int rc = bake_opts_check(o, inputs, 1);
-    for (int k = 0; k < 2 && !rc; ++k) {
+    for (int k = 0; k < 3 && !rc; ++k) {
         if (!extra[k]) continue;
         char err[4352];
         soak_status st = soak_bake_check_output(extra[k], inputs, 1, err, sizeof err);
         if (st != SOAK_OK) {
-            cli_error(CMD, "%s: %s", k ? "--water" : "--exposure", err);
+            cli_error(CMD, "%s: %s", names[k], err);
             return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
         }
-        if (soak_path_same(extra[k], o->output) || (k == 1 && a->exposure_path && soak_path_same(extra[1], extra[0]))) {
-            cli_error(CMD, "%s: same file as another output", k ? "--water" : "--exposure");
+        int same = soak_path_same(extra[k], o->output);
+        for (int e = 0; e < k; ++e) same = same || (extra[e] && soak_path_same(extra[k], extra[e]));
+        if (same) {
+            cli_error(CMD, "%s: same file as another output", names[k]);
             return SOAK_EXIT_USAGE;
         }
     }
@@ -228,10 +239,14 @@ int soak_bake_rain_main(int argc, char **argv)
     if ((rc = check_outputs(&a, &o)) != 0) return rc;
     soak_rain_result res;
     if (bake(&a, &o, &res) != SOAK_OK) return SOAK_EXIT_FAIL;
-    const char *paths[3] = {o.output, a.exposure_path, a.water_path};
-    const soak_image *imgs[3] = {&res.wetness, &res.exposure, &res.water};
-    rc = write_outputs(paths, imgs, 3);
-    soak_rain_result_free(&res);
+    const char *paths[4] = {o.output, a.exposure_path, a.water_path, a.film_path};
+    const soak_image *imgs[4] = {&res.wetness, &res.exposure, &res.water, &res.film};
+    rc = write_outputs(paths, imgs, 4);
     if (rc == SOAK_EXIT_OK) printf("%s: %ldx%ld rain wetness from %s\n", o.output, o.width, o.height, a.mesh_path);
+    const soak_rain_runoff *r = &res.runoff;
+    if (rc == SOAK_EXIT_OK && r->in > 0.0) /* m^3/s -> L/h */
+        printf("steady rain on the mesh %.4g L/h: %.1f %% drips off, %.1f %% collects in puddles, %.1f %% evaporates\n",
+               r->in * 3.6e6, 100.0 * r->dripped / r->in, 100.0 * r->held / r->in, 100.0 * r->evaporated / r->in);
+    soak_rain_result_free(&res);
     return rc;
 }

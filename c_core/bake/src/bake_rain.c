@@ -9,6 +9,7 @@
 
 #include "soak/poisson.h"
 
+#include "bake_rain_film.h"
 #include "bake_rain_flow.h"
 
 void soak_rain_defaults(soak_rain_params *p)
@@ -29,6 +30,7 @@ void soak_rain_defaults(soak_rain_params *p)
     p->saturation_depth = 0.0002;
     p->flow_iterations = 16;
     p->gutter = 4;
+    p->film = 1;
 }
 
 static int unit_ok(soak_vec3 v)
@@ -42,7 +44,7 @@ soak_status soak_rain_check(const soak_rain_params *p)
     if (!p) return SOAK_ERR_NULL;
     if (!(p->rays >= 1 && p->rays <= SOAK_RAIN_MAX_RAYS) || !(p->steps >= 1 && p->steps <= SOAK_RAIN_MAX_STEPS) ||
         !(p->flow_iterations >= 0 && p->flow_iterations <= SOAK_RAIN_MAX_STEPS) ||
-        !(p->gutter >= 0 && p->gutter <= SOAK_RAIN_MAX_GUTTER) ||
+        !(p->gutter >= 0 && p->gutter <= SOAK_RAIN_MAX_GUTTER) || (p->film != 0 && p->film != 1) ||
         (p->sky != SOAK_RAIN_SKY_RAIN && p->sky != SOAK_RAIN_SKY_HEMISPHERE))
         return SOAK_ERR_ARG;
     if (!unit_ok(p->up) || !unit_ok(p->rain_dir)) return SOAK_ERR_ARG;
@@ -194,7 +196,9 @@ static void connect_row(void *ctx, int y, int thread)
         }
         /* Steepest-descent step leaves the surface: an open edge. */
         if (best >= 0 && !(s->adj[i] >> best & 1u)) s->drip[i] = (float)best_drop;
-        if (soak_v3_dot(n, up) <= 0.0) s->drip[i] = -1.0f; /* faces down: everything mobile drips */
+        /* Faces down (an overhang): everything mobile drips. A vertical face
+         * (n.up = 0 up to the float normal's rounding) carries its film down. */
+        if (soak_v3_dot(n, up) < -SOAK_RAIN_OVERHANG_TOL) s->drip[i] = -1.0f;
     }
 }
 
@@ -363,8 +367,79 @@ static void add_deposit_row(void *ctx, int y, int thread)
     }
 }
 
+/* Step 3b: the falling film into film and, where thicker, into retain. */
+static soak_status add_film(const rain_surface *s, const soak_rain_params *p, const soak_rain_flow_grid *grid,
+                            const float *exposure, double *retain, double *film, soak_rain_runoff *runoff)
+{
+    size_t n = (size_t)s->w * s->h;
+    float *up_dot_n = malloc(n * sizeof *up_dot_n);
+    if (!up_dot_n) return SOAK_ERR_NOMEM;
+    soak_vec3 up = soak_v3_norm(p->up);
+    soak_rain_flow_balance b;
+    for (size_t i = 0; i < n; ++i) up_dot_n[i] = s->tri[i] >= 0 ? (float)soak_v3_dot(fget(s->nrm, i), up) : 1.0f;
+    soak_status st = soak_rain_film_map(grid, up_dot_n, exposure, p->rainfall_mm_h / 3.6e6,
+                                        p->evaporation_mm_h / 3.6e6, film, &b);
+    if (st == SOAK_OK) *runoff = (soak_rain_runoff){b.in, b.dripped, b.held, b.lost};
+    for (size_t i = 0; i < n && st == SOAK_OK; ++i)
+        if (film[i] > retain[i]) retain[i] = film[i];
+    free(up_dot_n);
+    return st;
+}
+
+/* What moves the water of a step: the sweeps and, with the film, the
+ * cascade down the slopes (its order and scratch; order NULL without). */
+typedef struct water_flow {
+    const soak_rain_flow_grid *grid;
+    soak_rain_flow_plan *plan;
+    size_t *order, count;
+    double *inflow;
+    unsigned char *fast; /* 1 where the film is thicker than the static retention */
+    double sigma_texels, evaporation;
+} water_flow;
+
+/* Step `step` of step 3: drops, splat, cascade, sweeps, evaporation. */
+static soak_status rain_step(water_job *j, const water_flow *f, int step, const soak_bake_exec *exec)
+{
+    const rain_surface *s = j->s;
+    size_t n = (size_t)s->w * s->h;
+    double lo = 0.7 + 0.3 * step / j->p->steps, dripped;
+    j->step_seed = soak_seed_derive(j->p->seed, (uint64_t)step + 1);
+    soak_status st = soak_parallel_rows(s->h, exec, drops_row, j, lo, lo);
+    if (st == SOAK_OK && f->sigma_texels >= 0.3) {
+        soak_image in = {s->w, s->h, 1, j->deposit}, blurred = {0, 0, 0, NULL};
+        st = soak_map_blur(&in, fmin(f->sigma_texels, 1000.0), 0, exec, &blurred);
+        if (st == SOAK_OK) memcpy(j->deposit, blurred.pixels, n * sizeof *j->deposit);
+        soak_image_free(&blurred);
+    }
+    if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, add_deposit_row, j, lo, lo);
+    if (st == SOAK_OK && f->order)
+        st = soak_rain_flow_cascade(f->grid, f->fast, f->order, f->count, j->depth, f->inflow, &dripped);
+    if (st == SOAK_OK) st = soak_rain_flow_run(f->plan, j->depth, j->p->flow_iterations, exec, lo, lo);
+    j->evaporation = f->evaporation;
+    if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, evaporate_row, j, lo, lo);
+    return st;
+}
+
+/* The film (step 3b) and what the cascade needs, when the film is on and
+ * the water flows at all. */
+static soak_status prepare_film(const rain_surface *s, const soak_rain_params *p, const float *exposure,
+                                water_job *j, water_flow *f, double *film, soak_rain_runoff *runoff)
+{
+    if (!p->film) return SOAK_OK;
+    size_t n = (size_t)s->w * s->h;
+    f->fast = malloc(n);
+    if (!f->fast) return SOAK_ERR_NOMEM;
+    for (size_t i = 0; i < n; ++i) f->fast[i] = 0; /* the static retention is in j->retain until add_film */
+    soak_status st = add_film(s, p, f->grid, exposure, j->retain, film, runoff);
+    for (size_t i = 0; i < n && st == SOAK_OK; ++i) f->fast[i] = film[i] > 0.0 && film[i] == j->retain[i];
+    if (st != SOAK_OK || p->flow_iterations == 0) return st;
+    f->inflow = malloc(n * sizeof *f->inflow);
+    if (!f->inflow) return SOAK_ERR_NOMEM;
+    return soak_rain_flow_order(f->grid, &f->order, &f->count);
+}
+
 static soak_status run_water(const rain_surface *s, const soak_rain_params *p, const float *exposure,
-                             const soak_bake_exec *exec, double *depth)
+                             const soak_bake_exec *exec, double *depth, double *film, soak_rain_runoff *runoff)
 {
     size_t n = (size_t)s->w * s->h;
     water_job j;
@@ -376,40 +451,28 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
     j.deposit = malloc(n * sizeof *j.deposit);
     j.retain = malloc(n * sizeof *j.retain);
     unsigned char *covered = malloc(n);
-    if (!j.deposit || !j.retain || !covered) {
-        free(j.deposit);
-        free(j.retain);
-        free(covered);
-        return SOAK_ERR_NOMEM;
-    }
-    for (size_t i = 0; i < n; ++i) covered[i] = s->tri[i] >= 0;
+    water_flow f;
+    memset(&f, 0, sizeof f);
     soak_rain_flow_grid grid = {s->w, s->h, covered, s->adj, s->area, s->drip, s->level, j.retain};
+    f.grid = &grid;
+    soak_status st = j.deposit && j.retain && covered ? SOAK_OK : SOAK_ERR_NOMEM;
     soak_vec3 up = soak_v3_norm(p->up);
-    for (size_t i = 0; i < n; ++i)
-        j.retain[i] = s->tri[i] >= 0 ? p->retention * fmax(0.0, soak_v3_dot(fget(s->nrm, i), up)) : 0.0;
-    soak_rain_flow_plan *flow = NULL;
-    soak_status st = soak_rain_flow_create(&grid, exec, SOAK_RAIN_FLOW_AUTO, &flow);
-    double dt = p->duration / p->steps;
-    double rain_m_s = p->rainfall_mm_h / 3.6e6, evap = p->evaporation_mm_h / 3.6e6 * dt;
-    j.drop_volume = SOAK_PI / 6.0 * p->drop_diameter * p->drop_diameter * p->drop_diameter;
-    j.lambda_per_area = rain_m_s / j.drop_volume * dt; /* drops per m^2 of open horizontal surface per step */
-    double sigma_texels = s->mean_texel > 0.0 ? p->splat_radius / s->mean_texel : 0.0;
-    for (int step = 0; step < p->steps && st == SOAK_OK; ++step) {
-        double lo = 0.7 + 0.3 * step / p->steps;
-        j.step_seed = soak_seed_derive(p->seed, (uint64_t)step + 1);
-        st = soak_parallel_rows(s->h, exec, drops_row, &j, lo, lo);
-        if (st == SOAK_OK && sigma_texels >= 0.3) {
-            soak_image in = {s->w, s->h, 1, j.deposit}, blurred = {0, 0, 0, NULL};
-            st = soak_map_blur(&in, fmin(sigma_texels, 1000.0), 0, exec, &blurred);
-            if (st == SOAK_OK) memcpy(j.deposit, blurred.pixels, n * sizeof *j.deposit);
-            soak_image_free(&blurred);
-        }
-        if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, add_deposit_row, &j, lo, lo);
-        if (st == SOAK_OK) st = soak_rain_flow_run(flow, depth, p->flow_iterations, exec, lo, lo);
-        j.evaporation = evap;
-        if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, evaporate_row, &j, lo, lo);
+    for (size_t i = 0; i < n && st == SOAK_OK; ++i) {
+        covered[i] = s->tri[i] >= 0;
+        j.retain[i] = covered[i] ? p->retention * fmax(0.0, soak_v3_dot(fget(s->nrm, i), up)) : 0.0;
     }
-    soak_rain_flow_destroy(flow);
+    if (st == SOAK_OK) st = prepare_film(s, p, exposure, &j, &f, film, runoff);
+    if (st == SOAK_OK) st = soak_rain_flow_create(&grid, exec, SOAK_RAIN_FLOW_AUTO, &f.plan);
+    double dt = p->duration / p->steps;
+    f.evaporation = p->evaporation_mm_h / 3.6e6 * dt;
+    j.drop_volume = SOAK_PI / 6.0 * p->drop_diameter * p->drop_diameter * p->drop_diameter;
+    j.lambda_per_area = p->rainfall_mm_h / 3.6e6 / j.drop_volume * dt; /* drops per m^2 of open horizontal surface per step */
+    f.sigma_texels = s->mean_texel > 0.0 ? p->splat_radius / s->mean_texel : 0.0;
+    for (int step = 0; step < p->steps && st == SOAK_OK; ++step) st = rain_step(&j, &f, step, exec);
+    soak_rain_flow_destroy(f.plan);
+    free(f.order);
+    free(f.inflow);
+    free(f.fast);
     free(j.deposit);
     free(j.retain);
     free(covered);
@@ -473,7 +536,7 @@ static soak_status dilate(float *img, unsigned char *filled, int w, int h, int g
 
 typedef struct output_job {
     const rain_surface *s;
-    const double *depth;
+    const double *depth, *film;
     double saturation_depth;
     soak_rain_result *r;
 } output_job;
@@ -485,6 +548,7 @@ static void output_row(void *ctx, int y, int thread)
     for (size_t i = (size_t)y * j->s->w, end = i + j->s->w; i < end; ++i) {
         j->r->coverage.pixels[i] = j->s->tri[i] >= 0 ? 1.0f : 0.0f;
         j->r->water.pixels[i] = (float)j->depth[i];
+        j->r->film.pixels[i] = (float)j->film[i];
         j->r->wetness.pixels[i] = (float)(1.0 - exp(-j->depth[i] / j->saturation_depth));
     }
 }
@@ -496,6 +560,7 @@ void soak_rain_result_free(soak_rain_result *r)
     soak_image_free(&r->exposure);
     soak_image_free(&r->water);
     soak_image_free(&r->coverage);
+    soak_image_free(&r->film);
 }
 
 static soak_status build_geometry(const soak_mesh *mesh, soak_geometry **g, char *err, size_t errlen)
@@ -602,8 +667,9 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
     if (st == SOAK_OK) st = soak_image_alloc(&r.wetness, width, height, 1);
     if (st == SOAK_OK) st = soak_image_alloc(&r.water, width, height, 1);
     if (st == SOAK_OK) st = soak_image_alloc(&r.coverage, width, height, 1);
-    double *depth = st == SOAK_OK ? calloc(n, sizeof *depth) : NULL;
-    if (st == SOAK_OK && !depth) st = SOAK_ERR_NOMEM;
+    if (st == SOAK_OK) st = soak_image_alloc(&r.film, width, height, 1);
+    double *depth = st == SOAK_OK ? calloc(n, sizeof *depth) : NULL, *film = st == SOAK_OK ? calloc(n, sizeof *film) : NULL;
+    if (st == SOAK_OK && (!depth || !film)) st = SOAK_ERR_NOMEM;
     if (st == SOAK_OK) {
         exposure_job ej;
         memset(&ej, 0, sizeof ej);
@@ -620,20 +686,21 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
         if (st == SOAK_OK && ej.failed) st = SOAK_ERR_NUMERIC;
     }
     if (st == SOAK_OK && p->duration > 0 && p->rainfall_mm_h > 0)
-        st = run_water(&s, p, r.exposure.pixels, exec, depth);
+        st = run_water(&s, p, r.exposure.pixels, exec, depth, film, &r.runoff);
     if (st == SOAK_OK) {
         unsigned char *filled = malloc(n);
         if (!filled) st = SOAK_ERR_NOMEM;
-        output_job oj = {&s, depth, p->saturation_depth, &r};
+        output_job oj = {&s, depth, film, p->saturation_depth, &r};
         if (st == SOAK_OK) st = soak_parallel_rows(height, exec, output_row, &oj, 1.0, 1.0);
-        float *maps[3] = {r.exposure.pixels, r.water.pixels, r.wetness.pixels};
-        for (int k = 0; k < 3 && st == SOAK_OK; ++k) {
+        float *maps[4] = {r.exposure.pixels, r.water.pixels, r.wetness.pixels, r.film.pixels};
+        for (int k = 0; k < 4 && st == SOAK_OK; ++k) {
             for (size_t i = 0; i < n; ++i) filled[i] = s.tri[i] >= 0;
             st = dilate(maps[k], filled, width, height, p->gutter, exec);
         }
         free(filled);
     }
     free(depth);
+    free(film);
     soak_geometry_destroy(g);
     surface_free(&s);
     if (st != SOAK_OK) {

@@ -30,6 +30,28 @@ struct soak_rain_flow_plan {
     double *ring_out;
 };
 
+/* The routing's split (soak/bake_rain.h step 3, [Qui91]) of what leaves
+ * texel i at level lvl with depth h, its neighbours at levels nb: diff[d]
+ * the level drop to 3D-adjacent neighbour d (0 if none or uphill), diff[8]
+ * the drop to a virtual dry neighbour beyond an open edge; their sum and
+ * largest. The sweeps and the steady discharge share it. */
+static void route_drops(const soak_rain_flow_grid *g, size_t i, double lvl, const double nb[8], double h,
+                        double diff[9], double *sum_out, double *max_out)
+{
+    double sum = 0.0, mx = 0.0;
+    for (int d = 0; d < 8; ++d) { /* adj says which neighbours count */
+        double dl = lvl - nb[d];
+        diff[d] = (g->adj[i] >> d & 1u) && dl > 0.0 ? dl : 0.0;
+    }
+    diff[8] = g->drip[i] > 0.0f ? h + g->drip[i] : 0.0;
+    for (int d = 0; d < 9; ++d) { /* diff >= 0, never NaN: comparisons give fmax / fmin's values */
+        sum += diff[d];
+        mx = diff[d] > mx ? diff[d] : mx;
+    }
+    *sum_out = sum;
+    *max_out = mx;
+}
+
 static void texel_flux(const flow_job *j, const flux_row_ptrs *row, int x, int y)
 {
     const soak_rain_flow_grid *g = j->g;
@@ -43,16 +65,9 @@ static void texel_flux(const flow_job *j, const flux_row_ptrs *row, int x, int y
         row->out[x] = (float)mobile;
         return;
     }
-    double lvl = j->lvl[i], diff[9], sum = 0.0, mx = 0.0;
-    for (int d = 0; d < 8; ++d) { /* the padding of lvl makes every neighbour loadable; adj says which count */
-        double dl = lvl - j->lvl[(ptrdiff_t)i + j->step[d]];
-        diff[d] = (g->adj[i] >> d & 1u) && dl > 0.0 ? dl : 0.0;
-    }
-    diff[8] = g->drip[i] > 0.0f ? h + g->drip[i] : 0.0; /* virtual dry neighbour beyond the edge */
-    for (int d = 0; d < 9; ++d) { /* diff >= 0, never NaN: comparisons give fmax / fmin's values */
-        sum += diff[d];
-        mx = diff[d] > mx ? diff[d] : mx;
-    }
+    double nb[8], diff[9], sum, mx;
+    for (int d = 0; d < 8; ++d) nb[d] = j->lvl[(ptrdiff_t)i + j->step[d]]; /* the padding makes all loadable */
+    route_drops(g, i, j->lvl[i], nb, h, diff, &sum, &mx);
     if (!(sum > 0.0)) return;
     double moved = 0.5 * mx < mobile ? 0.5 * mx : mobile, out = 0.0;
     /* A direction without a level drop sends moved * 0 / sum = +0, which was
@@ -264,4 +279,157 @@ soak_status soak_rain_flow(const soak_rain_flow_grid *g, double *depth, int iter
     if (st == SOAK_OK) st = soak_rain_flow_run(f, depth, iterations, exec, progress_lo, progress_hi);
     soak_rain_flow_destroy(f);
     return st;
+}
+
+/* ---- steady discharge: the same routing, every texel passing on all it gets ---- */
+
+typedef struct level_order {
+    const double *level;
+} level_order;
+
+static int by_level_down(const void *a, const void *b, void *ctx)
+{
+    const double *lv = ((const level_order *)ctx)->level;
+    size_t i = *(const size_t *)a, j = *(const size_t *)b;
+    if (lv[i] != lv[j]) return lv[i] > lv[j] ? -1 : 1;
+    return i < j ? -1 : (i > j);
+}
+
+/* Sorts idx (n covered texels) by level, highest first, ties by index: one
+ * total order, so every sum below has one order. A bottom-up merge sort
+ * (qsort passes no context in C11). */
+static void sort_by_level(size_t *idx, size_t *tmp, size_t n, const double *level)
+{
+    level_order o = {level};
+    for (size_t width = 1; width < n; width *= 2) {
+        for (size_t lo = 0; lo < n; lo += 2 * width) {
+            size_t mid = lo + width < n ? lo + width : n, hi = lo + 2 * width < n ? lo + 2 * width : n;
+            size_t a = lo, b = mid, k = lo;
+            while (a < mid && b < hi) tmp[k++] = by_level_down(&idx[b], &idx[a], &o) < 0 ? idx[b++] : idx[a++];
+            while (a < mid) tmp[k++] = idx[a++];
+            while (b < hi) tmp[k++] = idx[b++];
+        }
+        memcpy(idx, tmp, n * sizeof *idx);
+    }
+}
+
+/* Texel i passes on what it receives minus its loss: to its lower
+ * neighbours in the routing's shares, off an open edge or a down-facing
+ * face (drips), or nowhere (a pit or flat: held). */
+static void pass_on(const soak_rain_flow_grid *g, size_t i, double got, double loss, double *inflow, double *discharge,
+                    soak_rain_flow_balance *b)
+{
+    double lost = loss * g->area[i] < got ? loss * g->area[i] : got, q = got - lost;
+    b->lost += lost;
+    discharge[i] = q;
+    if (!(q > 0.0)) return;
+    if (g->drip[i] < 0.0f) {
+        b->dripped += q;
+        return;
+    }
+    int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
+    double nb[8], diff[9], sum, mx;
+    for (int d = 0; d < 8; ++d)
+        nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
+    route_drops(g, i, g->level[i], nb, 0.0, diff, &sum, &mx);
+    if (!(sum > 0.0)) {
+        b->held += q;
+        return;
+    }
+    for (int d = 0; d < 8; ++d)
+        if (diff[d] > 0.0) inflow[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] += q * diff[d] / sum;
+    b->dripped += q * diff[8] / sum;
+}
+
+soak_status soak_rain_flow_discharge(const soak_rain_flow_grid *g, const double *source, double loss,
+                                     double *discharge, soak_rain_flow_balance *balance)
+{
+    if (!g || !source || !discharge || !balance) return SOAK_ERR_NULL;
+    if (g->w < 1 || g->h < 1 || !(loss >= 0.0 && loss < 1e300)) return SOAK_ERR_ARG;
+    if (!g->covered || !g->adj || !g->area || !g->drip || !g->level) return SOAK_ERR_NULL;
+    size_t n = (size_t)g->w * g->h, m = 0;
+    size_t *idx = malloc(n * sizeof *idx), *tmp = malloc(n * sizeof *tmp);
+    double *inflow = calloc(n, sizeof *inflow);
+    if (!idx || !tmp || !inflow) {
+        free(idx);
+        free(tmp);
+        free(inflow);
+        return SOAK_ERR_NOMEM;
+    }
+    memset(balance, 0, sizeof *balance);
+    for (size_t i = 0; i < n; ++i) {
+        discharge[i] = 0.0;
+        if (!g->covered[i]) continue;
+        idx[m++] = i;
+        balance->in += source[i];
+    }
+    sort_by_level(idx, tmp, m, g->level);
+    for (size_t k = 0; k < m; ++k) /* every share goes strictly downhill: to a texel later in the order */
+        pass_on(g, idx[k], source[idx[k]] + inflow[idx[k]], loss, inflow, discharge, balance);
+    free(idx);
+    free(tmp);
+    free(inflow);
+    return SOAK_OK;
+}
+
+/* ---- cascade: the routing's shares at the film's speed ---- */
+
+soak_status soak_rain_flow_order(const soak_rain_flow_grid *g, size_t **order, size_t *count)
+{
+    if (!g || !order || !count) return SOAK_ERR_NULL;
+    *order = NULL;
+    *count = 0;
+    size_t n = (size_t)g->w * g->h, m = 0;
+    size_t *idx = malloc((n ? n : 1) * sizeof *idx), *tmp = malloc((n ? n : 1) * sizeof *tmp);
+    if (!idx || !tmp) {
+        free(idx);
+        free(tmp);
+        return SOAK_ERR_NOMEM;
+    }
+    for (size_t i = 0; i < n; ++i)
+        if (g->covered[i]) idx[m++] = i;
+    sort_by_level(idx, tmp, m, g->level);
+    free(tmp);
+    *order = idx;
+    *count = m;
+    return SOAK_OK;
+}
+
+/* Texel i keeps up to its retention of what it holds and receives (all of
+ * it where it is not fast or nothing is lower: a pit or flat) and passes
+ * the rest on. */
+static double cascade_texel(const soak_rain_flow_grid *g, const unsigned char *fast, size_t i, double *depth,
+                            double *inflow)
+{
+    double a = g->area[i], have = depth[i] * a + inflow[i], keep = g->retain[i] * a;
+    inflow[i] = 0.0;
+    if (!fast[i] || !(have > keep)) {
+        depth[i] = have / a;
+        return 0.0;
+    }
+    depth[i] = g->retain[i];
+    double q = have - keep;
+    if (g->drip[i] < 0.0f) return q;
+    int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
+    double nb[8], diff[9], sum, mx;
+    for (int d = 0; d < 8; ++d)
+        nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
+    route_drops(g, i, g->level[i], nb, 0.0, diff, &sum, &mx);
+    if (!(sum > 0.0)) {
+        depth[i] = have / a;
+        return 0.0;
+    }
+    for (int d = 0; d < 8; ++d)
+        if (diff[d] > 0.0) inflow[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] += q * diff[d] / sum;
+    return q * diff[8] / sum;
+}
+
+soak_status soak_rain_flow_cascade(const soak_rain_flow_grid *g, const unsigned char *fast, const size_t *order,
+                                   size_t count, double *depth, double *inflow, double *dripped)
+{
+    if (!g || !fast || (!order && count) || !depth || !inflow || !dripped) return SOAK_ERR_NULL;
+    *dripped = 0.0;
+    for (size_t k = 0; k < count; ++k) inflow[order[k]] = 0.0;
+    for (size_t k = 0; k < count; ++k) *dripped += cascade_texel(g, fast, order[k], depth, inflow);
+    return SOAK_OK;
 }

@@ -57,4 +57,36 @@ soak_status soak_rain_flow_run(soak_rain_flow_plan *f, double *depth, int iterat
 soak_status soak_rain_flow(const soak_rain_flow_grid *g, double *depth, int iterations, const soak_bake_exec *exec,
                            double progress_lo, double progress_hi);
 
+/* What the steady discharge did with the water, all in m^3/s. */
+typedef struct soak_rain_flow_balance {
+    double in;      /* sum of the sources */
+    double dripped; /* off open edges and down-facing texels */
+    double held;    /* into texels with no lower neighbour (pits, flats: puddles) */
+    double lost;    /* evaporated on the way */
+} soak_rain_flow_balance;
+
+/* Steady flow under constant rain, with the sweeps' routing (same shares,
+ * levels of the dry surface: a film much thinner than the level steps):
+ * every texel receives source[i] (m^3/s) plus its inflows, loses up to
+ * loss * area (m/s of evaporation) and passes the rest on. discharge[i]
+ * (m^3/s) is what flows out of texel i; in = dripped + held + lost up to
+ * rounding. Texels are taken highest first (ties by index): one pass, the
+ * same bits at any thread count. retain is not read. */
+soak_status soak_rain_flow_discharge(const soak_rain_flow_grid *g, const double *source, double loss,
+                                     double *discharge, soak_rain_flow_balance *balance);
+
+/* The covered texels of g, highest level first, ties by index (the order
+ * of soak_rain_flow_discharge); *order is malloc'ed (free it). */
+soak_status soak_rain_flow_order(const soak_rain_flow_grid *g, size_t **order, size_t *count);
+/* The water on the film's faces moved at the film's speed (soak/bake_rain.h
+ * step 3b): one pass down the order in which every fast texel keeps up to
+ * retain of what it holds and receives and passes the rest on in the
+ * routing's shares, off open edges and down-facing texels; a texel that is
+ * not fast, or has no lower neighbour (pits, flats), keeps all it gets, for
+ * the sweeps to level. depth in metres; inflow is scratch (w * h);
+ * *dripped the volume (m^3) that left. Volume before = volume after +
+ * dripped, up to rounding. */
+soak_status soak_rain_flow_cascade(const soak_rain_flow_grid *g, const unsigned char *fast, const size_t *order,
+                                   size_t count, double *depth, double *inflow, double *dripped);
+
 #endif

@@ -47,10 +47,45 @@
  *      s = p.up + depth, at most half the largest level difference per
  *      iteration (so levels never cross: flat puddles form in concave,
  *      upward-facing regions). A texel whose downhill direction leads off
- *      the surface (an open edge) or that faces down drains its mobile water
+ *      the surface (an open edge) or that faces down (n.up < -1e-6, an
+ *      overhang; an exactly vertical face is not one) drains its mobile water
  *      off the mesh (drips). flow_iterations routing sweeps per step.
+ *    - falling film (film = 1): a face steeper than flat keeps, besides
+ *      the static film retention * max(0, n.up), the film that runs over it
+ *      while rain falls. W. Nusselt, "Die Oberflaechenkondensation des
+ *      Wasserdampfes", Z. VDI 60 (1916) 541-546 and 569-575; textbook form
+ *      in Bird, Stewart & Lightfoot, "Transport Phenomena", 2nd ed. (2002),
+ *      sec. 2.2 (flow of a falling film): a laminar film on a plane at angle
+ *      theta from the horizontal carrying the volume flow q per unit width
+ *      (m^2/s) is  h = (3 mu q / (rho g sin theta))^(1/3)  thick (m; BSL
+ *      write it with the mass flow Gamma = rho q and the angle beta = 90 deg
+ *      - theta from the vertical, h = (3 mu Gamma / (rho^2 g cos beta))^(1/3))
+ *      and its surface moves at u_s = rho g sin theta h^2 / (2 mu) (m/s).
+ *      Water at 20 C: mu = 1.002e-3 Pa s, rho = 998.2 kg/m^3; g = 9.80665.
+ *      q per texel comes from the steady discharge Q (m^3/s) of the same
+ *      routing as the flow (soak_rain_flow_discharge, private): each texel
+ *      receives rainfall * E * A, loses evaporation * A, passes the rest to
+ *      its lower neighbours in the routing's shares, drips it off open edges
+ *      and down-facing texels, or holds it (pits); q = Q / sqrt(A) (the
+ *      texel's width across the flow; exact for uniform flow on a plane along
+ *      a texel axis and, with the routing's shares, along a diagonal). The
+ *      film is kept as the texel's retention (the larger of the two), so
+ *      the water of the time loop fills it, the flow passes what exceeds it
+ *      on downhill, and mass is conserved. The film moves at u_s, 5-20 mm/s
+ *      for films of 20-50 um: across a face within one step, where the
+ *      sweeps move water one texel each. So each step, before the sweeps, a
+ *      cascade (private soak_rain_flow_cascade, the same shares in the same
+ *      order as the discharge) passes the water above the film of every
+ *      texel whose film is thicker than its static retention on downhill at
+ *      once; it stops in the first texel without such a film (ledges,
+ *      floors, puddles), where the sweeps take over (not with
+ *      flow_iterations 0: then no water moves). Where flow collects the film
+ *      thickens (streaks); below an edge where the water drips it ends.
+ *      sin theta = 0 (flat) has no film; a film over SOAK_RAIN_FILM_MAX is
+ *      cut there (the laminar form does not hold: a sheet of water whose
+ *      depth the level routing resolves).
  * 4. Output wetness w = 1 - exp(-depth / saturation_depth) in [0,1]; the
- *    exposure and the water depth are available too.
+ *    exposure, the water depth and the film thickness are available too.
  *
  * Lengths are in the mesh's unit (metres assumed for the rainfall rates);
  * times in seconds. */
@@ -82,6 +117,17 @@ typedef enum soak_rain_sky {
 #define SOAK_RAIN_MAX_SATURATION 1   /* m */
 #define SOAK_RAIN_MAX_GUTTER 64      /* texels */
 
+/* Water at 20 C and standard gravity for the falling film (step 3b):
+ * viscosity (Pa s) and density (kg/m^3) from the CRC Handbook of Chemistry
+ * and Physics; thickest film kept, m. */
+#define SOAK_RAIN_WATER_VISCOSITY 1.002e-3
+#define SOAK_RAIN_WATER_DENSITY 998.2
+#define SOAK_RAIN_GRAVITY 9.80665
+#define SOAK_RAIN_FILM_MAX 1e-3
+/* n.up below -this is an overhang (drips); float normals round n.up of a
+ * vertical face to ~1e-7. */
+#define SOAK_RAIN_OVERHANG_TOL 1e-6
+
 typedef struct soak_rain_params {
     uint64_t seed;
     int rays;               /* rays per texel, 1..65536 */
@@ -99,19 +145,31 @@ typedef struct soak_rain_params {
     double saturation_depth;/* depth for w = 1 - 1/e, m, (0, 1] */
     int flow_iterations;    /* routing sweeps per step, 0..100000 */
     int gutter;             /* texels of dilation into empty texels, 0..64 */
+    int film;               /* 1: falling film on slopes (step 3b), 0: static retention only */
 } soak_rain_params;
 
 /* seed 0, 64 rays, rain sky, up +z, rain from +z, spread 10 deg, 600 s in
  * 32 steps, 10 mm/h, 2 mm drops, splat 2 mm, evaporation 0.5 mm/h,
- * retention 0.2 mm, saturation 0.2 mm, 16 flow iterations, gutter 4. */
+ * retention 0.2 mm, saturation 0.2 mm, 16 flow iterations, gutter 4,
+ * falling film on. */
 void soak_rain_defaults(soak_rain_params *p);
 soak_status soak_rain_check(const soak_rain_params *p);
+
+/* Where the steady rain of step 3b goes, m^3/s: what falls on the mesh
+ * (rainfall * sum E A), what drips off open edges and down-facing faces,
+ * what collects in pits and on flats (puddles), what evaporates on the way
+ * (in = dripped + held + evaporated). All 0 with film = 0 or no rain. */
+typedef struct soak_rain_runoff {
+    double in, dripped, held, evaporated;
+} soak_rain_runoff;
 
 typedef struct soak_rain_result {
     soak_image wetness;  /* 1 channel, [0,1] */
     soak_image exposure; /* 1 channel, >= 0 (1 = open horizontal surface) */
     soak_image water;    /* 1 channel, water depth, m */
     soak_image coverage; /* 1 channel, 1 where a triangle covers the texel centre */
+    soak_image film;     /* 1 channel, falling film thickness while rain falls, m (0 with film = 0) */
+    soak_rain_runoff runoff;
 } soak_rain_result;
 
 /* Bakes at width x height (soak_bake_check_size). The mesh must have UVs
@@ -122,5 +180,13 @@ typedef struct soak_rain_result {
 soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const soak_rain_params *p,
                            const soak_bake_exec *exec, soak_rain_result *out, char *err, size_t errlen);
 void soak_rain_result_free(soak_rain_result *r);
+
+/* Nusselt's laminar film (step 3b): thickness (m) of a film carrying q
+ * (m^2/s) down a plane at sin_theta, at most SOAK_RAIN_FILM_MAX; 0 for
+ * q <= 0, sin_theta <= 0 or NaN (sin_theta > 1 counts as 1). */
+double soak_rain_film_thickness(double q, double sin_theta);
+/* Its surface velocity (m/s) for thickness h in (0, SOAK_RAIN_FILM_MAX];
+ * 0 otherwise. */
+double soak_rain_film_surface_speed(double h, double sin_theta);
 
 #endif
