@@ -36,10 +36,15 @@ render() { # scene-name output.png (16-bit sRGB, the camera's exposure applied)
 small_png() { # 16-bit sRGB PNG -> OUT/soak_NAME.png, sRGB, palette-optimised when Pillow is there
   local img=$1 name=$2
   oiiotool "$img" -d uint8 -o "$WORK/$name.8.png"
-  if $PY -c 'import PIL' 2>/dev/null; then
-    $PY -c 'import sys; from PIL import Image
-Image.open(sys.argv[1]).convert("RGB").quantize(256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.FLOYDSTEINBERG).save(sys.argv[2], optimize=True)' \
-      "$WORK/$name.8.png" "$OUT/soak_$name.png"
+  if $PY -c 'import PIL' 2>/dev/null; then   # 256 colours, fewer if the noise will not fit in 400 KB
+    $PY -c 'import io, sys; from PIL import Image
+img = Image.open(sys.argv[1]).convert("RGB")
+for n in (256, 192, 128):
+    buf = io.BytesIO()
+    img.quantize(n, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.FLOYDSTEINBERG).save(buf, "PNG", optimize=True)
+    if buf.tell() < 390 * 1024:
+        break
+open(sys.argv[2], "wb").write(buf.getvalue())' "$WORK/$name.8.png" "$OUT/soak_$name.png"
   else
     cp "$WORK/$name.8.png" "$OUT/soak_$name.png"
   fi
@@ -47,13 +52,13 @@ Image.open(sys.argv[1]).convert("RGB").quantize(256, method=Image.Quantize.MEDIA
 
 for s in $SCENES; do
   case $s in
-  bricks_drying)   # four frames of a splash drying (the POV-Ray gallery's map and times)
+  bricks_drying)   # four frames of a splash drying (the POV-Ray gallery's map), t = 0, 0.2, 0.4, 0.6
     "$SOAK" bake turbulence --width 320 --height 180 --frequency 3 --threshold -0.05 --softness 0.25 --seed 11 \
       --threads 2 -o "$WORK/splash.png" >/dev/null
     "$SOAK" export --target json -o "$WORK/export.json" >/dev/null
     T_FILL=$($PY -c 'import json,sys; print(next(m["t_fill"] for m in json.load(open(sys.argv[1]))["materials"] if m["name"] == "brick"))' "$WORK/export.json")
     frames=()
-    for k in 0 1 2 3; do
+    for k in 0 2 4 6; do
       "$SOAK" bake drying "$WORK/splash.png" --t-fill "$T_FILL" --time "0.$k" -o "$WORK/brick_wet.png" >/dev/null
       render bricks_drying "$WORK/bricks_$k.png"
       frames+=("$WORK/bricks_$k.png")
@@ -64,7 +69,15 @@ for s in $SCENES; do
     $PY "$ROOT/scenes/povray/gallery/relief_mesh.py" "$WORK" 240 >/dev/null
     "$SOAK" bake rain "$WORK/relief.obj" -o "$WORK/relief_wet.png" --up z --rain-dir 0,-0.55,1 --spread 15 --rainfall 6 \
       --duration 600 --drop-size 0.0005 --splat 0.004 --flow-iterations 0 --width 800 --height 400 --rays 32 --threads 2 >/dev/null
-    render "$s" "$WORK/$s.png"; small_png "$WORK/$s.png" "$s" ;;
+    render "$s" "$WORK/$s.png"
+      # the baked map (white = wet) pasted into the lower right corner, as in the POV-Ray gallery
+    read -r W H < <(oiiotool --info "$WORK/$s.png" | sed -E 's/.*: *([0-9]+) x +([0-9]+),.*/\1 \2/')
+    IW=$((W / 4)) IH=$((W / 8))
+    oiiotool "$WORK/relief_wet.png" --ch 0,0,0 --resize "${IW}x${IH}" -d uint16 -o "$WORK/inset_map.png"
+    oiiotool "$WORK/inset_map.png" --pattern constant:color=0.92,0.92,0.92 "$((IW + 4))x$((IH + 4))" 3 --paste +2+2 \
+      -d uint16 -o "$WORK/inset.png"
+    oiiotool "$WORK/inset.png" "$WORK/$s.png" --paste "+$((W - IW - 16))+$((H - IH - 16))" -d uint16 -o "$WORK/${s}_inset.png"
+    small_png "$WORK/${s}_inset.png" "$s" ;;
   *)
     [ -f "$WORK/$s.json" ] || { echo "FAIL: no scene $s in $SCN"; exit 1; }
     render "$s" "$WORK/$s.png"; small_png "$WORK/$s.png" "$s" ;;
