@@ -13,7 +13,7 @@ shift $(( $# < 4 ? $# : 4 ))
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
 SCN=$ROOT/scenes/gallery
 PY=/usr/bin/python3
-ALL="paper_front paper_back beach_rock cognac_table bricks_drying bas_relief_rain flowerpot_porosity film_copper"
+ALL="paper_front paper_back beach_rock cognac_table bricks_drying bas_relief_rain flowerpot_porosity film_copper film_thickness"
 SCENES=${*:-$ALL}
 command -v oiiotool >/dev/null || { echo "FAIL: oiiotool not found (openimageio-tools)"; exit 1; }
 mkdir -p "$OUT"

@@ -22,7 +22,7 @@ for img in $images; do
   [ "$size" = "960 540" ] && ok "$img: 960x540" || bad "$img: $size, want 960 540"
 done
 [ "$n" -ge 24 ] && ok "$n pictures referenced (8 rows of 3)" || bad "only $n pictures referenced, want 24"
-for s in paper_front paper_back beach_rock cognac_table bricks_drying bas_relief_rain flowerpot_porosity film_copper; do
+for s in paper_front paper_back beach_rock cognac_table bricks_drying bas_relief_rain flowerpot_porosity film_copper film_thickness; do
   f=$SOAK_ROOT/docs/images/gallery/soak_$s.png
   grep -q "images/gallery/soak_$s.png" "$DOC" && ok "soak_$s.png in the gallery" || bad "soak_$s.png not referenced"
   [ -f "$f" ] && [ "$(stat -c %s "$f")" -lt 409600 ] && ok "soak_$s.png < 400 KB" || bad "soak_$s.png missing or >= 400 KB"
