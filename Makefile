@@ -9,13 +9,13 @@ PREFIX     ?= /usr/local
 # building the C core only its compile dependencies; the demo adds the
 # renderers, the tests everything. A goal's tier reaches its prerequisites.
 DEPS_TIER  ?= build
-demo gallery povray-gallery: DEPS_TIER = demo
+demo gallery povray-gallery soak-gallery: DEPS_TIER = demo
 package: DEPS_TIER = package
 test test-release test-asan blender43 blender52: DEPS_TIER = test
 # The project's own builds treat warnings as errors (a plain cmake build does not).
 CMAKE_DEV  = -DSOAK_WERROR=ON
 
-.PHONY: all deps install package build build-asan blender43 blender52 addon exports demo gallery povray-gallery test test-release test-asan bench fuzz clean
+.PHONY: all deps install package build build-asan blender43 blender52 addon exports demo gallery povray-gallery soak-gallery test test-release test-asan bench fuzz clean
 
 all: build
 
@@ -82,6 +82,17 @@ gallery: build addon $(if $(filter 5.2,$(GALLERY_BLENDER)),blender52) $(if $(fil
 # them, into povray/images/gallery_*.png (about 10 minutes on two shared cores).
 povray-gallery: build
 	@bash povray/render_gallery.sh $(BUILD)/bin/soak povray/images
+
+# The soak render column of docs/gallery.md: the seed scenes of scenes/gallery/
+# traced one after another at 960x540 into docs/images/gallery/soak_*.png (palette
+# PNGs < 400 KB). SOAK_GALLERY_SPP scales every scene's samples; each render stops
+# after SOAK_GALLERY_LIMIT seconds with the samples it has (about 40 minutes in all
+# on two shared cores at the defaults). SOAK_GALLERY_SCENES picks scenes by name.
+SOAK_GALLERY_SPP ?= 1
+SOAK_GALLERY_LIMIT ?= 420
+SOAK_GALLERY_SCENES ?=
+soak-gallery: build
+	@bash scenes/gallery/render.sh $(BUILD)/bin/soak docs/images/gallery $(SOAK_GALLERY_SPP) $(SOAK_GALLERY_LIMIT) $(SOAK_GALLERY_SCENES)
 
 # Each pass lists the skipped tests with their reasons and fails when a test
 # failed, was skipped for want of povray or blender (the set-up installs

@@ -1,0 +1,183 @@
+"""Meshes and wetness maps for the soak render column of docs/gallery.md, written
+into OUTDIR (scenes/gallery/render.sh calls this; nothing here is checked in):
+  sheet_dry.obj   a sheet of paper 210 x 297 x 0.1 mm (mm) less its blot, closed
+  sheet_wet.obj   the blot: the same sheet's 1 mm cells where the blot's map is over
+                  1/2, closed (the tracer's paper takes its wetness from the material,
+                  so the wet and dry parts are two objects that share their side walls)
+  wall.obj        a brick wall 1.6 x 0.9 m, bricks 4 mm proud of the mortar, UVs over the wall
+  mortar.obj      the mortar behind them, same UVs
+  pot.obj         a flowerpot 0.16 m high (lathe, closed: outer wall, rim, inner wall, floor)
+  glass.obj       a tumbler 0.16 m high, 2 mm walls (closed)
+  cognac.obj      the liquid in it, 5 cm deep, 0.3 mm inside the glass
+  table.obj       a table top 1.0 x 0.9 x 0.04 m from (-0.5, -0.4, -0.04), UVs over its top
+  spill.pgm       the spilled pool on the table (u, v over the top), 16 bit
+usage: meshes.py OUTDIR"""
+import math
+import os
+import sys
+
+
+def write_obj(path, verts, uvs, faces):
+    """faces: lists of (vertex index, uv index), 0-based."""
+    with open(path, "w") as f:
+        for v in verts:
+            f.write("v %.6f %.6f %.6f\n" % v)
+        for t in uvs:
+            f.write("vt %.6f %.6f\n" % t)
+        for face in faces:
+            f.write("f " + " ".join("%d/%d" % (v + 1, t + 1) for v, t in face) + "\n")
+
+
+def box_faces(verts, uvs, faces, lo, hi, uv_of):
+    """An axis-aligned box, outward faces, each corner's UV from uv_of(x, y, z)."""
+    quads = (((0, 0, 0), (0, 1, 0), (1, 1, 0), (1, 0, 0)),   # -z
+             ((0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)),   # +z
+             ((0, 0, 0), (1, 0, 0), (1, 0, 1), (0, 0, 1)),   # -y
+             ((0, 1, 0), (0, 1, 1), (1, 1, 1), (1, 1, 0)),   # +y
+             ((0, 0, 0), (0, 0, 1), (0, 1, 1), (0, 1, 0)),   # -x
+             ((1, 0, 0), (1, 1, 0), (1, 1, 1), (1, 0, 1)))   # +x
+    for quad in quads:
+        idx = []
+        for c in quad:
+            p = tuple(lo[i] if c[i] == 0 else hi[i] for i in range(3))
+            verts.append(p)
+            uvs.append(uv_of(*p))
+            idx.append((len(verts) - 1, len(uvs) - 1))
+        faces.append([idx[0], idx[1], idx[2]])
+        faces.append([idx[0], idx[2], idx[3]])
+
+
+def lathe(profile, steps=96):
+    """A closed surface of revolution about z from (r, z) points; the first and last
+    points must lie on the axis (r = 0)."""
+    verts, uvs, faces = [], [(0.5, 0.5)], []
+    ring = []
+    for r, z in profile:
+        if r == 0:
+            verts.append((0.0, 0.0, z))
+            ring.append([len(verts) - 1] * steps)
+        else:
+            row = []
+            for k in range(steps):
+                a = 2 * math.pi * k / steps
+                verts.append((r * math.cos(a), r * math.sin(a), z))
+                row.append(len(verts) - 1)
+            ring.append(row)
+    for j in range(len(ring) - 1):
+        a, b = ring[j], ring[j + 1]
+        for k in range(steps):
+            k1 = (k + 1) % steps
+            tri = [(a[k], 0), (a[k1], 0), (b[k1], 0)]
+            tri2 = [(a[k], 0), (b[k1], 0), (b[k], 0)]
+            for t in (tri, tri2):
+                if len({v for v, _ in t}) == 3:
+                    faces.append(t)
+    return verts, uvs, faces
+
+
+def write_pgm(path, n_u, n_v, value):
+    """value(u, v) in [0, 1]; row 0 is v = 1 (top)."""
+    with open(path, "wb") as f:
+        f.write(b"P5\n%d %d\n65535\n" % (n_u, n_v))
+        row = bytearray()
+        for j in range(n_v):
+            v = 1 - (j + 0.5) / n_v
+            for i in range(n_u):
+                q = int(round(65535 * min(max(value((i + 0.5) / n_u, v), 0.0), 1.0)))
+                row += bytes((q >> 8, q & 255))
+        f.write(row)
+
+
+def wobble(u, v, seed):
+    """A smooth irregular offset (a few sines) for blob edges."""
+    a = math.atan2(v, u)
+    return sum(math.sin(k * a + seed * k * 1.7) / k for k in (3, 5, 7)) / 3
+
+
+def sheet_part(path, wet, n_u=210, n_v=297, t=0.1):
+    """The cells (1 mm) of the sheet whose blot value is (wet) over or (not wet) under
+    1/2: their tops and bottoms, and side walls where the part ends (closed)."""
+    inside = [[(blot((i + 0.5) / n_u, (j + 0.5) / n_v) > 0.5) == wet for j in range(n_v)] for i in range(n_u)]
+    ids, verts, faces = {}, [], []
+
+    def vid(i, j, k):
+        if (i, j, k) not in ids:
+            ids[(i, j, k)] = len(verts)
+            verts.append((i * 210.0 / n_u, j * 297.0 / n_v, k * t))
+        return ids[(i, j, k)]
+
+    def quad(a, b, c, d):
+        faces.append([(a, 0), (b, 0), (c, 0)])
+        faces.append([(a, 0), (c, 0), (d, 0)])
+
+    def cell(i, j):
+        return 0 <= i < n_u and 0 <= j < n_v and inside[i][j]
+    for i in range(n_u):
+        for j in range(n_v):
+            if not inside[i][j]:
+                continue
+            quad(vid(i, j, 1), vid(i + 1, j, 1), vid(i + 1, j + 1, 1), vid(i, j + 1, 1))   # top, +z
+            quad(vid(i, j, 0), vid(i, j + 1, 0), vid(i + 1, j + 1, 0), vid(i + 1, j, 0))   # bottom, -z
+            if not cell(i - 1, j):
+                quad(vid(i, j, 0), vid(i, j, 1), vid(i, j + 1, 1), vid(i, j + 1, 0))
+            if not cell(i + 1, j):
+                quad(vid(i + 1, j, 0), vid(i + 1, j + 1, 0), vid(i + 1, j + 1, 1), vid(i + 1, j, 1))
+            if not cell(i, j - 1):
+                quad(vid(i, j, 0), vid(i + 1, j, 0), vid(i + 1, j, 1), vid(i, j, 1))
+            if not cell(i, j + 1):
+                quad(vid(i, j + 1, 0), vid(i, j + 1, 1), vid(i + 1, j + 1, 1), vid(i + 1, j + 1, 0))
+    write_obj(path, verts, [(0.5, 0.5)], faces)
+
+
+def blot(u, v):
+    """The blot of the paper: a round wet spot 0.1 of the sheet's width across at
+    (0.55, 0.55), a 0.02 soft edge, with a wobbly rim."""
+    du, dv = (u - 0.55) * 210, (v - 0.55) * 297
+    r = math.hypot(du, dv) / 55 * (1 + 0.12 * wobble(du, dv, 1))
+    return min(max((1 - r) / 0.08 + 0.5, 0), 1)
+
+
+def spill(u, v):
+    """The pool of cognac on the table top: a lobed blob about 0.15 m across round
+    (-0.05, -0.02) m, a 5 mm soft edge, a 3 cm margin the wood has drawn in at half
+    wetness."""
+    du, dv = u * 1.0 - 0.45, (v * 0.9 - 0.38) * 1.25
+    r = math.hypot(du, dv) / 0.15 * (1 + 0.25 * wobble(du, dv, 2))
+    pool = min(max((1 - r) / 0.033 + 0.5, 0), 1)
+    rim = 0.5 * min(max((1.2 - r) / 0.2, 0), 1)
+    return max(pool, rim)
+
+
+def main(out):
+    os.makedirs(out, exist_ok=True)
+    sheet_part(os.path.join(out, "sheet_dry.obj"), False)
+    sheet_part(os.path.join(out, "sheet_wet.obj"), True)
+    v, t, f = [], [], []
+    W, H = 1.6, 0.9
+    for j in range(12):
+        for i in range(-1, 8):
+            x0 = i * 0.23 + (j % 2) * 0.115
+            if x0 < W and x0 + 0.22 > 0:
+                box_faces(v, t, f, (max(x0, 0), -0.004, j * 0.075 + 0.005),
+                          (min(x0 + 0.22, W), 0.1, j * 0.075 + 0.07), lambda x, y, z: (x / W, z / H))
+    write_obj(os.path.join(out, "wall.obj"), v, t, f)
+    v, t, f = [], [], []
+    box_faces(v, t, f, (0, 0, 0), (W, 0.1, H), lambda x, y, z: (x / W, z / H))
+    write_obj(os.path.join(out, "mortar.obj"), v, t, f)
+    pot = [(0, 0), (0.055, 0), (0.08, 0.14), (0.088, 0.142), (0.088, 0.16), (0.072, 0.16),
+           (0.072, 0.145), (0.05, 0.012), (0, 0.012)]
+    write_obj(os.path.join(out, "pot.obj"), *lathe(pot))
+    glass = [(0, 0), (0.035, 0), (0.036, 0.16), (0.034, 0.16), (0.033, 0.008), (0, 0.008)]
+    write_obj(os.path.join(out, "glass.obj"), *lathe(glass))
+    cognac = [(0, 0.0083), (0.0327, 0.0083), (0.0327, 0.058), (0, 0.058)]
+    write_obj(os.path.join(out, "cognac.obj"), *lathe(cognac))
+    v, t, f = [], [], []
+    box_faces(v, t, f, (-0.5, -0.4, -0.04), (0.5, 0.5, 0), lambda x, y, z: (x + 0.5, (y + 0.4) / 0.9))
+    write_obj(os.path.join(out, "table.obj"), v, t, f)
+    write_pgm(os.path.join(out, "spill.pgm"), 400, 360, spill)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    main(sys.argv[1])
