@@ -1,10 +1,24 @@
 /* Image input (soak_image_read through OpenImageIO): the first byte picks the
  * file extension, the rest is the file. Decoded pixels must be finite. */
+#define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdlib.h>
 
 #include "fuzz_common.h"
 #include "soak/image.h"
+
+#ifdef SOAK_FUZZ_INPROCESS
+/* The decoder in this process (image_contain.c): a fuzzer must see the
+ * library's crashes, which the reader's child would turn into messages,
+ * and a fork per input ran 8 inputs a second. The replay uses the child. */
+int LLVMFuzzerInitialize(int *argc, char ***argv)
+{
+    (void)argc;
+    (void)argv;
+    setenv("SOAK_IMAGE_IN_PROCESS", "1", 1);
+    return 0;
+}
+#endif
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

@@ -76,6 +76,11 @@ std::unique_ptr<ImageInput> open_named_reader(const char *path, char *err, size_
 // soak/image.h's limits on the header of an open reader.
 soak_status check_spec(const char *path, const ImageSpec &spec, long long payload_bytes, char *err, size_t errlen)
 {
+    if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1) {
+        set_err(err, errlen, std::string(path) + ": the header declares no pixels (" + std::to_string(spec.width) + "x" +
+                                 std::to_string(spec.height) + "x" + std::to_string(spec.nchannels) + ")");
+        return SOAK_ERR_ARG;
+    }
     if (spec.width > SOAK_IMAGE_MAX_SIDE || spec.height > SOAK_IMAGE_MAX_SIDE) {
         set_err(err, errlen, std::string(path) + ": a " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                                  " image is larger than " + std::to_string(SOAK_IMAGE_MAX_SIDE) +
