@@ -40,7 +40,6 @@ class SOAK_PT_wetness_rain(bpy.types.Panel):
     bl_space_type = "PROPERTIES"
     bl_region_type = "WINDOW"
     bl_context = "material"
-    bl_options = {"DEFAULT_CLOSED"}
 
     def draw(self, context):
         layout = self.layout
@@ -55,12 +54,15 @@ class SOAK_PT_wetness_rain(bpy.types.Panel):
         col.prop(s, "dry_time")
         col.separator()
         col.prop(s, "map_size")
+        ob = context.object
+        if s.map_size == 0.0 and ob is not None and ob.type == "MESH":
+            size = max(ob.dimensions.x, ob.dimensions.y, 1e-3)
+            col.label(text=f"Scale 0: the object's size, {size:.3g} m", icon="INFO")
         col.prop(s, "size")
         col.prop(s, "seed")
         col.prop(s, "shelter")
         if s.shelter:
             col.prop(s, "rays")
-        ob = context.object
         mat = ob.active_material if ob is not None else None
         if mat is not None and mat.node_tree is not None and any(
                 n.get(nodes.ROLE_KEY) == "rain" for n in mat.node_tree.nodes):

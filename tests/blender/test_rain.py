@@ -252,6 +252,8 @@ def main():
     s.map_size, s.dry_time = 0.0, 20.0
     check(bpy.ops.soak.bake_rain() == {"FINISHED"}, "Bake Rain")
     board.hide_render = True          # the probe camera looks through it
+    check(mat.soak.wetness_source == "IMAGE" and mat.soak.wet_map is not None
+          and mat.soak.wet_map.source == "SEQUENCE", "the panel's Source shows the drops sequence")
     rain_nodes = sorted(n.name for n in mat.node_tree.nodes if n.get("soak_role") == "rain")
     gn = next(n for n in mat.node_tree.nodes if n.type == "GROUP")
     ref1, m1 = check_wet(sc, mat, gn, plane, 1, START)

@@ -15,7 +15,7 @@ import tempfile
 
 import bpy
 
-from .. import nodes, rain
+from .. import nodes, properties, rain
 from ..predicates import poll_message
 from ..preferences import find_soak
 from .bake import check_occluders, export_scene_obj
@@ -222,6 +222,8 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
             shutil.rmtree(self._folder, ignore_errors=True)
             self.report({"ERROR"}, f"rain baked into {self._folder} but not wired: {e}")
             return {"CANCELLED"}
+        # the panel's Source shows the drops (set without re-wiring: the node is in place)
+        properties._revert(self._mat.soak, {"wetness_source": "IMAGE", "wet_map": drops})
         rain.drop_old_images(self._ob.name, (drops, ripples))
         for img, name in ((drops, "drops"), (ripples, "ripples")):
             if bpy.data.images.get(self._base_name(name)) is None:
