@@ -11,6 +11,7 @@ import os
 import sys
 
 import bpy
+import mathutils
 
 argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 opts = dict(zip(argv[::2], argv[1::2]))
@@ -55,11 +56,14 @@ def scene(tmp):
     sc.world = world
     sun = bpy.data.objects.new("Sun", bpy.data.lights.new("Sun", "SUN"))
     sun.data.energy = 3.0
-    sun.rotation_euler = (math.radians(55), 0, math.radians(180))   # low, from behind the yard: glints
+    sun.data.angle = math.radians(12)
+    # low, facing the camera across the yard: the wet film mirrors it, the ripples break the mirror
+    to_sun = mathutils.Vector((0.25, 1.0, 0.62)).normalized()
+    sun.rotation_euler = to_sun.to_track_quat("Z", "Y").to_euler()
     sc.collection.objects.link(sun)
     cam = bpy.data.objects.new("Cam", bpy.data.cameras.new("Cam"))
-    cam.location = (0.0, -1.45, 0.85)
-    cam.rotation_euler = (math.radians(62), 0, 0)
+    cam.location = (0.12, -1.05, 0.62)
+    cam.rotation_euler = (math.radians(60), 0, math.radians(4))
     sc.collection.objects.link(cam)
     sc.camera = cam
     box("Bench top", (0.45, 0.5, 0.03), (-0.27, 0.15, 0.3))

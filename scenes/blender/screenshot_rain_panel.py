@@ -17,6 +17,7 @@ soak_install.install(opts["--addon"])
 soak_install.preferences().soak_path = os.path.abspath(opts["--soak"])
 out = os.path.abspath(opts["--out"])
 bpy.context.preferences.view.show_splash = False
+bpy.context.preferences.view.show_tooltips = False   # the pointer rests mid-screen
 
 
 def setup():
