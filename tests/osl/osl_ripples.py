@@ -77,7 +77,8 @@ def main(soak, root, tmp):
     ref = dump(os.path.join(tmp, "rip.0003.exr"), tmp)
     fails, worst_tilt = [], 0.0
     for frame in (11, -5):
-        got = shade(tmp, [("RippleFile", "rip."), ("RippleExtension", ".exr"), ("Frame", frame), ("LoopFrames", LOOP)], "f%d" % frame)
+        params = [("RippleFile", "rip."), ("RippleExtension", ".exr"), ("Frame", frame), ("LoopFrames", LOOP)]
+        got = shade(tmp, params, "f%d" % frame)
         worst = 0.0
         for (x, y), g in got.items():
             # testshade's row y is v = (y + 0.5) / G; the file's row G-1-y holds that v
@@ -96,8 +97,8 @@ def main(soak, root, tmp):
     print("%s: the flipbook's normals lean up to %.2f degrees" % ("ok" if ok else "FAIL", worst_tilt))
     if not ok:
         fails.append("flat flipbook")
-    for name, params in (("dry", [("RippleFile", "rip."), ("RippleExtension", ".exr"), ("Frame", 3), ("LoopFrames", LOOP),
-                                  ("Amount", 0.5), ("PuddleLevel", 0.6)]),
+    flipbook = [("RippleFile", "rip."), ("RippleExtension", ".exr"), ("LoopFrames", LOOP)]
+    for name, params in (("dry", flipbook + [("Frame", 3), ("Amount", 0.5), ("PuddleLevel", 0.6)]),
                          ("nofile", [("Frame", 3)])):
         got = shade(tmp, params, name)
         worst = max(max(abs(a - b) for a, b in zip(g, (0.0, 0.0, 1.0))) for g in got.values())

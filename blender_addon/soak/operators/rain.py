@@ -18,7 +18,7 @@ import bpy
 from .. import nodes, properties, rain
 from ..predicates import poll_message
 from ..preferences import find_soak
-from .bake import check_occluders, export_scene_obj
+from .bake import export_scene_obj
 
 RIPPLE_FRAMES = 64        # one flipbook file per scene frame, looping
 RIPPLE_TILE = 0.5         # metres (soak bake ripples' default)
@@ -117,11 +117,6 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
             self.report({"ERROR"}, "soak executable not found: set its path in the add-on preferences or put it on PATH")
             return False
         why = check(context, s)
-        if why is None and s.shelter:
-            try:
-                check_occluders("SCENE")
-            except RuntimeError as e:
-                why = str(e)
         if why is not None:
             self.report({"ERROR"}, why)
             return False
@@ -249,10 +244,16 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
             return {"CANCELLED"}
         wm = context.window_manager
         self._timer = wm.event_timer_add(0.2, window=context.window)
-        self._ticks = 0
         wm.progress_begin(0, 100)
         wm.modal_handler_add(self)
         return {"RUNNING_MODAL"}
+
+    def _progress(self):
+        """(frames written, frames to write) over both bakes: the files in
+        the staging folder (each frame is renamed into place when done)."""
+        names = os.listdir(self._stage) if os.path.isdir(self._stage) else []
+        done = sum(1 for n in names if n.endswith(".exr") and not n.startswith("."))
+        return done, (self._last - self._first + 1) + RIPPLE_FRAMES
 
     def _stop(self, context):
         wm = context.window_manager
@@ -270,15 +271,15 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
             return {"CANCELLED"}
         if event.type != "TIMER":
             return {"PASS_THROUGH"}
-        self._ticks += 1
+        done, total = self._progress()
         step = 2 - len(self._cmds)           # 1 while baking drops, 2 while baking ripples
-        context.window_manager.progress_update(min(99, 50 * (step - 1) + min(49, self._ticks)))
-        context.workspace.status_text_set(f"Soak: {self._what} ({step}/2)... (Esc cancels)")
+        context.window_manager.progress_update(min(99, int(100 * done / total)))
+        context.workspace.status_text_set(f"Soak: {self._what} ({step}/2), {done} of {total} frames... "
+                                          "(Esc cancels)")
         if self._proc.poll() is None:
             return {"PASS_THROUGH"}
         if self._cmds and self._proc.returncode == 0:
             self._proc.communicate()
-            self._ticks = 0
             if self._next():
                 return {"PASS_THROUGH"}
             self._stop(context)
