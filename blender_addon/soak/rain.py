@@ -18,8 +18,6 @@ file number is clamp(scene frame - frame_start + 1, 0, duration) +
 frame_offset, or with cycling the same modulo duration (0 -> duration)."""
 
 import json
-import os
-import shutil
 
 import bpy
 
@@ -199,11 +197,8 @@ FOLDER_KEY = "soak_rain_folder"  # ... and the folder holding their frames
 
 
 def drop_old_images(owner, keep):
-    """After a new bake of `owner` is wired: the earlier bakes' images hand
-    their users over to nothing and go, with their frame folders (only
-    folders a rain bake made: named in the image's FOLDER_KEY)."""
+    """After a new bake of `owner` is wired: the earlier bakes' images,
+    now unused, go. Their frame folders stay: undo brings the images back,
+    and they must find their files."""
     for img in [i for i in bpy.data.images if i.get(TAG) == owner and i not in keep and i.users == 0]:
-        folder = img.get(FOLDER_KEY)
         bpy.data.images.remove(img)
-        if folder and os.path.basename(os.path.dirname(folder)) == "soak_rain" and os.path.isdir(folder):
-            shutil.rmtree(folder, ignore_errors=True)

@@ -237,6 +237,23 @@ def check_refusals(sc, mat, plane):
           f"a wiring that fails half-way leaves the tree, images and drivers as they were ({msg})")
 
 
+def check_undo(sc):
+    """Undo of a Bake Rain puts back the tree of the bake before it, whose
+    images still find their frames."""
+    mat = bpy.data.materials["Wet ground"]
+    bpy.ops.ed.undo_push(message="before the third bake")
+    before = common.tree_state(mat.node_tree)
+    sc.soak_rain.seed = 9
+    check(bpy.ops.soak.bake_rain() == {"FINISHED"}, "a third Bake Rain")
+    bpy.ops.ed.undo_push(message="third bake")
+    bpy.ops.ed.undo()
+    mat = bpy.data.materials["Wet ground"]
+    tex = [n for n in mat.node_tree.nodes if n.type == "TEX_IMAGE" and n.image is not None]
+    files = [bpy.path.abspath(n.image.filepath) for n in tex]
+    check(common.tree_state(mat.node_tree) == before and len(tex) == 2 and all(os.path.isfile(f) for f in files),
+          f"undo of Bake Rain restores the tree; its images find their frames ({len(tex)} image nodes)")
+
+
 def main():
     os.makedirs(TMP, exist_ok=True)
     common.install_addon(A["addon"])
@@ -274,6 +291,8 @@ def main():
     imgs = [i for i in bpy.data.images if i.get("soak_rain_for")]
     check(len(now) == len(rain_nodes) and len(imgs) == 2,
           f"the second bake replaced the first's nodes ({len(now)}) and images ({old} -> {[i.name for i in imgs]})")
+    check_undo(sc)
+    mat = bpy.data.materials["Wet ground"]
     check(bpy.ops.soak.make_dry() == {"FINISHED"} and not any(n.get("soak_role") for n in mat.node_tree.nodes),
           "Make Dry removes the rain's nodes")
     print(f"PASS: {len(CHECKS)} checks (Blender {bpy.app.version_string})")

@@ -5,8 +5,9 @@ sequences and wires them into the wet material (rain.wire): all or nothing.
 
 The frames go to a folder next to the .blend (`//soak_rain/OBJECT/`; a
 temporary folder while the file is unsaved): Blender cannot pack image
-sequences. A bake is written into a staging folder and renamed over the old
-one only when both bakes succeeded."""
+sequences. A bake is written into a staging folder, renamed to a folder of
+its own (OBJECT.NNN) when both bakes succeeded, and removed when wiring
+fails; earlier bakes' folders are kept (undo brings their images back)."""
 
 import os
 import shutil
@@ -211,11 +212,12 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         try:
             rain.wire(self._mat, drops, self._first, self._last, ripples, RIPPLE_FRAMES, self._scene_start,
                       self._repeat, self._uv)
-        except RuntimeError as e:
+        except Exception as e:         # ours (RuntimeError) or a bug: the tree is back as it was either way
             bpy.data.images.remove(drops)
             bpy.data.images.remove(ripples)
             shutil.rmtree(self._folder, ignore_errors=True)
-            self.report({"ERROR"}, f"rain baked into {self._folder} but not wired: {e}")
+            why = str(e) if isinstance(e, RuntimeError) else f"{type(e).__name__}: {e}"
+            self.report({"ERROR"}, f"rain baked but not wired (frames removed): {why}")
             return {"CANCELLED"}
         # the panel's Source shows the drops (set without re-wiring: the node is in place)
         properties._revert(self._mat.soak, {"wetness_source": "IMAGE", "wet_map": drops})
@@ -223,7 +225,8 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         for img, name in ((drops, "drops"), (ripples, "ripples")):
             if bpy.data.images.get(self._base_name(name)) is None:
                 img.name = self._base_name(name)
-        where = "" if self._saved else " (a temporary folder: save the .blend and bake again to keep them)"
+        where = (" (earlier bakes' folders are kept for undo)" if self._saved
+                 else " (a temporary folder: save the .blend and bake again to keep them)")
         self.report({"INFO"}, f"rain baked: frames {self._first}-{self._last} and {RIPPLE_FRAMES} ripple frames "
                               f"in {self._folder}{where}")
         return {"FINISHED"}
