@@ -14,9 +14,9 @@ bl_info = {
     "category": "Material",
 }
 
-from . import operators, preferences, properties, ui
+from . import operators, preferences, properties, rain_ui, ui
 
-_modules = (preferences, properties, operators, ui)
+_modules = (preferences, properties, operators, ui, rain_ui)
 
 
 def register():

@@ -17,7 +17,7 @@ import json
 import bpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, PointerProperty, StringProperty
 
-from . import data, nodes
+from . import data, nodes, rain
 
 
 _reverting = set()     # settings being put back after a refused change (no update then)
@@ -96,6 +96,8 @@ def _float_proxy(name, label, description, default, lo, hi, subtype="NONE", soft
             s.default_value = value
         if not socks:
             self[PENDING + name] = float(value)
+        if name == "Puddle Level":      # the rain's ripples flood at the same level
+            rain.sync_level(self.id_data)
 
     kw = {"soft_max": soft_max} if soft_max is not None else {}
     return FloatProperty(name=label, description=description, get=get, set=put, min=lo, max=hi,

@@ -1,7 +1,7 @@
 import bpy
 
-from . import bake, volume, wet
+from . import bake, rain, volume, wet
 
-classes = wet.classes + bake.classes + volume.classes
+classes = wet.classes + bake.classes + volume.classes + rain.classes
 
 register, unregister = bpy.utils.register_classes_factory(classes)

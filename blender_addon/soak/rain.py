@@ -1,0 +1,204 @@
+"""Rain over time in a wet material (issue 37): the drops bake's frame
+sequence as the wetness source, the ripple flipbook as a normal mixed in
+where the puddle level floods.
+
+Kept apart from wet_group.py and nodes.py: it only adds nodes around the
+Soak Wet group node (tagged like the other nodes Make Wet adds, so Make Dry
+removes them) and never changes the group itself.
+
+  drops frame  --Color-->  group Wet Map
+       |                          (the wetness source, role "source")
+       +--> Greater Than (Puddle Level - 1e-4, kept equal by the panel's Puddle Level) = mask
+  ripple frame --> Normal Map (tangent, the mesh's UVs) = r
+  base normal (the user's link into the group's Normal, else Geometry Normal) = b
+  normalize(b + mask (r - b))  -->  group Normal
+
+Image sequences (Blender's image user, ``BKE_image_user_frame_get``): the
+file number is clamp(scene frame - frame_start + 1, 0, duration) +
+frame_offset, or with cycling the same modulo duration (0 -> duration)."""
+
+import json
+
+import bpy
+
+from . import nodes
+
+RAIN_ROLE = "rain"
+BASE_KEY = "soak_rain_base"      # on the node whose input 0 takes the base normal
+MASK_KEY = "soak_rain_flood"     # on the Greater Than node: its threshold follows Puddle Level
+FLOOD_EPS = 1e-4                 # a texel at the puddle level floods (float rounding)
+
+
+def drops_user(iu, first, last):
+    """Image user of the drops sequence drops.<first>..<last>: file f at
+    scene frame f, the first file before it, the last after it (no missing
+    frame, no cycling). Scene frame F maps to clamp(F - first, 0, last -
+    first) + first."""
+    iu.frame_duration = max(1, last - first)
+    iu.frame_start = first + 1
+    iu.frame_offset = first
+    iu.use_cyclic = False
+    iu.use_auto_refresh = True
+
+
+def ripples_user(iu, frames, scene_start):
+    """Image user of the looping flipbook ripples.0000..<frames-1>: file 0
+    at the scene's first frame, one file per scene frame, cycling."""
+    iu.frame_duration = frames
+    iu.frame_start = scene_start
+    iu.frame_offset = -1
+    iu.use_cyclic = True
+    iu.use_auto_refresh = True
+
+
+def _node(tree, kind, x, y, label):
+    n = tree.nodes.new(kind)
+    n[nodes.NODE_TAG] = True
+    n[nodes.ROLE_KEY] = RAIN_ROLE
+    n.label = label
+    n.location = (x, y)
+    return n
+
+
+def rain_nodes(tree):
+    return [n for n in tree.nodes if n.get(nodes.NODE_TAG) and n.get(nodes.ROLE_KEY) == RAIN_ROLE]
+
+
+def _base_normal(tree, gn):
+    """The normal the ripples bend: what feeds the group's Normal now, seen
+    through an earlier rain mix (then its base), or None (the surface's)."""
+    links = gn.inputs["Normal"].links
+    if not links:
+        return None
+    src = links[0].from_socket
+    if src.node.get(nodes.ROLE_KEY) != RAIN_ROLE:
+        return src
+    base = next((n for n in rain_nodes(tree) if n.get(BASE_KEY)), None)
+    if base is None or not base.inputs[0].links:
+        return None
+    src = base.inputs[0].links[0].from_socket
+    return None if src.node.get(nodes.ROLE_KEY) == RAIN_ROLE else src
+
+
+def _drops_node(tree, gn, drops, first, last):
+    n = _node(tree, "ShaderNodeTexImage", gn.location.x - 700, gn.location.y - 200, "Soak Rain: drops")
+    n[nodes.ROLE_KEY] = "source"                 # the wetness source: the panel's Source, Make Dry
+    n.image = drops
+    n.extension = "EXTEND"
+    n.interpolation = "Linear"
+    drops_user(n.image_user, first, last)
+    return n
+
+
+def _ripple_normal(tree, gn, ripples, frames, scene_start, repeat, uv_map):
+    x, y = gn.location.x - 1000, gn.location.y - 500
+    uv = _node(tree, "ShaderNodeTexCoord", x, y, "Soak Rain: UV")
+    mp = _node(tree, "ShaderNodeMapping", x + 180, y, "Soak Rain: ripple tiles")
+    mp.inputs["Scale"].default_value = (repeat, repeat, 1.0)
+    tex = _node(tree, "ShaderNodeTexImage", x + 360, y, "Soak Rain: ripples")
+    tex.image = ripples
+    tex.extension = "REPEAT"
+    tex.interpolation = "Linear"
+    ripples_user(tex.image_user, frames, scene_start)
+    nm = _node(tree, "ShaderNodeNormalMap", x + 640, y, "Soak Rain: ripple normal")
+    nm.space = "TANGENT"
+    nm.uv_map = uv_map
+    tree.links.new(uv.outputs["UV"], mp.inputs["Vector"])
+    tree.links.new(mp.outputs["Vector"], tex.inputs["Vector"])
+    tree.links.new(tex.outputs["Color"], nm.inputs["Color"])
+    return nm.outputs["Normal"]
+
+
+def _vmath(tree, op, x, y, label):
+    n = _node(tree, "ShaderNodeVectorMath", x, y, label)
+    n.operation = op
+    return n
+
+
+def _flood_mix(tree, gn, wet, ripple, base):
+    """normalize(b + mask (r - b)), mask = wet > Puddle Level - eps."""
+    x, y = gn.location.x - 360, gn.location.y - 420
+    mask = _node(tree, "ShaderNodeMath", x - 180, y + 160, "Soak Rain: flooded")
+    mask.operation = "GREATER_THAN"
+    tree.links.new(wet, mask.inputs[0])
+    mask[MASK_KEY] = True
+    mask.inputs[1].default_value = gn.inputs["Puddle Level"].default_value - FLOOD_EPS
+    if base is None:
+        geo = _node(tree, "ShaderNodeNewGeometry", x - 360, y - 120, "Soak Rain: surface normal")
+        base = geo.outputs["Normal"]
+    d = _vmath(tree, "SUBTRACT", x - 180, y - 40, "Soak Rain: ripple - base")
+    s = _vmath(tree, "SCALE", x, y, "Soak Rain: where flooded")
+    a = _vmath(tree, "ADD", x + 180, y, "Soak Rain: base + ripple")
+    a[BASE_KEY] = True
+    nz = _vmath(tree, "NORMALIZE", x + 360, y, "Soak Rain: normal")
+    tree.links.new(ripple, d.inputs[0])
+    tree.links.new(base, d.inputs[1])
+    tree.links.new(d.outputs["Vector"], s.inputs[0])
+    tree.links.new(mask.outputs[0], s.inputs["Scale"])
+    tree.links.new(base, a.inputs[0])
+    tree.links.new(s.outputs["Vector"], a.inputs[1])
+    tree.links.new(a.outputs["Vector"], nz.inputs[0])
+    return nz.outputs["Vector"], mask
+
+
+def sync_level(mat):
+    """Sets the flood threshold of a material's rain mix to its group's
+    Puddle Level (the panel's Puddle Level calls it, and wiring). Not a
+    driver: a driver reading the tree it drives is a dependency cycle."""
+    tree = mat.node_tree if mat is not None else None
+    gns = nodes.group_nodes(tree) if tree is not None else []
+    if not gns:
+        return
+    level = gns[0].inputs["Puddle Level"].default_value
+    for n in rain_nodes(tree):
+        if n.get(MASK_KEY):
+            n.inputs[1].default_value = level - FLOOD_EPS
+
+
+def _wire(mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv_map):
+    tree = mat.node_tree
+    gn = gns[0]
+    old = rain_nodes(tree) + nodes._source_nodes(tree)
+    base = _base_normal(tree, gn)
+    src = _drops_node(tree, gn, drops, first, last)
+    wet = src.outputs["Color"]
+    ripple = _ripple_normal(tree, gn, ripples, frames, scene_start, repeat, uv_map)
+    normal, mask = _flood_mix(tree, gn, wet, ripple, base)
+    for g in gns:
+        tree.links.new(wet, g.inputs["Wet Map"])
+        tree.links.new(normal, g.inputs["Normal"])
+    # nothing below can fail: the old nodes go last (a snapshot cannot bring them back)
+    for n in old:
+        tree.nodes.remove(n)
+    for g in gns:
+        restore = json.loads(g[nodes.RESTORE_KEY])
+        restore["nodes"] = [n.name for n in tree.nodes if n.get(nodes.NODE_TAG) and n.type != "GROUP"]
+        g[nodes.RESTORE_KEY] = json.dumps(restore)
+    return src
+
+
+def wire(mat, drops, first, last, ripples, frames, scene_start, repeat, uv_map):
+    """Wires a baked drops sequence (files first..last, file f = scene frame
+    f) and ripple flipbook (`frames` files from 0, looping from the scene's
+    first frame, `repeat` tiles across the UV square) into a wet material.
+    All or nothing: on failure the tree is as before."""
+    tree = mat.node_tree
+    gns = nodes.group_nodes(tree) if tree is not None else []
+    if not gns:
+        raise RuntimeError(f"material '{mat.name}' is not wet: Make Wet first, then bake the rain")
+    nodes.check_editable(mat)
+    if any(nodes.RESTORE_KEY not in g for g in gns):
+        raise RuntimeError(f"material '{mat.name}': a Soak Wet node has no restore record (Make Dry, then Make Wet)")
+    return nodes._atomic(tree, _wire, mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv_map)
+
+
+TAG = "soak_rain_for"            # on the images a rain bake loaded: the object's name
+FOLDER_KEY = "soak_rain_folder"  # ... and the folder holding their frames
+
+
+def drop_old_images(owner, keep):
+    """After a new bake of `owner` is wired: the earlier bakes' images,
+    now unused, go. Their frame folders stay: undo brings the images back,
+    and they must find their files."""
+    for img in [i for i in bpy.data.images if i.get(TAG) == owner and i not in keep and i.users == 0]:
+        bpy.data.images.remove(img)

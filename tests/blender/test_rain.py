@@ -1,0 +1,301 @@
+"""Bake Rain (issue 37): the drops and ripples bakes wired into a wet
+material and animated over the scene's frames, checked by rendering.
+
+A 0.5 m plane (UVs = the unit square) under a straight-down orthographic
+camera whose 256 x 256 pixels are the maps' texels; a board above its left
+part shelters it. Scene at 2 fps (frame = 0.5 s), rain 50 mm/h from frame 3
+to 29, the scene to 40 (drying after the rain). Cycles, 1 sample, a pixel
+filter of 0.01 px: each pixel reads its texel's centre. A probe (Emission,
+black world, Standard view) shows a socket of the wired tree; the reference
+is the baked file of the frame the scene frame must show, read on its own
+(an image of one file, not the sequence):
+
+ 1. the group's Wet Map input at frames 1 (before the rain: the first file,
+    all dry), 12, 29 and 40 equals drops.<frame>.exr (frames before the rain
+    start show the start);
+ 2. the group's Liquid output (Schedule off, Wetness 1, Puddle Level p)
+    equals min(w / p, 1) of that file (the group's documented formula),
+    after changing Puddle Level (the flood threshold follows by its driver);
+ 3. the normal entering the group is normalize(2 c - 1) of ripples.<k>.exr,
+    k = (frame - scene start) mod 64, where w >= p, and the plane's +Z
+    elsewhere (tangent +X, bitangent +Y for the plane's UVs);
+ 4. sheltered texels (under the board) stay dry while open ones get wet;
+ 5. all or nothing: a failing soak, a failing wiring half-way and a
+    backwards frame range leave the node tree as it was (common.tree_state),
+    with no new image and no stray driver; a second bake replaces the first
+    one's nodes and images."""
+import math
+import os
+import sys
+
+import bpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+
+A = common.args()
+TMP = A["tmp"]
+N = 256                  # render pixels = drops texels = ripple texels
+SIZE_M = 0.5             # the plane's side = the ripple tile: one tile over the UV square
+FPS = 2
+START, END, LAST = 3, 29, 40
+TOL = 2e-3               # EXR half values through a linear lookup at the texel centre +- 0.005 px
+CHECKS = []
+
+
+def check(cond, msg):
+    if not cond:
+        common.fail(msg)
+    CHECKS.append(msg)
+    print("ok:", msg)
+
+
+def scene():
+    for coll in (bpy.data.objects, bpy.data.meshes, bpy.data.materials, bpy.data.cameras, bpy.data.lights,
+                 bpy.data.worlds, bpy.data.node_groups, bpy.data.images):
+        for item in list(coll):
+            coll.remove(item)
+    sc = bpy.context.scene
+    sc.render.engine = "CYCLES"
+    sc.cycles.device = "CPU"
+    sc.cycles.samples = 1
+    sc.cycles.use_denoising = False
+    sc.cycles.filter_width = 0.01
+    sc.render.fps, sc.render.fps_base = FPS, 1.0
+    sc.frame_start, sc.frame_end = 1, LAST
+    sc.render.resolution_x = sc.render.resolution_y = N
+    sc.render.resolution_percentage = 100
+    sc.render.image_settings.file_format = "OPEN_EXR"
+    sc.render.image_settings.color_depth = "32"
+    sc.view_settings.view_transform = "Standard"
+    world = bpy.data.worlds.new("W")
+    common.use_nodes(world)
+    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+    sc.world = world
+    cd = bpy.data.cameras.new("C")
+    cd.type = "ORTHO"
+    cd.ortho_scale = SIZE_M
+    co = bpy.data.objects.new("C", cd)
+    sc.collection.objects.link(co)
+    co.location = (0, 0, 2)
+    sc.camera = co
+    bpy.ops.mesh.primitive_plane_add(size=SIZE_M)
+    board = bpy.context.object
+    board.name = "Board"
+    board.scale = (0.4, 1.4, 1)          # over x in [-0.275, -0.075]: u in [0, 0.35] of the ground
+    board.location = (-0.175, 0, 0.05)
+    bpy.ops.mesh.primitive_plane_add(size=SIZE_M)
+    plane = bpy.context.object
+    plane.name = "Ground"
+    mat = bpy.data.materials.new("Wet ground")
+    common.use_nodes(mat)
+    plane.data.materials.append(mat)
+    return sc, plane, board, mat
+
+
+def read(path):
+    img = bpy.data.images.load(path, check_existing=False)
+    px = [0.0] * (4 * img.size[0] * img.size[1])
+    img.pixels.foreach_get(px)
+    w = img.size[0]
+    bpy.data.images.remove(img)
+    return px, w
+
+
+def render(sc, mat, socket, frame, vector=False):
+    """The probe: `socket` (a value or a normal mapped to 0.5 n + 0.5) as
+    emission, rendered at `frame`; returns RGBA pixels."""
+    t = mat.node_tree
+    out = next(n for n in t.nodes if n.type == "OUTPUT_MATERIAL" and n.is_active_output)
+    keep = out.inputs["Surface"].links[0].from_socket
+    em = t.nodes.new("ShaderNodeEmission")
+    made = [em]
+    if vector:
+        ma = t.nodes.new("ShaderNodeVectorMath")
+        ma.operation = "MULTIPLY_ADD"
+        ma.inputs[1].default_value = (0.5, 0.5, 0.5)
+        ma.inputs[2].default_value = (0.5, 0.5, 0.5)
+        t.links.new(socket, ma.inputs[0])
+        t.links.new(ma.outputs["Vector"], em.inputs["Color"])
+        made.append(ma)
+    else:
+        t.links.new(socket, em.inputs["Color"])
+    t.links.new(em.outputs["Emission"], out.inputs["Surface"])
+    sc.frame_set(frame)
+    path = os.path.join(TMP, f"probe_{frame}.exr")
+    sc.render.filepath = path
+    bpy.ops.render.render(write_still=True)
+    t.links.new(keep, out.inputs["Surface"])
+    for n in made:
+        t.nodes.remove(n)
+    px, _ = read(path)
+    return px
+
+
+def folder(plane):
+    img = next(i for i in bpy.data.images if i.get("soak_rain_for") == plane.name and "drops" in i.name)
+    return img["soak_rain_folder"]
+
+
+def check_wet(sc, mat, gn, plane, frame, expect_file):
+    ref, w = read(os.path.join(folder(plane), f"drops.{expect_file:04d}.exr"))
+    check(w == N, f"drops map {w} wide")
+    got = render(sc, mat, gn.inputs["Wet Map"].links[0].from_socket, frame)
+    err = max(abs(got[i] - ref[i]) for i in range(0, len(ref), 4))
+    mean = sum(ref[i] for i in range(0, len(ref), 4)) / (N * N)
+    check(err < TOL, f"frame {frame}: rendered wetness = drops.{expect_file:04d}.exr (max |diff| {err:.2e}, "
+                     f"mean wetness {mean:.3f})")
+    return ref, mean
+
+
+def check_liquid(sc, mat, gn, ref, frame, level):
+    mat.soak.puddle_level = level      # the panel's control: the flood threshold follows it
+    gn.inputs["Schedule"].default_value = 0.0
+    gn.inputs["Wetness"].default_value = 1.0
+    got = render(sc, mat, gn.outputs["Liquid"], frame)
+    err = max(abs(got[i] - min(ref[i] / level, 1.0)) for i in range(0, len(ref), 4))
+    check(err < TOL / level, f"frame {frame}: Liquid = min(w / {level}, 1) (max |diff| {err:.2e})")
+
+
+def check_normal(sc, mat, gn, plane, ref, frame, level):
+    k = (frame - sc.frame_start) % 64
+    rip, w = read(os.path.join(folder(plane), f"ripples.{k:04d}.exr"))
+    check(w == N, f"ripple frame {w} wide")
+    got = render(sc, mat, gn.inputs["Normal"].links[0].from_socket, frame, vector=True)
+    worst, flooded, bent = 0.0, 0, 0.0
+    for p in range(N * N):
+        if ref[4 * p] >= level:
+            n = [2.0 * rip[4 * p + c] - 1.0 for c in range(3)]
+            ln = math.sqrt(sum(c * c for c in n))
+            n = [c / ln for c in n]
+            flooded += 1
+            bent = max(bent, 1.0 - n[2])
+        else:
+            n = [0.0, 0.0, 1.0]
+        g = [2.0 * got[4 * p + c] - 1.0 for c in range(3)]
+        worst = max(worst, max(abs(a - b) for a, b in zip(g, n)))
+    check(flooded > 100 and bent > 1e-3, f"frame {frame}: {flooded} flooded texels, ripples tilt up to "
+                                         f"{math.degrees(math.acos(1 - bent)):.1f} deg")
+    check(worst < 4 * TOL, f"frame {frame}: rendered normal = ripples.{k:04d}.exr where w >= {level}, +Z "
+                           f"elsewhere (max |diff| {worst:.2e})")
+
+
+def check_shelter(ref):
+    # the board covers u in [0, 0.35]; margins for the rain's cone (0.05 m up) and the splats (up to 5 cm)
+    under = [ref[4 * (y * N + x)] for y in range(40, N - 40) for x in range(int(0.04 * N), int(0.22 * N))]
+    open_ = [ref[4 * (y * N + x)] for y in range(N) for x in range(int(0.6 * N), N)]
+    mu, mo = sum(under) / len(under), sum(open_) / len(open_)
+    check(mo > 0.2 and mu < 0.02 * mo, f"sheltered texels mean wetness {mu:.4f}, open ones {mo:.3f}")
+
+
+def rain_state(mat):
+    ad = mat.node_tree.animation_data
+    drivers = sorted(fc.data_path for fc in ad.drivers) if ad else []
+    return common.tree_state(mat.node_tree), sorted(i.name for i in bpy.data.images), drivers
+
+
+def refusal(op):
+    """The error an operator reports (bpy.ops raises it in the background),
+    or None when it did not refuse."""
+    try:
+        r = op()
+    except RuntimeError as e:
+        return str(e)
+    return None if r != {"CANCELLED"} else "cancelled without a message"
+
+
+def check_refusals(sc, mat, plane):
+    before = rain_state(mat)
+    s = sc.soak_rain
+    s.start_frame, s.end_frame = 20, 10
+    msg = refusal(bpy.ops.soak.bake_rain)
+    check(msg is not None and "before it starts" in msg and rain_state(mat) == before,
+          f"a backwards frame range is refused ({msg}), nothing changed")
+    s.start_frame, s.end_frame = START, END
+    prefs = common.preferences()
+    prefs.soak_path = "/bin/false"
+    msg = refusal(bpy.ops.soak.bake_rain)
+    check(msg is not None and "failed (exit 1)" in msg and rain_state(mat) == before,
+          f"a failing soak leaves the material as it was ({msg})")
+    prefs.soak_path = A["soak"]
+    rain = sys.modules["soak.rain"]         # the installed add-on's (soak_install aliases it)
+    orig = rain._flood_mix
+
+    def broken(*a):
+        orig(*a)
+        raise RuntimeError("provoked failure half-way")
+    rain._flood_mix = broken
+    try:
+        msg = refusal(bpy.ops.soak.bake_rain)
+    finally:
+        rain._flood_mix = orig
+    after = rain_state(mat)
+    if after != before:
+        import difflib
+        print("\n".join(difflib.unified_diff(str(before).split(", "), str(after).split(", "), lineterm="")))
+    check(msg is not None and "provoked" in msg and after == before,
+          f"a wiring that fails half-way leaves the tree, images and drivers as they were ({msg})")
+
+
+def check_undo(sc):
+    """Undo of a Bake Rain puts back the tree of the bake before it, whose
+    images still find their frames."""
+    mat = bpy.data.materials["Wet ground"]
+    bpy.ops.ed.undo_push(message="before the third bake")
+    before = common.tree_state(mat.node_tree)
+    sc.soak_rain.seed = 9
+    check(bpy.ops.soak.bake_rain() == {"FINISHED"}, "a third Bake Rain")
+    bpy.ops.ed.undo_push(message="third bake")
+    bpy.ops.ed.undo()
+    mat = bpy.data.materials["Wet ground"]
+    tex = [n for n in mat.node_tree.nodes if n.type == "TEX_IMAGE" and n.image is not None]
+    files = [bpy.path.abspath(n.image.filepath) for n in tex]
+    check(common.tree_state(mat.node_tree) == before and len(tex) == 2 and all(os.path.isfile(f) for f in files),
+          f"undo of Bake Rain restores the tree; its images find their frames ({len(tex)} image nodes)")
+
+
+def main():
+    os.makedirs(TMP, exist_ok=True)
+    common.install_addon(A["addon"])
+    common.preferences().soak_path = A["soak"]
+    sc, plane, board, mat = scene()
+    bpy.ops.wm.save_as_mainfile(filepath=os.path.join(TMP, "rain.blend"))   # the frames go to //soak_rain
+    bpy.context.view_layer.objects.active = plane
+    plane.select_set(True)
+    check(bpy.ops.soak.bake_rain.poll() is False, "Bake Rain is greyed out on a dry material")
+    check(bpy.ops.soak.make_wet() == {"FINISHED"}, "Make Wet")
+    s = sc.soak_rain
+    s.rate, s.start_frame, s.end_frame, s.size, s.seed, s.rays = 50.0, START, END, N, 7, 16
+    s.map_size, s.dry_time = 0.0, 20.0
+    check(bpy.ops.soak.bake_rain() == {"FINISHED"}, "Bake Rain")
+    board.hide_render = True          # the probe camera looks through it
+    check(mat.soak.wetness_source == "IMAGE" and mat.soak.wet_map is not None
+          and mat.soak.wet_map.source == "SEQUENCE", "the panel's Source shows the drops sequence")
+    rain_nodes = sorted(n.name for n in mat.node_tree.nodes if n.get("soak_role") == "rain")
+    gn = next(n for n in mat.node_tree.nodes if n.type == "GROUP")
+    ref1, m1 = check_wet(sc, mat, gn, plane, 1, START)
+    check(m1 == 0.0, "before the rain the surface is dry")
+    ref, _ = check_wet(sc, mat, gn, plane, 12, 12)
+    ref_end, m_end = check_wet(sc, mat, gn, plane, END, END)
+    _, m_last = check_wet(sc, mat, gn, plane, LAST, LAST)
+    check(m_last < m_end, f"drying after the rain: mean {m_end:.3f} -> {m_last:.3f}")
+    check_shelter(ref_end)
+    check_liquid(sc, mat, gn, ref_end, END, 0.6)
+    check_normal(sc, mat, gn, plane, ref_end, END, 0.6)
+    check_normal(sc, mat, gn, plane, ref, 12, 0.6)
+    check_refusals(sc, mat, plane)
+    old = sorted(i.name for i in bpy.data.images if i.get("soak_rain_for"))
+    s.seed = 8
+    check(bpy.ops.soak.bake_rain() == {"FINISHED"}, "a second Bake Rain")
+    now = sorted(n.name for n in mat.node_tree.nodes if n.get("soak_role") == "rain")
+    imgs = [i for i in bpy.data.images if i.get("soak_rain_for")]
+    check(len(now) == len(rain_nodes) and len(imgs) == 2,
+          f"the second bake replaced the first's nodes ({len(now)}) and images ({old} -> {[i.name for i in imgs]})")
+    check_undo(sc)
+    mat = bpy.data.materials["Wet ground"]
+    check(bpy.ops.soak.make_dry() == {"FINISHED"} and not any(n.get("soak_role") for n in mat.node_tree.nodes),
+          "Make Dry removes the rain's nodes")
+    print(f"PASS: {len(CHECKS)} checks (Blender {bpy.app.version_string})")
+
+
+main()
