@@ -9,7 +9,7 @@
  * diffuse direction is cosine-distributed: pdf (1 - P_mirror) cos_i / pi. */
 #include "bsdf_internal.h"
 
-soak_status bsdf_film_setup(soak_bsdf *b)
+static soak_status film_setup(soak_bsdf *b)
 {
     for (int ch = 0; ch < 3; ++ch) {
         /* soak_film takes alpha and thickness only as their product tau. */
@@ -79,4 +79,4 @@ static soak_status film_sample(const soak_bsdf *b, soak_vec3 wo, const double u[
     return SOAK_OK;
 }
 
-const soak_bsdf_ops bsdf_film_ops = {bsdf_film_setup, film_eval, film_pdf, film_sample, NULL};
+const soak_bsdf_ops bsdf_film_ops = {film_setup, film_eval, film_pdf, film_sample, NULL};

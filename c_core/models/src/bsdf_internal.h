@@ -50,16 +50,14 @@ extern const soak_bsdf_ops bsdf_lambert_ops, bsdf_ggx_ops, bsdf_glass_ops, bsdf_
 extern const soak_bsdf_ops bsdf_film_ops; /* closed-form film over Lambert (bsdf_film.c) */
 extern const soak_bsdf_ops bsdf_walk_ops; /* traced film over any base (bsdf_walk.c) */
 
-/* Shared by the GGX, coated and model adaptors. */
-/* Density of the reflected direction wi from visible-normal sampling around wo. */
+/* Shared by the GGX, coated and model adaptors: the density of the reflected direction wi from visible-normal sampling around wo. */
 double bsdf_ggx_reflect_pdf(double alpha, soak_vec3 wi, soak_vec3 wo);
 /* Visible-normal reflection sample; 0 when it falls below the horizon. */
 int bsdf_ggx_reflect_sample(double alpha, soak_vec3 wo, double u1, double u2, soak_vec3 *wi, double *pdf);
 
 /* COATED: the interface albedo tables, rebuilt when a film makes eta relative to the liquid. */
 void bsdf_coated_tables(soak_bsdf *b);
-/* The closed-form film's set-up (0 = OK) and the traced layer's random-walk key of a direction pair. */
-soak_status bsdf_film_setup(soak_bsdf *b);
+/* The traced layer's random-stream key of a direction pair (soak_bsdf_eval_mean varies it). */
 uint64_t bsdf_walk_key(soak_vec3 wi, soak_vec3 wo);
 
 #endif
