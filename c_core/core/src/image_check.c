@@ -42,16 +42,10 @@ typedef struct exr_part {
 
 static soak_status fail(exr_cursor *c, soak_status st, const char *fmt, ...)
 {
-    if (c->err && c->errlen) {
-        int n = snprintf(c->err, c->errlen, "%s: ", c->path);
-        if (n >= 0 && (size_t)n < c->errlen) {
-            va_list ap;
-            va_start(ap, fmt);
-            vsnprintf(c->err + n, c->errlen - (size_t)n, fmt, ap);
-            va_end(ap);
-        }
-        soak_message_printable(c->err); /* attribute names come from the file */
-    }
+    va_list ap; /* attribute names come from the file: the message is made printable */
+    va_start(ap, fmt);
+    soak_verror_at(c->err, c->errlen, st, c->path, NULL, fmt, ap);
+    va_end(ap);
     return st;
 }
 

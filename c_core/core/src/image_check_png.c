@@ -5,26 +5,10 @@
 #define _POSIX_C_SOURCE 200809L
 #include "image_check_png.h"
 
-#include <stdarg.h>
 #include <stdint.h>
 #include <string.h>
 
 #include "soak/image.h"
-
-static soak_status refuse(char *err, size_t errlen, soak_status st, const char *path, const char *fmt, ...)
-{
-    if (err && errlen) {
-        int n = snprintf(err, errlen, "%s: ", path);
-        if (n >= 0 && (size_t)n < errlen) {
-            va_list ap;
-            va_start(ap, fmt);
-            vsnprintf(err + n, errlen - (size_t)n, fmt, ap);
-            va_end(ap);
-        }
-        soak_message_printable(err);
-    }
-    return st;
-}
 
 static uint32_t be32(const unsigned char *b)
 {
@@ -57,10 +41,10 @@ static soak_status budget(const char *path, uint32_t w, uint32_t h, int ch, long
 {
     double floats = (double)w * (double)h * ch * 4.0;
     if (floats > SOAK_IMAGE_MAX_BYTES)
-        return refuse(err, errlen, SOAK_ERR_ARG, path, "a %ux%u image needs %lld MiB as float pixels; the limit is "
+        return soak_error_at(err, errlen, SOAK_ERR_ARG, path, NULL, "a %ux%u image needs %lld MiB as float pixels; the limit is "
                       "%lld MiB", w, h, (long long)(floats / 1048576), (long long)(SOAK_IMAGE_MAX_BYTES / 1048576));
     if (floats > SOAK_IMAGE_FREE_BYTES && floats > SOAK_IMAGE_MAX_RATIO * (double)idat)
-        return refuse(err, errlen, SOAK_ERR_ARG, path, "the PNG header claims %ux%ux%d pixels (%lld MiB as float) from "
+        return soak_error_at(err, errlen, SOAK_ERR_ARG, path, NULL, "the PNG header claims %ux%ux%d pixels (%lld MiB as float) from "
                       "%lld bytes of pixel data (IDAT): more than %.0f float bytes per byte of pixel data above %.0f "
                       "MiB (a decompression bomb or a corrupt header)", w, h, ch, (long long)(floats / 1048576), idat,
                       SOAK_IMAGE_MAX_RATIO, SOAK_IMAGE_FREE_BYTES / 1048576.0);
@@ -75,22 +59,22 @@ soak_status soak_png_check(FILE *f, const char *path, long long size, long long 
     for (int index = 0;; ++index) {
         unsigned char head[8 + 13];
         if (at + 12 > size || fseeko(f, (off_t)at, SEEK_SET) != 0 || fread(head, 1, 8, f) != 8)
-            return refuse(err, errlen, SOAK_ERR_IO, path, "PNG without its IEND chunk: the file is cut short "
+            return soak_error_at(err, errlen, SOAK_ERR_IO, path, NULL, "PNG without its IEND chunk: the file is cut short "
                           "after %lld of its chunks", (long long)index);
         long long len = be32(head);
         if (len > 0x7fffffffLL || !letters(head + 4))
-            return refuse(err, errlen, SOAK_ERR_PARSE, path, "PNG chunk %d at byte %lld has no valid length and type "
+            return soak_error_at(err, errlen, SOAK_ERR_PARSE, path, NULL, "PNG chunk %d at byte %lld has no valid length and type "
                           "(a corrupt file, or not a PNG)", index, at);
         if (at + 12 + len > size)
-            return refuse(err, errlen, SOAK_ERR_IO, path, "PNG chunk '%.4s' at byte %lld declares %lld bytes, past "
+            return soak_error_at(err, errlen, SOAK_ERR_IO, path, NULL, "PNG chunk '%.4s' at byte %lld declares %lld bytes, past "
                           "the end of the %lld-byte file (cut short?)", (const char *)head + 4, at, len, size);
         if ((index == 0) != !memcmp(head + 4, "IHDR", 4) || (index == 0 && len != 13))
-            return refuse(err, errlen, SOAK_ERR_PARSE, path, "PNG whose first chunk is not a 13-byte IHDR");
+            return soak_error_at(err, errlen, SOAK_ERR_PARSE, path, NULL, "PNG whose first chunk is not a 13-byte IHDR");
         if (index == 0) {
-            if (fread(head + 8, 1, 13, f) != 13) return refuse(err, errlen, SOAK_ERR_IO, path, "PNG header cut short");
+            if (fread(head + 8, 1, 13, f) != 13) return soak_error_at(err, errlen, SOAK_ERR_IO, path, NULL, "PNG header cut short");
             w = be32(head + 8), h = be32(head + 12), colour = head[17];
             if (w < 1 || h < 1 || w > 0x7fffffffu || h > 0x7fffffffu || !png_channels(colour, 0))
-                return refuse(err, errlen, SOAK_ERR_PARSE, path, "PNG header with size %ux%u and colour type %d",
+                return soak_error_at(err, errlen, SOAK_ERR_PARSE, path, NULL, "PNG header with size %ux%u and colour type %d",
                               w, h, colour);
         }
         if (!memcmp(head + 4, "IDAT", 4)) idat += len;
@@ -98,7 +82,7 @@ soak_status soak_png_check(FILE *f, const char *path, long long size, long long 
         if (!memcmp(head + 4, "IEND", 4)) break;
         at += 12 + len;
     }
-    if (idat == 0) return refuse(err, errlen, SOAK_ERR_PARSE, path, "PNG without pixel data (no IDAT chunk)");
+    if (idat == 0) return soak_error_at(err, errlen, SOAK_ERR_PARSE, path, NULL, "PNG without pixel data (no IDAT chunk)");
     *payload = idat;
     return budget(path, w, h, png_channels(colour, trns), idat, err, errlen);
 }

@@ -65,16 +65,10 @@ soak_status soak_presets_default_path(char *out, size_t n, char *err, size_t err
 __attribute__((format(printf, 4, 5))) static soak_status fail(ctx *c, soak_status st, const char *path,
                                                                const char *fmt, ...)
 {
-    if (c->err && c->errlen > 0) {
-        int n = snprintf(c->err, c->errlen, "%s: %s%s", c->file, path ? path : "", path && path[0] ? ": " : "");
-        if (n >= 0 && (size_t)n < c->errlen) {
-            va_list ap;
-            va_start(ap, fmt);
-            vsnprintf(c->err + n, c->errlen - (size_t)n, fmt, ap);
-            va_end(ap);
-        }
-        soak_message_printable(c->err);
-    }
+    va_list ap;
+    va_start(ap, fmt);
+    soak_verror_at(c->err, c->errlen, st, c->file, path, fmt, ap);
+    va_end(ap);
     return st;
 }
 

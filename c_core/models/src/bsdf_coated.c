@@ -70,7 +70,7 @@ void bsdf_coated_tables(soak_bsdf *b)
     }
 }
 
-soak_status bsdf_coated_setup(soak_bsdf *b)
+static soak_status coated_setup(soak_bsdf *b)
 {
     soak_bsdf_desc *d = &b->d;
     if (!soak_in_range(d->coat_weight, 0, 1) || !(d->alpha > 0 && d->alpha <= SOAK_GGX_ALPHA_MAX)) return SOAK_ERR_ARG;
@@ -136,14 +136,21 @@ static double coated_pdf(const soak_bsdf *b, double P, soak_vec3 wi, soak_vec3 w
     return spec + (1.0 - P) * wi.z * SOAK_INV_PI;
 }
 
-void bsdf_coated_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf)
+static soak_status coated_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf)
 {
     double P = wi.z > 0 && wo.z > 0 ? lobe_probability(b, wo.z) : -1.0;
     *f = P >= 0 ? coated_f(b, wi, wo) : soak_rgb3(0, 0, 0);
     *pdf = P >= 0 ? coated_pdf(b, P, wi, wo) : 0.0;
+    return SOAK_OK;
 }
 
-int bsdf_coated_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s)
+static double coated_pdf_of(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo)
+{
+    double P = wi.z > 0 && wo.z > 0 ? lobe_probability(b, wo.z) : -1.0;
+    return P >= 0 ? coated_pdf(b, P, wi, wo) : 0.0;
+}
+
+static int coated_direction(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s)
 {
     double P = wo.z > 0 ? lobe_probability(b, wo.z) : -1.0, pdf_lobe;
     if (!(P >= 0)) return 0;
@@ -158,3 +165,11 @@ int bsdf_coated_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak
     s->weight = soak_rgb_scale(coated_f(b, s->wi, wo), s->wi.z / s->pdf);
     return 1;
 }
+
+static soak_status coated_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s, int *ok)
+{
+    *ok = coated_direction(b, wo, u, s);
+    return SOAK_OK;
+}
+
+const soak_bsdf_ops bsdf_coated_ops = {coated_setup, coated_eval, coated_pdf_of, coated_sample, NULL};

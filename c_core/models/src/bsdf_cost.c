@@ -23,7 +23,6 @@ soak_status soak_bsdf_eval_loop(const soak_bsdf *b, long n, double *checksum)
 {
     if (!b || !checksum) return SOAK_ERR_NULL;
     if (!(n >= 0 && n <= 10000000000L)) return SOAK_ERR_ARG;
-    if (b->flags & SOAK_BSDF_WALK) return SOAK_ERR_UNSUPPORTED;
     soak_vec3 wi[COST_PAIRS], wo[COST_PAIRS];
     cost_pairs(wi, wo);
     double sum = 0;

@@ -9,7 +9,7 @@
  * diffuse direction is cosine-distributed: pdf (1 - P_mirror) cos_i / pi. */
 #include "bsdf_internal.h"
 
-soak_status bsdf_film_setup(soak_bsdf *b)
+static soak_status film_setup(soak_bsdf *b)
 {
     for (int ch = 0; ch < 3; ++ch) {
         /* soak_film takes alpha and thickness only as their product tau. */
@@ -41,14 +41,21 @@ static soak_rgb film_f(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo)
     return soak_rgb3(f[0], f[1], f[2]);
 }
 
-void bsdf_film_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf)
+static soak_status film_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf)
 {
     double F, pm = wi.z > 0 && wo.z > 0 ? mirror_probability(b, wo.z, &F) : -1.0;
     *f = pm >= 0 ? film_f(b, wi, wo) : soak_rgb3(0, 0, 0);
     *pdf = pm >= 0 ? (1 - pm) * wi.z * SOAK_INV_PI : 0.0;
+    return SOAK_OK;
 }
 
-int bsdf_film_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s)
+static double film_pdf(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo)
+{
+    double F, pm = wi.z > 0 && wo.z > 0 ? mirror_probability(b, wo.z, &F) : -1.0;
+    return pm >= 0 ? (1 - pm) * wi.z * SOAK_INV_PI : 0.0;
+}
+
+static int film_direction(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s)
 {
     double F, pm = wo.z > 0 ? mirror_probability(b, wo.z, &F) : -1.0;
     if (!(pm >= 0)) return 0;
@@ -65,3 +72,11 @@ int bsdf_film_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_b
     s->weight = soak_rgb_scale(f, s->wi.z / s->pdf);
     return 1;
 }
+
+static soak_status film_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s, int *ok)
+{
+    *ok = film_direction(b, wo, u, s);
+    return SOAK_OK;
+}
+
+const soak_bsdf_ops bsdf_film_ops = {film_setup, film_eval, film_pdf, film_sample, NULL};

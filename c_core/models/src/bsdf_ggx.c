@@ -3,7 +3,7 @@
 #include "bsdf_internal.h"
 #include "soak/ggx.h"
 
-soak_status bsdf_ggx_setup(soak_bsdf *b)
+static soak_status ggx_setup(soak_bsdf *b)
 {
     soak_bsdf_desc *d = &b->d;
     if (!(d->alpha > 0 && d->alpha <= SOAK_GGX_ALPHA_MAX)) return SOAK_ERR_ARG;
@@ -51,16 +51,21 @@ static soak_rgb ggx_f(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo)
     return soak_rgb3(f[0], f[1], f[2]);
 }
 
-void bsdf_ggx_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf)
+static double ggx_pdf(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo) { return bsdf_ggx_reflect_pdf(b->d.alpha, wi, wo); }
+
+static soak_status ggx_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf)
 {
     int up = wi.z > 0 && wo.z > 0;
     *f = up ? ggx_f(b, wi, wo) : soak_rgb3(0, 0, 0);
-    *pdf = up ? bsdf_ggx_reflect_pdf(b->d.alpha, wi, wo) : 0.0;
+    *pdf = up ? ggx_pdf(b, wi, wo) : 0.0;
+    return SOAK_OK;
 }
 
-int bsdf_ggx_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s)
+static soak_status ggx_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s, int *ok)
 {
-    if (!(wo.z > 0) || !bsdf_ggx_reflect_sample(b->d.alpha, wo, u[1], u[2], &s->wi, &s->pdf)) return 0;
-    s->weight = soak_rgb_scale(ggx_f(b, s->wi, wo), s->wi.z / s->pdf);
-    return 1;
+    *ok = wo.z > 0 && bsdf_ggx_reflect_sample(b->d.alpha, wo, u[1], u[2], &s->wi, &s->pdf);
+    if (*ok) s->weight = soak_rgb_scale(ggx_f(b, s->wi, wo), s->wi.z / s->pdf);
+    return SOAK_OK;
 }
+
+const soak_bsdf_ops bsdf_ggx_ops = {ggx_setup, ggx_eval, ggx_pdf, ggx_sample, NULL};

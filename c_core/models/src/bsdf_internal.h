@@ -3,6 +3,7 @@
 #define SOAK_BSDF_INTERNAL_H
 
 #include <math.h>
+#include <stdint.h>
 
 #include "soak/bsdf.h"
 #include "soak/fresnel.h"
@@ -31,42 +32,32 @@ static inline soak_rgb bsdf_film_absorb(const soak_bsdf *b, double cos)
     return soak_rgb3(exp(-a.r * s), exp(-a.g * s), exp(-a.b * s));
 }
 
-/* Per kind: set-up of the base (no film), and its non-delta eval and
- * sampling in the frame of the medium above it (the film when there is
- * one). Sampling returns 0 when no direction results. */
-soak_status bsdf_lambert_setup(soak_bsdf *b);
-void bsdf_lambert_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
-int bsdf_lambert_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s);
+/* One kind of BSDF (or of layer over a base): every entry point the
+ * dispatcher (bsdf.c) calls, in the frame of the medium above it (the film
+ * when there is one). eval and sample give 0 / *ok = 0 below the horizon;
+ * pdf is the density of sample() producing wi (non-delta part), without
+ * evaluating f. eval_keyed (NULL for closed forms): the stochastic eval with
+ * its random stream chosen by key (eval uses a key hashed from wi, wo). */
+typedef struct soak_bsdf_ops {
+    soak_status (*setup)(soak_bsdf *b);
+    soak_status (*eval)(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
+    double (*pdf)(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo);
+    soak_status (*sample)(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s, int *ok);
+    soak_status (*eval_keyed)(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, uint64_t key, soak_rgb *f, double *pdf);
+} soak_bsdf_ops;
 
-soak_status bsdf_ggx_setup(soak_bsdf *b);
-void bsdf_ggx_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
-int bsdf_ggx_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s);
-/* Density of the reflected direction wi from visible-normal sampling around wo. */
+extern const soak_bsdf_ops bsdf_lambert_ops, bsdf_ggx_ops, bsdf_glass_ops, bsdf_model_ops, bsdf_coated_ops;
+extern const soak_bsdf_ops bsdf_film_ops; /* closed-form film over Lambert (bsdf_film.c) */
+extern const soak_bsdf_ops bsdf_walk_ops; /* traced film over any base (bsdf_walk.c) */
+
+/* Shared by the GGX, coated and model adaptors: the density of the reflected direction wi from visible-normal sampling around wo. */
 double bsdf_ggx_reflect_pdf(double alpha, soak_vec3 wi, soak_vec3 wo);
 /* Visible-normal reflection sample; 0 when it falls below the horizon. */
 int bsdf_ggx_reflect_sample(double alpha, soak_vec3 wo, double u1, double u2, soak_vec3 *wi, double *pdf);
 
-soak_status bsdf_glass_setup(soak_bsdf *b);
-int bsdf_glass_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s);
-
-soak_status bsdf_model_setup(soak_bsdf *b);
-soak_status bsdf_model_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
-soak_status bsdf_model_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s, int *ok);
-
-/* Rough dielectric interface over Lambert (bsdf_coated.c); the tables are
- * rebuilt when a film makes eta relative to the liquid. */
-soak_status bsdf_coated_setup(soak_bsdf *b);
+/* COATED: the interface albedo tables, rebuilt when a film makes eta relative to the liquid. */
 void bsdf_coated_tables(soak_bsdf *b);
-void bsdf_coated_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
-int bsdf_coated_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s);
-
-/* Closed-form film over Lambert (bsdf_film.c). */
-soak_status bsdf_film_setup(soak_bsdf *b);
-void bsdf_film_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
-int bsdf_film_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s);
-
-/* The base alone (no film), for the walk: dispatch over LAMBERT / GGX / COATED. */
-void bsdf_base_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
-int bsdf_base_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s);
+/* The traced layer's random-stream key of a direction pair (soak_bsdf_eval_mean varies it). */
+uint64_t bsdf_walk_key(soak_vec3 wi, soak_vec3 wo);
 
 #endif

@@ -11,7 +11,7 @@
 
 #define MIX_COSINE 0.5
 
-soak_status bsdf_model_setup(soak_bsdf *b)
+static soak_status model_setup(soak_bsdf *b)
 {
     const soak_model *m = b->d.model;
     if (!m) return SOAK_ERR_NULL;
@@ -43,6 +43,12 @@ static double nondelta_pdf(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo)
     return MIX_COSINE * wi.z * SOAK_INV_PI + (1 - MIX_COSINE) * bsdf_ggx_reflect_pdf(b->d.alpha, wi, wo);
 }
 
+static double model_pdf(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo)
+{
+    if (!(wi.z > 0 && wo.z > 0)) return 0;
+    return (1 - mirror_R(b, 1, wo.z)) * nondelta_pdf(b, wi, wo);
+}
+
 static soak_status model_f(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f)
 {
     double v[3];
@@ -54,14 +60,14 @@ static soak_status model_f(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_
     return SOAK_OK;
 }
 
-soak_status bsdf_model_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf)
+static soak_status model_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf)
 {
     *f = soak_rgb3(0, 0, 0);
     *pdf = 0;
     if (!(wi.z > 0 && wo.z > 0)) return SOAK_OK;
     soak_status st = model_f(b, wi, wo, f);
     if (st != SOAK_OK) return st;
-    *pdf = (1 - mirror_R(b, 1, wo.z)) * nondelta_pdf(b, wi, wo);
+    *pdf = model_pdf(b, wi, wo);
     return SOAK_OK;
 }
 
@@ -80,7 +86,7 @@ static int sample_nondelta(const soak_bsdf *b, soak_vec3 wo, double u0, double u
     return bsdf_ggx_reflect_sample(b->d.alpha, wo, u1, u2, wi, &pdf);
 }
 
-soak_status bsdf_model_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s, int *ok)
+static soak_status model_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s, int *ok)
 {
     *ok = 0;
     if (!(wo.z > 0)) return SOAK_OK;
@@ -95,10 +101,12 @@ soak_status bsdf_model_sample(const soak_bsdf *b, soak_vec3 wo, const double u[3
     double u0 = fmin((u[0] - Rg) / (1 - Rg), 1.0);
     if (!sample_nondelta(b, wo, u0, u[1], u[2], &s->wi)) return SOAK_OK;
     soak_rgb f;
-    soak_status st = bsdf_model_eval(b, s->wi, wo, &f, &s->pdf);
+    soak_status st = model_eval(b, s->wi, wo, &f, &s->pdf);
     if (st != SOAK_OK) return st;
     if (!(s->pdf > 0)) return SOAK_OK;
     s->weight = soak_rgb_scale(f, s->wi.z / s->pdf);
     *ok = 1;
     return SOAK_OK;
 }
+
+const soak_bsdf_ops bsdf_model_ops = {model_setup, model_eval, model_pdf, model_sample, NULL};

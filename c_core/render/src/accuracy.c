@@ -13,7 +13,6 @@
 #include "soak/bsdf.h"
 #include "soak/rng.h"
 
-#define WALK_MAX_BOUNCES RT_FILM_MAX_BOUNCES
 #define COST_PAIRS 64
 
 int soak_accuracy_supported(const soak_material *m)
@@ -35,24 +34,6 @@ static soak_status material_bsdfs(const soak_material *m, int trace_films, rt_ma
     return rt_bsdfs_setup(&one, trace_films, out, NULL, 0);
 }
 
-/* One path through a traced film: what leaves into the air (weight). */
-static soak_rgb walk_once(const soak_bsdf *b, soak_vec3 wo, soak_rng *rng)
-{
-    soak_bsdf_walk w;
-    soak_bsdf_sample s;
-    soak_rgb weight, zero = soak_rgb3(0, 0, 0);
-    if (soak_bsdf_walk_start(b, wo, soak_rng_uniform(rng), &w, &s, &weight) == SOAK_WALK_EXIT) return soak_rgb3(1, 1, 1);
-    soak_rgb beta = weight;
-    for (int bounce = 0; bounce < WALK_MAX_BOUNCES; ++bounce) {
-        double u[4] = {soak_rng_uniform(rng), soak_rng_uniform(rng), soak_rng_uniform(rng), soak_rng_uniform(rng)};
-        soak_walk_event ev = soak_bsdf_walk_step(b, &w, u, &s, &weight);
-        if (ev == SOAK_WALK_DEAD) return zero;
-        beta = soak_rgb3(beta.r * weight.r, beta.g * weight.g, beta.b * weight.b);
-        if (ev == SOAK_WALK_EXIT) return beta;
-    }
-    return zero;
-}
-
 /* f cos / pdf of one sampled direction (0 when none). */
 static soak_rgb sample_once(const soak_bsdf *b, soak_vec3 wo, soak_rng *rng)
 {
@@ -66,9 +47,8 @@ static soak_rgb sample_once(const soak_bsdf *b, soak_vec3 wo, soak_rng *rng)
 static void bsdf_albedo(const soak_bsdf *b, soak_vec3 wo, int samples, soak_rng *rng, soak_rgb *mean, soak_rgb *var)
 {
     double sum[3] = {0, 0, 0}, sum2[3] = {0, 0, 0};
-    int walk = soak_bsdf_get_flags(b) & SOAK_BSDF_WALK;
     for (int i = 0; i < samples; ++i) {
-        soak_rgb x = walk ? walk_once(b, wo, rng) : sample_once(b, wo, rng);
+        soak_rgb x = sample_once(b, wo, rng);
         for (int ch = 0; ch < 3; ++ch) {
             double v = soak_rgb_at(x, ch);
             if (!isfinite(v)) v = 0; /* the renderer counts such paths black */
@@ -96,13 +76,6 @@ static state_mix mix_of(const rt_material_bsdf *mb, const soak_material *m, doub
     double p_wet = mb->has_wet ? wetness * m->film_coverage : 0.0;
     double pore = mb->has_pore ? p_wet * m->film_pore_share : 0.0;
     return (state_mix){{1.0 - p_wet, p_wet - pore, pore}};
-}
-
-static state_mix only(int state)
-{
-    state_mix s = {{0, 0, 0}};
-    s.p[state] = 1.0;
-    return s;
 }
 
 static const soak_bsdf *state_bsdf(const rt_material_bsdf *mb, int state)
@@ -149,15 +122,11 @@ static soak_status albedo_of(const rt_material_bsdf *mb, state_mix mix, soak_vec
     return SOAK_OK;
 }
 
-/* f(wi, wo) cos(wi) of one BSDF; a traced film: R(wo) cos / pi. */
-static soak_rgb direct(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb walk_albedo)
+/* f(wi, wo) cos(wi) of one BSDF (a traced film's: the mean of samples estimates). */
+static soak_rgb direct(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, int samples, uint64_t seed)
 {
     soak_rgb f = soak_rgb3(0, 0, 0);
-    if (soak_bsdf_get_flags(b) & SOAK_BSDF_WALK) {
-        double s = wi.z * SOAK_INV_PI;
-        return soak_rgb3(walk_albedo.r * s, walk_albedo.g * s, walk_albedo.b * s);
-    }
-    if (soak_bsdf_eval(b, wi, wo, &f, NULL) != SOAK_OK) return soak_rgb3(0, 0, 0);
+    if (soak_bsdf_eval_mean(b, wi, wo, samples, seed, &f, NULL, NULL) != SOAK_OK) return soak_rgb3(0, 0, 0);
     return soak_rgb3(f.r * wi.z, f.g * wi.z, f.b * wi.z);
 }
 
@@ -196,13 +165,13 @@ soak_status soak_material_radiance(const soak_material *m, double wetness, soak_
 }
 
 /* The direct light of the states in mix: sum of p f(wi, wo) cos(wi) E. */
-static soak_rgb direct_mix(const rt_material_bsdf *mb, state_mix mix, const soak_rgb *walk_albedo,
+static soak_rgb direct_mix(const rt_material_bsdf *mb, state_mix mix, int samples, uint64_t seed,
                            const soak_local_light *l, soak_vec3 wo)
 {
     soak_rgb L = soak_rgb3(0, 0, 0);
     for (int i = 0; i < N_STATES; ++i) {
         if (!(mix.p[i] > 0)) continue;
-        soak_rgb f = direct(state_bsdf(mb, i), l->wi, wo, walk_albedo[i]);
+        soak_rgb f = direct(state_bsdf(mb, i), l->wi, wo, samples, seed + (uint64_t)i);
         for (int ch = 0; ch < 3; ++ch)
             soak_rgb_set(&L, ch, soak_rgb_at(L, ch) + mix.p[i] * soak_rgb_at(f, ch) * soak_rgb_at(l->irradiance, ch));
     }
@@ -221,19 +190,11 @@ soak_status soak_shading_radiance(const soak_shading_material *p, double wetness
     state_mix mix = mix_of(mb, p->m, wetness);
     soak_albedo_estimate a;
     soak_status st = albedo_of(mb, mix, wo, samples, seed, &a);
-    /* the walk stand-in needs each state's own albedo */
-    soak_rgb walk_albedo[N_STATES] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-    for (int i = 0; i < N_STATES && st == SOAK_OK; ++i) {
-        if (!(mix.p[i] > 0) || !(soak_bsdf_get_flags(state_bsdf(mb, i)) & SOAK_BSDF_WALK)) continue;
-        soak_albedo_estimate one;
-        st = albedo_of(mb, only(i), wo, samples, seed, &one);
-        walk_albedo[i] = one.value;
-    }
     if (st != SOAK_OK) return st;
     soak_rgb L = soak_rgb3(a.value.r * env.r, a.value.g * env.g, a.value.b * env.b);
     for (int i = 0; i < n_lights; ++i) {
         if (!soak_v3_is_unit(lights[i].wi) || !(lights[i].wi.z > 0)) continue;
-        soak_rgb d = direct_mix(mb, mix, walk_albedo, &lights[i], wo);
+        soak_rgb d = direct_mix(mb, mix, samples, seed, &lights[i], wo);
         L = soak_rgb3(L.r + d.r, L.g + d.g, L.b + d.b);
     }
     out->value = L;
@@ -253,12 +214,8 @@ soak_status soak_material_cost(const soak_material *m, int n_rounds, double *eva
     soak_status st = material_bsdfs(m, 0, &mb);
     if (st != SOAK_OK) return st;
     const soak_bsdf *b = shaded(&mb);
-    int walk = soak_bsdf_get_flags(b) & SOAK_BSDF_WALK;
-    *eval_ns = 0;
-    if (!walk) {
-        st = soak_bsdf_eval_cost_ns(b, n_rounds, eval_ns);
-        if (st != SOAK_OK) return st;
-    }
+    st = soak_bsdf_eval_cost_ns(b, n_rounds, eval_ns);
+    if (st != SOAK_OK) return st;
     soak_rng rng;
     soak_rng_seed(&rng, 7, 0);
     soak_vec3 wo = soak_v3(0.5, 0.0, sqrt(0.75));
@@ -266,7 +223,7 @@ soak_status soak_material_cost(const soak_material *m, int n_rounds, double *eva
     long n = (long)n_rounds * COST_PAIRS;
     double t0 = cpu_seconds();
     for (long i = 0; i < n; ++i) {
-        soak_rgb x = walk ? walk_once(b, wo, &rng) : sample_once(b, wo, &rng);
+        soak_rgb x = sample_once(b, wo, &rng);
         sink += x.g;
     }
     *sample_ns = (cpu_seconds() - t0) * 1e9 / (double)n;

@@ -1,13 +1,12 @@
 /* Surface interactions of the path tracer: a dispatcher over the BSDF
  * interface (soak/bsdf.h). Each material has a dry and a wet BSDF, set up
  * once per render (rt_bsdfs_setup); at a hit the wet one is chosen with
- * probability wetness * film coverage. Three ways through a BSDF:
+ * probability wetness * film coverage. Two ways through a BSDF:
  *   - smooth glass (SOAK_BSDF_TRANSMIT): a delta choice that also updates
  *     the path's inside state, absorption and eta_scale;
- *   - a traced film (SOAK_BSDF_WALK): the walk through the layer, with
- *     next-event estimation at the base at every bounce (soak_bsdf_walk_*);
- *   - every other BSDF: next-event estimation with eval (value and pdf for
- *     the power heuristic), then one sample.
+ *   - every other BSDF (a traced film too: its eval and pdf are estimates):
+ *     next-event estimation with eval (value and pdf for the power
+ *     heuristic), then one sample.
  * Wet media (base "medium") go to render_medium.c. */
 #include <stdlib.h>
 
@@ -51,25 +50,9 @@ static void continue_delta(rt_path *path, const soak_hit *hit, soak_vec3 ng, con
     path->prev_delta = 1;
 }
 
-/* The BSDF's value and pdf for light from l1 (local, air side). */
-typedef void (*light_eval_fn)(const soak_bsdf *b, const void *state, soak_vec3 l1, soak_vec3 wl, soak_rgb *f,
-                              double *pdf);
-
-static void eval_plain(const soak_bsdf *b, const void *state, soak_vec3 l1, soak_vec3 wl, soak_rgb *f, double *pdf)
-{
-    (void)state;
-    if (soak_bsdf_eval(b, l1, wl, f, pdf) != SOAK_OK) *f = soak_rgb3(0, 0, 0), *pdf = 0;
-}
-
-static void eval_walk(const soak_bsdf *b, const void *state, soak_vec3 l1, soak_vec3 wl, soak_rgb *f, double *pdf)
-{
-    (void)wl;
-    soak_bsdf_walk_light(b, (const soak_bsdf_walk *)state, l1, f, pdf);
-}
-
 /* Next-event estimation from every light into path->L. */
 static void sample_lights(rt_thread *t, const soak_hit *hit, soak_vec3 ng, const rt_frame *f, soak_vec3 wl,
-                          const soak_bsdf *b, light_eval_fn eval, const void *state, rt_path *path)
+                          const soak_bsdf *b, rt_path *path)
 {
     soak_vec3 p_out = soak_geometry_offset(hit->p, ng, ng);
     int nl = rt_light_count(t->ctx);
@@ -81,8 +64,7 @@ static void sample_lights(rt_thread *t, const soak_hit *hit, soak_vec3 ng, const
         if (!(l1.z > 0)) continue;
         soak_rgb fv;
         double pdf;
-        eval(b, state, l1, wl, &fv, &pdf);
-        if (!(rgb_max(fv) > 0)) continue;
+        if (soak_bsdf_eval(b, l1, wl, &fv, &pdf) != SOAK_OK || !(rgb_max(fv) > 0)) continue;
         double mis = ls.pdf > 0 ? rt_power(ls.pdf, pdf) : 1.0;
         if (!rt_visible(t, p_out, ls.wi, ls.dist)) continue;
         soak_rgb contrib = soak_rgb_scale(soak_rgb_mul(path->beta, soak_rgb_mul(fv, ls.L)), l1.z * mis / (ls.pdf > 0 ? ls.pdf : 1.0));
@@ -96,7 +78,7 @@ static void draw3(rt_thread *t, double u[3])
     rt_rand2(t, &u[1], &u[2]);
 }
 
-/* Any BSDF with an eval: lights, then one sample. */
+/* Any reflecting BSDF: lights, then one sample. */
 static void reflect(rt_thread *t, const soak_hit *hit, const soak_bsdf *b, rt_path *path)
 {
     soak_vec3 ng, wl;
@@ -105,7 +87,7 @@ static void reflect(rt_thread *t, const soak_hit *hit, const soak_bsdf *b, rt_pa
         path->alive = 0;
         return;
     }
-    if (b->flags & (SOAK_BSDF_DIFFUSE | SOAK_BSDF_GLOSSY)) sample_lights(t, hit, ng, &f, wl, b, eval_plain, NULL, path);
+    if (b->flags & (SOAK_BSDF_DIFFUSE | SOAK_BSDF_GLOSSY)) sample_lights(t, hit, ng, &f, wl, b, path);
     double u[3];
     draw3(t, u);
     soak_bsdf_sample s;
@@ -117,51 +99,6 @@ static void reflect(rt_thread *t, const soak_hit *hit, const soak_bsdf *b, rt_pa
     path->beta = soak_rgb_mul(path->beta, s.weight);
     if (s.delta) continue_delta(path, hit, ng, &f, s.wi);
     else continue_path(path, hit, ng, rt_to_world(&f, s.wi), s.pdf);
-}
-
-/* Roulette inside the film keeps absorbing bases from looping. 0: killed. */
-static int film_roulette(rt_thread *t, rt_path *path)
-{
-    double q = fmin(1.0, rt_rr_weight(path));
-    if (q >= 1.0) return 1;
-    if (rt_rand(t) >= q) return 0;
-    path->beta = soak_rgb_scale(path->beta, 1.0 / q);
-    return 1;
-}
-
-/* A traced film over its base. */
-static void walk(rt_thread *t, const soak_hit *hit, const soak_bsdf *b, rt_path *path)
-{
-    soak_vec3 ng, wl;
-    rt_frame f;
-    soak_bsdf_walk w;
-    soak_bsdf_sample s;
-    soak_rgb weight;
-    path->alive = 0;
-    if (!shading_frame(hit, path, &ng, &f, &wl)) return;
-    soak_walk_event ev = soak_bsdf_walk_start(b, wl, rt_rand(t), &w, &s, &weight);
-    if (ev == SOAK_WALK_EXIT) {
-        path->alive = 1;
-        continue_delta(path, hit, ng, &f, s.wi);
-        return;
-    }
-    path->beta = soak_rgb_mul(path->beta, weight);
-    for (int bounce = 0; bounce < RT_FILM_MAX_BOUNCES; ++bounce) {
-        sample_lights(t, hit, ng, &f, wl, b, eval_walk, &w, path);
-        double u[4];
-        draw3(t, u);
-        u[3] = rt_rand(t);
-        ev = soak_bsdf_walk_step(b, &w, u, &s, &weight);
-        if (ev == SOAK_WALK_DEAD) return;
-        path->beta = soak_rgb_mul(path->beta, weight);
-        if (ev == SOAK_WALK_EXIT) {
-            path->alive = 1;
-            continue_path(path, hit, ng, rt_to_world(&f, s.wi), s.pdf);
-            return;
-        }
-        if (!film_roulette(t, path)) return;
-    }
-    t->n.capped++;
 }
 
 /* Smooth dielectric in the frame of the geometric normal (either side);
@@ -209,6 +146,5 @@ void rt_surface(rt_thread *t, const soak_hit *hit, rt_path *path)
         if (u < w) b = mb->has_pore && u >= w * (1.0 - m->film_pore_share) ? &mb->pore : &mb->wet;
     }
     if (b->flags & SOAK_BSDF_TRANSMIT) dielectric(t, hit, m, b, path);
-    else if (b->flags & SOAK_BSDF_WALK) walk(t, hit, b, path);
     else reflect(t, hit, b, path);
 }

@@ -155,7 +155,7 @@ static void measure_model_cost(soak_report *r, int k)
         }
         soak_scene_free(&scene);
     }
-    int m = 0; /* the traced films' zeros left out */
+    int m = 0; /* a failed measurement's zeros left out */
     for (int i = 0; i < n; ++i)
         if (ev[i] > 0) ev[m++] = ev[i];
     r->eval_ns[k] = median(ev, m);

@@ -107,7 +107,7 @@ static void md_reading(FILE *f)
                "- Costs: one eval is what next-event estimation pays per light sample; one\n"
                "  sample what the path pays per bounce. The full material's cost is that of the\n"
                "  closed-form film over Lambert (dielectric presets); over a GGX base the film is\n"
-               "  traced (a walk per sample, no eval), so its eval column leaves the conductors out.\n\n");
+               "  traced (a walk per sample, and per eval one estimate of f and one of pdf).\n\n");
 }
 
 /* Mean relative error per preset and model. */

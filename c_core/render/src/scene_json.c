@@ -11,16 +11,10 @@
 
 soak_status sj_fail(scene_ctx *c, soak_status status, const char *path, const char *fmt, ...)
 {
-    if (c->err && c->errlen) {
-        int n = snprintf(c->err, c->errlen, "%s: %s: ", c->name, path);
-        if (n >= 0 && (size_t)n < c->errlen) {
-            va_list ap;
-            va_start(ap, fmt);
-            vsnprintf(c->err + n, c->errlen - (size_t)n, fmt, ap);
-            va_end(ap);
-        }
-        soak_message_printable(c->err);
-    }
+    va_list ap;
+    va_start(ap, fmt);
+    soak_verror_at(c->err, c->errlen, status, c->name, path, fmt, ap);
+    va_end(ap);
     return status;
 }
 

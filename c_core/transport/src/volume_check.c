@@ -3,7 +3,6 @@
 #include "soak/volume_check.h"
 
 #include <errno.h>
-#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,36 +12,22 @@
 #include "soak/volume.h"
 #include "soak/input_file.h"
 
-static soak_status fail(char *err, size_t errlen, soak_status st, const char *path, const char *fmt, ...)
-{
-    if (err && errlen) {
-        int n = snprintf(err, errlen, "%s: ", path);
-        if (n >= 0 && (size_t)n < errlen) {
-            va_list ap;
-            va_start(ap, fmt);
-            vsnprintf(err + n, errlen - (size_t)n, fmt, ap);
-            va_end(ap);
-        }
-    }
-    return st;
-}
-
 /* Opens path for reading if it is a regular file; its size in *size. */
 static FILE *open_regular(const char *path, long long *size, char *err, size_t errlen)
 {
     if (soak_input_check(path, SOAK_INPUT_VOLUME, size, err, errlen) != SOAK_OK) return NULL;
     FILE *f = fopen(path, "rb");
-    if (!f) fail(err, errlen, SOAK_ERR_IO, path, "cannot read: %s", strerror(errno));
+    if (!f) soak_error_at(err, errlen, SOAK_ERR_IO, path, NULL, "cannot read: %s", strerror(errno));
     return f;
 }
 
 static soak_status check_box(const char *what, const char *path, long nx, long ny, long nz, char *err, size_t errlen)
 {
     if (nx < 1 || ny < 1 || nz < 1 || nx > SOAK_VOLUME_MAX_DIM || ny > SOAK_VOLUME_MAX_DIM || nz > SOAK_VOLUME_MAX_DIM)
-        return fail(err, errlen, SOAK_ERR_ARG, path, "%s %ldx%ldx%ld: each dimension must be in [1, %d]", what, nx, ny,
+        return soak_error_at(err, errlen, SOAK_ERR_ARG, path, NULL, "%s %ldx%ldx%ld: each dimension must be in [1, %d]", what, nx, ny,
                     nz, SOAK_VOLUME_MAX_DIM);
     if ((double)nx * ny * nz > (double)SOAK_DF3_MAX_VOXELS)
-        return fail(err, errlen, SOAK_ERR_ARG, path, "%s %ldx%ldx%ld: %.0f voxels, the limit is %ld", what, nx, ny, nz,
+        return soak_error_at(err, errlen, SOAK_ERR_ARG, path, NULL, "%s %ldx%ldx%ld: %.0f voxels, the limit is %ld", what, nx, ny, nz,
                     (double)nx * ny * nz, SOAK_DF3_MAX_VOXELS);
     return SOAK_OK;
 }
@@ -52,7 +37,7 @@ static soak_status df3_header(FILE *f, const char *path, long long size, soak_df
 {
     unsigned char h[6];
     if (size < 6 || fread(h, 1, 6, f) != 6)
-        return fail(err, errlen, SOAK_ERR_PARSE, path, "df3 file of %lld bytes is shorter than its 6-byte header", size);
+        return soak_error_at(err, errlen, SOAK_ERR_PARSE, path, NULL, "df3 file of %lld bytes is shorter than its 6-byte header", size);
     d->nx = h[0] << 8 | h[1];
     d->ny = h[2] << 8 | h[3];
     d->nz = h[4] << 8 | h[5];
@@ -63,7 +48,7 @@ static soak_status df3_header(FILE *f, const char *path, long long size, soak_df
     for (*bytes = 1; *bytes <= 4; *bytes *= 2)
         if (payload == (long long)*count * *bytes) break;
     if (*bytes > 4)
-        return fail(err, errlen, SOAK_ERR_PARSE, path,
+        return soak_error_at(err, errlen, SOAK_ERR_PARSE, path, NULL,
                     "df3 dims %dx%dx%d need %zu, %zu or %zu bytes of samples (8, 16 or 32 bit) after the header; the "
                     "file has %lld",
                     d->nx, d->ny, d->nz, *count, 2 * *count, 4 * *count, payload);
@@ -86,10 +71,10 @@ soak_status soak_df3_read(const char *path, soak_df3 *out, char *err, size_t err
     if (st == SOAK_OK) {
         raw = malloc(count * (size_t)bytes);
         d.values = malloc(count * sizeof(float));
-        if (!raw || !d.values) st = fail(err, errlen, SOAK_ERR_NOMEM, path, "out of memory for %zu voxels", count);
+        if (!raw || !d.values) st = soak_error_at(err, errlen, SOAK_ERR_NOMEM, path, NULL, "out of memory for %zu voxels", count);
     }
     if (st == SOAK_OK && fread(raw, (size_t)bytes, count, f) != count)
-        st = fail(err, errlen, SOAK_ERR_IO, path, "read error in the df3 samples");
+        st = soak_error_at(err, errlen, SOAK_ERR_IO, path, NULL, "read error in the df3 samples");
     fclose(f);
     if (st == SOAK_OK) {
         double max = bytes == 1 ? 255.0 : bytes == 2 ? 65535.0 : 4294967295.0;
@@ -129,13 +114,13 @@ soak_status soak_vdb_check(const char *path, int nx, int ny, int nz, char *err, 
     fclose(f);
     static const unsigned char magic[8] = {0x20, 0x42, 0x44, 0x56, 0, 0, 0, 0};
     if (got < 8 || memcmp(h, magic, 8) != 0)
-        return fail(err, errlen, SOAK_ERR_PARSE, path, "not an OpenVDB file (its first 8 bytes are not the VDB magic)");
+        return soak_error_at(err, errlen, SOAK_ERR_PARSE, path, NULL, "not an OpenVDB file (its first 8 bytes are not the VDB magic)");
     if (got < sizeof h)
-        return fail(err, errlen, SOAK_ERR_PARSE, path, "OpenVDB file of %lld bytes is shorter than its %d-byte header",
+        return soak_error_at(err, errlen, SOAK_ERR_PARSE, path, NULL, "OpenVDB file of %lld bytes is shorter than its %d-byte header",
                     size, SOAK_VDB_HEADER_BYTES);
     uint32_t version = (uint32_t)h[8] | (uint32_t)h[9] << 8 | (uint32_t)h[10] << 16 | (uint32_t)h[11] << 24;
     if (version < SOAK_VDB_VERSION_MIN || version > SOAK_VDB_VERSION_MAX)
-        return fail(err, errlen, SOAK_ERR_PARSE, path, "OpenVDB file format version %u (readable: %u to %u)", version,
+        return soak_error_at(err, errlen, SOAK_ERR_PARSE, path, NULL, "OpenVDB file format version %u (readable: %u to %u)", version,
                     SOAK_VDB_VERSION_MIN, SOAK_VDB_VERSION_MAX);
     return SOAK_OK;
 }

@@ -1,6 +1,6 @@
 // ctest-label: slow
-/* The renderer's traced film path (render_surface.c `opaque`): refraction
- * into the film, light sampling through it, internal reflection and total
+/* The renderer's traced film (bsdf_walk.c's stochastic eval, pdf and
+ * sample, shaded by render_surface.c like any BSDF): refraction into the film, light sampling through it, internal reflection and total
  * internal reflection at its underside, and the Snell Jacobian in the MIS
  * weights. A film over a Lambert base is normally replaced by its closed
  * form; soak_render_options.trace_films forces the traced path, so the

@@ -4,6 +4,9 @@
 #ifndef SOAK_STATUS_H
 #define SOAK_STATUS_H
 
+#include <stdarg.h>
+#include <stddef.h>
+
 typedef enum soak_status {
     SOAK_OK = 0,
     SOAK_ERR_ARG,         /* argument out of its documented range, NaN or Inf */
@@ -22,6 +25,15 @@ const char *soak_status_str(soak_status s);
  * newline and tab (echoed from a malformed input: a key or a value) become
  * '?', so a message never carries terminal escapes or garbage. */
 void soak_message_printable(char *msg);
+
+/* The one form of an input error: "<file>: <where>: <message>" (": <where>"
+ * left out when where is NULL or empty) into err (when err and errlen are
+ * given), made printable; returns st so a parser can `return soak_error_at(...)`. */
+__attribute__((format(printf, 6, 7))) soak_status soak_error_at(char *err, size_t errlen, soak_status st,
+                                                                const char *file, const char *where, const char *fmt,
+                                                                ...);
+soak_status soak_verror_at(char *err, size_t errlen, soak_status st, const char *file, const char *where,
+                           const char *fmt, va_list ap);
 
 /* The range test used everywhere: false for NaN and +-Inf as well. */
 static inline int soak_in_range(double x, double lo, double hi)

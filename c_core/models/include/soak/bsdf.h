@@ -45,9 +45,19 @@
  *   - closed form over LAMBERT (soak/film.h): a delta mirror lobe of
  *     reflectance F12(cos_o) plus the diffuse Lekner-Dorf BSDF; eval / sample
  *     / pdf as for any BSDF;
- *   - traced over any other base, or when desc.film_traced: flags contain
- *     SOAK_BSDF_WALK and the caller follows the light through the film with
- *     soak_bsdf_walk_* (a random walk, so no closed-form eval).
+ *   - traced over any other base, or when desc.film_traced (flag
+ *     SOAK_BSDF_WALK): the same contract, estimated by random walks through
+ *     the layer in the spirit of pbrt-v4's LayeredBxDF (Pharr, Jakob &
+ *     Humphreys, PBR 4th ed., sec. 14.3): eval's f is an unbiased estimate
+ *     (bsdf_walk.c: one walk, every bounce's light at the base summed, the
+ *     underside's Fresnel taken as a weight), pdf an unbiased estimate of
+ *     sample()'s exit density from an independent walk, and sample() the
+ *     walk that the renderer used to follow itself (weight: its throughput,
+ *     whose mean given wi is f cos / pdf). Each estimate's random stream is
+ *     a hash of its directions, so eval is a function: the same pair gives
+ *     the same value, a light's and a sample's MIS weights see the same pdf
+ *     and still sum to one. soak_bsdf_eval_mean averages independent
+ *     estimates (and gives their standard error).
  *
  * Set-up clamps (documented, the only ones): GGX alpha below
  * SOAK_GGX_ALPHA_MIN is raised to it (a narrower lobe is a mirror that
@@ -56,6 +66,8 @@
  * NaN/Inf with SOAK_OK. */
 #ifndef SOAK_BSDF_H
 #define SOAK_BSDF_H
+
+#include <stdint.h>
 
 #include "soak/film.h"
 #include "soak/models.h"
@@ -67,7 +79,7 @@ typedef enum soak_bsdf_flags {
     SOAK_BSDF_GLOSSY = 2,
     SOAK_BSDF_DELTA = 4,    /* has a delta lobe (mirror or refraction) */
     SOAK_BSDF_TRANSMIT = 8, /* can send light through the surface (glass) */
-    SOAK_BSDF_WALK = 16     /* traced layer: use soak_bsdf_walk_* */
+    SOAK_BSDF_WALK = 16     /* traced layer: eval and pdf are estimates (soak_bsdf_eval_mean) */
 } soak_bsdf_flags;
 
 typedef enum soak_bsdf_kind {
@@ -105,7 +117,8 @@ void soak_bsdf_desc_default(soak_bsdf_desc *d, soak_bsdf_kind kind);
 typedef struct soak_bsdf {
     soak_bsdf_desc d;   /* sanitised copy; GGX eta, k are relative to the film */
     int flags;
-    int closed_film;    /* Lekner-Dorf closed form over Lambert */
+    const struct soak_bsdf_ops *ops;  /* the kind's entry points (or its film's) */
+    const struct soak_bsdf_ops *base; /* the kind's own, under a film */
     soak_film_ctx film[3];
     soak_model_ctx model[3];
     double coat_E[3][SOAK_BSDF_COAT_NODES]; /* COATED: E(mu) per channel */
@@ -125,42 +138,20 @@ int soak_bsdf_get_flags(const soak_bsdf *b);
 
 /* Non-delta part: f (1/sr, per channel) and the pdf of sampling wi for wo.
  * Either output may be NULL. Pairs with wi.z <= 0 or wo.z <= 0 give 0 (for
- * GLASS always 0). Not for WALK BSDFs (SOAK_ERR_UNSUPPORTED). */
+ * GLASS always 0). SOAK_BSDF_WALK: both are estimates (see above). Outputs
+ * are written only on SOAK_OK (as every function here). */
 soak_status soak_bsdf_eval(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
+/* The pdf alone (no f evaluated): what eval gives as *pdf. */
 soak_status soak_bsdf_pdf(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, double *pdf);
+/* Mean of n independent estimates of f (streams chosen by seed), its
+ * standard error and the mean of the pdf estimates (se, pdf may be NULL); a
+ * closed-form BSDF: its f and pdf, se 0, for any n in [1, 1e9]. */
+soak_status soak_bsdf_eval_mean(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, long n, uint64_t seed, soak_rgb *f,
+                                 soak_rgb *se, double *pdf);
 /* Samples wi for wo with u[0..2] in [0, 1). Returns SOAK_OK with *ok = 0
  * when no direction results (below the horizon): the path ends. GLASS
  * accepts wo on either side (wo.z < 0: from inside). */
 soak_status soak_bsdf_sample_dir(const soak_bsdf *b, soak_vec3 wo, const double u[3], soak_bsdf_sample *s, int *ok);
-
-/* ---- Traced layer (SOAK_BSDF_WALK) ----
- * The walk follows one light path through the film: start() plays the
- * Fresnel choice at the film top (a mirror reflection ends the walk), then
- * every step() samples the base and plays the underside's Fresnel choice
- * (exit into air, or back down: total internal reflection included). Before
- * each step the caller may estimate direct light at the base with light():
- * contribution = beta * f * L * cos_air / pdf_light, pdf for MIS in air
- * solid angle. Weights carry the film's absorption; the 1/n^2 radiance
- * factors cancel between entering and leaving and are left out of beta
- * (light() includes the one for light arriving inside). */
-typedef struct soak_bsdf_walk {
-    soak_vec3 up; /* direction of the light leaving the base toward wo (in the film) */
-} soak_bsdf_walk;
-
-typedef enum soak_walk_event { SOAK_WALK_EXIT = 0, SOAK_WALK_BOUNCE, SOAK_WALK_DEAD } soak_walk_event;
-
-/* u: one number for the Fresnel choice. Returns SOAK_WALK_EXIT with s (the
- * mirror direction, delta) or SOAK_WALK_BOUNCE with *weight (absorption
- * down). */
-soak_walk_event soak_bsdf_walk_start(const soak_bsdf *b, soak_vec3 wo, double u, soak_bsdf_walk *w,
-                                     soak_bsdf_sample *s, soak_rgb *weight);
-/* Light arriving from wi (air, wi.z > 0) scattered by the base toward w->up. */
-void soak_bsdf_walk_light(const soak_bsdf *b, const soak_bsdf_walk *w, soak_vec3 wi, soak_rgb *f, double *pdf);
-/* u[0..3]: base sample (3) and the underside's Fresnel choice (u[3]). EXIT:
- * s holds the direction in air, weight and pdf (air solid angle); BOUNCE:
- * *weight to multiply into beta and the walk goes on; DEAD: the path ends. */
-soak_walk_event soak_bsdf_walk_step(const soak_bsdf *b, soak_bsdf_walk *w, const double u[4], soak_bsdf_sample *s,
-                                    soak_rgb *weight);
 
 /* ---- Cost ----
  * Mean CPU time of one eval (RGB, value and pdf) over a fixed set of 64

@@ -6,8 +6,8 @@
  * The measure is the directional albedo R(cos_o) (RGB) of a material as the
  * renderer shades it (the BSDFs render.c sets up, soak/bsdf.h): the wet BSDF
  * with probability wetness * film_coverage, else the dry one, each estimated
- * by Monte Carlo with the renderer's own sampling (soak_bsdf_sample_dir; a
- * traced film by soak_bsdf_walk_*). Under uniform lighting R times the
+ * by Monte Carlo with the renderer's own sampling (soak_bsdf_sample_dir).
+ * Under uniform lighting R times the
  * irradiance is the radiance a camera sees, so a relative error in R is the
  * relative error in radiance that material makes in such an image.
  * Reproducible: the estimate depends only on the arguments and the seed. */
@@ -48,9 +48,8 @@ typedef struct soak_local_light {
  * the caller leaves occluded lights out):
  *     L = R(wo) env + sum_l f(wi_l, wo) cos(wi_l) E_l,
  * R by Monte Carlo as soak_material_albedo (delta lobes reflect env), f by
- * soak_bsdf_eval with the same dry/wet mixture. A traced film has no eval:
- * its direct term uses R(wo) cos E / pi (a Lambertian stand-in). The
- * one-bounce radiance under the scene's own lights, for soak/advise.h. */
+ * soak_bsdf_eval with the same dry/wet mixture (a traced film's f: the mean
+ * of samples estimates, soak_bsdf_eval_mean). The one-bounce radiance under the scene's own lights, for soak/advise.h. */
 soak_status soak_material_radiance(const soak_material *m, double wetness, soak_vec3 wo, soak_rgb env,
                                    const soak_local_light *lights, int n_lights, int samples, uint64_t seed,
                                    soak_albedo_estimate *out);
@@ -68,8 +67,8 @@ void soak_shading_material_free(soak_shading_material *p);
 /* Cost of shading m once, as the renderer does per hit of the wet state
  * (dry when the material has none): eval_ns is soak_bsdf_eval_cost_ns
  * (RGB value and pdf, wall-clock CPU time, n_rounds rounds of 64 pairs);
- * sample_ns one soak_bsdf_sample_dir, or for a traced film one whole walk
- * through it (eval_ns is then 0: a walk has no eval). For reports, never
+ * sample_ns one soak_bsdf_sample_dir (for a traced film: one walk through
+ * it, and eval one estimate of f and of pdf). For reports, never
  * for tests. */
 soak_status soak_material_cost(const soak_material *m, int n_rounds, double *eval_ns, double *sample_ns);
 
