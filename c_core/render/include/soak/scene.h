@@ -149,7 +149,7 @@ typedef struct soak_object {
 } soak_object;
 
 /* Default of render.walk_guide (see soak_scene.walk_guide). */
-#define SOAK_RENDER_WALK_GUIDE 0.5
+#define SOAK_RENDER_WALK_GUIDE 0.0
 
 typedef struct soak_scene {
     char path[1024];

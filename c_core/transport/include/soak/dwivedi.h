@@ -6,7 +6,7 @@
  * In a half-space of isotropic scatterers with single-scattering albedo a,
  * the probability that a particle at depth z below the surface ever reaches
  * it decays as exp(-sigma_t z / v0) far from the surface, v0 > 1 the
- * diffusion eigenvalue, the root of ([KdE14] eq. 2; Case & Zweifel 1967)
+ * diffusion eigenvalue, the root of ([KdE14]; [CZ67])
  *     (a v0 / 2) ln((v0 + 1) / (v0 - 1)) = 1,   i.e.  a v0 atanh(1/v0) = 1.
  * Sampling in proportion to that importance gives, with mu the cosine
  * between the flight direction and the outward normal of the plane:
@@ -19,7 +19,7 @@
  * analog walk, soak/medium.h), so any v0 > 1 is unbiased and v0 only
  * decides how well the guide fits. For an anisotropic phase function the
  * walk takes v0 at the similarity-reduced albedo a (1 - g) / (1 - a g)
- * (Wyman, Patterson, Pinsky 1989 similarity relations; our choice). */
+ * (the similarity relation of diffusion theory; our choice). */
 #ifndef SOAK_DWIVEDI_H
 #define SOAK_DWIVEDI_H
 
