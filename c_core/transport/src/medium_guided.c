@@ -78,9 +78,9 @@ soak_status walk_guide_scatter(walk_guide *g, const soak_hg2 *phase, soak_vec3 *
     return SOAK_OK;
 }
 
-/* MIS pdf of the flight (without the common factor of the sampled
- * distance's own exponent) and each channel's contribution f[k] over it:
- * sig = NULL at the surface (transmittance only). */
+/* MIS pdf of the flight to distance t (collide = 1: a collision there;
+ * 0: reaching the surface there, no sigma factor); tc[k] receives each
+ * channel's transmittance exp(-sigma_k t). */
 static double flight_pdf(const walk_guide *g, const double sig[3], const double p[3], double mu, double t, int collide,
                          double tc[3])
 {
