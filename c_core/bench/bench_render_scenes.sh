@@ -8,27 +8,22 @@
 # machine may be shared, and the time ratios then move by tens of per cent between runs.
 #
 # usage: bench_render_scenes.sh [BUILD_DIR] [REF_SPP] [SPP_LIST] [THREADS] [TARGET]
-#   as bench_render_vs_cycles.sh (BENCH_REPEAT, BENCH_KEEP apply to each scene).
+#   as bench_render_vs_cycles.sh (BENCH_REPEAT, BENCH_KEEP apply to each scene);
+#   BENCH_SCENES="bench_wet_paper ..." runs a subset.
 set -eu -o pipefail
 HERE="$(cd "$(dirname "$0")" && pwd)"
 ROOT="$(cd "$HERE/../.." && pwd)"
 BUILD="${1:-build}"
-W="$(mktemp -d)"
-trap 'rm -rf "$W"' EXIT
 echo "# soak render vs Cycles on three scenes"
 echo
 echo "Commit $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo unknown)$(git -C "$ROOT" diff --quiet 2>/dev/null || echo ' (with local changes)'), $(date -u '+%Y-%m-%d %H:%M UTC'), load average before: $(cut -d' ' -f1-3 /proc/loadavg)."
-for scene in bench_wet_sphere bench_wet_paper bench_wet_puddles; do
+for scene in ${BENCH_SCENES:-bench_wet_sphere bench_wet_paper bench_wet_puddles}; do
     echo
     echo "## $scene"
     echo
     BENCH_SCENE="$ROOT/scenes/$scene.json" bash "$HERE/bench_render_vs_cycles.sh" "$@" | sed 's/^# /### /'
     echo
-    # Scaling on a copy beside the puddle map (baked as bench_render_vs_cycles.sh does).
-    "$BUILD/bin/soak" bake turbulence -o "$W/bench_puddles.png" --width 256 --height 256 --seed 7 --frequency 3 \
-        --threshold 0.1 --softness 0.05 --threads 2 >/dev/null
-    cp "$ROOT/scenes/$scene.json" "$W/$scene.json"
-    /usr/bin/python3 "$HERE/render_scaling.py" "$BUILD/bin/soak" "$W/$scene.json" 32
+    /usr/bin/python3 "$HERE/render_scaling.py" "$BUILD/bin/soak" "$ROOT/scenes/$scene.json" 32
 done
 echo
 echo "Load average after: $(cut -d' ' -f1-3 /proc/loadavg)."

@@ -417,7 +417,8 @@ def main():
         scene.cycles.samples = 16
         sun = sc["lights"][0]
         add_camera(scene, [0, 0, 10], [0, 0, 0], [0, 1, 0], 5)
-        add_sun(scene, sun["direction"], sun["irradiance"], 1.0)
+        d = sun["direction"]  # a sun from below is mirrored above (units only), as the shell does
+        add_sun(scene, [d[0], d[1], abs(d[2])], sun["irradiance"], 1.0)
         set_world(scene, None)
         bpy.ops.mesh.primitive_plane_add(size=100.0)
         bpy.context.active_object.data.materials.append(lambert_material("white", 1.0))
