@@ -26,6 +26,10 @@
 #   defaults: build 2048 "4 8 16 32 64 128 256 512 1024" 2 0.02      (soak = BUILD_DIR/bin/soak)
 #   BENCH_REPEAT=N times every run N times, interleaved, and keeps the fastest (default 3).
 #   BENCH_KEEP=1 keeps the renders (the folder is named on stderr).
+#   BENCH_SCENE=FILE benchmarks another scene (default scenes/bench_wet_sphere.json); the
+#   three of the benchmark (issue 38): bench_wet_sphere.json, bench_wet_paper.json (a
+#   back-lit wet sheet: subsurface box), bench_wet_puddles.json (a wet quad with a
+#   puddle map, scenes/bench_puddles.png). bench_render_scenes.sh runs all three.
 # Takes about 5-6 minutes on 2 cores with 3 repeats.
 set -eu
 HERE="$(cd "$(dirname "$0")" && pwd)"
@@ -37,8 +41,8 @@ THREADS="${4:-2}"
 TARGET="${5:-0.02}"
 REPEAT="${BENCH_REPEAT:-3}"
 case "$REPEAT" in '' | *[!0-9]* | 0) echo "BENCH_REPEAT must be a positive integer"; exit 1 ;; esac
-SCENE_SRC="$ROOT/scenes/bench_wet_sphere.json"
-SCENE="$SCENE_SRC" # Cycles reads the original; soak its mesh copy (below)
+SCENE_SRC="${BENCH_SCENE:-$ROOT/scenes/bench_wet_sphere.json}"
+[ -f "$SCENE_SRC" ] || { echo "no scene $SCENE_SRC"; exit 1; }
 PY=/usr/bin/python3
 REF_SEED=1000 # references use another seed than the runs: independent noise
 RUN_SEED=1
@@ -51,6 +55,9 @@ MD=""
 [ -d out/bench ] && MD="out/bench/render_vs_cycles.md"
 W="$(mktemp -d)"
 if [ -n "${BENCH_KEEP:-}" ]; then echo "keeping the renders in $W" >&2; else trap 'rm -rf "$W"' EXIT; fi
+SCENE="$W/scene.json" # Cycles reads this copy (beside its maps); soak its mesh copy (below)
+cp "$SCENE_SRC" "$SCENE"
+if grep -q '"bench_puddles.png"' "$SCENE"; then cp "$(dirname "$SCENE_SRC")/bench_puddles.png" "$W/"; fi
 now() { date +%s.%N; }
 blend() { blender -b --factory-startup --python-exit-code 1 --python "$HERE/cycles_render_scene.py" -- "$@"; }
 avg_r() { oiiotool "$1" --printstats 2>/dev/null | sed -n 's/.*Stats Avg: *\([0-9.eE+-]*\).*/\1/p' | head -1; }
@@ -59,7 +66,9 @@ avg_r() { oiiotool "$1" --printstats 2>/dev/null | sed -n 's/.*Stats Avg: *\([0-
 "$PY" - "$SCENE" "$W/cal.json" <<'EOF'
 import json, sys
 sc = json.load(open(sys.argv[1]))
-sun = sc["lights"][0]
+sun = dict(sc["lights"][0])
+# Units only: a sun from below (a back-lit sheet) is mirrored above the plane.
+sun["direction"] = [sun["direction"][0], sun["direction"][1], abs(sun["direction"][2])]
 json.dump({"render": {"width": 32, "height": 24},
            "camera": {"position": [0, 0, 10], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 5},
            "lights": [sun],
@@ -77,13 +86,13 @@ import json, math, sys
 s = json.load(open('$SCENE'))['lights'][0]
 d, e = s['direction'], s['irradiance']
 e = e[0] if isinstance(e, list) else e
-print('%.6f' % (e * d[2] / math.sqrt(sum(x * x for x in d)) / math.pi))")
+print('%.6f' % (e * abs(d[2]) / math.sqrt(sum(x * x for x in d)) / math.pi))")
 SUN_SCALE=$(echo "$soak_cal / $cycles_cal" | bc -l)
 
 # --- 1b. same geometry: soak traces Blender's UV sphere -------------------------
 blend --export-sphere "$W/uvsphere.obj" >"$W/blender_sphere.log" 2>&1 || { cat "$W/blender_sphere.log"; exit 1; }
 sphere_info=$(sed -n 's/^CYCLES_SPHERE //p' "$W/blender_sphere.log")
-"$PY" - "$SCENE_SRC" "$W/scene_mesh.json" <<'EOF'
+"$PY" - "$SCENE" "$W/scene_mesh.json" <<'EOF'
 import json, sys
 sc = json.load(open(sys.argv[1]))
 for o in sc["objects"]:
@@ -162,10 +171,10 @@ load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 {
     echo "# soak render vs Blender Cycles $(blender -b --factory-startup -noaudio --version 2>/dev/null | head -1 | sed 's/Blender //')"
     echo
-    echo "Scene \`scenes/bench_wet_sphere.json\`, $(sed -n 's/.*"width": *\([0-9]*\), *"height": *\([0-9]*\).*/\1x\2/p' "$SCENE" | head -1)," \
+    echo "Scene \`$(basename "$SCENE_SRC")\`, $(sed -n 's/.*"width": *\([0-9]*\), *"height": *\([0-9]*\).*/\1x\2/p' "$SCENE" | head -1)," \
         "$THREADS threads, CPU, no denoising, one run; RMSE over RGB against each renderer's own" \
         "$REF_SPP-spp reference (seed $REF_SEED; runs seed $RUN_SEED)."
-    echo "Same geometry: the sphere is Blender's UV-sphere mesh ($sphere_info) in both renderers." \
+    echo "Same geometry: a sphere is Blender's UV-sphere mesh ($sphere_info) in both renderers." \
         "Times are the render call for both: soak's printed \`time:\` (path tracing), Cycles' \`bpy.ops.render.render\` (sync, BVH, path tracing);" \
         "runs interleaved by rounds (soak all spp, then a Blender session all spp after an untimed warm-up), each the fastest of $REPEAT rounds (references: one render each)."
     echo

@@ -20,10 +20,14 @@ render (render call only: scene sync, BVH build and path tracing; file writing e
 straight above (radiance E cos(theta)/pi if Cycles' sun strength is an irradiance in
 W/m^2); the shell compares it with soak's render of the same setup.
 
-Only the subset of the scene format used by scenes/bench_wet_sphere.json is translated:
-sun lights, a constant environment, `plane` and `sphere` objects, `lambert` materials
-and `wet` materials with a lambert or homogeneous single-lobe medium base. Anything
-else is an error (the benchmark must not silently compare different scenes).
+Only the subset of the scene format used by the benchmark scenes (scenes/bench_wet_sphere.json,
+bench_wet_paper.json, bench_wet_puddles.json) is translated: sun lights, a constant
+environment, `plane`, `quad`, `box` and `sphere` objects, constant wetness 1 or a wetness
+`map` (an Image Texture over the object's UVs mixing the dry base and the wet material:
+soak draws the wet BSDF with probability = the map's value, Cycles mixes the closures
+with that weight), `lambert` materials and `wet` materials with a lambert or homogeneous
+medium base (two HG lobes become one with the same mean cosine). Anything else is an
+error (the benchmark must not silently compare different scenes).
 
 Material equivalences (Cycles has no layered film; "equivalent" = same look to first
 order and a comparable sampling cost):
@@ -218,8 +222,8 @@ def lambert_material(name, albedo):
     return mat
 
 
-def wet_lambert_material(name, albedo, n_film):
-    mat, nt, out = new_material(name)
+def wet_lambert_nodes(nt, albedo, n_film):
+    """The wet-over-Lambert closure in node tree nt; returns its output socket."""
     r_e = hemispherical_fresnel(n_film)
     r_i = hemispherical_fresnel(1.0 / n_film)
     colour = [a * (1 - r_i) / (1 - a * r_i) / (1 - r_e) for a in rgb(albedo)]
@@ -234,8 +238,13 @@ def wet_lambert_material(name, albedo, n_film):
     nt.links.new(fres.outputs[0], mix.inputs[0])
     nt.links.new(diff.outputs[0], mix.inputs[1])
     nt.links.new(gloss.outputs[0], mix.inputs[2])
-    nt.links.new(mix.outputs[0], out.inputs["Surface"])
-    print("material %s: wet lambert, diffuse colour %s (r_i %.4f, r_e %.4f)" % (name, colour, r_i, r_e))
+    print("wet lambert: diffuse colour %s (r_i %.4f, r_e %.4f)" % (colour, r_i, r_e))
+    return mix.outputs[0]
+
+
+def wet_lambert_material(name, albedo, n_film):
+    mat, nt, out = new_material(name)
+    nt.links.new(wet_lambert_nodes(nt, albedo, n_film), out.inputs["Surface"])
     return mat
 
 
@@ -275,6 +284,27 @@ def wet_medium_material(name, base, n_film):
     return mat
 
 
+def wet_map_material(name, m, image_path):
+    """Mix(dry base, wet material) by the wetness map (soak: wet with probability = map)."""
+    if m["base"]["type"] != "lambert":
+        fail("materials.%s: a wetness map is translated over a lambert base only" % name)
+    mat, nt, out = new_material(name + "_map")
+    tex = nt.nodes.new("ShaderNodeTexImage")
+    tex.image = bpy.data.images.load(image_path)
+    tex.image.colorspace_settings.name = "Non-Color"
+    tex.interpolation = "Closest"  # soak reads the nearest pixel
+    dry = nt.nodes.new("ShaderNodeBsdfDiffuse")
+    dry.inputs["Color"].default_value = rgb(m["base"]["albedo"]) + [1.0]
+    wet = wet_lambert_nodes(nt, m["base"]["albedo"], float(m.get("film", {}).get("ior", 1.33)))
+    mix = nt.nodes.new("ShaderNodeMixShader")
+    nt.links.new(tex.outputs["Color"], mix.inputs[0])
+    nt.links.new(dry.outputs[0], mix.inputs[1])
+    nt.links.new(wet, mix.inputs[2])
+    nt.links.new(mix.outputs[0], out.inputs["Surface"])
+    print("material %s: wetness map %s mixing dry lambert and the wet one" % (mat.name, image_path))
+    return mat
+
+
 def make_material(name, m):
     t = m.get("type")
     if t == "lambert":
@@ -291,14 +321,43 @@ def make_material(name, m):
     fail("wet base type '%s' is not translated" % base["type"])
 
 
-def add_object(scene, o, mats, i):
-    for k in o:
-        if k not in ("type", "material", "wetness", "center", "radius", "normal", "size"):
-            fail("objects[%d].%s is not translated" % (i, k))
+def add_quad(origin, eu, ev):
+    o, u, v = Vector(origin), Vector(eu), Vector(ev)
+    me = bpy.data.meshes.new("quad")
+    me.from_pydata([o, o + u, o + u + v, o + v], [], [(0, 1, 2, 3)])
+    uv = me.uv_layers.new(name="UVMap")
+    for loop, co in zip(me.loops, ((0, 0), (1, 0), (1, 1), (0, 1))):
+        uv.data[loop.index].uv = co
+    obj = bpy.data.objects.new("quad", me)
+    bpy.context.scene.collection.objects.link(obj)
+    return obj
+
+
+def object_material(o, mats, sc_dir, i, materials):
     wet = o.get("wetness", 1)
-    if not (isinstance(wet, (int, float)) and wet == 1):
-        fail("objects[%d].wetness: only a constant 1 is translated" % i)
-    if o["type"] == "sphere":
+    if isinstance(wet, (int, float)) and wet == 1:
+        return mats[o["material"]]
+    if isinstance(wet, dict) and wet.get("type") == "map":
+        path = os.path.join(sc_dir, wet["file"])
+        return wet_map_material(o["material"], materials[o["material"]], path)
+    fail("objects[%d].wetness: only a constant 1 or a map is translated" % i)
+
+
+def add_object(scene, o, mats, i, sc_dir=".", materials=None):
+    for k in o:
+        if k not in ("type", "material", "wetness", "center", "radius", "normal", "size", "min", "max", "origin",
+                     "edge_u", "edge_v"):
+            fail("objects[%d].%s is not translated" % (i, k))
+    mat = object_material(o, mats, sc_dir, i, materials or {})
+    if o["type"] == "quad":
+        obj = add_quad(o["origin"], o["edge_u"], o["edge_v"])
+    elif o["type"] == "box":
+        lo, hi = Vector(o["min"]), Vector(o["max"])
+        bpy.ops.mesh.primitive_cube_add(size=1.0, location=(lo + hi) / 2)
+        obj = bpy.context.active_object
+        obj.scale = hi - lo
+        bpy.ops.object.transform_apply(scale=True)  # the walk sees true distances
+    elif o["type"] == "sphere":
         bpy.ops.mesh.primitive_uv_sphere_add(segments=SPHERE_SEGMENTS, ring_count=SPHERE_RINGS, radius=float(o["radius"]),
                                              location=o["center"])
         obj = bpy.context.active_object
@@ -311,7 +370,7 @@ def add_object(scene, o, mats, i):
         obj.rotation_euler = Vector((0, 0, 1)).rotation_difference(Vector(o["normal"]).normalized()).to_euler()
     else:
         fail("object type '%s' is not translated" % o["type"])
-    obj.data.materials.append(mats[o["material"]])
+    obj.data.materials.append(mat)
 
 
 SPHERE_SEGMENTS, SPHERE_RINGS = 192, 96
@@ -358,7 +417,8 @@ def main():
         scene.cycles.samples = 16
         sun = sc["lights"][0]
         add_camera(scene, [0, 0, 10], [0, 0, 0], [0, 1, 0], 5)
-        add_sun(scene, sun["direction"], sun["irradiance"], 1.0)
+        d = sun["direction"]  # a sun from below is mirrored above (units only), as the shell does
+        add_sun(scene, [d[0], d[1], abs(d[2])], sun["irradiance"], 1.0)
         set_world(scene, None)
         bpy.ops.mesh.primitive_plane_add(size=100.0)
         bpy.context.active_object.data.materials.append(lambert_material("white", 1.0))
@@ -378,7 +438,7 @@ def main():
     set_world(scene, sc.get("environment"))
     mats = {name: make_material(name, m) for name, m in sc["materials"].items()}
     for i, o in enumerate(sc["objects"]):
-        add_object(scene, o, mats, i)
+        add_object(scene, o, mats, i, os.path.dirname(os.path.abspath(scene_path)), sc["materials"])
     for job in args[4:]:
         spp, seed = (int(x) for x in job.split(":"))
         scene.cycles.samples = spp

@@ -501,6 +501,11 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     soak_walk_options opt = rt_walk_options(soak_rgb_scale(path->beta, path->eta_scale));
     opt.on_vertex = medium_vertex;
     opt.vertex_ctx = &nc;
+    /* Guide the walk toward the entry face (as Cycles' random walk guides
+     * toward its entry point's normal): most light that leaves does so near
+     * where it came in, and every vertex's sun estimate is brightest there. */
+    opt.guide_prob = t->ctx->scene->walk_guide;
+    opt.guide_normal = soak_v3_norm(n_out);
     soak_walk_result_rgb w;
     soak_status status =
         soak_medium_walk_rgb(&mr, &opt, soak_geometry_offset(hit->p, n_out, d), d, &boundary, &t->rng, &w);

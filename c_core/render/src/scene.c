@@ -35,15 +35,16 @@ static soak_status parse_robust(scene_ctx *c, const cJSON *j, int *robust)
 
 static soak_status parse_render(scene_ctx *c, const cJSON *j)
 {
-    static const char *const keys[] = {"width", "height", "spp", "max_depth", "caustic_photons", "caustic_radius", "robust", NULL};
+    static const char *const keys[] = {"width", "height", "spp", "max_depth", "caustic_photons", "caustic_radius", "robust", "walk_guide", NULL};
     soak_scene *s = c->scene;
-    double w = 256, h = 192, spp = 16, md = 256, np = 0, rad = 0;
+    double w = 256, h = 192, spp = 16, md = 256, np = 0, rad = 0, guide = SOAK_RENDER_WALK_GUIDE;
     int robust = 1;
     if (j) {
         soak_status st = sj_keys(c, j, "render", keys);
         if (st == SOAK_OK) st = parse_robust(c, j, &robust);
         if (st == SOAK_OK) st = sj_num(c, j, "caustic_photons", "render", 0, 1e9, 0, 0, &np);
         if (st == SOAK_OK) st = sj_num(c, j, "caustic_radius", "render", 0, 1e12, 0, 0, &rad);
+        if (st == SOAK_OK) st = sj_num(c, j, "walk_guide", "render", 0, 0.99, 0, SOAK_RENDER_WALK_GUIDE, &guide);
         if (st == SOAK_OK && np > 0 && !(rad > 0))
             return sj_fail(c, SOAK_ERR_ARG, "render.caustic_radius", "must be > 0 when render.caustic_photons is set");
         if (st == SOAK_OK) st = sj_num(c, j, "width", "render", 1, SOAK_RENDER_MAX_SIZE, 0, 256, &w);
@@ -63,6 +64,7 @@ static soak_status parse_render(scene_ctx *c, const cJSON *j)
     s->max_depth = (int)md;
     s->caustic_photons = (long long)np;
     s->caustic_radius = rad;
+    s->walk_guide = guide;
     return soak_geometry_set_robust(s->geometry, robust);
 }
 

@@ -3,6 +3,7 @@
 
 #include <stddef.h>
 
+#include "medium_internal.h"
 #include "soak/fresnel.h"
 
 #define SOAK_SIGMA_MAX 1e12
@@ -36,6 +37,8 @@ void soak_walk_options_default(soak_walk_options *opt)
     opt->scatter_ctx = NULL;
     opt->on_vertex = NULL;
     opt->vertex_ctx = NULL;
+    opt->guide_prob = 0.0;
+    opt->guide_normal = soak_v3(0, 0, 1);
 }
 
 static int unit_vector(soak_vec3 v) { return soak_v3_is_unit(v); }
@@ -55,6 +58,8 @@ static soak_status resolve_options(const soak_walk_options *opt, soak_walk_optio
     }
     if (!soak_in_range(opt->roulette_threshold, 1e-12, 1.0) || opt->max_events < 1) return SOAK_ERR_ARG;
     if (!weights_ok(opt->weight)) return SOAK_ERR_ARG;
+    if (!soak_in_range(opt->guide_prob, 0.0, SOAK_GUIDE_PROB_MAX)) return SOAK_ERR_ARG;
+    if (opt->guide_prob > 0 && !unit_vector(opt->guide_normal)) return SOAK_ERR_ARG;
     *out = *opt;
     return SOAK_OK;
 }
@@ -164,14 +169,12 @@ static soak_medium_point homogeneous_point(const soak_medium_rgb *m)
     return p;
 }
 
-typedef enum flight_end { FLIGHT_SURFACE, FLIGHT_COLLISION, FLIGHT_CAPPED } flight_end;
-
 /* Distance to the surface from pos along dir into *dmax, for a flight whose
  * sampled length is t. With a within test that rules the surface out
  * before t, the closest-hit query is skipped and *dmax = INFINITY: the
  * flight then ends at its collision, exactly as it would against the true
  * distance (> t). */
-static soak_status surface_distance(const soak_boundary *b, soak_vec3 pos, soak_vec3 dir, double t, double *dmax)
+soak_status medium_surface_distance(const soak_boundary *b, soak_vec3 pos, soak_vec3 dir, double t, double *dmax)
 {
     if (b->within && t < INFINITY && !b->within(b->ctx, pos, dir, t)) {
         *dmax = INFINITY;
@@ -183,7 +186,7 @@ static soak_status surface_distance(const soak_boundary *b, soak_vec3 pos, soak_
 
 /* Homogeneous free flight toward the surface (channel MIS, see
  * soak/medium.h): the distance t is sampled first, then the surface
- * distance *dmax is asked (lazily, see surface_distance). On a collision
+ * distance *dmax is asked (lazily, see medium_surface_distance). On a collision
  * r->pos moves there and the weights take the collision factor sigma_s; at
  * the surface they take the transmittance. */
 static soak_status fly_homogeneous(const soak_medium_rgb *m, const soak_boundary *b, soak_walk_result_rgb *r,
@@ -196,7 +199,7 @@ static soak_status fly_homogeneous(const soak_medium_rgb *m, const soak_boundary
     soak_status st;
     if (sig[0] == sig[1] && sig[1] == sig[2]) {
         t = free_flight(sig[0], rng); /* every channel has the same density: weights 1 */
-        if ((st = surface_distance(b, r->pos, r->dir, t, &dmax)) != SOAK_OK) return st;
+        if ((st = medium_surface_distance(b, r->pos, r->dir, t, &dmax)) != SOAK_OK) return st;
         *dmax_out = dmax;
         if (t >= dmax) {
             *end = FLIGHT_SURFACE;
@@ -211,7 +214,7 @@ static soak_status fly_homogeneous(const soak_medium_rgb *m, const soak_boundary
         if (p[c] == 0.0) c = p[2] > 0.0 ? 2 : (p[1] > 0.0 ? 1 : 0); /* round-off at the top of [0,1) */
         double tr_c;
         t = free_flight_tr(sig[c], rng, &tr_c);
-        if ((st = surface_distance(b, r->pos, r->dir, t, &dmax)) != SOAK_OK) return st;
+        if ((st = medium_surface_distance(b, r->pos, r->dir, t, &dmax)) != SOAK_OK) return st;
         *dmax_out = dmax;
         if (t >= dmax) {
             if (dmax == INFINITY) {
@@ -339,13 +342,17 @@ soak_status soak_medium_walk_rgb(const soak_medium_rgb *m, const soak_walk_optio
 
     soak_walk_result_rgb r = {SOAK_WALK_CAPPED, pos, dir, opt.weight, 0, 0};
     soak_medium_point local = homogeneous_point(m);
+    walk_guide guide;
+    walk_guide_init(&guide, m, &opt);
     while (r.events < opt.max_events) { /* capped: reported, never dropped silently */
         if (!(soak_rgb_max(r.weight) > 0.0)) return finish(&r, SOAK_WALK_ABSORBED, out);
         double dmax = INFINITY;
         flight_end fe;
         if (m->coeffs) {
-            if ((st = surface_distance(boundary, r.pos, r.dir, INFINITY, &dmax)) != SOAK_OK) return st;
+            if ((st = medium_surface_distance(boundary, r.pos, r.dir, INFINITY, &dmax)) != SOAK_OK) return st;
             st = fly_heterogeneous(m, dmax, opt.max_events, &r, rng, &local, &fe);
+        } else if (guide.armed) {
+            st = walk_guide_fly(&guide, m, boundary, &r, rng, &fe, &dmax);
         } else {
             st = fly_homogeneous(m, boundary, &r, rng, &fe, &dmax);
         }
@@ -364,7 +371,13 @@ soak_status soak_medium_walk_rgb(const soak_medium_rgb *m, const soak_walk_optio
             if (!weights_ok(r.weight)) return SOAK_ERR_NUMERIC;
             if (opt.on_vertex && !opt.on_vertex(opt.vertex_ctx, r.pos, r.dir, r.weight, &local, rng))
                 return finish(&r, SOAK_WALK_STOPPED, out);
-            if ((st = scatter(&local.phase, &r.dir, rng, &opt)) != SOAK_OK) return st;
+            if (guide.prob > 0) {
+                soak_vec3 d_in = r.dir;
+                if ((st = walk_guide_scatter(&guide, &local.phase, &r.dir, r.weight, rng)) != SOAK_OK) return st;
+                if (opt.on_scatter) opt.on_scatter(opt.scatter_ctx, d_in, r.dir);
+            } else if ((st = scatter(&local.phase, &r.dir, rng, &opt)) != SOAK_OK) {
+                return st;
+            }
             ++r.scatters;
         }
         if (!roulette(&r.weight, &opt, rng)) return finish(&r, SOAK_WALK_ABSORBED, out);

@@ -148,11 +148,19 @@ typedef struct soak_object {
     soak_wetness wetness;
 } soak_object;
 
+/* Default of render.walk_guide (see soak_scene.walk_guide). */
+#define SOAK_RENDER_WALK_GUIDE 0.0
+
 typedef struct soak_scene {
     char path[1024];
     int width, height, spp, max_depth;
     long long caustic_photons; /* volume photon map for caustics into media; 0 = off */
     double caustic_radius;     /* photon gather radius (scene length unit) */
+    /* Probability of the Dwivedi guide at each scattering of a homogeneous
+     * medium's walk toward the face the path entered through
+     * (soak_walk_options.guide_prob; render.walk_guide, [0, 0.99], 0 = the
+     * analog walk). */
+    double walk_guide;
     soak_camera camera;
     soak_environment env;
     soak_light *lights;

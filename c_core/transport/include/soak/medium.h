@@ -116,6 +116,16 @@ typedef struct soak_walk_options {
     void *scatter_ctx;
     soak_vertex_fn on_vertex;
     void *vertex_ctx;
+    /* Guided walk (homogeneous media only; a grid medium ignores it): a
+     * direction sampled at a scattering event comes, with probability
+     * guide_prob, from the Dwivedi guide toward the plane of outward unit
+     * normal guide_normal (soak/dwivedi.h) with its stretched flight
+     * distance, else from the phase function with the analog flight; the
+     * weights use the one-sample MIS (balance heuristic) pdf of both over
+     * direction and distance, so the estimate is unbiased for any normal.
+     * guide_prob in [0, 0.99]; 0 (default) is the analog walk. */
+    double guide_prob;
+    soak_vec3 guide_normal;
 } soak_walk_options;
 
 void soak_walk_options_default(soak_walk_options *opt);
