@@ -26,7 +26,7 @@ lookups and what follows them."""
 
 import json
 
-from . import compat, data, group_layout
+from . import compat, data, group_layout, wet_constant
 from .node_program import (Builder, affine_program, combine, lerp, lookup, run_program,
                            run_program_vector, separate, vec, vec_num)
 
@@ -264,6 +264,27 @@ def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view
     return colour, rough, spec.outputs[1], spec.outputs[0], param
 
 
+def _wet_path_constant(b, gin, L, preset, liquid_name, normal, stages=(2, 3), view=True):
+    """_wet_path at a constant liquid amount L (a number): the table rows at
+    L as RGB Curves nodes and numbers (wet_constant)."""
+    t = data.table(preset, liquid_name)
+    row = wet_constant.Row(t, L)
+    b.stage = STAGES[stages[0]]
+    colour = wet_constant.wet_colour(b, gin.outputs["Base Color"], t, row)
+    factor, area, ratio = wet_constant.param(t, row, 3)
+    rough = b.math("MULTIPLY", gin.outputs["Roughness"], ratio, clamp=True)
+    b.stage = STAGES[stages[1]]
+    vf = wet_constant.view_factor(b, t, row, normal) if view else None
+    if vf is not None:
+        colour = vec(b, "MULTIPLY", colour, vf)
+
+    def param(pixel):
+        b.stage = STAGES[stages[0]]
+        return wet_constant.colour_value(b, wet_constant.param(t, row, pixel))
+    b.stage = STAGES[stages[0]]
+    return colour, rough, wet_constant.value(b, area), wet_constant.value(b, factor), param
+
+
 def _sockets_match(tree):
     """True when the group already has exactly INPUTS and OUTPUTS (then a
     rebuild keeps them, and with them the group node's links and values)."""
@@ -335,9 +356,12 @@ def _bump(b, gin, spill_edges):
     return bump.outputs["Normal"]
 
 
-def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view):
+def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view, constant_L=None):
     """The metallic part's own function (a conductor preset) mixed in by Metallic."""
-    mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact, normal, stages=(4, 4), view=view)
+    if constant_L is None:
+        mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact, normal, stages=(4, 4), view=view)
+    else:
+        mc, mr, mcoat, _, _ = _wet_path_constant(b, gin, constant_L, metal, liquid_name, normal, (4, 4), view)
     b.stage = STAGES[5]
     f = b.math("MINIMUM", b.math("MAXIMUM", gin.outputs["Metallic"], 0.0), 1.0)
     colour = lerp(b, colour, mc, f)
@@ -346,13 +370,17 @@ def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat
     return colour, rough, coat
 
 
-def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BALANCED"):
+def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BALANCED", constant=None):
     """(Re)builds the inside of a Soak Wet group for a preset and liquid.
     metal: a conductor preset whose function the metallic part of the
     material gets (mixed by the Metallic input), None for none. quality: one
     of QUALITY's keys, the terms the group models (exact lookups, view
-    factor, bump). Sockets that already match INPUTS/OUTPUTS are kept (the
-    node's links and values too)."""
+    factor, bump). constant: {name: value} of wet_constant.LIQUID_INPUTS
+    when none of them varies (the group node's values; None: they may):
+    the group is then specialised to that one liquid amount (wet_constant;
+    those inputs are read from here, not from the node, and the spill-edge
+    bump, which needs a varying wet map, is left out). Sockets that already
+    match INPUTS/OUTPUTS are kept (the node's links and values too)."""
     terms = QUALITY[quality]
     m = data.material(preset)
     if metal is not None and data.material(metal)["kind"] != "conductor":
@@ -361,19 +389,26 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
     if not _sockets_match(tree):
         _make_sockets(tree)
     _socket_hints(tree)
+    if constant is not None:
+        constant = {name: float(constant[name]) for name in wet_constant.LIQUID_INPUTS}
     tree[GROUP_TAG] = json.dumps({"preset": preset, "liquid": liquid_name, "exact": bool(exact), "metal": metal,
-                                  "quality": quality})
+                                  "quality": quality, "constant": constant})
     exact = bool(exact) or terms["exact"] or compat.exact_lookups_required()
     b = Builder(tree)
     gin = _Inputs(b)
     b.stage = STAGES[0]
-    L = _liquid_schedule(b, gin)
+    Lc = wet_constant.liquid(constant) if constant is not None else None
+    L = _liquid_schedule(b, gin) if Lc is None else wet_constant.value(b, Lc)
     b.stage = STAGES[1]
-    normal = _bump(b, gin, terms["bump"])
+    normal = _bump(b, gin, terms["bump"] and Lc is None)
     view = terms["view_factor"]
-    colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact, normal, view=view)
+    if Lc is None:
+        colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact, normal, view=view)
+    else:
+        colour, rough, coat, factor, param = _wet_path_constant(b, gin, Lc, preset, liquid_name, normal, view=view)
     if metal is not None:
-        colour, rough, coat = _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view)
+        colour, rough, coat = _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view,
+                                         constant_L=Lc)
     b.stage = STAGES[6]
     spec = b.math("MULTIPLY", gin.outputs["Specular"], factor)
     # Blender's own coat dims what lies under it (4.x); the core's values
