@@ -14,9 +14,9 @@ bl_info = {
     "category": "Material",
 }
 
-from . import operators, preferences, properties, ui
+from . import handlers, operators, preferences, properties, ui
 
-_modules = (preferences, properties, operators, ui)
+_modules = (preferences, properties, operators, ui, handlers)
 
 
 def register():

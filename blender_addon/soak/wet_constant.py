@@ -14,16 +14,16 @@ Image lookups cost Cycles as much at a constant coordinate as at any other;
 the curves are a short table in the shader itself. Only interpolation of
 what the core exported happens here; the numbers are the export's.
 
-One term the tables do not have: Blender samples a curve into 256 entries
-uniform in its input (the dry albedo), where the table's columns are
-uniform in s = column_program(a), dense near a = 1 where the function
-bends like sqrt(1 - a). That sampling errs by at most 0.002 on the colour
-(every preset and liquid, measured against the tables' own interpolation);
-tests/blender/test_group_values.py holds the specialised group to it."""
+The colour curve's input is the column coordinate s = column_program(a),
+as the lookups', not the dry albedo: Blender samples a curve at 256 points
+uniform in its input, and in a the function bends like sqrt(1 - a) near
+a = 1 (sampled in a: up to 0.002 off the tables; in s: 2e-4, the bound
+tests/blender/test_specialise.py computes from the tables)."""
 
 import math
 
 from . import data
+from .node_program import run_program_vector
 
 # the group inputs that set the liquid amount L (wet_group._liquid_schedule)
 LIQUID_INPUTS = ("Wetness", "Wet Map", "Puddle Level", "Schedule", "Drying", "Time", "Start Time", "Fill Time")
@@ -94,23 +94,6 @@ class Row:
         return a + (b - a) * self.f
 
 
-def column_albedos(t):
-    """The dry albedo of each table column: column j sits where the column
-    program gives j / (columns - 1); the program rises with a, so bisection."""
-    na = t["columns"]
-    out = []
-    for j in range(na):
-        target, lo, hi = j / (na - 1), 0.0, 1.0
-        for _ in range(60):
-            mid = 0.5 * (lo + hi)
-            if run_numbers(t["column_program"], {"x": mid}) < target:
-                lo = mid
-            else:
-                hi = mid
-        out.append(0.5 * (lo + hi))
-    return out
-
-
 def curves(b, socket, xs, ys_by_channel):
     """An RGB Curves node on `socket`: channel c piecewise linear through
     (xs[i], ys_by_channel[c][i]) (Vector handles), held flat beyond the
@@ -147,10 +130,13 @@ def colour_value(b, rgb):
 
 
 def wet_colour(b, colour, t, row):
-    """The wet colour at L of a dry colour socket: one RGB Curves node."""
+    """The wet colour at L of a dry colour socket: the column program on
+    the colour (Vector Math nodes) into one RGB Curves node through the
+    row's columns."""
     na = t["columns"]
     ys = [[row.mix(t["albedo"], 3 * j + c) for j in range(na)] for c in range(3)]
-    return curves(b, colour, column_albedos(t), ys)
+    s = run_program_vector(b, t["column_program"], colour)
+    return curves(b, s, [j / (na - 1) for j in range(na)], ys)
 
 
 def param(t, row, pixel):
