@@ -732,6 +732,11 @@ def _group_info(gn):
     return json.loads(ng.get(GROUP_TAG, "{}")) if ng is not None else {}
 
 
+def is_specialised(gn):
+    """True when the node's group is built for one constant liquid amount."""
+    return _group_info(gn).get("constant") is not None
+
+
 def stale_groups(tree):
     """The group nodes whose group was built for another constant liquid
     (or for a varying one) than their inputs now give."""

@@ -21,8 +21,10 @@ The group evaluates, with native nodes only, what the core exports
   sheet  = the thin-sheet transmittance (a Translucent BSDF added);
   normal = a bump from the wet map at spill edges (Spill Edge strength).
 Costs are kept low (c_core/bench/bench_blender_overhead.sh): Cycles folds
-the nodes whose inputs are constant, so a constant wetness costs only the
-lookups and what follows them."""
+the nodes whose inputs are constant, but not an image lookup; so where
+nothing that sets L varies the group is built for that one L
+(build_group's `constant`, wet_constant): the table rows at L become RGB
+Curves nodes and numbers, and no image is read."""
 
 import json
 
