@@ -16,7 +16,8 @@ _busy = []
 
 def _soak_materials():
     for mat in bpy.data.materials:
-        if mat.library is None and mat.node_tree is not None and nodes.find_group_node(mat.node_tree) is not None:
+        if (mat.library is None and getattr(mat, "override_library", None) is None and mat.node_tree is not None
+                and nodes.find_group_node(mat.node_tree) is not None):
             yield mat
 
 
