@@ -395,7 +395,13 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
         constant = {name: float(constant[name]) for name in wet_constant.LIQUID_INPUTS}
     tree[GROUP_TAG] = json.dumps({"preset": preset, "liquid": liquid_name, "exact": bool(exact), "metal": metal,
                                   "quality": quality, "constant": constant})
-    exact = bool(exact) or terms["exact"] or compat.exact_lookups_required()
+    # Exact lookups asked for (Exact lookups, Quality Exact) keep the tables'
+    # Closest reads at a constant liquid too (its row arithmetic folds):
+    # EEVEE samples a curve from a half-float texture of its own, which errs
+    # by 0.3 % in 4.3 (blender43_eevee); forced ones (EEVEE Next's Linear
+    # lookups, compat.exact_lookups_required) do not: a curve reads no image.
+    exact_asked = bool(exact) or terms["exact"]
+    exact = exact_asked or compat.exact_lookups_required()
     b = Builder(tree)
     gin = _Inputs(b)
     b.stage = STAGES[0]
@@ -404,6 +410,7 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
     b.stage = STAGES[1]
     normal = _bump(b, gin, terms["bump"] and Lc is None)
     view = terms["view_factor"]
+    Lc = None if exact_asked else Lc          # from here: the curves' path or the tables'
     if Lc is None:
         colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact, normal, view=view)
     else:
