@@ -241,20 +241,27 @@ def _view_factor(b, t, images, rows, normal):
     return lerp(b, row(rows.v0), row(rows.v1), rows.fy)
 
 
-def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view=True):
+def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view=True, constant_L=None):
     """The core's wetness function of one preset's class for the input colour
     (times the preset's view factor at the view through `normal`):
     (colour, roughness, coat weight, base specular factor) sockets, and a
     reader of further parameter pixels. stages: the STAGES indices of the
-    lookups and of the view factor; view: False leaves the view factor out."""
+    lookups and of the view factor; view: False leaves the view factor out;
+    constant_L: L as a number where it is constant (the parameters are then
+    numbers: one row of their table, exact)."""
     t = data.table(preset, liquid_name)
     images = data.lookup_images(preset, liquid_name, exact)
     b.stage = STAGES[stages[0]]
     rows = _Rows(b, L, t, exact)
     colour = _wet_colour(b, gin.outputs["Base Color"], t, images, rows)
-    spec = b.node("ShaderNodeSeparateXYZ")   # (base specular factor, interface area, roughness ratio)
-    b.link(_param(b, images.params, t, rows, 3), spec.inputs[0])
-    rough = b.math("MULTIPLY", gin.outputs["Roughness"], spec.outputs[2], clamp=True)
+    if constant_L is None:
+        spec = b.node("ShaderNodeSeparateXYZ")   # (base specular factor, interface area, roughness ratio)
+        b.link(_param(b, images.params, t, rows, 3), spec.inputs[0])
+        factor, area, ratio = spec.outputs[0], spec.outputs[1], spec.outputs[2]
+    else:
+        row = wet_constant.Row(t, constant_L)
+        factor, area, ratio = (wet_constant.value(b, x) for x in wet_constant.param(t, row, 3))
+    rough = b.math("MULTIPLY", gin.outputs["Roughness"], ratio, clamp=True)
     b.stage = STAGES[stages[1]]
     view = _view_factor(b, t, images, rows, normal) if view else None
     if view is not None:
@@ -262,8 +269,10 @@ def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view
 
     def param(pixel):
         b.stage = STAGES[stages[0]]
+        if constant_L is not None:
+            return wet_constant.colour_value(b, wet_constant.param(t, row, pixel))
         return _param(b, images.params, t, rows, pixel)
-    return colour, rough, spec.outputs[1], spec.outputs[0], param
+    return colour, rough, area, factor, param
 
 
 def _wet_path_constant(b, gin, L, preset, liquid_name, normal, stages=(2, 3), view=True):
@@ -358,10 +367,12 @@ def _bump(b, gin, spill_edges):
     return bump.outputs["Normal"]
 
 
-def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view, constant_L=None):
+def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view, constant_L=None,
+               curves=False):
     """The metallic part's own function (a conductor preset) mixed in by Metallic."""
-    if constant_L is None:
-        mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact, normal, stages=(4, 4), view=view)
+    if not curves:
+        mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact, normal, stages=(4, 4), view=view,
+                                        constant_L=constant_L)
     else:
         mc, mr, mcoat, _, _ = _wet_path_constant(b, gin, constant_L, metal, liquid_name, normal, (4, 4), view)
     b.stage = STAGES[5]
@@ -410,14 +421,15 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
     b.stage = STAGES[1]
     normal = _bump(b, gin, terms["bump"] and Lc is None)
     view = terms["view_factor"]
-    Lc = None if exact_asked else Lc          # from here: the curves' path or the tables'
-    if Lc is None:
-        colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact, normal, view=view)
+    curves = Lc is not None and not exact_asked
+    if not curves:
+        colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact, normal, view=view,
+                                                       constant_L=Lc)
     else:
         colour, rough, coat, factor, param = _wet_path_constant(b, gin, Lc, preset, liquid_name, normal, view=view)
     if metal is not None:
         colour, rough, coat = _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view,
-                                         constant_L=Lc)
+                                         constant_L=Lc, curves=curves)
     b.stage = STAGES[6]
     spec = b.math("MULTIPLY", gin.outputs["Specular"], factor)
     # Blender's own coat dims what lies under it (4.x); the core's values

@@ -3,7 +3,9 @@ rebuilt after the panel's settings changed, against the group that is not
 specialised (the second method: the tables read through image lookups and
 the liquid computed by the group's Math nodes), both evaluated by Cycles.
 
-Two planes side by side, same dry colours (a Closest-read image, one
+Cases: every quality, the schedule filling and drying, a puddle level, and
+a Principled with Metallic 0.5 (a conductor's function mixed in). Two planes
+side by side, same dry colours (a Closest-read image, one
 colour per pixel, varied off the tables' columns): the left one's material
 is made wet at wetness 0.8 and then given the case's Wetness, Puddle Level,
 Schedule, Drying and Time through the panel (each change rebuilds its group,
@@ -47,6 +49,8 @@ CASES = (
     ("BALANCED", {"group_wetness": 0.9, "schedule": True, "time": 0.4, "start_time": 0.1}),
     ("BALANCED", {"group_wetness": 1.0, "schedule": True, "drying": True, "time": 0.35, "start_time": 0.1}),
     ("BALANCED", {"group_wetness": 0.2, "puddle_level": 0.5}),
+    ("EXACT", {"group_wetness": 0.6, "metallic": 0.5}),     # a metallic part: a conductor's function mixed in
+    ("DRAFT", {"group_wetness": 0.6, "metallic": 0.5}),
 )
 
 
@@ -108,6 +112,8 @@ def wet(plane, preset, liquid, quality, settings, specialised):
     plane.data.materials.append(mat)
     s = mat.soak
     s.preset, s.liquid, s.quality, s.wetness = preset, liquid, quality, 0.8
+    bsdf = next(n for n in tree.nodes if n.type == "BSDF_PRINCIPLED")
+    bsdf.inputs["Metallic"].default_value = settings.get("metallic", 0.0)
     bpy.context.view_layer.objects.active = plane
     if bpy.ops.soak.make_wet() != {"FINISHED"}:
         common.fail(f"make_wet {mat.name}")
@@ -119,7 +125,8 @@ def wet(plane, preset, liquid, quality, settings, specialised):
     gn.inputs["Fill Time"].default_value = 1.0
     gn.inputs["Specular"].default_value = 0.5
     for k, v in settings.items():
-        setattr(s, k, v)
+        if k != "metallic":
+            setattr(s, k, v)
     if s.status:
         common.fail(f"{mat.name}: {s.status}")
     if not specialised:
@@ -132,6 +139,8 @@ def wet(plane, preset, liquid, quality, settings, specialised):
         common.fail(f"{mat.name}: group specialised {const is not None}, expected {specialised}")
     if specialised and abs(const["Wetness"] - settings["group_wetness"]) > 1e-6:
         common.fail(f"{mat.name}: specialised to wetness {const['Wetness']}, set {settings['group_wetness']}")
+    if settings.get("metallic") and preset != "copper" and not json.loads(gn.node_tree["soak_group"]).get("metal"):
+        common.fail(f"{mat.name}: Metallic {settings['metallic']} but no conductor's function in the group")
     em = tree.nodes.new("ShaderNodeEmission")
     tree.links.new(em.outputs[0], tree.nodes["Material Output"].inputs["Surface"])
     comb = tree.nodes.new("ShaderNodeCombineXYZ")
