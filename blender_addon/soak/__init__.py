@@ -14,9 +14,9 @@ bl_info = {
     "category": "Material",
 }
 
-from . import operators, preferences, properties, rain_ui, ui
+from . import handlers, operators, preferences, properties, rain_ui, ui
 
-_modules = (preferences, properties, operators, ui, rain_ui)
+_modules = (preferences, properties, operators, ui, rain_ui, handlers)
 
 
 def register():

@@ -8,6 +8,7 @@ import json
 import bpy
 
 from . import compat, data
+from .wet_constant import LIQUID_INPUTS
 from .wet_group import GROUP_TAG, INPUTS, build_group, metal_preset
 
 NODE_TAG = "soak_node"
@@ -300,7 +301,7 @@ def _connect_specular_metal(tree, gn, bsdf, settings):
     info = json.loads(gn.node_tree.get(GROUP_TAG, "{}"))
     if info.get("metal") != want:
         build_group(gn.node_tree, settings.preset, settings.liquid, settings.exact_lookups, metal=want,
-                    quality=settings.quality)
+                    quality=settings.quality, constant=info.get("constant"))
     for role, name in (("specular", "Specular"), ("metallic", "Metallic")):
         s = compat.principled_input(bsdf, role)
         if s.is_linked and s.links[0].from_node == gn:
@@ -375,6 +376,7 @@ def _insert_all(mat, bsdfs, settings):
     restore = json.loads(gns[0][RESTORE_KEY])
     restore["nodes"] += [n.name for n in made]
     gns[0][RESTORE_KEY] = json.dumps(restore)
+    _drop_unused(_specialise_stale(mat.node_tree))     # groups made just now
     return gns[0]
 
 
@@ -451,6 +453,7 @@ def _replace_source(mat, gn, settings):
     restore = json.loads(gn[RESTORE_KEY])
     restore["nodes"] = [n.name for n in tree.nodes if n.get(NODE_TAG) and n != gn]
     gn[RESTORE_KEY] = json.dumps(restore)
+    return _specialise_stale(tree)
 
 
 def current_source(tree):
@@ -478,7 +481,7 @@ def set_source(mat, settings):
     check_source(settings)
     if RESTORE_KEY not in gn:
         raise RuntimeError(f"material '{mat.name}': the Soak Wet node has no restore record")
-    _atomic(tree, _replace_source, mat, gn, settings)
+    _drop_unused(_atomic(tree, _replace_source, mat, gn, settings))
 
 
 def _add_translucency(tree, gn, bsdf):
@@ -615,18 +618,12 @@ def _fill_time_is_default(gn, old_preset):
     return abs(gn.inputs["Fill Time"].default_value - old) <= 1e-6 * max(1.0, abs(old))
 
 
-def _rebuild(mat, gn, settings):
-    tree = mat.node_tree
-    old = gn.node_tree
-    old_info = json.loads(old.get(GROUP_TAG, "{}")) if old is not None else {}
-    restore = json.loads(gn[RESTORE_KEY])
-    bsdf = _find_ref(tree, restore["bsdf"])
+def _swap_group(tree, gn, ng):
+    """Gives the group node the node group ng, keeping its input values and
+    the links into and out of it (by socket name)."""
     keep = {s.name: _value(s) for s in gn.inputs}
     links_in = [(l.from_socket, s.name) for s in gn.inputs for l in s.links]
     links_out = [(s.name, l.to_socket) for s in gn.outputs for l in s.links]
-    fill_default = _fill_time_is_default(gn, old_info.get("preset", ""))
-    ng = bpy.data.node_groups.new("Soak Wet", "ShaderNodeTree")
-    build_group(ng, settings.preset, settings.liquid, settings.exact_lookups, quality=settings.quality)
     gn.node_tree = ng
     for s in gn.inputs:
         if keep.get(s.name) is not None:
@@ -637,6 +634,18 @@ def _rebuild(mat, gn, settings):
     for name, dst in links_out:
         if name in gn.outputs:
             tree.links.new(gn.outputs[name], dst)
+
+
+def _rebuild(mat, gn, settings):
+    tree = mat.node_tree
+    old = gn.node_tree
+    old_info = json.loads(old.get(GROUP_TAG, "{}")) if old is not None else {}
+    restore = json.loads(gn[RESTORE_KEY])
+    bsdf = _find_ref(tree, restore["bsdf"])
+    fill_default = _fill_time_is_default(gn, old_info.get("preset", ""))
+    ng = bpy.data.node_groups.new("Soak Wet", "ShaderNodeTree")
+    build_group(ng, settings.preset, settings.liquid, settings.exact_lookups, quality=settings.quality)
+    _swap_group(tree, gn, ng)
     m, t = data.material(settings.preset), data.table(settings.preset, settings.liquid)
     if settings.colour_source == "PRESET":
         gn.inputs["Base Color"].default_value = list(m["dry_albedo"]) + [1.0]
@@ -678,16 +687,107 @@ def rebuild(mat, settings):
     try:
         for gn in gns:
             _rebuild(mat, gn, settings)
+        made = [gn.node_tree for gn in gns]
+        _specialise_stale(tree)
     except BaseException:
         for gn, tr in zip(gns, old):
             if gn.node_tree != tr:
                 gn.node_tree = tr       # first: the snapshot's values are the old group's sockets'
         snap.restore()
         raise
-    for tr in old:                      # the old groups go once every node has its new one
-        if tr is not None and tr.users == 0:
-            bpy.data.node_groups.remove(tr)
-    for gn in gns:
-        if "Soak Wet" not in bpy.data.node_groups:
-            gn.node_tree.name = "Soak Wet"
+    _drop_unused(old + made)            # the old groups go once every node has its new one
     return gns[0]
+
+
+# ---- specialisation to a constant liquid -------------------------------------
+#
+# A group whose liquid amount cannot vary is built for that one amount
+# (wet_group.build_group's `constant`, wet_constant): its tables become
+# curves and numbers. It is rebuilt whenever that stops being true or the
+# amount changes: a control set from the panel, a key, a link, a source.
+
+def _animated(tree, path):
+    ad = tree.animation_data
+    if ad is not None and ad.drivers.find(path) is not None:
+        return True
+    return compat.find_fcurve(tree, path) is not None
+
+
+def constant_inputs(tree, gn):
+    """{name: value} of the inputs that set the liquid amount
+    (wet_constant.LIQUID_INPUTS) when none is linked, keyed or driven; else
+    None."""
+    index = {s.name: i for i, s in enumerate(gn.inputs)}
+    values = {}
+    for name in LIQUID_INPUTS:
+        s = gn.inputs.get(name)
+        if s is None or s.is_linked or _animated(tree, f'nodes["{gn.name}"].inputs[{index[name]}].default_value'):
+            return None
+        values[name] = float(s.default_value)
+    return values
+
+
+def _group_info(gn):
+    ng = gn.node_tree
+    return json.loads(ng.get(GROUP_TAG, "{}")) if ng is not None else {}
+
+
+def is_specialised(gn):
+    """True when the node's group is built for one constant liquid amount."""
+    return _group_info(gn).get("constant") is not None
+
+
+def stale_groups(tree):
+    """The group nodes whose group was built for another constant liquid
+    (or for a varying one) than their inputs now give."""
+    return [gn for gn in group_nodes(tree)
+            if "preset" in _group_info(gn) and _group_info(gn).get("constant") != constant_inputs(tree, gn)]
+
+
+def _specialise_stale(tree):
+    """Rebuilds every stale group into a new node group; returns the groups
+    replaced (the caller removes them once nothing can fail any more)."""
+    replaced = []
+    for gn in stale_groups(tree):
+        info = _group_info(gn)
+        ng = bpy.data.node_groups.new("Soak Wet", "ShaderNodeTree")
+        build_group(ng, info["preset"], info["liquid"], info.get("exact", False), metal=info.get("metal"),
+                    quality=info.get("quality", "BALANCED"), constant=constant_inputs(tree, gn))
+        replaced.append(gn.node_tree)
+        _swap_group(tree, gn, ng)
+    return replaced
+
+
+def _drop_unused(groups):
+    for ng in groups:
+        if ng is not None and ng.name in bpy.data.node_groups and ng.users == 0:
+            bpy.data.node_groups.remove(ng)
+    if "Soak Wet" not in bpy.data.node_groups:
+        for ng in bpy.data.node_groups:
+            if ng.name.startswith("Soak Wet.") and GROUP_TAG in ng:
+                ng.name = "Soak Wet"
+                break
+
+
+def specialise(mat):
+    """Rebuilds the material's groups whose liquid amount became constant,
+    changed, or stopped being constant (wet_constant); the group nodes keep
+    their values, links and keys. All or nothing: raises with the material
+    unchanged. Returns how many groups were rebuilt."""
+    tree = mat.node_tree
+    gns = stale_groups(tree) if tree is not None else []
+    if not gns:
+        return 0
+    check_editable(mat)
+    old = [gn.node_tree for gn in gns]
+    snap = _Snapshot(tree)
+    try:
+        _specialise_stale(tree)
+    except BaseException:
+        for gn, tr in zip(gns, old):
+            if gn.node_tree != tr:
+                gn.node_tree = tr
+        snap.restore()
+        raise
+    _drop_unused(old)
+    return len(gns)

@@ -83,6 +83,17 @@ def _group_input(self, name):
 PENDING = nodes.PENDING
 
 
+def _set_inputs(self, socks, value):
+    """Sets the group nodes' input and rebuilds a group specialised to the
+    old value (nodes.specialise); on failure the old values come back."""
+    old = [s.default_value for s in socks]
+    for s in socks:                 # every wetted BSDF's group node
+        s.default_value = value
+    if socks and not _apply(self, lambda mat, _s: nodes.specialise(mat)):
+        for s, v in zip(socks, old):
+            s.default_value = v
+
+
 def _float_proxy(name, label, description, default, lo, hi, subtype="NONE", soft_max=None):
     def get(self):
         s = _group_input(self, name)
@@ -92,8 +103,7 @@ def _float_proxy(name, label, description, default, lo, hi, subtype="NONE", soft
 
     def put(self, value):
         socks = _group_inputs(self, name)
-        for s in socks:                 # every wetted BSDF's group node
-            s.default_value = value
+        _set_inputs(self, socks, value)
         if not socks:
             self[PENDING + name] = float(value)
         if name == "Puddle Level":      # the rain's ripples flood at the same level
@@ -113,8 +123,7 @@ def _bool_proxy(name, label, description):
 
     def put(self, value):
         socks = _group_inputs(self, name)
-        for s in socks:
-            s.default_value = 1.0 if value else 0.0
+        _set_inputs(self, socks, 1.0 if value else 0.0)
         if not socks:
             self[PENDING + name] = 1.0 if value else 0.0
 

@@ -21,12 +21,14 @@ The group evaluates, with native nodes only, what the core exports
   sheet  = the thin-sheet transmittance (a Translucent BSDF added);
   normal = a bump from the wet map at spill edges (Spill Edge strength).
 Costs are kept low (c_core/bench/bench_blender_overhead.sh): Cycles folds
-the nodes whose inputs are constant, so a constant wetness costs only the
-lookups and what follows them."""
+the nodes whose inputs are constant, but not an image lookup; so where
+nothing that sets L varies the group is built for that one L
+(build_group's `constant`, wet_constant): the table rows at L become RGB
+Curves nodes and numbers, and no image is read."""
 
 import json
 
-from . import compat, data, group_layout
+from . import compat, data, group_layout, wet_constant
 from .node_program import (Builder, affine_program, combine, lerp, lookup, run_program,
                            run_program_vector, separate, vec, vec_num)
 
@@ -239,20 +241,27 @@ def _view_factor(b, t, images, rows, normal):
     return lerp(b, row(rows.v0), row(rows.v1), rows.fy)
 
 
-def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view=True):
+def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view=True, constant_L=None):
     """The core's wetness function of one preset's class for the input colour
     (times the preset's view factor at the view through `normal`):
     (colour, roughness, coat weight, base specular factor) sockets, and a
     reader of further parameter pixels. stages: the STAGES indices of the
-    lookups and of the view factor; view: False leaves the view factor out."""
+    lookups and of the view factor; view: False leaves the view factor out;
+    constant_L: L as a number where it is constant (the parameters are then
+    numbers: one row of their table, exact)."""
     t = data.table(preset, liquid_name)
     images = data.lookup_images(preset, liquid_name, exact)
     b.stage = STAGES[stages[0]]
     rows = _Rows(b, L, t, exact)
     colour = _wet_colour(b, gin.outputs["Base Color"], t, images, rows)
-    spec = b.node("ShaderNodeSeparateXYZ")   # (base specular factor, interface area, roughness ratio)
-    b.link(_param(b, images.params, t, rows, 3), spec.inputs[0])
-    rough = b.math("MULTIPLY", gin.outputs["Roughness"], spec.outputs[2], clamp=True)
+    if constant_L is None:
+        spec = b.node("ShaderNodeSeparateXYZ")   # (base specular factor, interface area, roughness ratio)
+        b.link(_param(b, images.params, t, rows, 3), spec.inputs[0])
+        factor, area, ratio = spec.outputs[0], spec.outputs[1], spec.outputs[2]
+    else:
+        row = wet_constant.Row(t, constant_L)
+        factor, area, ratio = (wet_constant.value(b, x) for x in wet_constant.param(t, row, 3))
+    rough = b.math("MULTIPLY", gin.outputs["Roughness"], ratio, clamp=True)
     b.stage = STAGES[stages[1]]
     view = _view_factor(b, t, images, rows, normal) if view else None
     if view is not None:
@@ -260,8 +269,31 @@ def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view
 
     def param(pixel):
         b.stage = STAGES[stages[0]]
+        if constant_L is not None:
+            return wet_constant.colour_value(b, wet_constant.param(t, row, pixel))
         return _param(b, images.params, t, rows, pixel)
-    return colour, rough, spec.outputs[1], spec.outputs[0], param
+    return colour, rough, area, factor, param
+
+
+def _wet_path_constant(b, gin, L, preset, liquid_name, normal, stages=(2, 3), view=True):
+    """_wet_path at a constant liquid amount L (a number): the table rows at
+    L as RGB Curves nodes and numbers (wet_constant)."""
+    t = data.table(preset, liquid_name)
+    row = wet_constant.Row(t, L)
+    b.stage = STAGES[stages[0]]
+    colour = wet_constant.wet_colour(b, gin.outputs["Base Color"], t, row)
+    factor, area, ratio = wet_constant.param(t, row, 3)
+    rough = b.math("MULTIPLY", gin.outputs["Roughness"], ratio, clamp=True)
+    b.stage = STAGES[stages[1]]
+    vf = wet_constant.view_factor(b, t, row, normal) if view else None
+    if vf is not None:
+        colour = vec(b, "MULTIPLY", colour, vf)
+
+    def param(pixel):
+        b.stage = STAGES[stages[0]]
+        return wet_constant.colour_value(b, wet_constant.param(t, row, pixel))
+    b.stage = STAGES[stages[0]]
+    return colour, rough, wet_constant.value(b, area), wet_constant.value(b, factor), param
 
 
 def _sockets_match(tree):
@@ -335,9 +367,14 @@ def _bump(b, gin, spill_edges):
     return bump.outputs["Normal"]
 
 
-def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view):
+def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view, constant_L=None,
+               curves=False):
     """The metallic part's own function (a conductor preset) mixed in by Metallic."""
-    mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact, normal, stages=(4, 4), view=view)
+    if not curves:
+        mc, mr, mcoat, _, _ = _wet_path(b, gin, L, metal, liquid_name, exact, normal, stages=(4, 4), view=view,
+                                        constant_L=constant_L)
+    else:
+        mc, mr, mcoat, _, _ = _wet_path_constant(b, gin, constant_L, metal, liquid_name, normal, (4, 4), view)
     b.stage = STAGES[5]
     f = b.math("MINIMUM", b.math("MAXIMUM", gin.outputs["Metallic"], 0.0), 1.0)
     colour = lerp(b, colour, mc, f)
@@ -346,13 +383,17 @@ def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat
     return colour, rough, coat
 
 
-def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BALANCED"):
+def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BALANCED", constant=None):
     """(Re)builds the inside of a Soak Wet group for a preset and liquid.
     metal: a conductor preset whose function the metallic part of the
     material gets (mixed by the Metallic input), None for none. quality: one
     of QUALITY's keys, the terms the group models (exact lookups, view
-    factor, bump). Sockets that already match INPUTS/OUTPUTS are kept (the
-    node's links and values too)."""
+    factor, bump). constant: {name: value} of wet_constant.LIQUID_INPUTS
+    when none of them varies (the group node's values; None: they may):
+    the group is then specialised to that one liquid amount (wet_constant;
+    those inputs are read from here, not from the node, and the spill-edge
+    bump, which needs a varying wet map, is left out). Sockets that already
+    match INPUTS/OUTPUTS are kept (the node's links and values too)."""
     terms = QUALITY[quality]
     m = data.material(preset)
     if metal is not None and data.material(metal)["kind"] != "conductor":
@@ -361,19 +402,34 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
     if not _sockets_match(tree):
         _make_sockets(tree)
     _socket_hints(tree)
+    if constant is not None:
+        constant = {name: float(constant[name]) for name in wet_constant.LIQUID_INPUTS}
     tree[GROUP_TAG] = json.dumps({"preset": preset, "liquid": liquid_name, "exact": bool(exact), "metal": metal,
-                                  "quality": quality})
-    exact = bool(exact) or terms["exact"] or compat.exact_lookups_required()
+                                  "quality": quality, "constant": constant})
+    # Exact lookups asked for (Exact lookups, Quality Exact) keep the tables'
+    # Closest reads at a constant liquid too (its row arithmetic folds):
+    # EEVEE samples a curve from a half-float texture of its own, which errs
+    # by 0.3 % in 4.3 (blender43_eevee); forced ones (EEVEE Next's Linear
+    # lookups, compat.exact_lookups_required) do not: a curve reads no image.
+    exact_asked = bool(exact) or terms["exact"]
+    exact = exact_asked or compat.exact_lookups_required()
     b = Builder(tree)
     gin = _Inputs(b)
     b.stage = STAGES[0]
-    L = _liquid_schedule(b, gin)
+    Lc = wet_constant.liquid(constant) if constant is not None else None
+    L = _liquid_schedule(b, gin) if Lc is None else wet_constant.value(b, Lc)
     b.stage = STAGES[1]
-    normal = _bump(b, gin, terms["bump"])
+    normal = _bump(b, gin, terms["bump"] and Lc is None)
     view = terms["view_factor"]
-    colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact, normal, view=view)
+    curves = Lc is not None and not exact_asked
+    if not curves:
+        colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact, normal, view=view,
+                                                       constant_L=Lc)
+    else:
+        colour, rough, coat, factor, param = _wet_path_constant(b, gin, Lc, preset, liquid_name, normal, view=view)
     if metal is not None:
-        colour, rough, coat = _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view)
+        colour, rough, coat = _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view,
+                                         constant_L=Lc, curves=curves)
     b.stage = STAGES[6]
     spec = b.math("MULTIPLY", gin.outputs["Specular"], factor)
     # Blender's own coat dims what lies under it (4.x); the core's values

@@ -29,7 +29,16 @@ colour is held to the same tolerance plus the named terms it leaves out,
 computed here from the json export: Draft's view factor, the colour times
 |1 - view factor at the camera's cosine 1| (its spill-edge bump does
 nothing on this flat, uniformly wet plane: no term). The worst error
-printed is the one blender_addon/README.md publishes per version."""
+printed is the one blender_addon/README.md publishes per version.
+
+--constant 1: the wetness is one number per render, set through the
+panel's Wetness after Make Wet (which made the group at another wetness),
+so the group is specialised to it and rebuilt (wet_constant: the table row
+as RGB Curves nodes); each render holds one of the export's wetness nodes,
+its pixels the dry colours. Same tolerance: the curves run through the
+tables' columns, uniform in the column coordinate, and Blender's 256-point
+sampling of them departs from the columns' interpolation by at most
+2e-4 (test_specialise.py bounds it from the tables)."""
 import json
 import math
 import os
@@ -50,6 +59,7 @@ QUALITY = A.get("quality", "BALANCED")
 DROPS_VIEW_FACTOR = QUALITY == "DRAFT"
 ONLY = A.get("presets", "").split(",") if A.get("presets") else None
 LIQUIDS = A.get("liquids", "").split(",") if A.get("liquids") else None
+CONSTANT = bool(int(A.get("constant", "0")))
 
 
 def image(name, px):
@@ -133,6 +143,26 @@ def spec_factor(m, liquid, c):
     return (1 - c) + c * under / r0(n)
 
 
+def points_constant(table, iw):
+    """(dry rgb, wetness, expected rgb) at one wetness node, N x N dry colours."""
+    a, w, alb = table["dry_albedo"], table["wetness"], table["albedo"]
+    return [([a[(k + 7 * c) % len(a)] for c in range(3)], w[iw], [alb[c][iw][(k + 7 * c) % len(a)] for c in range(3)])
+            for k in range(N * N)]
+
+
+def set_constant_wetness(mat, w):
+    """The panel's Wetness after Make Wet (made at another wetness): the
+    group is rebuilt, specialised to w; fails unless it was."""
+    mat.soak.group_wetness = w
+    gn = mat.node_tree.nodes["Soak Wet"]
+    info = json.loads(gn.node_tree["soak_group"])
+    const = info.get("constant")
+    if mat.soak.status or const is None or abs(const["Wetness"] - w) > 1e-6:
+        common.fail(f"{mat.name}: the group is not specialised to wetness {w}: {const} {mat.soak.status}")
+    if any(n.bl_idname == "ShaderNodeTexImage" for n in gn.node_tree.nodes):
+        common.fail(f"{mat.name}: the specialised group still reads images")
+
+
 def main():
     common.install_addon(A["addon"])
     ref_path = os.path.join(A["tmp"], "export.json")
@@ -148,11 +178,11 @@ def main():
     coat_dims = bpy.app.version >= (4, 0, 0)
     failures = []
     combos = [(m, liquid, t, k) for m in ref["materials"] for liquid, t in m["liquids"].items()
-              for k in range(ROUNDS)
+              for k in (range(len(t["base_colour"]["wetness"])) if CONSTANT else range(ROUNDS))
               if (ONLY is None or m["name"] in ONLY) and (LIQUIDS is None or liquid in LIQUIDS)]
     for m, liquid, t, k in combos:
         if True:
-            pts = points(t["base_colour"], k)
+            pts = points_constant(t["base_colour"], k) if CONSTANT else points(t["base_colour"], k)
             mat = bpy.data.materials.new(f"{m['name']}_{liquid}")
             common.use_nodes(mat)
             plane.data.materials.clear()
@@ -161,6 +191,7 @@ def main():
             mat.soak.colour_source = "MATERIAL"
             mat.soak.exact_lookups = bool(int(A.get("exact", "0")))
             mat.soak.quality = QUALITY
+            mat.soak.wetness = 0.5
             bpy.context.view_layer.objects.active = plane
             if bpy.ops.soak.make_wet() != {"FINISHED"}:
                 common.fail(f"make_wet {m['name']} {liquid}")
@@ -169,13 +200,19 @@ def main():
             col = tree.nodes.new("ShaderNodeTexImage")
             col.image = image("dry", [p[0] for p in pts])
             col.interpolation = "Closest"
+            tree.links.new(col.outputs["Color"], gn.inputs["Base Color"])
             wet = tree.nodes.new("ShaderNodeTexImage")
             wet.image = image("wet", [(p[1], 0, 0) for p in pts])
-            wet.interpolation = "Closest"
-            sep = tree.nodes.new("ShaderNodeSeparateColor")
-            tree.links.new(col.outputs["Color"], gn.inputs["Base Color"])
-            tree.links.new(wet.outputs["Color"], sep.inputs[0])
-            tree.links.new(sep.outputs[0], gn.inputs["Wetness"])
+            if CONSTANT:
+                set_constant_wetness(mat, pts[0][1])
+            else:
+                wet.interpolation = "Closest"
+                sep = tree.nodes.new("ShaderNodeSeparateColor")
+                tree.links.new(wet.outputs["Color"], sep.inputs[0])
+                tree.links.new(sep.outputs[0], gn.inputs["Wetness"])
+                bpy.context.view_layer.update()      # the add-on's handler: the group is rebuilt unspecialised
+                if json.loads(gn.node_tree["soak_group"]).get("constant") is not None:
+                    common.fail(f"{mat.name}: a linked Wetness left the group specialised")
             gn.inputs["Roughness"].default_value = t["knots"]["roughness"][0]
             gn.inputs["Specular"].default_value = 1.0
             em = tree.nodes.new("ShaderNodeEmission")
@@ -223,7 +260,7 @@ def main():
                 bpy.data.images.remove(bpy.data.images[n])
     print(f"worst |Blender - core|: colour {worst['colour']:.5f}, coat {worst['coat']:.5f}, "
           f"roughness {worst['rough']:.5f}, specular factor {worst['spec']:.5f} (tolerance {TOL})")
-    print(f"quality {QUALITY}: worst colour error {worst['colour']:.5f} (Blender {bpy.app.version_string}); "
+    print(f"quality {QUALITY}{' (constant wetness: specialised group)' if CONSTANT else ''}: worst colour error {worst['colour']:.5f} (Blender {bpy.app.version_string}); "
           f"allowance for the terms it leaves out up to {worst_dropped:.5f}")
     if failures:
         common.fail(f"{len(failures)} points off, e.g. " + "; ".join(failures[:5]))

@@ -20,6 +20,18 @@ def internal_error(op, what, e):
     return {"CANCELLED"}
 
 
+def _specialise(op, mat):
+    """A keyed (or unkeyed) input: the group follows (nodes.specialise)."""
+    try:
+        nodes.specialise(mat)
+        return True
+    except (RuntimeError, SoakDataError) as e:
+        op.report({"ERROR"}, str(e))
+    except Exception as e:
+        internal_error(op, "rebuilding the group", e)
+    return False
+
+
 class SOAK_OT_make_wet(bpy.types.Operator):
     """Insert a Soak Wet node group in front of the material's Principled BSDF (undoable; Make Dry takes it out)"""
     bl_idname = "soak.make_wet"
@@ -136,6 +148,8 @@ class SOAK_OT_key_drying(bpy.types.Operator):
             return {"CANCELLED"}
         for g in nodes.group_nodes(tree):   # every wetted BSDF dries together
             self._key(context, tree, g, start, fill)
+        if not _specialise(self, mat):
+            return {"CANCELLED"}
         context.scene.frame_set(context.scene.frame_current)
         self.report({"INFO"}, f"{mat.name}: Time keyed {start:g} s (frame {self.frame_start}, wet) to "
                               f"{start + fill:g} s (frame {self.frame_end}, dry); Start Time and Fill Time kept")
@@ -191,7 +205,7 @@ class SOAK_OT_key_control(bpy.types.Operator):
             else:
                 sock.default_value = gn.inputs[self.name].default_value
                 sock.keyframe_insert("default_value", frame=f)
-        return {"FINISHED"}
+        return {"FINISHED"} if _specialise(self, _material(context)) else {"CANCELLED"}
 
 
 classes = (SOAK_OT_make_wet, SOAK_OT_make_dry, SOAK_OT_key_drying, SOAK_OT_key_control)

@@ -1,0 +1,47 @@
+"""Keeps specialised groups true to their node (wet_constant): after any
+change Blender evaluates (a link drawn into Wetness, a value typed on the
+node, a key added in the node editor, an undo), a group whose liquid amount
+is no longer the one it was built for is rebuilt (nodes.specialise, all or
+nothing; a failure is printed and the material left as it was). The panel,
+its key buttons and the operators rebuild at once; this catches edits made
+elsewhere."""
+
+import bpy
+from bpy.app.handlers import persistent
+
+from . import data, nodes
+
+_busy = []
+
+
+def _soak_materials():
+    for mat in bpy.data.materials:
+        if (mat.library is None and getattr(mat, "override_library", None) is None and mat.node_tree is not None
+                and nodes.find_group_node(mat.node_tree) is not None):
+            yield mat
+
+
+@persistent
+def respecialise(_scene=None, _depsgraph=None):
+    if _busy:
+        return
+    _busy.append(True)
+    try:
+        for mat in _soak_materials():
+            try:
+                nodes.specialise(mat)
+            except (RuntimeError, data.SoakDataError) as e:
+                print(f"soak: {mat.name}: the Soak Wet group was not rebuilt: {e}")
+    finally:
+        _busy.clear()
+
+
+def register():
+    bpy.app.handlers.depsgraph_update_post.append(respecialise)
+    bpy.app.handlers.load_post.append(respecialise)
+
+
+def unregister():
+    for h in (bpy.app.handlers.depsgraph_update_post, bpy.app.handlers.load_post):
+        if respecialise in h:
+            h.remove(respecialise)

@@ -1,0 +1,206 @@
+"""A Soak Wet group specialised to a constant liquid amount (wet_constant),
+rebuilt after the panel's settings changed, against the group that is not
+specialised (the second method: the tables read through image lookups and
+the liquid computed by the group's Math nodes), both evaluated by Cycles.
+
+Cases: every quality, the schedule filling and drying, a puddle level, and
+a Principled with Metallic 0.5 (a conductor's function mixed in). Two planes
+side by side, same dry colours (a Closest-read image, one
+colour per pixel, varied off the tables' columns): the left one's material
+is made wet at wetness 0.8 and then given the case's Wetness, Puddle Level,
+Schedule, Drying and Time through the panel (each change rebuilds its group,
+specialised: checked); the right one's gets the same values and then a
+Value node linked into Wetness, so its group is rebuilt unspecialised by
+the add-on's handler (checked). Rendered head-on and with both planes
+tilted 60 degrees (the view factor between its columns), Emission fed by
+each output: Base Color, (Coat Weight, Roughness, Specular), Liquid and,
+for thin sheets, Translucency.
+
+Tolerance, named terms: 2e-4 for float32 arithmetic and texture
+coordinates, as in test_group_values.py; for the colour, plus the sampling
+of the curves: Blender evaluates an RGB Curves node from a table of 257
+points, which Cycles copies into one of 256, each linear between entries,
+so a piecewise-linear curve is off by at most |slope change at a knot| x
+h / 4 per sampling (h = 1/256, 1/255), computed here from the tables of
+soak_data.json (colour columns and view-factor columns alike)."""
+import json
+import math
+import os
+import sys
+
+import bpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+
+A = common.args()
+N = int(A.get("n", 8))
+PRESETS = A.get("presets", "sand,paper,copper").split(",")
+LIQUIDS = A.get("liquids", "water,coffee").split(",")
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon", "soak",
+                    "soak_data.json")
+FLOAT = 2e-4
+# (quality, panel settings) pairs: every quality at a plain wetness, Balanced
+# through the schedule (filling and drying) and the puddle level
+CASES = (
+    ("BALANCED", {"group_wetness": 0.37}),
+    ("DRAFT", {"group_wetness": 0.37}),
+    ("EXACT", {"group_wetness": 0.93}),
+    ("BALANCED", {"group_wetness": 0.9, "schedule": True, "time": 0.4, "start_time": 0.1}),
+    ("BALANCED", {"group_wetness": 1.0, "schedule": True, "drying": True, "time": 0.35, "start_time": 0.1}),
+    ("BALANCED", {"group_wetness": 0.2, "puddle_level": 0.5}),
+    ("EXACT", {"group_wetness": 0.6, "metallic": 0.5}),     # a metallic part: a conductor's function mixed in
+    ("DRAFT", {"group_wetness": 0.6, "metallic": 0.5}),
+)
+
+
+def curve_term(rows, knots):
+    """The bound above for piecewise-linear rows with `knots` uniform intervals."""
+    worst = 0.0
+    for row in rows:
+        for c in range(3):
+            ys = [row[3 * j + c] for j in range(knots + 1)]
+            slopes = [(ys[j + 1] - ys[j]) * knots for j in range(knots)]
+            for j in range(1, knots):
+                worst = max(worst, abs(slopes[j] - slopes[j - 1]))
+    return worst * (1 / 256 + 1 / 255) / 4
+
+
+def scene():
+    for coll in (bpy.data.objects, bpy.data.materials, bpy.data.meshes):
+        for item in list(coll):
+            coll.remove(item)
+    sc = bpy.context.scene
+    sc.render.engine = "CYCLES"
+    sc.cycles.samples = 1
+    sc.cycles.use_denoising = False
+    sc.cycles.pixel_filter_type = "BOX"
+    sc.cycles.filter_width = 0.01
+    sc.render.resolution_x, sc.render.resolution_y = 2 * N, N
+    sc.render.resolution_percentage = 100
+    sc.render.image_settings.file_format = "OPEN_EXR"
+    sc.render.image_settings.color_depth = "32"
+    sc.view_settings.view_transform = "Standard"
+    cd = bpy.data.cameras.new("C")
+    cd.type = "ORTHO"
+    cd.ortho_scale = 4.0
+    co = bpy.data.objects.new("C", cd)
+    sc.collection.objects.link(co)
+    co.location = (0, 0, 3)
+    sc.camera = co
+    planes = []
+    for x in (-1.0, 1.0):
+        bpy.ops.mesh.primitive_plane_add(size=2, location=(x, 0, 0))
+        planes.append(bpy.context.object)
+    return sc, planes
+
+
+def dry_image():
+    img = bpy.data.images.get("dry") or bpy.data.images.new("dry", N, N, alpha=False, float_buffer=True)
+    img.colorspace_settings.name = "Non-Color"
+    px = []
+    for k in range(N * N):   # golden-ratio steps: every channel off the columns, 0 and 1 included
+        px += [0.0 if k == 0 else 1.0 if k == 1 else (k * 0.6180339887 + 0.3 * c) % 1.0 for c in range(3)] + [1.0]
+    img.pixels.foreach_set(px)
+    return img
+
+
+def wet(plane, preset, liquid, quality, settings, specialised):
+    mat = bpy.data.materials.new(f"{preset}_{liquid}_{quality}_{'S' if specialised else 'U'}")
+    tree = common.use_nodes(mat)
+    plane.data.materials.clear()
+    plane.data.materials.append(mat)
+    s = mat.soak
+    s.preset, s.liquid, s.quality, s.wetness = preset, liquid, quality, 0.8
+    bsdf = next(n for n in tree.nodes if n.type == "BSDF_PRINCIPLED")
+    bsdf.inputs["Metallic"].default_value = settings.get("metallic", 0.0)
+    bpy.context.view_layer.objects.active = plane
+    if bpy.ops.soak.make_wet() != {"FINISHED"}:
+        common.fail(f"make_wet {mat.name}")
+    gn = tree.nodes["Soak Wet"]
+    col = tree.nodes.new("ShaderNodeTexImage")
+    col.image = bpy.data.images["dry"]
+    col.interpolation = "Closest"
+    tree.links.new(col.outputs["Color"], gn.inputs["Base Color"])
+    gn.inputs["Fill Time"].default_value = 1.0
+    gn.inputs["Specular"].default_value = 0.5
+    for k, v in settings.items():
+        if k != "metallic":
+            setattr(s, k, v)
+    if s.status:
+        common.fail(f"{mat.name}: {s.status}")
+    if not specialised:
+        val = tree.nodes.new("ShaderNodeValue")
+        val.outputs[0].default_value = gn.inputs["Wetness"].default_value
+        tree.links.new(val.outputs[0], gn.inputs["Wetness"])
+        bpy.context.view_layer.update()      # the add-on's handler rebuilds the group
+    const = json.loads(gn.node_tree["soak_group"]).get("constant")
+    if (const is not None) != specialised:
+        common.fail(f"{mat.name}: group specialised {const is not None}, expected {specialised}")
+    if specialised and abs(const["Wetness"] - settings["group_wetness"]) > 1e-6:
+        common.fail(f"{mat.name}: specialised to wetness {const['Wetness']}, set {settings['group_wetness']}")
+    if settings.get("metallic") and preset != "copper" and not json.loads(gn.node_tree["soak_group"]).get("metal"):
+        common.fail(f"{mat.name}: Metallic {settings['metallic']} but no conductor's function in the group")
+    em = tree.nodes.new("ShaderNodeEmission")
+    tree.links.new(em.outputs[0], tree.nodes["Material Output"].inputs["Surface"])
+    comb = tree.nodes.new("ShaderNodeCombineXYZ")
+    for i, name in enumerate(("Coat Weight", "Roughness", "Specular")):
+        tree.links.new(gn.outputs[name], comb.inputs[i])
+    return mat, em, comb
+
+
+def render(sc, path):
+    sc.render.filepath = path
+    bpy.ops.render.render(write_still=True)
+    img = bpy.data.images.load(path, check_existing=False)
+    px = list(img.pixels)
+    bpy.data.images.remove(img)
+    return px
+
+
+def main():
+    common.install_addon(A["addon"])
+    os.makedirs(A["tmp"], exist_ok=True)
+    tables = json.load(open(DATA))
+    sc, planes = scene()
+    dry_image()
+    worst, failures, checked = {}, [], 0
+    for preset in PRESETS:
+        for liquid in LIQUIDS:
+            m = next(x for x in tables["materials"] if x["name"] == preset)
+            t = m["liquids"][liquid]
+            colour_tol = FLOAT + curve_term(t["albedo"], t["columns"] - 1) + curve_term(
+                t["view_factor"], tables["view_columns"] - 1)
+            for quality, settings in CASES:
+                mats = [wet(p, preset, liquid, quality, settings, spec) for p, spec in zip(planes, (True, False))]
+                outputs = ["Base Color", "params", "Liquid"] + (["Translucency"] if m["kind"] == "thin_sheet" else [])
+                for tilt in (0.0, 60.0):
+                    for p in planes:
+                        p.rotation_euler = (math.radians(tilt), 0, 0)
+                    for out in outputs:
+                        for mat, em, comb in mats:
+                            gn = mat.node_tree.nodes["Soak Wet"]
+                            src = comb.outputs[0] if out == "params" else gn.outputs[out]
+                            mat.node_tree.links.new(src, em.inputs["Color"])
+                        px = render(sc, os.path.join(A["tmp"], "spec.exr"))
+                        tol = colour_tol if out == "Base Color" else FLOAT
+                        for j in range(N):
+                            for i in range(N):
+                                a = 4 * (j * 2 * N + i)
+                                b = a + 4 * N
+                                e = max(abs(px[a + c] - px[b + c]) for c in range(3))
+                                worst[out] = max(worst.get(out, 0.0), e)
+                                checked += 1
+                                if e > tol:
+                                    failures.append(f"{preset}/{liquid} {quality} {settings} tilt {tilt} {out} "
+                                                    f"px ({i},{j}): {px[a:a + 3]} vs {px[b:b + 3]} (tol {tol:.5f})")
+                for mat, _, _ in mats:
+                    bpy.data.materials.remove(mat)
+    print(f"Blender {bpy.app.version_string}: {checked} pixel comparisons; worst |specialised - not| " +
+          ", ".join(f"{k} {v:.6f}" for k, v in worst.items()))
+    if failures:
+        common.fail(f"{len(failures)} off, e.g. " + "; ".join(failures[:4]))
+    print("PASS")
+
+
+main()
