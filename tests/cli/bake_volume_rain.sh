@@ -4,6 +4,7 @@
 # output (nor temporaries) behind.
 set -u
 : "${SOAK:?}" "${SOAK_TMP:?}"
+. "$(dirname "$0")/lib.bash"   # uv_plane_obj
 D="$SOAK_TMP/bake_volume_rain"
 rm -rf "$D"
 mkdir -p "$D"
@@ -75,19 +76,7 @@ expect 0 "grid" -- "$SOAK" bake volume --material sand --noise --seed 3 --dims 6
 no_files "$D/.*tmp*"
 
 # ---- rain ----
-cat >"$D/plane.obj" <<'EOF'
-v -0.5 0 -0.5
-v 0.5 0 -0.5
-v 0.5 0 0.5
-v -0.5 0 0.5
-vt 0 0
-vt 1 0
-vt 1 1
-vt 0 1
-f 1/1 4/4 3/3
-f 1/1 3/3 2/2
-EOF
-grep -v '^vt' "$D/plane.obj" | sed 's#/[0-9]*##g' >"$D/nouv.obj"
+uv_plane_obj "$D/plane.obj" "$D/nouv.obj"
 expect 0 "usage: soak bake rain" -- "$SOAK" bake rain --help
 expect 2 "MESH" -- "$SOAK" bake rain -o "$D/r.exr"
 expect 1 "no UVs" -- "$SOAK" bake rain "$D/nouv.obj" --width 16 --height 16 -o "$D/r.exr"

@@ -42,3 +42,10 @@ finish() {
   fi
   exit 0
 }
+
+# A unit plane (y = 0) with UVs, as OBJ, in $1 and, when $2 is given, the
+# same plane without UVs in $2 (the bakes' fixture).
+uv_plane_obj() {
+  printf 'v -0.5 0 -0.5\nv 0.5 0 -0.5\nv 0.5 0 0.5\nv -0.5 0 0.5\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 4/4 3/3\nf 1/1 3/3 2/2\n' >"$1"
+  [ -z "${2:-}" ] || grep -v '^vt' "$1" | sed 's#/[0-9]*##g' >"$2"
+}

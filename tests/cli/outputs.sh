@@ -94,18 +94,7 @@ fi
 
 # ---- 2. multi-output bakes replace all or none ----
 rm -rf "$D" && mkdir -p "$D"
-cat >"$SOAK_TMP/plane.obj" <<'OBJ'
-v -0.5 0 -0.5
-v 0.5 0 -0.5
-v 0.5 0 0.5
-v -0.5 0 0.5
-vt 0 0
-vt 1 0
-vt 1 1
-vt 0 1
-f 1/1 4/4 3/3
-f 1/1 3/3 2/2
-OBJ
+uv_plane_obj "$SOAK_TMP/plane.obj"
 RAIN=(bake rain "$SOAK_TMP/plane.obj" --width 64 --height 64 --rays 8 --duration 60 --steps 2)
 "$SOAK" "${RAIN[@]}" --seed 1 -o "$D/r.png" --exposure "$D/e.exr" >/dev/null 2>&1
 cp "$D/r.png" "$SOAK_TMP/good_r.png"

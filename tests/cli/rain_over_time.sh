@@ -40,19 +40,7 @@ done
 expect_exit 0 "single map at the rain's end" -- "$SOAK" "${P[@]}" -o "$D/end.exr"
 same_pixels "$D/end.exr" "$D/a.0004.exr" "no --frames: the map at --duration (= frame 4 at 4 fps)"
 
-cat >"$D/plane.obj" <<'OBJ'
-v -0.5 0 -0.5
-v 0.5 0 -0.5
-v 0.5 0 0.5
-v -0.5 0 0.5
-vt 0 0
-vt 1 0
-vt 1 1
-vt 0 1
-f 1/1 4/4 3/3
-f 1/1 3/3 2/2
-OBJ
-grep -v '^vt' "$D/plane.obj" | sed 's#/[0-9]*##g' >"$D/nouv.obj"
+uv_plane_obj "$D/plane.obj" "$D/nouv.obj"
 M=(bake drops --width 16 --height 16 --map-size 1 --rate 50 --duration 1 --fps 1 --rays 4)
 expect_exit 1 "mesh without UVs" -- "$SOAK" "${M[@]}" "$D/nouv.obj" --frames 0-1 -o "$D/m.%04d.exr"
 expect_stderr "UV" "the message says UVs"
