@@ -12,6 +12,7 @@
 #include "soak/data_dir.h"
 #include "soak/fresnel.h"
 #include "soak/input_file.h"
+#include "soak/json_number.h"
 #include "soak/units.h"
 #include "soak/vdhulst.h"
 
@@ -138,14 +139,9 @@ static soak_status check_object(ctx *c, const cJSON *obj, const char *path, cons
 
 static soak_status number_item(ctx *c, const cJSON *it, const char *path, double lo, double hi, double *out)
 {
-    if (!cJSON_IsNumber(it))
-        return fail(c, SOAK_ERR_PARSE, path, "expected a number, got %s",
-                    cJSON_IsString(it) ? "a string" : "another JSON type");
-    double v = it->valuedouble;
-    if (!soak_is_finite(v)) return fail(c, SOAK_ERR_ARG, path, "not a finite number");
-    if (!soak_in_range(v, lo, hi)) return fail(c, SOAK_ERR_ARG, path, "%.10g is outside [%g, %g]", v, lo, hi);
-    *out = v;
-    return SOAK_OK;
+    char why[128];
+    soak_status st = soak_json_number(it, lo, hi, 0, out, why, sizeof why);
+    return st == SOAK_OK ? SOAK_OK : fail(c, st, path, "%s", why);
 }
 
 static soak_status get_number(ctx *c, const cJSON *obj, const char *path, const char *key, double lo, double hi,

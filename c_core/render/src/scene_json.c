@@ -8,6 +8,7 @@
 #include <strings.h>
 
 #include "scene_json.h"
+#include "soak/json_number.h"
 
 soak_status sj_fail(scene_ctx *c, soak_status status, const char *path, const char *fmt, ...)
 {
@@ -48,16 +49,9 @@ soak_status sj_keys(scene_ctx *c, const cJSON *obj, const char *path, const char
 static soak_status num_value(scene_ctx *c, const cJSON *v, const char *path, double lo, double hi, int strict_lo,
                              double *out)
 {
-    if (!cJSON_IsNumber(v)) return sj_fail(c, SOAK_ERR_PARSE, path, "must be a number");
-    double x = v->valuedouble;
-    if (!soak_is_finite(x)) return sj_fail(c, SOAK_ERR_ARG, path, "must be a finite number");
-    if (!soak_in_range(x, lo, hi) || (strict_lo && !(x > lo))) {
-        if (strict_lo)
-            return sj_fail(c, SOAK_ERR_ARG, path, "must be > %g and <= %g, got %g", lo, hi, x);
-        return sj_fail(c, SOAK_ERR_ARG, path, "must be in [%g, %g], got %g", lo, hi, x);
-    }
-    *out = x;
-    return SOAK_OK;
+    char why[128];
+    soak_status st = soak_json_number(v, lo, hi, strict_lo, out, why, sizeof why);
+    return st == SOAK_OK ? SOAK_OK : sj_fail(c, st, path, "%s", why);
 }
 
 /* obj[key] with its dotted path written to p; NULL when absent, with *st

@@ -8,6 +8,7 @@
 #include "scene_json.h"
 #include "soak/base_colour.h"
 #include "soak/fresnel.h"
+#include "soak/json_number.h"
 #include "soak/ggx.h"
 #include "soak/porous.h"
 #include "soak/preset.h"
@@ -544,12 +545,9 @@ soak_status scene_parse_wetness(scene_ctx *c, const cJSON *j, const char *path, 
 {
     if (cJSON_IsNumber(j)) {
         w->type = SOAK_WETNESS_CONSTANT;
-        double x;
-        if (!soak_in_range(j->valuedouble, 0, 1))
-            return sj_fail(c, SOAK_ERR_ARG, path, "must be in [0, 1], got %g", j->valuedouble);
-        x = j->valuedouble;
-        w->value = x;
-        return SOAK_OK;
+        char why[128];
+        soak_status st = soak_json_number(j, 0.0, 1.0, 0, &w->value, why, sizeof why);
+        return st == SOAK_OK ? SOAK_OK : sj_fail(c, st, path, "%s", why);
     }
     const char *type;
     soak_status st = sj_str(c, j, "type", path, 1, &type);
