@@ -26,6 +26,7 @@ struct soak_rain_frames {
     soak_rain_scene sc;
     soak_rain_flow_grid grid;
     soak_rain_flow_plan *plan;
+    int plan_threads; /* the most threads plan sweeps with */
     size_t *order, count;
     double *retain, *kappa, *source, *inflow;
     double dt, rain_m_s, evap_m_s;
@@ -88,6 +89,7 @@ static soak_status frames_alloc(soak_rain_frames *f, const soak_bake_exec *exec)
     soak_status st = film_faces(f);
     if (st == SOAK_OK) st = soak_rain_flow_order(&f->grid, &f->order, &f->count);
     if (st == SOAK_OK) st = soak_rain_flow_create(&f->grid, exec, SOAK_RAIN_FLOW_AUTO, &f->plan);
+    f->plan_threads = soak_bake_threads(exec);
     return st;
 }
 
@@ -246,6 +248,13 @@ soak_status soak_rain_frames_at(soak_rain_frames *f, double t, const soak_bake_e
             snprintf(err, errlen, "time %g s is outside 0..%g s or needs more than %ld steps of %g s", t,
                      SOAK_RAIN_MAX_FRAME_TIME, SOAK_RAIN_MAX_FRAME_STEPS, f->dt);
         return SOAK_ERR_ARG;
+    }
+    if (soak_bake_threads(exec) > f->plan_threads) { /* more threads than the sweeps were made for */
+        soak_rain_flow_destroy(f->plan);
+        f->plan = NULL;
+        soak_status st = soak_rain_flow_create(&f->grid, exec, SOAK_RAIN_FLOW_AUTO, &f->plan);
+        if (st != SOAK_OK) return st;
+        f->plan_threads = soak_bake_threads(exec);
     }
     long steps = (long)whole;
     double rest = t - (double)steps * f->dt;
