@@ -107,7 +107,8 @@ static const cli_opt rain_opts[] = {
 static void usage(FILE *out)
 {
     fprintf(out,
-            "usage: soak bake rain MESH -o OUT [options]\n\n"
+            "usage: soak bake rain MESH -o OUT [options]\n"
+            "       soak bake rain MESH --frames A-B -o wet.%%04d.exr [options]\n\n"
             "Rain wet map of a mesh (OBJ, PLY, glTF/GLB...; it must have UVs) at a texture\n"
             "resolution: per-texel sky exposure by ray casting through the mesh (Embree), drop\n"
             "impacts as a Poisson process with a splat kernel, evaporation, and downhill flow\n"

@@ -149,8 +149,9 @@ static void evaporate_row(void *ctx, int y, int thread)
 }
 
 /* One step of tau seconds of state s, raining or not: the film's wave, the
- * sweeps, evaporation. */
-static soak_status advance(soak_rain_frames *f, rain_state *s, double tau, int raining, const soak_bake_exec *exec)
+ * sweeps, evaporation; progress stays at `at`. */
+static soak_status advance(soak_rain_frames *f, rain_state *s, double tau, int raining, const soak_bake_exec *exec,
+                           double at)
 {
     double dripped = 0.0;
     for (size_t k = 0; k < f->count && raining; ++k) s->bal.in += f->source[f->order[k]] * tau;
@@ -158,11 +159,11 @@ static soak_status advance(soak_rain_frames *f, rain_state *s, double tau, int r
                                          s->depth, f->inflow, &dripped);
     s->bal.dripped += dripped;
     double before = volume(f, s->depth);
-    if (st == SOAK_OK) st = soak_rain_flow_run(f->plan, s->depth, f->p.flow_iterations, exec, 0.0, 0.0);
+    if (st == SOAK_OK) st = soak_rain_flow_run(f->plan, s->depth, f->p.flow_iterations, exec, at, at);
     s->bal.dripped += before - volume(f, s->depth);
     evap_job j = {f, s->depth, calloc((size_t)f->sc.h, sizeof(double)), f->evap_m_s * tau};
     if (st == SOAK_OK && !j.lost) st = SOAK_ERR_NOMEM;
-    if (st == SOAK_OK) st = soak_parallel_rows(f->sc.h, exec, evaporate_row, &j, 0.0, 0.0);
+    if (st == SOAK_OK) st = soak_parallel_rows(f->sc.h, exec, evaporate_row, &j, at, at);
     for (int y = 0; y < f->sc.h && st == SOAK_OK; ++y) s->bal.evaporated += j.lost[y];
     free(j.lost);
     s->bal.held = volume(f, s->depth);
@@ -187,8 +188,9 @@ static soak_status whole_steps(soak_rain_frames *f, long steps, const soak_bake_
     long first = f->now.step;
     soak_status st = SOAK_OK;
     for (; f->now.step < steps && st == SOAK_OK; ++f->now.step) {
-        st = advance(f, &f->now, f->dt, f->now.step < f->p.steps, exec);
-        report(exec, 0.9 * (double)(f->now.step + 1 - first) / (double)(steps - first));
+        double at = 0.9 * (double)(f->now.step - first) / (double)(steps - first);
+        report(exec, at);
+        st = advance(f, &f->now, f->dt, f->now.step < f->p.steps, exec, at);
     }
     return st;
 }
@@ -264,7 +266,7 @@ soak_status soak_rain_frames_at(soak_rain_frames *f, double t, const soak_bake_e
         memcpy(f->cut.depth, f->now.depth, n * sizeof *f->cut.depth);
         f->cut.bal = f->now.bal;
         f->cut.step = steps;
-        if (rest > 0.0) st = advance(f, &f->cut, rest, steps < f->p.steps, exec);
+        if (rest > 0.0) st = advance(f, &f->cut, rest, steps < f->p.steps, exec, 0.9);
     }
     if (st == SOAK_OK) st = frame_images(f, &f->cut, exec, out);
     return st;
