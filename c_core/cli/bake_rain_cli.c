@@ -62,9 +62,10 @@ static const cli_choice axes[] = {{"x", 0, 0},  {"y", 1, 0},  {"z", 2, 0}, {"-x"
 static const cli_opt rain_opts[] = {
     {"--exposure", NULL, CLI_OPT_STRING, F(exposure_path), .meta = "PATH",
      .help = "also write the sky exposure (1 = open horizontal surface)"},
-    {"--water", NULL, CLI_OPT_STRING, F(water_path), .meta = "PATH", .help = "also write the water depth (m)"},
+    {"--water", NULL, CLI_OPT_STRING, F(water_path), .meta = "PATH",
+     .help = "also write the water depth (m; with --frames a pattern)"},
     {"--film", NULL, CLI_OPT_STRING, F(film_path), .meta = "PATH",
-     .help = "also write the falling film thickness while rain falls (m; use .exr)"},
+     .help = "also write the falling film thickness while rain falls (m; use .exr;\nwith --frames a pattern: the film of each frame)"},
     {"--no-film", NULL, CLI_OPT_FLAG, .flag = 1, F(no_film),
      .help = "no falling film: slopes keep only the flat film times n.up (walls drain)"},
     {"--rays", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RAIN_MAX_RAYS, F(p.rays), .meta = "N",
