@@ -1,5 +1,6 @@
 /* soak bake rain: rain wetting of a mesh baked into its UV texture (model in
  * soak/bake_rain.h). */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,9 +15,15 @@
 
 typedef struct rain_args {
     soak_rain_params p;
-    int have_dir, up_axis, no_film;
+    int have_dir, up_axis, no_film, have_fps, have_time, have_frame_time;
+    double fps;
     const char *mesh_path, *exposure_path, *water_path, *film_path;
+    int float_exr;                /* the sequence table's --float, for the extra maps */
+    soak_rain_frames *frames;     /* --frames: the sequence's state */
+    soak_rain_frame last;         /* the last frame's balance */
 } rain_args;
+
+#define RAIN_MAX_FPS 10000
 
 /* Rain direction components: any finite vector (normalised by the bake). */
 #define RAIN_MAX_COMPONENT 1e6
@@ -55,9 +62,10 @@ static const cli_choice axes[] = {{"x", 0, 0},  {"y", 1, 0},  {"z", 2, 0}, {"-x"
 static const cli_opt rain_opts[] = {
     {"--exposure", NULL, CLI_OPT_STRING, F(exposure_path), .meta = "PATH",
      .help = "also write the sky exposure (1 = open horizontal surface)"},
-    {"--water", NULL, CLI_OPT_STRING, F(water_path), .meta = "PATH", .help = "also write the water depth (m)"},
+    {"--water", NULL, CLI_OPT_STRING, F(water_path), .meta = "PATH",
+     .help = "also write the water depth (m; with --frames a pattern)"},
     {"--film", NULL, CLI_OPT_STRING, F(film_path), .meta = "PATH",
-     .help = "also write the falling film thickness while rain falls (m; use .exr)"},
+     .help = "also write the falling film thickness while rain falls (m; use .exr;\nwith --frames a pattern: the film of each frame)"},
     {"--no-film", NULL, CLI_OPT_FLAG, .flag = 1, F(no_film),
      .help = "no falling film: slopes keep only the flat film times n.up (walls drain)"},
     {"--rays", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RAIN_MAX_RAYS, F(p.rays), .meta = "N",
@@ -90,21 +98,18 @@ static const cli_opt rain_opts[] = {
      .help = "routing sweeps per step, %R (default 16)"},
     {"--gutter", NULL, CLI_OPT_INT, .ilo = 0, .ihi = SOAK_RAIN_MAX_GUTTER, F(p.gutter), .meta = "N",
      .help = "texels of padding around UV islands, %R (default 4)"},
-    /* A rain bake is one image. */
-    {"--frames", NULL, CLI_OPT_REJECT, .help = "does not apply to rain bakes"},
-    {"--time", NULL, CLI_OPT_REJECT, .help = "does not apply to rain bakes"},
-    {"--frame-time", NULL, CLI_OPT_REJECT, .help = "does not apply to rain bakes"},
-    {"--frame-origin", NULL, CLI_OPT_REJECT, .help = "does not apply to rain bakes"},
-    {"--float", NULL, CLI_OPT_REJECT, .help = "does not apply to rain bakes"},
+    {"--fps", NULL, CLI_OPT_DOUBLE, .lo = 1e-6, .hi = RAIN_MAX_FPS, F(fps), CLI_SEEN(rain_args, have_fps), .meta = "N",
+     .help = "--frames: frames per second, frame f at t = f / N (default 24)"},
 };
 #undef F
 
-#define RAIN_TABLES(o, a) {BAKE_IMAGE_TABLE(o), CLI_TABLE(rain_opts, (a))}
+#define RAIN_TABLES(o, a) {BAKE_IMAGE_TABLE(o), CLI_TABLE(rain_opts, (a)), BAKE_SEQUENCE_TABLE(o)}
 
 static void usage(FILE *out)
 {
     fprintf(out,
-            "usage: soak bake rain MESH -o OUT [options]\n\n"
+            "usage: soak bake rain MESH -o OUT [options]\n"
+            "       soak bake rain MESH --frames A-B -o wet.%%04d.exr [options]\n\n"
             "Rain wet map of a mesh (OBJ, PLY, glTF/GLB...; it must have UVs) at a texture\n"
             "resolution: per-texel sky exposure by ray casting through the mesh (Embree), drop\n"
             "impacts as a Poisson process with a splat kernel, evaporation, and downhill flow\n"
@@ -113,13 +118,28 @@ static void usage(FILE *out)
             "them, thicker where the flow collects (streaks), dripping off at overhangs.\n"
             "Lengths in the mesh unit (metres), times in seconds. Same seed, same bytes, on\n"
             "any number of threads.\n"
-            "-o is the wetness map, w = 1 - exp(-depth/saturation).\n\n"
+            "-o is the wetness map, w = 1 - exp(-depth/saturation), and w = 1 where a film\n"
+            "runs (thicker than 1 um): the film is supplied all the time, so the pores under it\n"
+            "are full and it covers the surface.\n\n"
+            "--frames A-B -o wet.%%04d.exr: a frame sequence over the rain and after it; frame f\n"
+            "is at t = f / fps (--fps, default 24; or --time/--frame-time/--frame-origin as in\n"
+            "every sequence bake), whatever range is baked, so chunks equal one run. The rain\n"
+            "(mean rate, no drops: see `soak bake drops`) falls during [0, --duration]; the\n"
+            "film runs down the faces as Nusselt's film in time (a kinematic wave, Lighthill &\n"
+            "Whitham 1955): a face fills from the top, its front moving at 2 u_s under rain\n"
+            "and at (2/3) u_s onto a dry face; after the rain it drains (Jeffreys 1930:\n"
+            "h -> sqrt(nu x / (g sin theta t))) and evaporation dries what is left. --film and\n"
+            "--water are then frame patterns too; --exposure is one map. Time steps are\n"
+            "--duration / --steps, the same after the rain. Prints where the water went by\n"
+            "the last frame.\n\n"
             "options:\n");
     const cli_opt_table tables[] = RAIN_TABLES(NULL, NULL);
     cli_opts_help(out, tables, sizeof tables / sizeof tables[0]);
     fprintf(out, "\nexample:\n"
                  "  soak bake rain statue.glb --width 2048 --height 2048 --rays 64 --duration 1800 \\\n"
-                 "       --exposure exposure.exr -o rain_wet.exr\n");
+                 "       --exposure exposure.exr -o rain_wet.exr\n"
+                 "  soak bake rain wall.obj --up z --duration 600 --steps 60 --fps 0.04 --frames 0-23 \\\n"
+                 "       --film film.%%04d.exr -o wet.%%04d.exr\n");
 }
 
 static int mesh_arg(void *ctx, const char *arg)
@@ -156,13 +176,33 @@ static int write_outputs(const char *const *paths, const soak_image *const *imgs
     return st == SOAK_OK ? SOAK_EXIT_OK : bake_fail(CMD, st, err);
 }
 
+/* The sequence options: frame f at --time + (f - origin) / fps, origin 0
+ * unless given, as `soak bake drops`. Returns -1 to go on, else the exit
+ * code. */
+static int settle_frames(rain_args *a, bake_opts *o)
+{
+    if (!o->have_frames && (a->have_fps || !isnan(o->time))) {
+        cli_error(CMD, "%s needs an image sequence: give --frames A-B", a->have_fps ? "--fps" : "--time");
+        return SOAK_EXIT_USAGE;
+    }
+    if (!o->have_frames) return -1;
+    if (a->have_fps) o->frame_time = 1.0 / a->fps;
+    if (isnan(o->time)) o->time = 0;
+    if (!o->have_origin) o->origin = 0, o->have_origin = 1;
+    if (!(a->p.duration > 0)) {
+        cli_error(CMD, "--frames needs rain: --duration must be > 0");
+        return SOAK_EXIT_USAGE;
+    }
+    return -1;
+}
+
 /* Returns -1 to go on, else the exit code. */
 static int parse_args(int argc, char **argv, rain_args *a, bake_opts *o)
 {
     memset(a, 0, sizeof *a);
     soak_rain_defaults(&a->p);
     a->up_axis = 1;
-    bake_opts_init(o, CMD, 0, 0);
+    bake_opts_init(o, CMD, NAN, 1.0 / 24);
     const cli_spec spec = BAKE_SPEC(CMD, usage, mesh_arg, a);
     const cli_opt_table tables[] = RAIN_TABLES(o, a);
     int rc = cli_opts_parse(&spec, tables, sizeof tables / sizeof tables[0], argc, argv);
@@ -181,7 +221,27 @@ static int parse_args(int argc, char **argv, rain_args *a, bake_opts *o)
         cli_error(CMD, "--rain-dir: the rain must come from above (positive component along --up)");
         return SOAK_EXIT_USAGE;
     }
-    return -1;
+    return settle_frames(a, o);
+}
+
+/* A sequence output of --frames besides -o: a pattern whose frames are
+ * writable, not an input, not -o's. Returns 0 or the exit code. */
+static int check_pattern(const bake_opts *o, const char *name, const char *pattern, const char *const *inputs)
+{
+    bake_opts other = *o;
+    other.output = pattern;
+    if (soak_bake_pattern_kind(pattern) != 1) {
+        cli_error(CMD, "%s '%s': with --frames give a frame pattern such as film.%%04d.exr", name, pattern);
+        return SOAK_EXIT_USAGE;
+    }
+    char mine[4096], theirs[4096];
+    if (soak_bake_frame_path(pattern, (int)o->first, mine, sizeof mine) == SOAK_OK &&
+        soak_bake_frame_path(o->output, (int)o->first, theirs, sizeof theirs) == SOAK_OK &&
+        (soak_path_same(mine, theirs) || strcmp(mine, theirs) == 0)) {
+        cli_error(CMD, "%s: same files as -o", name);
+        return SOAK_EXIT_USAGE;
+    }
+    return bake_opts_check(&other, inputs, 1);
 }
 
 /* -o, --exposure and --water: writable, not the mesh, not each other.
@@ -194,6 +254,10 @@ static int check_outputs(const rain_args *a, const bake_opts *o)
     int rc = bake_opts_check(o, inputs, 1);
     for (int k = 0; k < 3 && !rc; ++k) {
         if (!extra[k]) continue;
+        if (o->have_frames && k > 0) { /* --water, --film: sequences like -o */
+            if ((rc = check_pattern(o, names[k], extra[k], inputs)) != 0) return rc;
+            continue;
+        }
         char err[4352];
         soak_status st = soak_bake_check_output(extra[k], inputs, 1, err, sizeof err);
         if (st != SOAK_OK) {
@@ -230,6 +294,72 @@ static soak_status bake(const rain_args *a, const bake_opts *o, soak_rain_result
     return st;
 }
 
+/* One frame of --frames: -o's wetness into out, --film and --water
+ * written here. */
+static soak_status rain_frame(void *ctx, int frame, double time, const soak_bake_exec *exec, soak_image *out,
+                              char *err, size_t errlen)
+{
+    rain_args *a = ctx;
+    soak_rain_frame fr;
+    soak_status st = soak_rain_frames_at(a->frames, time, exec, &fr, err, errlen);
+    if (st != SOAK_OK) {
+        char why[4352];
+        snprintf(why, sizeof why, "frame %d at %g s: %s", frame, time, err[0] ? err : soak_status_str(st));
+        snprintf(err, errlen, "%s", why);
+        return st;
+    }
+    const char *patterns[2] = {a->film_path, a->water_path};
+    const soak_image *imgs[2] = {&fr.film, &fr.water};
+    for (int k = 0; k < 2 && st == SOAK_OK; ++k) {
+        char path[4096];
+        if (!patterns[k]) continue;
+        st = soak_bake_frame_path(patterns[k], frame, path, sizeof path);
+        if (st == SOAK_OK) st = soak_bake_write(path, imgs[k], a->float_exr, err, errlen);
+    }
+    a->last.balance = fr.balance;
+    *out = fr.wetness;
+    fr.wetness.pixels = NULL;
+    soak_rain_frame_free(&fr);
+    return st;
+}
+
+/* --frames: the sequence, then --exposure, then where the water went. */
+static int run_frames(rain_args *a, const bake_opts *o)
+{
+    char err[4352] = "";
+    soak_mesh mesh;
+    soak_status st = soak_mesh_load(a->mesh_path, 1, &mesh, err, sizeof err);
+    if (st != SOAK_OK) return bake_fail(CMD, st == SOAK_ERR_ARG ? SOAK_ERR_IO : st, err);
+    cli_progress bar;
+    cli_progress_start(&bar, CMD " (exposure)", 1.0);
+    soak_bake_exec exec = {(int)o->threads, on_progress, &bar};
+    st = soak_rain_frames_create(&mesh, (int)o->width, (int)o->height, &a->p, &exec, &a->frames, err, sizeof err);
+    cli_progress_finish(&bar);
+    soak_mesh_free(&mesh);
+    if (st != SOAK_OK) {
+        cli_error(CMD, "%s: %s", a->mesh_path, err[0] ? err : soak_status_str(st));
+        return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
+    }
+    a->float_exr = o->float_exr;
+    int rc = bake_run(o, rain_frame, a);
+    if (rc == SOAK_EXIT_OK && a->exposure_path) {
+        const char *paths[1] = {a->exposure_path};
+        const soak_image *imgs[1] = {soak_rain_frames_exposure(a->frames)};
+        rc = write_outputs(paths, imgs, 1);
+    }
+    const soak_rain_balance *b = &a->last.balance;
+    if (rc == SOAK_EXIT_OK)
+        printf("%s: frames %ld-%ld, %ldx%ld, from %s\n", o->output, o->first, o->last, o->width, o->height,
+               a->mesh_path);
+    if (rc == SOAK_EXIT_OK && b->in > 0.0)
+        printf("by frame %ld (t = %g s) %.4g L fell on the mesh: %.1f %% dripped off, %.1f %% is on it, "
+               "%.1f %% evaporated\n",
+               o->last, bake_frame_time(o, o->last), b->in * 1e3, 100.0 * b->dripped / b->in, 100.0 * b->held / b->in,
+               100.0 * b->evaporated / b->in);
+    soak_rain_frames_destroy(a->frames);
+    return rc;
+}
+
 int soak_bake_rain_main(int argc, char **argv)
 {
     rain_args a;
@@ -237,6 +367,7 @@ int soak_bake_rain_main(int argc, char **argv)
     int rc = parse_args(argc, argv, &a, &o);
     if (rc >= 0) return rc;
     if ((rc = check_outputs(&a, &o)) != 0) return rc;
+    if (o.have_frames) return run_frames(&a, &o);
     soak_rain_result res;
     if (bake(&a, &o, &res) != SOAK_OK) return SOAK_EXIT_FAIL;
     const char *paths[4] = {o.output, a.exposure_path, a.water_path, a.film_path};

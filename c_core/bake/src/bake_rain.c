@@ -11,6 +11,7 @@
 
 #include "bake_rain_film.h"
 #include "bake_rain_flow.h"
+#include "bake_rain_scene.h"
 
 void soak_rain_defaults(soak_rain_params *p)
 {
@@ -534,6 +535,13 @@ static soak_status dilate(float *img, unsigned char *filled, int w, int h, int g
     return st;
 }
 
+double soak_rain_wetness(double depth, double film, double saturation_depth)
+{
+    if (film >= SOAK_RAIN_FILM_RUNNING) return 1.0; /* a running film: pores full, texel covered */
+    if (!(depth > 0.0) || !(saturation_depth > 0.0)) return 0.0;
+    return 1.0 - exp(-depth / saturation_depth);
+}
+
 typedef struct output_job {
     const rain_surface *s;
     const double *depth, *film;
@@ -549,7 +557,7 @@ static void output_row(void *ctx, int y, int thread)
         j->r->coverage.pixels[i] = j->s->tri[i] >= 0 ? 1.0f : 0.0f;
         j->r->water.pixels[i] = (float)j->depth[i];
         j->r->film.pixels[i] = (float)j->film[i];
-        j->r->wetness.pixels[i] = (float)(1.0 - exp(-j->depth[i] / j->saturation_depth));
+        j->r->wetness.pixels[i] = (float)soak_rain_wetness(j->depth[i], j->film[i], j->saturation_depth);
     }
 }
 
@@ -636,10 +644,12 @@ static soak_status check_mesh(const soak_mesh *m, char *err, size_t errlen)
     return SOAK_OK;
 }
 
-soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const soak_rain_params *p,
-                           const soak_bake_exec *exec, soak_rain_result *out, char *err, size_t errlen)
+/* Steps 1 and 2: the surface of mesh and its sky exposure (allocated into
+ * *exposure); on error neither is kept. */
+static soak_status surface_and_exposure(const soak_mesh *mesh, int width, int height, const soak_rain_params *p,
+                                        const soak_bake_exec *exec, double progress_hi, rain_surface *s,
+                                        soak_image *exposure, char *err, size_t errlen)
 {
-    if (!mesh || !p || !out) return SOAK_ERR_NULL;
     soak_status st = soak_rain_check(p);
     if (st != SOAK_OK) {
         if (err && errlen) snprintf(err, errlen, "rain parameters out of range");
@@ -648,32 +658,17 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
     if ((st = soak_bake_check_size(width, height)) != SOAK_OK) return st;
     if (exec && soak_bake_threads(exec) == 0) return SOAK_ERR_ARG;
     if ((st = check_mesh(mesh, err, errlen)) != SOAK_OK) return st;
-
     soak_vec3 up = soak_v3_norm(p->up);
-    rain_surface s;
-    if ((st = surface_alloc(&s, width, height)) != SOAK_OK) return st;
-    rasterise(mesh, &s, up);
-    if ((st = connect(&s, up, exec)) != SOAK_OK) {
-        surface_free(&s);
-        return st;
-    }
-
+    if ((st = surface_alloc(s, width, height)) != SOAK_OK) return st;
+    rasterise(mesh, s, up);
     soak_geometry *g = NULL;
-    st = build_geometry(mesh, &g, err, errlen);
-    size_t n = (size_t)width * height;
-    soak_rain_result r;
-    memset(&r, 0, sizeof r);
-    if (st == SOAK_OK) st = soak_image_alloc(&r.exposure, width, height, 1);
-    if (st == SOAK_OK) st = soak_image_alloc(&r.wetness, width, height, 1);
-    if (st == SOAK_OK) st = soak_image_alloc(&r.water, width, height, 1);
-    if (st == SOAK_OK) st = soak_image_alloc(&r.coverage, width, height, 1);
-    if (st == SOAK_OK) st = soak_image_alloc(&r.film, width, height, 1);
-    double *depth = st == SOAK_OK ? calloc(n, sizeof *depth) : NULL, *film = st == SOAK_OK ? calloc(n, sizeof *film) : NULL;
-    if (st == SOAK_OK && (!depth || !film)) st = SOAK_ERR_NOMEM;
+    st = connect(s, up, exec);
+    if (st == SOAK_OK) st = build_geometry(mesh, &g, err, errlen);
+    if (st == SOAK_OK) st = soak_image_alloc(exposure, width, height, 1);
     if (st == SOAK_OK) {
         exposure_job ej;
         memset(&ej, 0, sizeof ej);
-        ej.s = &s;
+        ej.s = s;
         ej.g = g;
         ej.p = p;
         ej.up = up;
@@ -681,10 +676,33 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
         soak_v3_basis(ej.rain_dir, &ej.rt, &ej.rb);
         ej.cos_spread = cos(p->spread_deg * SOAK_PI / 180.0);
         ej.f_open = soak_v3_dot(ej.rain_dir, up) * 0.5 * (1.0 + ej.cos_spread);
-        ej.out = r.exposure.pixels;
-        st = soak_parallel_rows(height, exec, exposure_row, &ej, 0.0, p->duration > 0 ? 0.7 : 1.0);
+        ej.out = exposure->pixels;
+        st = soak_parallel_rows(height, exec, exposure_row, &ej, 0.0, progress_hi);
         if (st == SOAK_OK && ej.failed) st = SOAK_ERR_NUMERIC;
+        if (st != SOAK_OK) soak_image_free(exposure);
     }
+    soak_geometry_destroy(g);
+    if (st != SOAK_OK) surface_free(s);
+    return st;
+}
+
+soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const soak_rain_params *p,
+                           const soak_bake_exec *exec, soak_rain_result *out, char *err, size_t errlen)
+{
+    if (!mesh || !p || !out) return SOAK_ERR_NULL;
+    rain_surface s;
+    soak_rain_result r;
+    memset(&r, 0, sizeof r);
+    soak_status st = surface_and_exposure(mesh, width, height, p, exec, p->duration > 0 ? 0.7 : 1.0, &s,
+                                          &r.exposure, err, errlen);
+    if (st != SOAK_OK) return st;
+    size_t n = (size_t)width * height;
+    if (st == SOAK_OK) st = soak_image_alloc(&r.wetness, width, height, 1);
+    if (st == SOAK_OK) st = soak_image_alloc(&r.water, width, height, 1);
+    if (st == SOAK_OK) st = soak_image_alloc(&r.coverage, width, height, 1);
+    if (st == SOAK_OK) st = soak_image_alloc(&r.film, width, height, 1);
+    double *depth = st == SOAK_OK ? calloc(n, sizeof *depth) : NULL, *film = st == SOAK_OK ? calloc(n, sizeof *film) : NULL;
+    if (st == SOAK_OK && (!depth || !film)) st = SOAK_ERR_NOMEM;
     if (st == SOAK_OK && p->duration > 0 && p->rainfall_mm_h > 0)
         st = run_water(&s, p, r.exposure.pixels, exec, depth, film, &r.runoff);
     if (st == SOAK_OK) {
@@ -701,7 +719,6 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
     }
     free(depth);
     free(film);
-    soak_geometry_destroy(g);
     surface_free(&s);
     if (st != SOAK_OK) {
         soak_rain_result_free(&r);
@@ -709,4 +726,56 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
     }
     *out = r;
     return SOAK_OK;
+}
+
+/* ---- the scene of the frame sequence (bake_rain_scene.h) ---- */
+
+void soak_rain_scene_free(soak_rain_scene *sc)
+{
+    if (!sc) return;
+    free(sc->covered);
+    free(sc->adj);
+    free(sc->area);
+    free(sc->drip);
+    free(sc->level);
+    free(sc->up_dot_n);
+    soak_image_free(&sc->exposure);
+    memset(sc, 0, sizeof *sc);
+}
+
+soak_status soak_rain_scene_build(const soak_mesh *mesh, int width, int height, const soak_rain_params *p,
+                                  const soak_bake_exec *exec, soak_rain_scene *out, char *err, size_t errlen)
+{
+    if (!mesh || !p || !out) return SOAK_ERR_NULL;
+    memset(out, 0, sizeof *out);
+    rain_surface s;
+    soak_status st = surface_and_exposure(mesh, width, height, p, exec, 1.0, &s, &out->exposure, err, errlen);
+    if (st != SOAK_OK) return st;
+    size_t n = (size_t)width * height;
+    out->w = width, out->h = height;
+    out->covered = malloc(n), out->up_dot_n = malloc(n * sizeof *out->up_dot_n);
+    out->adj = s.adj, out->area = s.area, out->drip = s.drip, out->level = s.level;
+    s.adj = NULL, s.area = NULL, s.drip = NULL, s.level = NULL;
+    soak_vec3 up = soak_v3_norm(p->up);
+    if (out->covered && out->up_dot_n)
+        for (size_t i = 0; i < n; ++i) {
+            out->covered[i] = s.tri[i] >= 0;
+            out->up_dot_n[i] = s.tri[i] >= 0 ? (float)soak_v3_dot(fget(s.nrm, i), up) : 1.0f;
+        }
+    else
+        st = SOAK_ERR_NOMEM;
+    surface_free(&s);
+    if (st != SOAK_OK) soak_rain_scene_free(out);
+    return st;
+}
+
+soak_status soak_rain_dilate(float *img, const unsigned char *covered, int w, int h, int gutter,
+                             const soak_bake_exec *exec)
+{
+    unsigned char *filled = malloc((size_t)w * h);
+    if (!filled) return SOAK_ERR_NOMEM;
+    memcpy(filled, covered, (size_t)w * h);
+    soak_status st = dilate(img, filled, w, h, gutter, exec);
+    free(filled);
+    return st;
 }

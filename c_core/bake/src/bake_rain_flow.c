@@ -433,3 +433,22 @@ soak_status soak_rain_flow_cascade(const soak_rain_flow_grid *g, const unsigned 
     for (size_t k = 0; k < count; ++k) *dripped += cascade_texel(g, fast, order[k], depth, inflow);
     return SOAK_OK;
 }
+
+/* ---- the routing's shares of one texel, for the film's wave ---- */
+
+int soak_rain_flow_shares(const soak_rain_flow_grid *g, size_t i, double share[9])
+{
+    for (int d = 0; d < 9; ++d) share[d] = 0.0;
+    if (g->drip[i] < 0.0f) {
+        share[8] = 1.0;
+        return 1;
+    }
+    int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
+    double nb[8], diff[9], sum, mx;
+    for (int d = 0; d < 8; ++d)
+        nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
+    route_drops(g, i, g->level[i], nb, 0.0, diff, &sum, &mx);
+    if (!(sum > 0.0)) return 0;
+    for (int d = 0; d < 9; ++d) share[d] = diff[d] / sum;
+    return 1;
+}

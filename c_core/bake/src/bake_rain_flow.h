@@ -89,4 +89,10 @@ soak_status soak_rain_flow_order(const soak_rain_flow_grid *g, size_t **order, s
 soak_status soak_rain_flow_cascade(const soak_rain_flow_grid *g, const unsigned char *fast, const size_t *order,
                                    size_t count, double *depth, double *inflow, double *dripped);
 
+/* Where what leaves texel i goes, in the routing's shares (those of
+ * soak_rain_flow_discharge): share[d] to neighbour d, share[8] off the
+ * surface (an open edge; all of it where the texel faces down). Returns 0
+ * (all shares 0) where nothing is lower: a pit or flat. */
+int soak_rain_flow_shares(const soak_rain_flow_grid *g, size_t i, double share[9]);
+
 #endif

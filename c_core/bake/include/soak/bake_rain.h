@@ -84,8 +84,47 @@
  *      sin theta = 0 (flat) has no film; a film over SOAK_RAIN_FILM_MAX is
  *      cut there (the laminar form does not hold: a sheet of water whose
  *      depth the level routing resolves).
- * 4. Output wetness w = 1 - exp(-depth / saturation_depth) in [0,1]; the
- *    exposure, the water depth and the film thickness are available too.
+ * 4. Output wetness w = 1 - exp(-depth / saturation_depth) in [0,1], and
+ *    w = 1 wherever a film runs (film >= SOAK_RAIN_FILM_RUNNING): the film
+ *    is supplied continuously, so the pores under it are full and it covers
+ *    the texel (the wetness chain, soak/wetness.h step 2: pore fill 1, film
+ *    coverage 1); without this a running 30 um film read as w = 0.14 at the
+ *    default saturation 0.2 mm, and walls in rain looked dry. The exposure,
+ *    the water depth and the film thickness are available too.
+ * 5. Frame sequences (soak_rain_frames_*): the same surface, exposure,
+ *    routing and film, in time, with the mean rain (rainfall * E * area per
+ *    texel; the drops' spots are `soak bake drops`). Per step of dt =
+ *    duration / steps (the last step before a frame's time t cut short at
+ *    t, so the state at t never depends on which other frames are made):
+ *    - the film as a kinematic wave (M. J. Lighthill & G. B. Whitham, "On
+ *      kinematic waves I", Proc. R. Soc. A 229 (1955) 281-316): on the
+ *      film's faces (where the steady film of step 3b exceeds the static
+ *      retention) the depth h obeys continuity with Nusselt's discharge
+ *      per unit width q = K h^3, K = rho g sin theta / (3 mu) (the mean
+ *      velocity q / h = K h^2 is 2/3 of the surface velocity u_s of step 3b).
+ *      Discretised on the routing graph: texels highest first, each one
+ *      implicit (backward Euler) step, area h' + dt sqrt(A) K h'^3 = area h
+ *      + dt (rain + inflow), what leaves passed on in the routing's shares
+ *      (soak_rain_flow_shares) within the same step; stable at any dt, mass
+ *      conserving, and its steady state is step 3b's film exactly. On a
+ *      plane under rain r from t = 0 its solution is the rising limb of
+ *      D. A. Woolhiser & J. A. Liggett, "Unsteady one-dimensional flow over
+ *      a plane - the rising hydrograph", Water Resour. Res. 3 (1967) 753:
+ *      h = min(r t, h_steady(x)); the point where the two meet (the film's
+ *      front, behind it the steady film) is at x = K r^2 t^3, moving at the
+ *      kinematic celerity dq/dh = 3 K h^2 = 2 u_s. A front running onto a
+ *      dry face (a sheltered wall fed from a ledge) moves at the shock
+ *      speed q / h = (2/3) u_s (continuity). After the rain the film
+ *      drains: along the characteristics h is constant and x grows by 3 K
+ *      h^2 (t - duration), so long after the rain h -> sqrt(nu x / (g sin
+ *      theta (t - duration))) (H. Jeffreys, "The draining of a vertical
+ *      plate", Proc. Camb. Phil. Soc. 26 (1930) 204-205; nu = mu / rho).
+ *    - the sweeps of step 3 level the water of every other texel (puddles,
+ *      flats, gentle slopes), not the film's faces;
+ *    - evaporation, during and after the rain, as in step 3.
+ *    Wetness as in step 4 with the film the water on the film's faces
+ *    (film >= SOAK_RAIN_FILM_RUNNING: w = 1); once the film has drained
+ *    thinner, w = 1 - exp(-depth / saturation) and evaporation dries it.
  *
  * Lengths are in the mesh's unit (metres assumed for the rainfall rates);
  * times in seconds. */
@@ -124,6 +163,10 @@ typedef enum soak_rain_sky {
 #define SOAK_RAIN_WATER_DENSITY 998.2
 #define SOAK_RAIN_GRAVITY 9.80665
 #define SOAK_RAIN_FILM_MAX 1e-3
+/* A film at least this thick (m) runs and covers its texel (step 4): a
+ * micrometre, well above the half-float resolution of the film maps near
+ * 10 um and far below the 10-50 um of films in rain. */
+#define SOAK_RAIN_FILM_RUNNING 1e-6
 /* n.up below -this is an overhang (drips); float normals round n.up of a
  * vertical face to ~1e-7. */
 #define SOAK_RAIN_OVERHANG_TOL 1e-6
@@ -188,5 +231,47 @@ double soak_rain_film_thickness(double q, double sin_theta);
 /* Its surface velocity (m/s) for thickness h in (0, SOAK_RAIN_FILM_MAX];
  * 0 otherwise. */
 double soak_rain_film_surface_speed(double h, double sin_theta);
+
+/* Step 4's wetness of water depth `depth` under a film `film` (m). */
+double soak_rain_wetness(double depth, double film, double saturation_depth);
+
+/* ---- step 5: frame sequences ---- */
+
+/* Limits of the frames: the latest time (s) and the most time steps a
+ * frame may need. */
+#define SOAK_RAIN_MAX_FRAME_TIME 1e7
+#define SOAK_RAIN_MAX_FRAME_STEPS 10000000L
+
+/* Volumes (m^3) since t = 0: the rain that fell on the mesh, what dripped
+ * off it, what is on it now, what evaporated (in = dripped + held +
+ * evaporated up to rounding). */
+typedef struct soak_rain_balance {
+    double in, dripped, held, evaporated;
+} soak_rain_balance;
+
+typedef struct soak_rain_frame {
+    soak_image wetness; /* 1 channel, [0,1] (step 4) */
+    soak_image water;   /* 1 channel, water depth, m */
+    soak_image film;    /* 1 channel, film on the film's faces, m (at most SOAK_RAIN_FILM_MAX) */
+    soak_rain_balance balance;
+} soak_rain_frame;
+
+typedef struct soak_rain_frames soak_rain_frames;
+
+/* Surface, exposure and film of mesh (as soak_bake_rain, same errors);
+ * p->duration must be > 0 (SOAK_ERR_ARG otherwise) and p->film 1 for a
+ * film in time (with 0 every texel is left to the sweeps). */
+soak_status soak_rain_frames_create(const soak_mesh *mesh, int width, int height, const soak_rain_params *p,
+                                    const soak_bake_exec *exec, soak_rain_frames **out, char *err, size_t errlen);
+void soak_rain_frames_destroy(soak_rain_frames *f);
+/* The state at time t (s, [0, SOAK_RAIN_MAX_FRAME_TIME]; rain during [0,
+ * duration]) into out (allocated; free with soak_rain_frame_free). The
+ * same t gives the same bits whatever was asked before and at any thread
+ * count; asking in increasing t reuses the steps done. */
+soak_status soak_rain_frames_at(soak_rain_frames *f, double t, const soak_bake_exec *exec, soak_rain_frame *out,
+                                char *err, size_t errlen);
+void soak_rain_frame_free(soak_rain_frame *r);
+/* The sky exposure of the frames' mesh (step 2, gutter not applied). */
+const soak_image *soak_rain_frames_exposure(const soak_rain_frames *f);
 
 #endif
