@@ -7,6 +7,9 @@ sequence in chunks of frames, plus a job that checks it is complete.
       [--cpus-per-task N] [--partition P] [--sbatch-arg ARG ...] [--submit] \\
       -- bake drying splash.png --t-fill 0.2 --noise 0.3 --seed 4
 
+The sequence bakes: drying, turbulence, waves, drops and rain (a mesh wetting
+in rain, its running film and drainage over time: `bake rain MESH ...`).
+
 Everything after "--" is the soak command without the options this script
 sets itself (--frames, --time, --frame-time, --frame-origin, -o, --threads). It writes
 JOB_DIR/bake.sbatch (array task i bakes chunk i: its --frames come from a
@@ -28,6 +31,7 @@ import shlex
 import subprocess
 import sys
 
+SEQUENCE_BAKES = ("drying", "turbulence", "waves", "drops", "rain")
 OWNED = {"--frames", "--time", "--frame-time", "--frame-origin", "-o", "--output", "--threads"}
 
 
@@ -74,8 +78,11 @@ def main(argv):
     p.add_argument("--submit", action="store_true")
     o = p.parse_args(argv[:split])
 
-    if len(soak_cmd) < 2 or soak_cmd[0] != "bake" or soak_cmd[1] not in ("drying", "turbulence", "waves"):
-        fail("the soak command must be 'bake drying|turbulence|waves ...' (rain makes one map: no array)")
+    if len(soak_cmd) < 2 or soak_cmd[0] != "bake" or soak_cmd[1] not in SEQUENCE_BAKES:
+        fail("the soak command must be 'bake drying|turbulence|waves|drops|rain ...' (rain with its MESH: "
+             "the rain over time as frames)")
+    if soak_cmd[1] == "rain" and (len(soak_cmd) < 3 or soak_cmd[2].startswith("-")):
+        fail("'bake rain' needs its MESH right after 'rain'")
     for a in soak_cmd:
         if a.split("=")[0] in OWNED:
             fail(f"'{a}' after '--' is set by this script; use its own option")

@@ -185,6 +185,20 @@ check("turbulence and waves chunk like drying; threads passed when set", () => {
     }
 });
 
+check("drops and rain-frames chunk like drying: the input (optional mesh / required mesh) after the command", () => {
+    const drops = bake.compile(bakeSettings({kind: "drops", frames: "0-5", chunk_size: 3, width: 32, height: 32,
+                                             frame_time: 0.5})).tasks;
+    assert.deepEqual(drops.map((t) => t.name), ["bake-0-2", "bake-3-5"]);
+    assert.deepEqual(argsOf(drops[1])[0].slice(0, 3), ["bake", "drops", "--width"]);
+    assert.equal(opt(argsOf(drops[1])[0], "--frame-origin"), "0");
+    const rain = bake.compile(bakeSettings({kind: "rain-frames", input: "/farm/wall.obj", frames: "0-3", chunk_size: 2,
+                                            width: 64, height: 64, frame_time: 25, extra_args: "--up z"})).tasks;
+    assert.equal(rain.length, 2);
+    assert.deepEqual(argsOf(rain[1]), [["bake", "rain", "/farm/wall.obj", "--width", "64", "--height", "64", "--seed",
+        "0", "--up", "z", "--frames", "2-3", "--time", "0", "--frame-time", "25", "--frame-origin", "0", "-o",
+        "/farm/wet/wet.%04d.exr"]]);
+});
+
 check("rain: one task, one map, the mesh as input", () => {
     const {tasks} = bake.compile(bakeSettings({kind: "rain", input: "/farm/statue.glb", output_name: "rain.exr",
                                                width: 256, height: 256}));
@@ -208,6 +222,9 @@ check("bad settings are refused naming the setting", () => {
         [{frames: "1-3", output_dir: ""}, /"output_dir"/],
         [{kind: "rain", output_name: "rain.exr"}, /"input".*mesh/],
         [{kind: "rain", input: "/m.obj"}, /"output_name".*single map/],
+        [{kind: "rain-frames", frames: "1-3"}, /"input".*mesh/],
+        [{kind: "rain-frames", frames: "1-3", input: "/m.obj", output_name: "rain.exr"}, /"output_name".*pattern/],
+        [{kind: "drops", frames: "1-3", time: -1}, /"time".*rain's start/],
         [{frames: "1-3", extra_args: "--t-fill 0.3 -o /tmp/x.%04d.exr"}, /"extra_args".*"-o"/],
         [{frames: "1-3", extra_args: "--frames=1-2"}, /"extra_args".*"--frames"/],
         [{frames: "1-3", extra_args: "--frame-origin 0"}, /"extra_args".*"--frame-origin"/],

@@ -135,7 +135,16 @@ const bake = F.loadJobType(path.join(scripts, "soak_bake.js"));
 // tests/cli/bake.sh shows it): the comparison sees a last-bit time error.
 const stepMask = path.join(tmp, "step_mask.pgm");
 fs.writeFileSync(stepMask, "P2\n11 1\n1\n0 1 1 1 1 1 1 1 1 1 1\n");
+// A wall leaning 60 degrees from the horizontal (z up), UVs across it: in rain
+// its film rises and runs over time, so frames differ (tests/c/bake/test_bake_rain_frames.c
+// checks the physics; here only that chunks equal one run).
+const wallMesh = path.join(tmp, "wall.obj");
+fs.mkdirSync(tmp, {recursive: true});
+fs.writeFileSync(wallMesh, "v 0 0 0\nv 1 0 0\nv 1 0.5 0.866\nv 0 0.5 0.866\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n" +
+                 "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
 const bakeCases = [
+    {kind: "rain-frames", soak_kind: "rain", frames: "0-4", chunk_size: 2, input: wallMesh, width: 24, height: 24,
+     seed: 1, time: 0, frame_time: 0.5, extra_args: "--up z --rays 4 --duration 1.5 --steps 6 --rainfall 50"},
     {kind: "drying", frames: "1-12", chunk_size: 3, input: stepMask, seed: 3, time: 0, frame_time: 0.03,
      extra_args: "--t-fill 1e-20"},
     {kind: "turbulence", frames: "0-3", chunk_size: 2, width: 40, height: 32, seed: 9, time: 0,
@@ -152,14 +161,15 @@ for (const c of bakeCases) {
         const [A, B] = c.frames.split("-").map(Number);
         const single = path.join(dir, "single", "wet.%04d.exr");
         fs.mkdirSync(path.dirname(single), {recursive: true});
-        const size = c.input ? [c.input] : ["--width", String(c.width), "--height", String(c.height)];
-        mustRun([soak, "bake", c.kind].concat(size, ["--seed", String(c.seed)], F.shellSplit(c.extra_args),
+        const dims = ["--width", String(c.width), "--height", String(c.height)];
+        const size = c.kind === "drying" ? [c.input] : c.input ? [c.input].concat(dims) : dims;
+        mustRun([soak, "bake", c.soak_kind || c.kind].concat(size, ["--seed", String(c.seed)], F.shellSplit(c.extra_args),
                 ["--frames", c.frames, "--time", String(c.time), "--frame-time", String(c.frame_time), "-o", single]));
         const pairs = [];
         for (let f = A; f <= B; f++) pairs.push([framePath(path.join(dir, "chunked", "wet.%04d.exr"), f), framePath(single, f)]);
         const images = readImages([].concat(...pairs));
         for (const [x, y] of pairs) assertSameImage(images, x, y);
-        if (c.input) {
+        if (c.kind === "drying") {
             // The case's point: texel 3 starts drying exactly at frame 11's time (0.3), a step.
             const texel3 = (f) => images.get(framePath(single, f)).data[3];
             assert.deepEqual([texel3(11), texel3(12)], [1, 0], "texel 3 should be wet at frame 11, dry at 12");

@@ -1,10 +1,10 @@
 const JOB_TYPE = {
     label: "Soak Wet-Map Bake",
-    description: "Bake Soak wet maps with soak bake: drying, turbulence and waves image sequences in chunks of frames, or one rain map",
+    description: "Bake Soak wet maps with soak bake: drying, turbulence, waves, raindrops and rain-over-time image sequences in chunks of frames, or one rain map",
     settings: [
         { key: "kind", type: "string", required: true, default: "drying",
-          choices: ["drying", "turbulence", "waves", "rain"],
-          description: "What to bake: drying (a wet region drying), turbulence (noise patches), waves (a beach's wet sand), rain (a mesh's rain wetting, one map)" },
+          choices: ["drying", "turbulence", "waves", "drops", "rain-frames", "rain"],
+          description: "What to bake: drying (a wet region drying), turbulence (noise patches), waves (a beach's wet sand), drops (raindrops spotting a surface, then drying), rain-frames (a mesh wetting in rain and its running film, over time), rain (a mesh's rain wetting, one map)" },
         { key: "frames", type: "string", required: true,
           eval: "f'{C.scene.frame_start}-{C.scene.frame_end}'",
           evalInfo: { showLinkButton: true, description: "Scene frame range" },
@@ -12,7 +12,7 @@ const JOB_TYPE = {
         { key: "chunk_size", type: "int32", default: 10, propargs: {min: 1, max: 100000}, visible: "submission",
           description: "Frames baked by one task" },
         { key: "input", type: "string", subtype: "file_path", default: "",
-          description: "drying: optional mask image (texels above the threshold start wet; it sets the size); rain: the mesh, with UVs (required)" },
+          description: "drying: optional mask image (texels above the threshold start wet; it sets the size); drops: optional mesh (its sky exposure weights the impacts); rain and rain-frames: the mesh, with UVs (required)" },
         { key: "output_dir", type: "string", subtype: "dir_path", required: true, visible: "submission",
           description: "Folder of the baked maps, on storage every worker reads and writes" },
         { key: "output_name", type: "string", subtype: "file_name", required: true, default: "wet.%04d.exr",
@@ -24,7 +24,7 @@ const JOB_TYPE = {
         { key: "seed", type: "int32", default: 0, propargs: {min: 0},
           description: "Noise seed: the same seed gives the same maps on any worker and thread count" },
         { key: "time", type: "float", default: 0.0,
-          description: "Time of the first frame of the range (drying: 0 wet, 1 dry; turbulence and waves: their animation time)" },
+          description: "Time of the first frame of the range (drying: 0 wet, 1 dry; turbulence and waves: their animation time; drops and rain-frames: seconds since the rain began)" },
         { key: "frame_time", type: "float", default: 0.01, propargs: {min: 0.0},
           description: "Time between frames: frame f bakes at Time + (f - first frame) * Frame Time, as one soak run would" },
         { key: "threads", type: "int32", default: 0, propargs: {min: 0, max: 1024}, visible: "submission",
@@ -34,14 +34,16 @@ const JOB_TYPE = {
     ]
 };
 
-const SOAK_SEQUENCE_KINDS = ["drying", "turbulence", "waves"];
+const SOAK_SEQUENCE_KINDS = ["drying", "turbulence", "waves", "drops", "rain-frames"];
+// The soak bake command of each kind, where the names differ.
+const SOAK_KIND_COMMAND = {"rain-frames": "rain"};
 
 function compileJob(job) {
     print("Soak wet-map bake job submitted");
     const settings = job.settings;
     const kind = soakText(settings, "kind");
     if (kind !== "rain" && SOAK_SEQUENCE_KINDS.indexOf(kind) < 0) {
-        soakFail("kind", `expected drying, turbulence, waves or rain, got "${kind}"`);
+        soakFail("kind", `expected drying, turbulence, waves, drops, rain-frames or rain, got "${kind}"`);
     }
     const outputDir = soakText(settings, "output_dir");
     if (outputDir === "") soakFail("output_dir", "an output folder is required");
@@ -73,9 +75,14 @@ function compileJob(job) {
     if (kind === "drying" && !(timing.time >= 0)) {
         soakFail("time", `drying time starts at 0 (wet), got ${timing.time}`);
     }
-    let kindArgs = ["bake", kind];
-    if (kind === "drying" && input !== "") kindArgs.push(input);
-    kindArgs = kindArgs.concat(soakSizeSeedArgs(settings, !(kind === "drying" && input !== "")), extra);
+    if (kind === "rain-frames" && input === "") soakFail("input", "rain-frames needs the mesh to bake (OBJ, PLY, glTF...)");
+    if ((kind === "drops" || kind === "rain-frames") && !(timing.time >= 0)) {
+        soakFail("time", `${kind} time counts from the rain's start (0), got ${timing.time}`);
+    }
+    const inputTakesSize = kind === "drying" && input !== "";
+    let kindArgs = ["bake", SOAK_KIND_COMMAND[kind] || kind];
+    if (input !== "" && kind !== "turbulence" && kind !== "waves") kindArgs.push(input);
+    kindArgs = kindArgs.concat(soakSizeSeedArgs(settings, !inputTakesSize), extra);
 
     const chunks = soakChunks(settings.frames, settings, "chunk_size");
     for (const t of soakAuthorBakeTasks(frames, chunks, kindArgs, timing, output)) {
