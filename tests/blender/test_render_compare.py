@@ -437,8 +437,9 @@ def highlight_terms(mat, liq, table, w, views, e_sun):
     if bpy.app.version >= (4, 0, 0):
         f_avg = 2 * sum(_fresnel((i + 0.5) / 32, n) * (i + 0.5) / 32 for i in range(32)) / 32
         ew_l, ew_bar = _albedo(alpha, None, wi[2]), _albedo_mean(alpha, None)
-        multi = sum(weight * f_avg * (1 - ew_l) * (1 - _albedo(alpha, None, v[2])) / (math.pi * (1 - ew_bar))
-                    for v in views) / len(views) * e_sun * wi[2]
+        # E(v) at the central view (the image spans +-10 degrees of it; E varies slowly)
+        multi = weight * f_avg * (1 - ew_l) * (1 - _albedo(alpha, None, vc[2])) / (math.pi * (1 - ew_bar)) \
+            * e_sun * wi[2]
     film = 0.0
     if c > 0:
         under = base_specular_factor(n, n_l, liq["sigma_a_per_m"], mat["film_thickness_m"], 1.0) * ((n - 1) / (n + 1)) ** 2
