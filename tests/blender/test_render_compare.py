@@ -410,8 +410,12 @@ def highlight_terms(mat, liq, table, w, views, e_sun):
       fresnel: the reference's lobe is ks F(n); the Principled's is F(eta')
                with F0(eta') = ks F0(n) (one Fresnel curve, weight 1);
       multi:   4.x's default Multiscatter GGX adds the lobe's multiple
-               scattering (Kulla-Conty form, F-average of n), which the
-               reference's single-scatter GGX omits (0 in 3.x: GGX);
+               scattering, which the reference's single-scatter GGX omits (0
+               in 3.x: GGX); sized by Kulla and Conty's energy-compensation
+               lobe (2017, "Revisiting physically based shading at
+               Imageworks": f_ms = (1 - E(l))(1 - E(v)) / (pi (1 - E-avg)),
+               E the white lobe's albedo, times the Fresnel factor
+               F_avg^2 E-avg / (1 - F_avg (1 - E-avg)));
       film:    the covered share's lobe: the Principled draws it in air with
                weight ks R_under (the group's specular factor), the reference
                under the flat film (refracted in and out, the index n / n_liquid)."""
@@ -437,8 +441,9 @@ def highlight_terms(mat, liq, table, w, views, e_sun):
     if bpy.app.version >= (4, 0, 0):
         f_avg = 2 * sum(_fresnel((i + 0.5) / 32, n) * (i + 0.5) / 32 for i in range(32)) / 32
         ew_l, ew_bar = _albedo(alpha, None, wi[2]), _albedo_mean(alpha, None)
+        f_ms = f_avg * f_avg * ew_bar / (1 - f_avg * (1 - ew_bar))
         # E(v) at the central view (the image spans +-10 degrees of it; E varies slowly)
-        multi = weight * f_avg * (1 - ew_l) * (1 - _albedo(alpha, None, vc[2])) / (math.pi * (1 - ew_bar)) \
+        multi = weight * f_ms * (1 - ew_l) * (1 - _albedo(alpha, None, vc[2])) / (math.pi * (1 - ew_bar)) \
             * e_sun * wi[2]
     film = 0.0
     if c > 0:

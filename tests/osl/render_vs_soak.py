@@ -11,7 +11,10 @@ patches of flat ground seen from straight above, one sun (cos 0.857) and a
 uniform sky; copper and aluminium under the sky alone. The JSON scene for
 `soak render` is flat_ground's; this script writes the testrender scene from
 the same patch list. Per patch: mean luminance of its central region and the
-wet/dry ratio, asserted within the budget derived in osl/README.md.
+wet/dry ratio, asserted within the budget derived in osl/README.md. The dielectric
+ground is compared with highlights on: soak render's full preset material (the
+material's own rough interface traced) against the shader's microfacet lobe, within
+the lobe's named terms (lobe_terms)).
 
 usage: render_vs_soak.py SOAK ROOT TMPDIR [--spp N]
 Without testrender/oslc on PATH: SKIPPED (exit 77), never a pass.
