@@ -30,6 +30,11 @@ Asserted (tolerances derived in blender_addon/README.md, "Error"):
     export's base-colour table, the knots' roughness ratio, Specular 0.5
     times the base's remaining specular, summed here over the film's
     bounces) to the dry material: 0.005 of albedo (tables) + coat_dim;
+  the highlight-on view (plane_cases.json "highlight"; highlight_view): the
+    camera at the sun's mirror direction, the whole image against soak render's
+    whole preset material (the material's own rough interface traced), dry and
+    fully wet, within the diffuse terms + body + fresnel + multi + film + noise
+    (highlight_terms); below saturation printed (README, "Highlight view");
 Printed, not asserted: the full table against soak render (2-37 % apart for
 the dielectric presets: its Lambertian base sits under the material's and the
 liquid's interfaces; see the README's error table for what is and is not
