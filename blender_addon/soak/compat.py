@@ -118,6 +118,21 @@ def coat_base_compensation(b, coat_weight, coat_ior, normal):
     return b.math("DIVIDE", 1.0, b.math("SUBTRACT", 1.0, dim))
 
 
+def _f0(n):
+    return ((n - 1.0) / (n + 1.0)) ** 2
+
+
+def specular_for_f0(bsdf, f0, version=None):
+    """The Principled value (3.x Specular / 4.x Specular IOR Level) whose
+    normal-incidence reflectance is f0: 3.x's F0 is 0.08 x Specular
+    (Principled v1); 4.x scales the F0 of the BSDF's IOR by 2 x the level
+    (0.5: no change)."""
+    if scheme(version) == 0:
+        return f0 / 0.08
+    ior = principled_input(bsdf, "ior").default_value
+    return 0.5 * f0 / _f0(ior) if ior != 1.0 else 0.5
+
+
 def exact_lookups_required(version=None):
     """EEVEE Next (4.2-4.4) returns 0 (or 65504) from a Linear image lookup whose
     coordinate does not vary over the screen (zero derivatives: a constant

@@ -292,6 +292,19 @@ def _metal_for_conductor(bsdf, settings):
         met.default_value = 1.0
 
 
+def _preset_specular(gn, bsdf, settings):
+    """The preset's own dry lobe (colour source Preset): the chain's
+    specular weight x the Fresnel reflectance of the preset's index
+    (soak/bsdf.h COATED: the lobe soak render traces), as this Principled's
+    specular value. A link into the group's Specular is left alone."""
+    m = data.material(settings.preset)
+    if m["kind"] == "conductor" or gn.inputs["Specular"].is_linked:
+        return
+    weight = data.table(settings.preset, settings.liquid)["params"][0][4]   # params pixel 1, green
+    f0 = ((m["ior"] - 1.0) / (m["ior"] + 1.0)) ** 2
+    gn.inputs["Specular"].default_value = compat.specular_for_f0(bsdf, weight * f0)
+
+
 def _connect_specular_metal(tree, gn, bsdf, settings):
     """The base's own specular through the group (replaced by what is left of
     it under the liquid), the Metallic amount into the group (rebuilt with a
@@ -312,6 +325,8 @@ def _connect_specular_metal(tree, gn, bsdf, settings):
             for l in list(gn.inputs[name].links):
                 tree.links.remove(l)
             gn.inputs[name].default_value = s.default_value
+    if settings.colour_source == "PRESET":
+        _preset_specular(gn, bsdf, settings)
     tree.links.new(gn.outputs["Specular"], compat.principled_input(bsdf, "specular"))
     tint = compat.principled_input(bsdf, "coat_tint")
     if tint is not None:

@@ -154,10 +154,10 @@ class SoakMaterialSettings(bpy.types.PropertyGroup):
                     "rebuilt in place")
     colour_source: EnumProperty(
         name="Colours",
-        description="Which dry colour and roughness the group wets",
+        description="Which dry colour, roughness and specular the group wets",
         items=(("MATERIAL", "Material's own", "Darken the material's own base colour and roughness "
                 "(textures included) through the preset's wetness function"),
-               ("PRESET", "Preset", "Use the preset's dry colour and roughness")),
+               ("PRESET", "Preset", "Use the preset's dry colour, roughness and specular")),
         default="MATERIAL")
     wetness: FloatProperty(
         name="Wetness", min=0.0, max=1.0, default=1.0, subtype="FACTOR",

@@ -30,6 +30,11 @@ Asserted (tolerances derived in blender_addon/README.md, "Error"):
     export's base-colour table, the knots' roughness ratio, Specular 0.5
     times the base's remaining specular, summed here over the film's
     bounces) to the dry material: 0.005 of albedo (tables) + coat_dim;
+  the highlight-on view (plane_cases.json "highlight"; highlight_view): the
+    camera at the sun's mirror direction, the whole image against soak render's
+    whole preset material (the material's own rough interface traced), dry and
+    fully wet, within the diffuse terms + body + fresnel + multi + film + noise
+    (highlight_terms); below saturation printed (README, "Highlight view");
 Printed, not asserted: the full table against soak render (2-37 % apart for
 the dielectric presets: its Lambertian base sits under the material's and the
 liquid's interfaces; see the README's error table for what is and is not
@@ -67,7 +72,7 @@ def mean_exr(path):
     return [x / (w * h) for x in s]
 
 
-def soak_render(name, material, back_lit=False, sheet_m=0.0):
+def soak_render(name, material, back_lit=False, sheet_m=0.0, camera=None):
     sun = dict(CASES["sun"])
     if back_lit:
         sun["direction"] = [sun["direction"][0], sun["direction"][1], -sun["direction"][2]]
@@ -77,7 +82,7 @@ def soak_render(name, material, back_lit=False, sheet_m=0.0):
     scene = {
         "render": {"width": CASES["render"]["width"], "height": CASES["render"]["height"],
                    "spp": CASES["render"]["soak_spp"], "max_depth": 256},
-        "camera": {"position": [x * k for x in CASES["camera"]["position"]], "look_at": [0, 0, 0],
+        "camera": {"position": [x * k for x in (camera or CASES["camera"]["position"])], "look_at": [0, 0, 0],
                    "up": CASES["camera"]["up"], "fov": CASES["camera"]["fov"]},
         "lights": [{"type": "sun", "direction": sun["direction"], "irradiance": sun["irradiance"]}],
         "materials": {"m": material},
@@ -99,6 +104,14 @@ def setup_scene():
 
 def add_sun(sc, back_lit=False):
     common.add_case_sun(sc, CASES, back_lit)
+
+
+def aim_camera(sc, position):
+    """The scene's camera moved to position, looking at the origin (up +y)."""
+    import mathutils
+    co = sc.camera
+    co.location = position
+    co.rotation_euler = (-mathutils.Vector(position)).to_track_quat("-Z", "Y").to_euler()
 
 
 def blender_render(sc, name):
@@ -314,6 +327,208 @@ def metal_lobe_term(alpha, c, n, width, height, fov, cam_z, sun):
     return abs(model / exact - 1.0)
 
 
+# ---- the highlight view's terms: GGX formulas (a second method), nothing fitted ----------
+
+def _fresnel(cos_i, n):
+    """Unpolarised Fresnel reflectance of a dielectric interface, relative index n > 1."""
+    st2 = (1 - cos_i * cos_i) / (n * n)
+    if st2 >= 1:
+        return 1.0
+    ct = math.sqrt(1 - st2)
+    rs = (cos_i - n * ct) / (cos_i + n * ct)
+    rp = (n * cos_i - ct) / (n * cos_i + ct)
+    return 0.5 * (rs * rs + rp * rp)
+
+
+def _eta_of_f0(f0):
+    r = math.sqrt(min(max(f0, 0.0), 0.99))
+    return (1 + r) / (1 - r)
+
+
+def _lobe_f(wi, wo, alpha, n):
+    """GGX reflection with Fresnel at index n (None: white)."""
+    h = [a + b for a, b in zip(wi, wo)]
+    hn = math.sqrt(sum(x * x for x in h))
+    f = 1.0 if n is None else _fresnel(sum(a * b for a, b in zip(h, wi)) / hn, n)
+    return f * _lobe(wi, wo, alpha)
+
+
+_ALB = {}
+
+
+def _albedo(alpha, n, mu, steps=24):
+    """Directional albedo of the GGX lobe at a view of cosine mu (midpoint rule)."""
+    key = (alpha, n, round(mu, 6))
+    if key not in _ALB:
+        wo = (math.sqrt(max(1 - mu * mu, 0.0)), 0.0, mu)
+        s = 0.0
+        for i in range(steps):
+            t = (i + 0.5) * (math.pi / 2) / steps
+            for j in range(2 * steps):
+                ph = (j + 0.5) * math.pi / steps
+                wi = (math.sin(t) * math.cos(ph), math.sin(t) * math.sin(ph), math.cos(t))
+                s += _lobe_f(wi, wo, alpha, n) * math.cos(t) * math.sin(t)
+        _ALB[key] = s * (math.pi / 2 / steps) * (math.pi / steps)
+    return _ALB[key]
+
+
+def _albedo_mean(alpha, n, k=8):
+    """E-bar = 2 int E(mu) mu dmu (midpoint rule)."""
+    return 2 * sum(_albedo(alpha, n, (i + 0.5) / k) * (i + 0.5) / k for i in range(k)) / k
+
+
+def highlight_pixels(position, n=8):
+    """View directions (towards the camera) at n x n pixel centres of the
+    highlight camera (at position, looking at the origin, the cases' fov)."""
+    px, py, pz = position
+    d = math.sqrt(px * px + py * py + pz * pz)
+    fwd = [-px / d, -py / d, -pz / d]
+    right = [fwd[1] * 1 - fwd[2] * 0, fwd[2] * 0 - fwd[0] * 1, 0.0]   # fwd x (0, 1, 0)... then normalised
+    right = [-fwd[2], 0.0, fwd[0]]
+    rn = math.sqrt(sum(x * x for x in right))
+    right = [x / rn for x in right]
+    up = [fwd[1] * right[2] - fwd[2] * right[1], fwd[2] * right[0] - fwd[0] * right[2],
+          fwd[0] * right[1] - fwd[1] * right[0]]
+    t = math.tan(math.radians(CASES["camera"]["fov"]) / 2)
+    out = []
+    for j in range(n):
+        for i in range(n):
+            a, b = (2 * (i + 0.5) / n - 1) * t, (2 * (j + 0.5) / n - 1) * t
+            r = [f + a * x + b * y for f, x, y in zip(fwd, right, up)]
+            s = -pz / r[2]
+            hit = [px + s * r[0], py + s * r[1], 0.0]
+            v = [p - h for p, h in zip(position, hit)]
+            vn = math.sqrt(sum(x * x for x in v))
+            out.append(tuple(x / vn for x in v))
+    return out
+
+
+def highlight_terms(mat, liq, table, w, views, e_sun):
+    """Radiances (luminance, absolute) of what Cycles' Principled cannot
+    represent of the reference's interface, per the README's "Highlight view":
+      body:    the interface holds back the body's light, a share
+               (1 - area)(1 - (1 - ks E(l))(1 - ks E(v)) / (1 - A ks E-bar))
+               (soak/bsdf.h COATED) of the body's radiance, returned as that
+               share (the caller multiplies by the body); the Principled adds
+               its lobe on top (3.x) or dims for the view only (4.x, its own
+               term);
+      fresnel: the reference's lobe is ks F(n); the Principled's is F(eta')
+               with F0(eta') = ks F0(n) (one Fresnel curve, weight 1);
+      multi:   4.x's default Multiscatter GGX adds the lobe's multiple
+               scattering, which the reference's single-scatter GGX omits (0
+               in 3.x: GGX); sized by Kulla and Conty's energy-compensation
+               lobe (2017, "Revisiting physically based shading at
+               Imageworks": f_ms = (1 - E(l))(1 - E(v)) / (pi (1 - E-avg)),
+               E the white lobe's albedo, times the Fresnel factor
+               F_avg^2 E-avg / (1 - F_avg (1 - E-avg)));
+      film:    the covered share's lobe: the Principled draws it in air with
+               weight ks R_under (the group's specular factor), the reference
+               under the flat film (refracted in and out, the index n / n_liquid)."""
+    k = table["knots"]
+    n, n_l = mat["ior"], liq["ior"]
+    ks = interp1(k["wetness"], k["specular_weight"], w)
+    c = interp1(k["wetness"], k["film_coverage"], w)
+    pore = interp1(k["wetness"], k["water_specular_weight"], w)
+    alpha = interp1(k["wetness"], k["ggx_alpha"], w)
+    area = c + (1 - c) * pore
+    a_sub = lum([interp1(k["wetness"], [v[j] for v in k["albedo_subsurface"]], w) for j in range(3)])
+    sd = CASES["sun"]["direction"]
+    sn = math.sqrt(sum(x * x for x in sd))
+    wi = tuple(x / sn for x in sd)
+    vc = views[len(views) // 2 + int(math.sqrt(len(views))) // 2]
+    e_l, e_v, e_bar = _albedo(alpha, n, wi[2]), _albedo(alpha, n, vc[2]), _albedo_mean(alpha, n)
+    body = (1 - area) * (1 - (1 - ks * e_l) * (1 - ks * e_v) / (1 - a_sub * ks * e_bar))
+    eta = _eta_of_f0(ks * ((n - 1) / (n + 1)) ** 2)
+    weight = ks * (1 - c)
+    fres = sum(abs(ks * _lobe_f(wi, v, alpha, n) - _lobe_f(wi, v, alpha, eta)) for v in views) / len(views)
+    fres *= (1 - c) * e_sun * wi[2]
+    multi = 0.0
+    if bpy.app.version >= (4, 0, 0):
+        f_avg = 2 * sum(_fresnel((i + 0.5) / 32, n) * (i + 0.5) / 32 for i in range(32)) / 32
+        ew_l, ew_bar = _albedo(alpha, None, wi[2]), _albedo_mean(alpha, None)
+        f_ms = f_avg * f_avg * ew_bar / (1 - f_avg * (1 - ew_bar))
+        # E(v) at the central view (the image spans +-10 degrees of it; E varies slowly)
+        multi = weight * f_ms * (1 - ew_l) * (1 - _albedo(alpha, None, vc[2])) / (math.pi * (1 - ew_bar)) \
+            * e_sun * wi[2]
+    film = 0.0
+    if c > 0:
+        under = base_specular_factor(n, n_l, liq["sigma_a_per_m"], mat["film_thickness_m"], 1.0) * ((n - 1) / (n + 1)) ** 2
+        wi_in, ti = _refract_in(wi, n_l)
+        t0 = 1 - ((n_l - 1) / (n_l + 1)) ** 2
+        model = exact = 0.0
+        for v in views:
+            wo_in, to = _refract_in(v, n_l)
+            model += _lobe(wi, v, alpha)
+            exact += ti * to / (t0 * t0) * _lobe(wi_in, wo_in, alpha) / (n_l * n_l)
+        film = c * ks * under * abs(model - exact) / len(views) * e_sun * wi[2]
+    return {"body": body, "fresnel": fres, "multi": multi, "film": film}
+
+
+def highlight_view(ref, liquids, coat_dim, failures):
+    """The highlight-on view (plane_cases.json "highlight"): the camera at the
+    sun's mirror direction, the whole Cycles image L against soak render's
+    whole preset material F (the material's own rough interface traced:
+    soak/bsdf.h COATED). Also rendered: Cycles with a black base (S: its
+    specular lobe; the coat's mirror image of the delta sun is in neither
+    renderer), and soak render's body alone B ("interface": 0), printed to
+    split the difference into highlight and body. Asserted at the "asserted"
+    wetness levels: |L - F| <= (the diffuse part's terms, as in the head-on
+    view) x (L - S) + body x B + fresnel + multi + film + SOAK_NOISE x F
+    (highlight_terms). The other levels are printed: below saturation the
+    reference hides the grains' lobe under the pore water, which the chain
+    keeps in air (README, "Highlight view")."""
+    hl = CASES["highlight"]
+    pos = hl["camera_position"]
+    views = highlight_pixels(pos)
+    d = CASES["sun"]["direction"]
+    theta_sun = math.degrees(math.acos(d[2] / math.sqrt(sum(x * x for x in d))))
+    e_sun = CASES["sun"]["irradiance"]
+    out = []
+    for p in hl["presets"]:
+        t = ref[p]["liquids"]["water"]
+        for w in hl["wetness"]:
+            sc, plane, mat = setup_scene()
+            add_sun(sc)
+            aim_camera(sc, pos)
+            bsdf = mat.node_tree.nodes["Principled BSDF"]
+            mat.soak.preset, mat.soak.liquid, mat.soak.colour_source = p, "water", "PRESET"
+            mat.soak.wetness = w
+            bpy.context.view_layer.objects.active = plane
+            assert bpy.ops.soak.make_wet() == {"FINISHED"}
+            lb = lum(blender_render(sc, f"hl_{p}_{w}"))
+            for l in list(bsdf.inputs["Base Color"].links):
+                mat.node_tree.links.remove(l)
+            bsdf.inputs["Base Color"].default_value = (0, 0, 0, 1)
+            sb = lum(blender_render(sc, f"hl_{p}_{w}_black"))
+            layer = furnace(sc, f"hl_{p}_{w}") if bpy.app.version >= (4, 0, 0) else 0.0
+            m = {"type": "preset", "name": p, "wetness": w, "liquid": "water", "unit_mm": CASES["soak_unit_mm"]}
+            full = lum(soak_render(f"hl_{p}_{w}", m, camera=pos))
+            body = lum(soak_render(f"hl_{p}_{w}_body", dict(m, interface=0), camera=pos))
+            terms = highlight_terms(ref[p], liquids["water"], t, w, views, e_sun)
+            diffuse = coat_dim + layer + 0.005 / lum(knot(t, "albedo", w)) + factor_table_term(t, w) + \
+                light_angle_term(t, w, theta_sun, SUN_SHARE)
+            named = {"diffuse": diffuse * (lb - sb), "body": terms["body"] * body, "fresnel": terms["fresnel"],
+                     "multi": terms["multi"], "film": terms["film"], "noise": SOAK_NOISE * full}
+            tol = sum(named.values()) / full
+            rel = lb / full - 1.0
+            asserted = w in hl["asserted"]
+            if asserted and not abs(rel) <= tol:
+                failures.append(f"highlight view {p} w={w}: Cycles {lb:.5f} vs soak render {full:.5f} "
+                                f"({rel:+.2%}, tol {tol:.2%})")
+            k = t["knots"]
+            pore = (1 - interp1(k["wetness"], k["film_coverage"], w)) * interp1(k["wetness"], k["water_specular_weight"], w)
+            out.append((p, w, full, body, lb, sb, rel, tol, {n: v / full for n, v in named.items()}, pore, asserted))
+    print(f"\nhighlight view (camera at the sun's mirror direction), Blender {bpy.app.version_string}:")
+    print("| preset | wetness | soak render | its body alone | its highlight | Cycles | Cycles specular | "
+          "difference | tolerance | diffuse | body | fresnel | multi | film | noise | pore water | |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for p, w, full, body, lb, sb, rel, tol, nm, pore, asserted in out:
+        print(f"| {p} | {w} | {full:.4f} | {body:.4f} | {full - body:+.4f} | {lb:.4f} | {sb:.4f} | {rel:+.2%} | "
+              f"{tol:.2%} | " + " | ".join(f"{nm[n]:.2%}" for n in ("diffuse", "body", "fresnel", "multi", "film", "noise"))
+              + f" | {pore:.3f} | {'asserted' if asserted else 'printed'} |")
+    return out
+
+
 def main():
     common.install_addon(ZIP)
     ref_path = os.path.join(TMP, "export.json")
@@ -326,6 +541,12 @@ def main():
     e_cos = CASES["sun"]["irradiance"] * d[2] / math.sqrt(sum(x * x for x in d)) / math.pi
     rows, failures, vs_soak = [], [], []
     coat_dim = coat_dimming()
+    if os.environ.get("SOAK_RENDER_COMPARE_ONLY") == "highlight":  # development: the highlight view alone
+        highlight_view(ref, {l["name"]: l for l in json.load(open(ref_path))["liquids"]}, coat_dim, failures)
+        if failures:
+            common.fail("; ".join(failures))
+        print("PASS")
+        return
     theta_sun = math.degrees(math.acos(d[2] / math.sqrt(sum(x * x for x in d))))
     cosines = view_cosines()
 

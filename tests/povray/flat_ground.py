@@ -292,9 +292,10 @@ def ggx_brdf(n_mat, alpha, l, v):
     return fresnel(float(np.dot(h, l)), n_mat) * d * g1(l) * g1(v) / (4 * l[2] * v[2])
 
 
-def ggx_albedo(n_mat, alpha, v, steps=64):
+def ggx_albedo(n_mat, alpha, v, steps=64, white=False):
     """Directional albedo of that lobe at the view v: the integral of f cos over the
-    hemisphere (midpoint rule in theta, phi; ggx_brdf's formulas, vectorised)."""
+    hemisphere (midpoint rule in theta, phi; ggx_brdf's formulas, vectorised); white:
+    without the Fresnel factor."""
     th = (np.arange(steps) + 0.5) * (np.pi / 2) / steps
     ph = (np.arange(2 * steps) + 0.5) * np.pi / steps
     T, P = np.meshgrid(th, ph, indexing="ij")
@@ -311,7 +312,7 @@ def ggx_albedo(n_mat, alpha, v, steps=64):
     cos_t = np.sqrt(1 - sin_t * sin_t)
     rs = (ci - n_mat * cos_t) / (ci + n_mat * cos_t)
     rp = (n_mat * ci - cos_t) / (n_mat * ci + cos_t)
-    f = 0.5 * (rs * rs + rp * rp) * d * g1(l[..., 2]) * g1(v[2]) / (4 * l[..., 2] * v[2])
+    f = (1.0 if white else 0.5 * (rs * rs + rp * rp)) * d * g1(l[..., 2]) * g1(v[2]) / (4 * l[..., 2] * v[2])
     return float(np.sum(f * np.cos(T) * np.sin(T)) * (np.pi / 2 / steps) * (np.pi / steps))
 
 

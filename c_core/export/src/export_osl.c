@@ -45,7 +45,7 @@ static int fl_rgb(soak_float_list *l, soak_rgb c) { return fl_push(l, c.r) && fl
 void soak_osl_tables_free(soak_osl_tables *t)
 {
     if (!t) return;
-    soak_float_list *f[] = {&t->kw, &t->ka, &t->kc, &t->kr, &t->kt, &t->kv, &t->ba, &t->bw, &t->bg};
+    soak_float_list *f[] = {&t->kw, &t->ka, &t->kc, &t->kr, &t->kt, &t->kv, &t->ks, &t->ior, &t->ba, &t->bw, &t->bg};
     soak_int_list *i[] = {&t->preset, &t->kind, &t->k_off, &t->k_n, &t->ba_off, &t->ba_n, &t->bw_off, &t->bw_n, &t->bg_off};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k) free(f[k]->v);
     for (size_t k = 0; k < sizeof i / sizeof i[0]; ++k) free(i[k]->v);
@@ -78,7 +78,8 @@ static soak_status add_knots(soak_osl_tables *t, const soak_preset *p, const soa
         soak_rgb log_sheet = {log(fmax(sheet.r, SHEET_T_MIN)), log(fmax(sheet.g, SHEET_T_MIN)),
                               log(fmax(sheet.b, SHEET_T_MIN))};
         if (!fl_push(&t->kw, knots[i]) || !fl_rgb(&t->ka, w.albedo) || !fl_push(&t->kc, interface) ||
-            !fl_push(&t->kr, sqrt(w.ggx_alpha)) || !fl_rgb(&t->kt, log_sheet))
+            !fl_push(&t->kr, sqrt(w.ggx_alpha)) || !fl_rgb(&t->kt, log_sheet) ||
+            !fl_push(&t->ks, p->kind == SOAK_KIND_CONDUCTOR || p->kind == SOAK_KIND_THIN_SHEET ? 0.0 : w.specular_weight))
             return SOAK_ERR_NOMEM;
     }
     return SOAK_OK;
@@ -127,7 +128,8 @@ soak_status soak_osl_tables_build(const soak_preset_db *db, int sheets_only, soa
         if (sheets_only && p->kind != SOAK_KIND_THIN_SHEET) continue;
         int kind = p->kind == SOAK_KIND_CONDUCTOR ? 1 : (p->kind == SOAK_KIND_THIN_SHEET ? 2 : 0);
         t->n_presets++;
-        if (!il_push(&t->kind, kind) || !il_push(&t->preset, i)) st = SOAK_ERR_NOMEM;
+        if (!il_push(&t->kind, kind) || !il_push(&t->preset, i) || !fl_push(&t->ior, kind == 1 ? 0.0 : p->ior))
+            st = SOAK_ERR_NOMEM;
         for (int j = 0; st == SOAK_OK && j < t->n_liquids; ++j) {
             const soak_liquid *l = soak_presets_liquid_at(db, j);
             st = add_knots(t, p, l);
@@ -247,6 +249,8 @@ static void put_tables(FILE *out, const soak_preset_db *db, const soak_osl_table
     put_floats(out, "KR", &t->kr);
     put_floats(out, "KT", &t->kt);
     put_floats(out, "KV", &t->kv);
+    put_floats(out, "KS", &t->ks);
+    put_floats(out, "MAT_IOR", &t->ior);
     put_ints(out, "K_OFF", &t->k_off);
     put_ints(out, "K_N", &t->k_n);
     put_floats(out, "BA", &t->ba);
@@ -310,8 +314,18 @@ static void put_closure(FILE *out, osl_variant v)
     fputs("    } else {\n"
           "        // the diffuse albedo under the liquid interface (porous darkening and the\n"
           "        // interface's total internal reflection are in WetColor), the interface's\n"
-          "        // Fresnel mirror over its area\n"
-          "        BSDF = WetColor * View * diffuse(Normal) + mirror * reflection(Normal);\n"
+          "        // Fresnel mirror over its area, and the material's own rough interface where\n"
+          "        // no liquid covers it (soak/bsdf.h COATED: weight ks, GGX alpha, Fresnel of\n"
+          "        // its index; the closure has none of its own, taken at the view)\n"
+          "        float lobe = soak_interp(KW, K_OFF[k], K_N[k], L, KS, K_OFF[k], 1) * (1 - Coverage)\n"
+          "                     * soak_fresnel(cos_view, MAT_IOR[pi]);\n"
+          "        BSDF = WetColor * View * diffuse(Normal) + mirror * reflection(Normal);\n",
+          out);
+    if (v == OSL_SURFACE)
+        fputs("        if (lobe > 0) BSDF += lobe * microfacet(\"ggx\", Normal, alpha, 0.0, 0);\n", out);
+    else
+        fputs("        if (lobe > 0) BSDF += lobe * microfacet_ggx(Normal, alpha);\n", out);
+    fputs(
           "        if (KIND[pi] == 2) {\n"
           "            color T = 0;\n"
           "            for (int c = 0; c < 3; c += 1) T[c] = soak_interp_log(KW, K_OFF[k], K_N[k], L, KT, 3 * K_OFF[k] + c, 3);\n"

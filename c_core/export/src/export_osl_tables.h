@@ -22,8 +22,11 @@ typedef struct soak_osl_tables {
     soak_int_list kind;      /* per preset: 0 dielectric, 1 conductor, 2 thin sheet */
     /* knot tables: wetness, albedo (rgb, stride 3), interface coverage
      * (film + pore water), roughness sqrt(alpha), ln of the sheet transmittance (rgb, floored at 1e-6),
-     * view factor (SOAK_EXPORT_VIEW_N rgb per knot, at 3 SOAK_EXPORT_VIEW_N k_off) */
-    soak_float_list kw, ka, kc, kr, kt, kv;
+     * view factor (SOAK_EXPORT_VIEW_N rgb per knot, at 3 SOAK_EXPORT_VIEW_N k_off), the
+     * material's own rough lobe's weight (wetness.h step 6's specular weight; 0 for
+     * conductors and sheets) */
+    soak_float_list kw, ka, kc, kr, kt, kv, ks;
+    soak_float_list ior;     /* per preset: the material's index (its lobe's Fresnel) */
     soak_int_list k_off, k_n;
     /* base-colour tables: nodes and values [channel][wetness][albedo] */
     soak_float_list ba, bw, bg;
