@@ -479,13 +479,37 @@ static void preset_base(const preset_chain *pc, double m_per_unit, soak_material
     }
 }
 
+/* A preset's "film_over": the liquid's film (coverage, thickness in scene
+ * units) laid over the chain's state at the material's wetness instead of
+ * the chain's own film: water over a rock whose inside is drier ([JLD99]
+ * sec. 4.2, Fig. 6c). The film keeps the liquid's index and absorption;
+ * without pore water (a film over the surface, not water in its pores). */
+static soak_status parse_film_over(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
+{
+    const cJSON *f = cJSON_GetObjectItemCaseSensitive(j, "film_over");
+    if (!f) return SOAK_OK;
+    static const char *const keys[] = {"coverage", "thickness", NULL};
+    char fp[320];
+    sj_path(fp, sizeof fp, path, "film_over");
+    double coverage = 1, thickness = 0;
+    soak_status st = sj_keys(c, f, fp, keys);
+    if (st == SOAK_OK) st = sj_num(c, f, "coverage", fp, 0, 1, 0, 1, &coverage);
+    if (st == SOAK_OK) st = sj_num_gt(c, f, "thickness", fp, 0, 1e3, 1, 0, &thickness);
+    if (st != SOAK_OK) return st;
+    if (m->base == SOAK_BASE_GGX) return sj_fail(c, SOAK_ERR_ARG, fp, "not for a metal preset (its film is the chain's)");
+    m->film_coverage = coverage;
+    m->film_pore_share = 0.0;
+    m->film_thickness = thickness;
+    return SOAK_OK;
+}
+
 /* Preset + wetness through soak/wetness.h (steady state). The chain is in
  * SI (m, 1/m); "unit_mm" is the scene length unit in mm (the scene file's
  * documented key), converted here once to metres per unit. */
 static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
 {
     static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", "base_colour",
-                                       "interface", NULL};
+                                       "interface", "film_over", NULL};
     preset_request r;
     double interface = 1;
     soak_status st = sj_keys(c, j, path, keys);
@@ -515,9 +539,12 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     /* "interface": 0 leaves the material's own specular interface out: what a
      * front end draws with its highlights off (tests/povray/flat_ground.py) */
     if (interface < 0.5) m->coat_weight = 0.0;
-    if (!r.model) return SOAK_OK;
+    st = parse_film_over(c, j, path, m);
+    if (st != SOAK_OK || !r.model) return st;
     char mp[320];
     sj_path(mp, sizeof mp, path, "model");
+    if (cJSON_GetObjectItemCaseSensitive(j, "film_over"))
+        return sj_fail(c, SOAK_ERR_ARG, mp, "a model view renders the chain's own film: leave out \"film_over\"");
     return use_model(c, mp, r.model, m);
 }
 
