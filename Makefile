@@ -76,6 +76,7 @@ gallery: build addon $(if $(filter 5.2,$(GALLERY_BLENDER)),blender52) $(if $(fil
 	  bash tests/blender/run_blender.sh scenes/blender/render_all.py --addon $(CURDIR)/$(BUILD)/soak_blender.zip \
 	  --out $(CURDIR)/blender_addon/images --prefix gallery_ --size 960x540 --samples $(GALLERY_SAMPLES) --max-kb 400 \
 	  --soak $(CURDIR)/$(BUILD)/bin/soak
+	@/usr/bin/python3 scripts/png_palette.py --max-kb 390 blender_addon/images/gallery_*.png || [ $$? = 77 ]
 
 # The POV-Ray gallery of povray/README.md: the seven situations of the physics
 # sources (scenes/povray/gallery/), 960x540, beside soak render where it can render

@@ -384,6 +384,26 @@ def _paper_sheet(back_lit):
     return ob
 
 
+def _window(y):
+    """The bright window the sun shines through, seen beside the sheet: a glowing
+    pane at distance y behind it (seen by the camera only) and two dark glazing bars."""
+    pane = _plane("Window", (2.0, 1.2), loc=(0, y, 0.2), rot=(math.radians(90), 0, 0))
+    t = Tree("Window")
+    em = t.node("ShaderNodeEmission", Strength=2.5)
+    em.inputs["Color"].default_value = (1.0, 0.9, 0.78, 1.0)
+    t.link(em.outputs[0], t.mat.node_tree.nodes["Material Output"].inputs["Surface"])
+    _assign(pane, t.mat)
+    # a backdrop only: the sun is the window's light (a glowing pane would light the
+    # sheet from behind as strongly as the sun and wash out the blot)
+    pane.visible_shadow = pane.visible_diffuse = pane.visible_glossy = pane.visible_transmission = False
+    pane.visible_volume_scatter = False
+    bar = Tree("Glazing bar")
+    bar.set(Roughness=0.5)
+    bar.bsdf.inputs["Base Color"].default_value = (0.02, 0.02, 0.02, 1.0)
+    for x in (-0.45, 0.32):
+        _assign(_box("Glazing bar", (0.03, 0.02, 1.2), (x, y - 0.03, 0.2)), bar.mat)
+
+
 def build_wet_paper(back_lit):
     sc = _reset()
     sheet = _paper_sheet(back_lit)
@@ -410,6 +430,7 @@ def build_wet_paper(back_lit):
         _sky(sc, zenith=(0.004, 0.004, 0.005), horizon=(0.006, 0.006, 0.006), ground=(0.003, 0.003, 0.003),
              strength=1.0)
         _sun(sc, 8, 0, strength=12.0, angle=3.0, colour=(1.0, 0.78, 0.55))
+        _window(0.6)
         _camera(sc, (0.08, -0.62, 0.2), (0.0, 0.0, 0.16), lens=45)
     return [("wet_paper_" + ("back" if back_lit else "front"), [1])]
 

@@ -1,9 +1,8 @@
 """Meshes and wetness maps for the soak render column of docs/gallery.md, written
 into OUTDIR (scenes/gallery/render.sh calls this; nothing here is checked in):
-  sheet_dry.obj   a sheet of paper 210 x 297 x 0.1 mm (mm) less its blot, closed
-  sheet_wet.obj   the blot: the same sheet's 1 mm cells where the blot's map is over
-                  1/2, closed (the tracer's paper takes its wetness from the material,
-                  so the wet and dry parts are two objects that share their side walls)
+  sheet.obj       a sheet of paper 210 x 297 x 0.1 mm (mm), closed, UVs over its faces
+  paper_blot.pgm  its wet blot (u, v over the sheet), 16 bit: the tracer's thin sheet
+                  takes its medium and its film from this map (dry where it is 0)
   wall.obj        a brick wall 1.6 x 0.9 m, bricks 4 mm proud of the mortar, UVs over the wall
   mortar.obj      the mortar behind them, same UVs
   pot.obj         a flowerpot 0.16 m high (lathe, closed: outer wall, rim, inner wall, floor)
@@ -94,41 +93,6 @@ def wobble(u, v, seed):
     return sum(math.sin(k * a + seed * k * 1.7) / k for k in (3, 5, 7)) / 3
 
 
-def sheet_part(path, wet, n_u=210, n_v=297, t=0.1):
-    """The cells (1 mm) of the sheet whose blot value is (wet) over or (not wet) under
-    1/2: their tops and bottoms, and side walls where the part ends (closed)."""
-    inside = [[(blot((i + 0.5) / n_u, (j + 0.5) / n_v) > 0.5) == wet for j in range(n_v)] for i in range(n_u)]
-    ids, verts, faces = {}, [], []
-
-    def vid(i, j, k):
-        if (i, j, k) not in ids:
-            ids[(i, j, k)] = len(verts)
-            verts.append((i * 210.0 / n_u, j * 297.0 / n_v, k * t))
-        return ids[(i, j, k)]
-
-    def quad(a, b, c, d):
-        faces.append([(a, 0), (b, 0), (c, 0)])
-        faces.append([(a, 0), (c, 0), (d, 0)])
-
-    def cell(i, j):
-        return 0 <= i < n_u and 0 <= j < n_v and inside[i][j]
-    for i in range(n_u):
-        for j in range(n_v):
-            if not inside[i][j]:
-                continue
-            quad(vid(i, j, 1), vid(i + 1, j, 1), vid(i + 1, j + 1, 1), vid(i, j + 1, 1))   # top, +z
-            quad(vid(i, j, 0), vid(i, j + 1, 0), vid(i + 1, j + 1, 0), vid(i + 1, j, 0))   # bottom, -z
-            if not cell(i - 1, j):
-                quad(vid(i, j, 0), vid(i, j, 1), vid(i, j + 1, 1), vid(i, j + 1, 0))
-            if not cell(i + 1, j):
-                quad(vid(i + 1, j, 0), vid(i + 1, j + 1, 0), vid(i + 1, j + 1, 1), vid(i + 1, j, 1))
-            if not cell(i, j - 1):
-                quad(vid(i, j, 0), vid(i + 1, j, 0), vid(i + 1, j, 1), vid(i, j, 1))
-            if not cell(i, j + 1):
-                quad(vid(i, j + 1, 0), vid(i, j + 1, 1), vid(i + 1, j + 1, 1), vid(i + 1, j + 1, 0))
-    write_obj(path, verts, [(0.5, 0.5)], faces)
-
-
 def blot(u, v):
     """The blot of the paper: a round wet spot 0.1 of the sheet's width across at
     (0.55, 0.55), a 0.02 soft edge, with a wobbly rim."""
@@ -150,8 +114,10 @@ def spill(u, v):
 
 def main(out):
     os.makedirs(out, exist_ok=True)
-    sheet_part(os.path.join(out, "sheet_dry.obj"), False)
-    sheet_part(os.path.join(out, "sheet_wet.obj"), True)
+    v, t, f = [], [], []
+    box_faces(v, t, f, (0, 0, 0), (210, 297, 0.1), lambda x, y, z: (x / 210, y / 297))
+    write_obj(os.path.join(out, "sheet.obj"), v, t, f)
+    write_pgm(os.path.join(out, "paper_blot.pgm"), 420, 594, blot)
     v, t, f = [], [], []
     W, H = 1.6, 0.9
     for j in range(12):

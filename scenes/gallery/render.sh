@@ -20,7 +20,7 @@ mkdir -p "$OUT"
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 $PY "$SCN/meshes.py" "$WORK"
-for m in spill; do oiiotool "$WORK/$m.pgm" -d uint16 -o "$WORK/$m.png"; done
+for m in spill paper_blot; do oiiotool "$WORK/$m.pgm" -d uint16 -o "$WORK/$m.png"; done
 cp "$SCN"/*.json "$WORK/"
 
 # the scene's samples times SPP_SCALE, and its size divided by GALLERY_DIV (a quick preview: 4)

@@ -729,12 +729,24 @@ def main():
         dark_rows.append((w, l_dry, l_wet, l_wet / l_dry, l_ref / l_dry, a_wet / a_dry, factor, rel, tol))
     ts = CASES["thin_sheet"]
     t = ref[ts["preset"]]["liquids"]["water"]
+    back = {}
     for w in ts["wetness"]:
         lb, sb, ls = case(f"{ts['preset']}_back_{w}", ts["preset"], w, back_lit=True)
+        back[w] = lb
         tr = knot(t, "sheet_transmittance", w)
         want = lum(tr) * e_cos
         rel = check(f"{ts['preset']} back-lit w={w}", lum(lb), want, 0.01 + 0.005 / lum(tr))
         rows.append((ts["preset"] + " back-lit", w, lum(lb), want, rel, lum(ls)))
+        # issue 39: white light through office paper is not blue
+        rb = lb[0] / max(lb[2], 1e-9)
+        print(f"{ts['preset']} back-lit w={w}: red/blue {rb:.3f} (white sun)")
+        if not 0.75 < rb < 1.6:   # within 25 % of neutral (issue 39: 0.05); the preset is slightly cool
+            failures.append(f"{ts['preset']} back-lit w={w}: red/blue {rb:.3f} outside [0.75, 1.6] (blue paper)")
+    w_dry, w_wet = min(back), max(back)
+    ratio = lum(back[w_wet]) / max(lum(back[w_dry]), 1e-9)
+    print(f"{ts['preset']} back-lit wet/dry (w {w_wet} / {w_dry}): {ratio:.3f}")
+    if not ratio > 1.0:   # [JLD99] sec. 4.1: the wet spot is brighter lit from behind
+        failures.append(f"{ts['preset']} back-lit wet/dry {ratio:.3f}: not brighter wet")
     print("\n| preset | wetness | Cycles | reference | Cycles vs reference | soak render | Cycles / soak render |")
     print("|---|---|---|---|---|---|---|")
     for p, w, lb, want, rel, ls in rows:

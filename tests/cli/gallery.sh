@@ -20,6 +20,8 @@ for img in $images; do
   if [ ! -f "$f" ]; then bad "$img: referenced by docs/gallery.md, missing"; continue; fi
   size=$(png_size "$f")
   [ "$size" = "960 540" ] && ok "$img: 960x540" || bad "$img: $size, want 960 540"
+  bytes=$(stat -c %s "$f")   # every column's pictures (scripts/png_palette.py fits the Blender ones)
+  [ "$bytes" -lt 400000 ] && ok "$img: $bytes bytes < 400 KB" || bad "$img: $bytes bytes, over 400 KB"
 done
 [ "$n" -ge 24 ] && ok "$n pictures referenced (8 rows of 3)" || bad "only $n pictures referenced, want 24"
 for s in paper_front paper_back beach_rock cognac_table bricks_drying bas_relief_rain flowerpot_porosity film_copper film_thickness; do
@@ -37,7 +39,8 @@ if ! command -v oiiotool >/dev/null; then
 else
   W=$SOAK_TMP/scenes
   rm -rf "$W"; mkdir -p "$W"
-  $PY "$SOAK_ROOT/scenes/gallery/meshes.py" "$W" && oiiotool "$W/spill.pgm" -d uint16 -o "$W/spill.png"
+  $PY "$SOAK_ROOT/scenes/gallery/meshes.py" "$W" && oiiotool "$W/spill.pgm" -d uint16 -o "$W/spill.png" \
+    && oiiotool "$W/paper_blot.pgm" -d uint16 -o "$W/paper_blot.png"
   $PY "$SOAK_ROOT/scenes/povray/gallery/relief_mesh.py" "$W" 24 >/dev/null
   for m in relief_wet brick_wet; do oiiotool --pattern constant:color=0.5,0.5,0.5 16x8 3 -d uint16 -o "$W/$m.png"; done
   cp "$SOAK_ROOT"/scenes/gallery/*.json "$W/"

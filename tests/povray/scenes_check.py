@@ -1,6 +1,8 @@
 """What the seed scenes must show (rendered small by povray/render_scenes.sh):
 wet paper darker than dry when lit from the front, brighter from behind
-([JLD99] sec. 4.1); the porosity sweep's wet pots darker as porosity grows;
+([JLD99] sec. 4.1), and white light through it not blue (red/blue within 25 %
+of neutral, 0.75-1.6: the issue-39 sheet was 0.05, and the preset paper is
+itself slightly cool); the porosity sweep's wet pots darker as porosity grows;
 the drying bricks lighter frame by frame; the gauze brighter from behind when
 wet (media, forward scattering) and the coffee spill of its df3 volume visible;
 the marble fins (subsurface) glow with the light crossing them from behind;
@@ -43,6 +45,10 @@ def main():
         dry = lum(img[:h // 8, :w // 8])
         check(f"{name}: wet spot {spot:.4f} vs dry {dry:.4f} ({'darker' if sign < 0 else 'brighter'})",
               (spot - dry) * sign > 0)
+        if sign > 0:   # white light through office paper not blue: within 25 % of neutral (issue 39: 0.05)
+            for part, a in (("wet spot", img[h * 2 // 5:h * 3 // 5, w * 2 // 5:w * 3 // 5]), ("dry", img[:h // 8, :w // 8])):
+                rb = float(a[..., 0].mean()) / max(float(a[..., 2].mean()), 1e-9)
+                check(f"{name}: {part} red/blue {rb:.3f} in [0.75, 1.6] (white light, not blue)", 0.75 < rb < 1.6)
     frames = [lum(read_image(os.path.join(tmp, f"bricks_{k}.exr"))) for k in range(4)]
     check(f"bricks dry over time: {[round(f, 4) for f in frames]} increasing",
           all(b > a for a, b in zip(frames, frames[1:])))

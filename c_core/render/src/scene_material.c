@@ -364,6 +364,7 @@ typedef struct preset_request {
 /* What the wetness chain made of the preset, kept past the preset file's lifetime. */
 typedef struct preset_chain {
     soak_wet_params w;
+    soak_wet_params w_dry; /* the same preset at wetness 0 (thin sheets: the dry medium) */
     soak_material_kind kind;
     double ior;
     soak_rgb n, k;
@@ -389,10 +390,14 @@ static soak_status eval_preset(scene_ctx *c, const char *path, const preset_requ
         st = sj_fail(c, SOAK_ERR_NOT_FOUND, np, "no liquid named '%s'", liquid);
     } else {
         soak_wet_input in = soak_wet_input_steady(p, r->wetness);
+        soak_wet_input dry = soak_wet_input_steady(p, 0.0);
         soak_preset own = *p;
         if (r->has_base) own.albedo = r->base; /* the model view's dry albedo */
         st = r->has_base ? soak_wet_params_for_base(p, liq, &in, r->base, &out->w)
                          : soak_wetness_eval(p, liq, &in, &out->w);
+        if (st == SOAK_OK)
+            st = r->has_base ? soak_wet_params_for_base(p, liq, &dry, r->base, &out->w_dry)
+                             : soak_wetness_eval(p, liq, &dry, &out->w_dry);
         out->kind = p->kind;
         out->ior = p->ior;
         out->n = p->ior_n;
@@ -421,6 +426,16 @@ static void preset_film(const soak_wet_params *w, double m_per_unit, soak_materi
     m->film_pore_share = m->film_coverage > 0 ? 1.0 - fmin(w->film_coverage / m->film_coverage, 1.0) : 0.0;
     m->film_thickness = w->film_coverage > 0 ? soak_units_from_m(w->film_thickness_m, m_per_unit) : 0.0;
     m->film_absorption = soak_rgb_per_unit_from_per_m(w->film_absorption_per_m, m_per_unit);
+}
+
+/* A thin sheet's traced medium from the chain's coefficients (SI) in scene units. */
+static void sheet_medium(const soak_wet_params *w, double m_per_unit, soak_scene_medium *med)
+{
+    med->sigma_s = soak_rgb_per_unit_from_per_m(w->sigma_s_per_m, m_per_unit);
+    med->sigma_a = soak_rgb_per_unit_from_per_m(w->sigma_a_per_m, m_per_unit);
+    med->phase = w->phase;
+    med->volume = NULL;
+    medium_majorant(med);
 }
 
 static void preset_base(const preset_chain *pc, double m_per_unit, soak_material *m)
@@ -452,12 +467,41 @@ static void preset_base(const preset_chain *pc, double m_per_unit, soak_material
          * sheets render black), so the sheet stays the slab it was; its
          * front-lit albedo is darker than the chain's (scenes/README.md). */
         m->base = SOAK_BASE_MEDIUM;
-        m->medium.sigma_s = soak_rgb_per_unit_from_per_m(w->sigma_s_per_m, m_per_unit);
-        m->medium.sigma_a = soak_rgb_per_unit_from_per_m(w->sigma_a_per_m, m_per_unit);
-        m->medium.phase = w->phase;
         m->medium.ior = pc->ior;
-        medium_majorant(&m->medium);
+        sheet_medium(w, m_per_unit, &m->medium);
+        /* Where the object's wetness (a map, a plane) says dry, a path enters
+         * the sheet's dry medium: the walk picks the wet one with probability
+         * the object's wetness (render_medium.c), so a wet spot of a map
+         * transmits as the preset at the material's wetness and the rest as
+         * the dry preset; the film follows the same wetness. */
+        m->dry_medium = m->medium;
+        sheet_medium(&pc->w_dry, m_per_unit, &m->dry_medium);
+        m->has_dry = 1;
     }
+}
+
+/* A preset's "film_over": the liquid's film (coverage, thickness in scene
+ * units) laid over the chain's state at the material's wetness instead of
+ * the chain's own film: water over a rock whose inside is drier ([JLD99]
+ * sec. 4.2, Fig. 6c). The film keeps the liquid's index and absorption;
+ * without pore water (a film over the surface, not water in its pores). */
+static soak_status parse_film_over(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
+{
+    const cJSON *f = cJSON_GetObjectItemCaseSensitive(j, "film_over");
+    if (!f) return SOAK_OK;
+    static const char *const keys[] = {"coverage", "thickness", NULL};
+    char fp[320];
+    sj_path(fp, sizeof fp, path, "film_over");
+    double coverage = 1, thickness = 0;
+    soak_status st = sj_keys(c, f, fp, keys);
+    if (st == SOAK_OK) st = sj_num(c, f, "coverage", fp, 0, 1, 0, 1, &coverage);
+    if (st == SOAK_OK) st = sj_num_gt(c, f, "thickness", fp, 0, 1e3, 1, 0, &thickness);
+    if (st != SOAK_OK) return st;
+    if (m->base == SOAK_BASE_GGX) return sj_fail(c, SOAK_ERR_ARG, fp, "not for a metal preset (its film is the chain's)");
+    m->film_coverage = coverage;
+    m->film_pore_share = 0.0;
+    m->film_thickness = thickness;
+    return SOAK_OK;
 }
 
 /* Preset + wetness through soak/wetness.h (steady state). The chain is in
@@ -466,7 +510,7 @@ static void preset_base(const preset_chain *pc, double m_per_unit, soak_material
 static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
 {
     static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", "base_colour",
-                                       "interface", NULL};
+                                       "interface", "film_over", NULL};
     preset_request r;
     double interface = 1;
     soak_status st = sj_keys(c, j, path, keys);
@@ -496,9 +540,12 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     /* "interface": 0 leaves the material's own specular interface out: what a
      * front end draws with its highlights off (tests/povray/flat_ground.py) */
     if (interface < 0.5) m->coat_weight = 0.0;
-    if (!r.model) return SOAK_OK;
+    st = parse_film_over(c, j, path, m);
+    if (st != SOAK_OK || !r.model) return st;
     char mp[320];
     sj_path(mp, sizeof mp, path, "model");
+    if (cJSON_GetObjectItemCaseSensitive(j, "film_over"))
+        return sj_fail(c, SOAK_ERR_ARG, mp, "a model view renders the chain's own film: leave out \"film_over\"");
     return use_model(c, mp, r.model, m);
 }
 
