@@ -215,15 +215,18 @@ def image_bounds(img):
     Color output to a float input is a weighted mean of its channels with
     weights summing to 1: inside that range; Linear, Cubic and Closest
     filters mix texels with convex weights). None: a colour-managed,
-    tiled, moving or unsaved (being painted) image."""
+    tiled, moving or unsaved (being painted) image, or one with no pixels
+    (a missing file)."""
     if (img is None or img.source not in ("FILE", "GENERATED") or img.is_dirty
             or img.colorspace_settings.name not in ("Non-Color", "Raw")):
         if img is not None:
             _IMAGE_CACHE.pop(img.as_pointer(), None)
         return None
-    key = _image_key(img)
-    hit = _IMAGE_CACHE.get(key[0])
-    if hit is not None and hit[0] == key:
+    # cached for a file's pixels by the file's date; a generated image (a
+    # script may set its pixels without marking it) is read every time
+    key = _image_key(img) if img.source == "FILE" else None
+    hit = _IMAGE_CACHE.get(img.as_pointer())
+    if key is not None and hit is not None and hit[0] == key:
         return hit[1]
     w, h = img.size
     n = w * h * img.channels
@@ -242,7 +245,8 @@ def image_bounds(img):
         lo, hi = min(vals), max(vals)
     if not (math.isfinite(lo) and math.isfinite(hi)):
         return None
-    _IMAGE_CACHE[key[0]] = (key, (lo, hi))
+    if key is not None:
+        _IMAGE_CACHE[key[0]] = (key, (lo, hi))
     return (lo, hi)
 
 

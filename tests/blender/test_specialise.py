@@ -10,11 +10,17 @@ colour per pixel, varied off the tables' columns): the left one's material
 is made wet at wetness 0.8 and then given the case's Wetness, Puddle Level,
 Schedule, Drying and Time through the panel (each change rebuilds its group,
 specialised: checked); the right one's gets the same values and then a
-Value node linked into Wetness, so its group is rebuilt unspecialised by
-the add-on's handler (checked). Rendered head-on and with both planes
+Value node linked into each input that sets the liquid, so its group is
+rebuilt unspecialised (the full group) by the add-on's handler (checked). Rendered head-on and with both planes
 tilted 60 degrees (the view factor between its columns), Emission fed by
 each output: Base Color, (Coat Weight, Roughness, Specular), Liquid and,
 for thin sheets, Translucency.
+
+A varying wetness (varying_cases): the Wet Map an image, Wetness a value
+below the film or keyed over it; the group built for what does not vary
+(wet_bounds: fixed inputs folded, the film's terms dropped below the
+export's saturation; checked from its tag and node count) against the full
+group, and Liquid against Wetness x the map's value.
 
 Tolerance, named terms: 2e-4 for float32 arithmetic and texture
 coordinates, as in test_group_values.py; for the colour, plus the sampling
@@ -40,6 +46,7 @@ LIQUIDS = A.get("liquids", "water,coffee").split(",")
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon", "soak",
                     "soak_data.json")
 FLOAT = 2e-4
+LIQUID_INPUTS = ("Wetness", "Wet Map", "Puddle Level", "Schedule", "Drying", "Time", "Start Time", "Fill Time")
 # (quality, panel settings) pairs: every quality at a plain wetness, Balanced
 # through the schedule (filling and drying) and the puddle level
 CASES = (
@@ -129,11 +136,14 @@ def wet(plane, preset, liquid, quality, settings, specialised):
             setattr(s, k, v)
     if s.status:
         common.fail(f"{mat.name}: {s.status}")
-    if not specialised:
-        val = tree.nodes.new("ShaderNodeValue")
-        val.outputs[0].default_value = gn.inputs["Wetness"].default_value
-        tree.links.new(val.outputs[0], gn.inputs["Wetness"])
+    if not specialised:   # every input that sets the liquid fed by a node: nothing bounds them (the full group)
+        for name in LIQUID_INPUTS:
+            val = tree.nodes.new("ShaderNodeValue")
+            val.outputs[0].default_value = gn.inputs[name].default_value
+            tree.links.new(val.outputs[0], gn.inputs[name])
         bpy.context.view_layer.update()      # the add-on's handler rebuilds the group
+        if json.loads(gn.node_tree["soak_group"]).get("varying") is not None:
+            common.fail(f"{mat.name}: the reference group is specialised")
     const = json.loads(gn.node_tree["soak_group"]).get("constant")
     if (const is not None) != specialised:
         common.fail(f"{mat.name}: group specialised {const is not None}, expected {specialised}")
@@ -193,7 +203,7 @@ def wet_varying(plane, preset, liquid, wetness, keyed, reference=None):
     sc.frame_set(5 if keyed else 1)
     if reference is not None:
         w.default_value = reference
-        for name in ("Wetness", "Puddle Level", "Schedule", "Drying", "Time", "Start Time", "Fill Time"):
+        for name in LIQUID_INPUTS[:1] + LIQUID_INPUTS[2:]:
             val = tree.nodes.new("ShaderNodeValue")
             val.outputs[0].default_value = gn.inputs[name].default_value
             tree.links.new(val.outputs[0], gn.inputs[name])
