@@ -710,13 +710,16 @@ def rebuild(mat, settings):
 # from the panel, a key, a link, a source, the wet map's pixels.
 
 def _fcurve_of(tree, gn):
-    """name -> the F-curve keying the group node's input, "driver", or None."""
+    """name -> the F-curve keying the group node's input, "driver" (a
+    driver or NLA strips: anything), or None."""
     index = {s.name: i for i, s in enumerate(gn.inputs)}
     ad = tree.animation_data
+    # NLA strips may animate any input, outside the action's curves: unbounded
+    nla = ad is not None and any(len(track.strips) for track in ad.nla_tracks)
 
     def of(name):
         path = f'nodes["{gn.name}"].inputs[{index[name]}].default_value'
-        if ad is not None and ad.drivers.find(path) is not None:
+        if nla or (ad is not None and ad.drivers.find(path) is not None):
             return "driver"
         return compat.find_fcurve(tree, path)
     return of
