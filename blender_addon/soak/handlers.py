@@ -1,8 +1,9 @@
-"""Keeps specialised groups true to their node (wet_constant): after any
-change Blender evaluates (a link drawn into Wetness, a value typed on the
-node, a key added in the node editor, an undo), a group whose liquid amount
-is no longer the one it was built for is rebuilt (nodes.specialise, all or
-nothing; a failure is printed and the material left as it was). The panel,
+"""Keeps specialised groups true to their node (wet_constant, wet_bounds):
+after any change Blender evaluates (a link drawn into Wetness, a value typed
+on the node, a key added in the node editor, a wet map saved, an undo), a
+group built for a liquid amount, or for bounds of it, that its inputs no
+longer give is rebuilt (nodes.specialise, all or nothing; a failure is
+printed and the material left as it was). The panel,
 its key buttons and the operators rebuild at once; this catches edits made
 elsewhere."""
 

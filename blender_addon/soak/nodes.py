@@ -7,7 +7,7 @@ import json
 
 import bpy
 
-from . import compat, data
+from . import compat, data, wet_bounds
 from .wet_constant import LIQUID_INPUTS
 from .wet_group import GROUP_TAG, INPUTS, build_group, metal_preset
 
@@ -718,28 +718,48 @@ def rebuild(mat, settings):
 #
 # A group whose liquid amount cannot vary is built for that one amount
 # (wet_group.build_group's `constant`, wet_constant): its tables become
-# curves and numbers. It is rebuilt whenever that stops being true or the
-# amount changes: a control set from the panel, a key, a link, a source.
+# curves and numbers. One whose amount varies is built for what does not
+# (`varying`, wet_bounds): the inputs only their value sets fold into
+# numbers, and a liquid that never reaches the film leaves the film's terms
+# out. It is rebuilt whenever what it was built for changes: a control set
+# from the panel, a key, a link, a source, the wet map's pixels.
 
-def _animated(tree, path):
+def _fcurve_of(tree, gn):
+    """name -> the F-curve keying the group node's input, "driver" (a
+    driver or NLA strips: anything), or None."""
+    index = {s.name: i for i, s in enumerate(gn.inputs)}
     ad = tree.animation_data
-    if ad is not None and ad.drivers.find(path) is not None:
-        return True
-    return compat.find_fcurve(tree, path) is not None
+    # NLA strips may animate any input, outside the action's curves: unbounded
+    nla = ad is not None and any(len(track.strips) for track in ad.nla_tracks)
+
+    def of(name):
+        path = f'nodes["{gn.name}"].inputs[{index[name]}].default_value'
+        if nla or (ad is not None and ad.drivers.find(path) is not None):
+            return "driver"
+        return compat.find_fcurve(tree, path)
+    return of
+
+
+def specialisation(tree, gn):
+    """(constant, varying): constant {name: value} of the inputs that set
+    the liquid amount (wet_constant.LIQUID_INPUTS) when none is linked,
+    keyed or driven (else None); varying, for a liquid that can vary:
+    {"fixed": {name: value} of the inputs only the node's value sets,
+    "film": False when the liquid provably stays below the table's
+    saturation, where the film starts (wet_bounds)}."""
+    bounds, fixed = wet_bounds.input_bounds(gn, _fcurve_of(tree, gn))
+    if len(fixed) == len(LIQUID_INPUTS):
+        return {name: bounds[name][0] for name in LIQUID_INPUTS}, None
+    info = _group_info(gn)
+    varying = {"fixed": {name: bounds[name][0] for name in LIQUID_INPUTS if name in fixed},
+               "film": not wet_bounds.film_free(data.table(info["preset"], info["liquid"]), bounds)}
+    return None, (varying if varying["fixed"] or not varying["film"] else None)   # None: the full group
 
 
 def constant_inputs(tree, gn):
-    """{name: value} of the inputs that set the liquid amount
-    (wet_constant.LIQUID_INPUTS) when none is linked, keyed or driven; else
-    None."""
-    index = {s.name: i for i, s in enumerate(gn.inputs)}
-    values = {}
-    for name in LIQUID_INPUTS:
-        s = gn.inputs.get(name)
-        if s is None or s.is_linked or _animated(tree, f'nodes["{gn.name}"].inputs[{index[name]}].default_value'):
-            return None
-        values[name] = float(s.default_value)
-    return values
+    """{name: value} of the inputs that set the liquid amount when none
+    varies; else None."""
+    return specialisation(tree, gn)[0]
 
 
 def _group_info(gn):
@@ -752,11 +772,21 @@ def is_specialised(gn):
     return _group_info(gn).get("constant") is not None
 
 
+def is_film_free(gn):
+    """True when the node's group leaves the film's terms out (its liquid
+    never reaches the film)."""
+    return (_group_info(gn).get("varying") or {}).get("film") is False
+
+
 def stale_groups(tree):
     """The group nodes whose group was built for another constant liquid
     (or for a varying one) than their inputs now give."""
-    return [gn for gn in group_nodes(tree)
-            if "preset" in _group_info(gn) and _group_info(gn).get("constant") != constant_inputs(tree, gn)]
+    stale = []
+    for gn in group_nodes(tree):
+        info = _group_info(gn)
+        if "preset" in info and (info.get("constant"), info.get("varying")) != specialisation(tree, gn):
+            stale.append(gn)
+    return stale
 
 
 def _specialise_stale(tree):
@@ -766,8 +796,9 @@ def _specialise_stale(tree):
     for gn in stale_groups(tree):
         info = _group_info(gn)
         ng = bpy.data.node_groups.new("Soak Wet", "ShaderNodeTree")
+        constant, varying = specialisation(tree, gn)
         build_group(ng, info["preset"], info["liquid"], info.get("exact", False), metal=info.get("metal"),
-                    quality=info.get("quality", "BALANCED"), constant=constant_inputs(tree, gn))
+                    quality=info.get("quality", "BALANCED"), constant=constant, varying=varying)
         replaced.append(gn.node_tree)
         _swap_group(tree, gn, ng)
     return replaced

@@ -139,6 +139,8 @@ class SOAK_PT_wetness_controls(_MaterialPanel, bpy.types.Panel):
             col.label(text="Time runs from Start Time to Start + Fill Time", icon="TIME")
         if nodes.is_specialised(gn):
             col.label(text="Constant wetness: the group is built for it (faster)", icon="INFO")
+        elif nodes.is_film_free(gn):
+            col.label(text="Wetness stays below the film: the group leaves it out", icon="INFO")
 
 
 classes = (SOAK_PT_wetness, SOAK_PT_wetness_source, SOAK_PT_wetness_controls)

@@ -28,7 +28,7 @@ Curves nodes and numbers, and no image is read."""
 
 import json
 
-from . import compat, data, group_layout, wet_constant
+from . import compat, data, group_layout, wet_bounds, wet_constant
 from .node_program import (Builder, affine_program, combine, lerp, lookup, run_program,
                            run_program_vector, separate, vec, vec_num)
 
@@ -108,22 +108,17 @@ OUTPUTS = (("Base Color", "color"), ("Roughness", "float"), ("Coat Weight", "flo
 
 
 
-def _liquid_schedule(b, gin):
-    """L = Wetness * Wet Map * mix(1, P or 1 - P, Schedule), P the core's fill
-    progress (the export's schedule program)."""
-    env = {"time": gin.outputs["Time"], "start_time": gin.outputs["Start Time"],
-           "fill_time": gin.outputs["Fill Time"]}
-    p = run_program(b, data.load()["schedule_program"], env)
-    dry = b.math("MULTIPLY_ADD", p, -2.0, 1.0)          # 1 - 2P
-    p = b.math("MULTIPLY_ADD", dry, gin.outputs["Drying"], p)  # P + D (1 - 2P)
-    one_minus = b.math("SUBTRACT", 1.0, p)
-    p = b.math("MULTIPLY_ADD", one_minus, b.math("SUBTRACT", 1.0, gin.outputs["Schedule"]), p)
-    # Puddle Level: wet-map values at or above it count as fully wet (standing
-    # water: the core's film at full coverage); 1 leaves the map as it is.
-    level = b.math("MAXIMUM", gin.outputs["Puddle Level"], 1e-3)
-    wet_map = b.math("DIVIDE", gin.outputs["Wet Map"], level, clamp=True)
-    w = b.math("MULTIPLY", gin.outputs["Wetness"], wet_map, clamp=True)
-    return b.math("MULTIPLY", w, p, clamp=True)
+def _liquid_schedule(b, gin, fixed=None):
+    """L = Wetness * min(Wet Map / Puddle Level, 1) * mix(1, P or 1 - P,
+    Schedule), P the core's fill progress (the export's schedule program;
+    wet_bounds.liquid_program). Puddle Level: wet-map values at or above it
+    count as fully wet (standing water: the core's film at full coverage).
+    fixed: {input name: value} folded into numbers (the schedule a material
+    does not use leaves no node)."""
+    fixed = fixed or {}
+    env = {v: ((fixed[k], fixed[k]) if k in fixed else wet_bounds.UNKNOWN) for k, v in wet_bounds.NAMES.items()}
+    ops = wet_bounds.fold_program(wet_bounds.liquid_program(), env)
+    return run_program(b, ops, {v: gin.outputs[k] for k, v in wet_bounds.NAMES.items()})
 
 
 
@@ -137,13 +132,14 @@ class _Rows:
     lookups; for exact ones the row cell, its fraction, and the centres of
     the two rows around it."""
 
-    def __init__(self, b, L, t, exact):
+    def __init__(self, b, L, t, exact, film=True):
         rows = t["rows_below"] + t["rows_above"] + 1
         self.exact, self.rows = exact, rows
+        program = wet_bounds.row_program(t, film)
         if not exact:
-            self.v = run_program(b, affine_program(t["row_program"], (rows - 1) / rows, 0.5 / rows), {"x": L})
+            self.v = run_program(b, affine_program(program, (rows - 1) / rows, 0.5 / rows), {"x": L})
             return
-        y = b.math("MULTIPLY", run_program(b, t["row_program"], {"x": L}), (rows - 1) * _EDGE)
+        y = b.math("MULTIPLY", run_program(b, program, {"x": L}), (rows - 1) * _EDGE)
         r0 = b.math("FLOOR", y)
         self.fy = b.math("SUBTRACT", y, r0)
         self.gy = b.math("SUBTRACT", 1.0, self.fy)
@@ -241,18 +237,19 @@ def _view_factor(b, t, images, rows, normal):
     return lerp(b, row(rows.v0), row(rows.v1), rows.fy)
 
 
-def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view=True, constant_L=None):
+def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view=True, constant_L=None, film=True):
     """The core's wetness function of one preset's class for the input colour
     (times the preset's view factor at the view through `normal`):
     (colour, roughness, coat weight, base specular factor) sockets, and a
     reader of further parameter pixels. stages: the STAGES indices of the
     lookups and of the view factor; view: False leaves the view factor out;
     constant_L: L as a number where it is constant (the parameters are then
-    numbers: one row of their table, exact)."""
+    numbers: one row of their table, exact); film: False where L never
+    exceeds the table's saturation (the row program's film branch folds)."""
     t = data.table(preset, liquid_name)
     images = data.lookup_images(preset, liquid_name, exact)
     b.stage = STAGES[stages[0]]
-    rows = _Rows(b, L, t, exact)
+    rows = _Rows(b, L, t, exact, film)
     colour = _wet_colour(b, gin.outputs["Base Color"], t, images, rows)
     if constant_L is None:
         spec = b.node("ShaderNodeSeparateXYZ")   # (base specular factor, interface area, roughness ratio)
@@ -383,7 +380,8 @@ def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat
     return colour, rough, coat
 
 
-def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BALANCED", constant=None):
+def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BALANCED", constant=None,
+                varying=None):
     """(Re)builds the inside of a Soak Wet group for a preset and liquid.
     metal: a conductor preset whose function the metallic part of the
     material gets (mixed by the Metallic input), None for none. quality: one
@@ -392,8 +390,11 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
     when none of them varies (the group node's values; None: they may):
     the group is then specialised to that one liquid amount (wet_constant;
     those inputs are read from here, not from the node, and the spill-edge
-    bump, which needs a varying wet map, is left out). Sockets that already
-    match INPUTS/OUTPUTS are kept (the node's links and values too)."""
+    bump, which needs a varying wet map, is left out). varying: for a
+    liquid that can vary, {"fixed": {name: value} of those inputs the
+    node's value alone sets (folded into numbers), "film": False where the
+    liquid never exceeds the table's saturation} (wet_bounds). Sockets that
+    already match INPUTS/OUTPUTS are kept (the node's links and values too)."""
     terms = QUALITY[quality]
     m = data.material(preset)
     if metal is not None and data.material(metal)["kind"] != "conductor":
@@ -405,7 +406,7 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
     if constant is not None:
         constant = {name: float(constant[name]) for name in wet_constant.LIQUID_INPUTS}
     tree[GROUP_TAG] = json.dumps({"preset": preset, "liquid": liquid_name, "exact": bool(exact), "metal": metal,
-                                  "quality": quality, "constant": constant})
+                                  "quality": quality, "constant": constant, "varying": varying})
     # Exact lookups asked for (Exact lookups, Quality Exact) keep the tables'
     # Closest reads at a constant liquid too (its row arithmetic folds):
     # EEVEE samples a curve from a half-float texture of its own, which errs
@@ -417,14 +418,15 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
     gin = _Inputs(b)
     b.stage = STAGES[0]
     Lc = wet_constant.liquid(constant) if constant is not None else None
-    L = _liquid_schedule(b, gin) if Lc is None else wet_constant.value(b, Lc)
+    fixed, film = (varying or {}).get("fixed"), (varying or {}).get("film", True)
+    L = _liquid_schedule(b, gin, fixed) if Lc is None else wet_constant.value(b, Lc)
     b.stage = STAGES[1]
     normal = _bump(b, gin, terms["bump"] and Lc is None)
     view = terms["view_factor"]
     curves = Lc is not None and not exact_asked
     if not curves:
         colour, rough, coat, factor, param = _wet_path(b, gin, L, preset, liquid_name, exact, normal, view=view,
-                                                       constant_L=Lc)
+                                                       constant_L=Lc, film=film)
     else:
         colour, rough, coat, factor, param = _wet_path_constant(b, gin, Lc, preset, liquid_name, normal, view=view)
     if metal is not None:

@@ -7,14 +7,20 @@ render thread):
            (weight = the group's Coat Weight output, read back from a
            render of it), no group: what any wet look costs in Cycles;
   wet      after Make Wet (default or --exact 1 lookups), once per
-           quality of --qualities (the panel's Quality; default BALANCED).
+           quality of --qualities (the panel's Quality; default BALANCED);
+  wet DRAFT fold  (--fold 1) an experiment, not an add-on setting: Draft
+           with the coat lobe dropped and the liquid's mirror folded into the
+           base's own specular lobe (Coat Weight unlinked, Specular + coat
+           weight x F0(liquid) / 0.08: the Principled's specular amount whose
+           F0 is the liquid's, 3.x Specular and 4.x+ Specular IOR Level at
+           IOR 1.5 alike), at the base's wet roughness instead of a mirror.
 
 wet/dry is what an artist pays; wet/coat is the group's own cost (its
 lookups and math). Prints each run, then min and median per state, and
 the group's node count per quality. Not a test: nothing here asserts a time.
 
 blender -b --factory-startup --python bench_blender_overhead.py -- --addon ZIP [--repeat 3] [--exact 0|1]
-    [--qualities DRAFT,BALANCED,EXACT]
+    [--qualities DRAFT,BALANCED,EXACT] [--fold 0|1]
 (c_core/bench/bench_blender_overhead.sh runs it in Blender 3.4, 4.3 and 5.2)"""
 import os
 import statistics
@@ -30,6 +36,7 @@ opts = blender_bench_plane.options()
 repeat = int(opts.get("--repeat", "3"))
 exact = bool(int(opts.get("--exact", "0")))
 qualities = opts.get("--qualities", "BALANCED").split(",")
+fold = bool(int(opts.get("--fold", "0")))
 COAT = ("Clearcoat", "Coat Weight")[bpy.app.version >= (4, 0, 0)]
 mat, tree, bsdf = blender_bench_plane.textured_plane(opts["--addon"], exact)
 
@@ -71,8 +78,32 @@ def group_nodes():
     return sum(1 for n in gn.node_tree.nodes if n.type not in ("FRAME", "GROUP_INPUT", "GROUP_OUTPUT"))
 
 
+def fold_coat_into_specular():
+    """The experiment above, on the wet material Make Wet left."""
+    gn = next(n for n in tree.nodes if n.type == "GROUP")
+    spec_in = bsdf.inputs[("Specular", "Specular IOR Level")[bpy.app.version >= (4, 0, 0)]]
+    for ln in list(bsdf.inputs[COAT].links) + list(spec_in.links):
+        tree.links.remove(ln)
+    bsdf.inputs[COAT].default_value = 0.0
+    n = sys.modules["soak"].data.liquid(mat.soak.liquid)["ior"]
+    f0 = ((n - 1) / (n + 1)) ** 2
+    m = tree.nodes.new("ShaderNodeMath")
+    m.operation = "MULTIPLY_ADD"
+    m.name = "bench fold"
+    tree.links.new(gn.outputs["Coat Weight"], m.inputs[0])
+    m.inputs[1].default_value = f0 / 0.08
+    tree.links.new(gn.outputs["Specular"], m.inputs[2])
+    tree.links.new(m.outputs[0], spec_in)
+
+
+def undo_fold():
+    m = tree.nodes.get("bench fold")
+    if m is not None:
+        tree.nodes.remove(m)
+
+
 coat = coat_weight_of_wet_state()
-states = ["dry", "coat"] + [f"wet {q}" for q in qualities]
+states = ["dry", "coat"] + [f"wet {q}" for q in qualities] + (["wet DRAFT fold"] if fold else [])
 times = {s: [] for s in states}
 count = {}
 for r in range(repeat):
@@ -84,8 +115,11 @@ for r in range(repeat):
             mat.soak.quality = state.split()[1]
             bpy.ops.soak.make_wet()
             count[state] = group_nodes()
+            if state.endswith("fold"):
+                fold_coat_into_specular()
         times[state].append(render_cpu())
         if state.startswith("wet"):
+            undo_fold()
             bpy.ops.soak.make_dry()
         print(f"run {r} {state}: {times[state][-1]:.3f} s CPU")
         sys.stdout.flush()

@@ -505,6 +505,7 @@ def test_key_drying(ob):
         check(bpy.ops.soak.key_drying() == {"FINISHED"}, "key_drying")
     fcs = [fc for fc in common.fcurves(t) if ".inputs[" in fc.data_path]
     check(len(fcs) == 1, f"Key Drying made {len(fcs)} curves")
+    time_path = fcs[0].data_path
     keys = [(k.co[0], k.co[1]) for k in fcs[0].keyframe_points]
     print("Key Drying keys:", keys)
     check(keys == [(10.0, 20.0), (60.0, 520.0)], f"keys not over the scene range from Start to Start + Fill: {keys}")
@@ -527,11 +528,19 @@ def test_key_drying(ob):
     bpy.ops.soak.key_control(name="Wetness")
     fc = common.find_fcurve(t, wet_path)
     check(fc is None or len(fc.keyframe_points) == 0, "the keyframe button did not delete its key")
-    # explicit frames, and a refusal for an empty range (nothing changed)
+    # explicit frames, and a refusal for an empty range (nothing changed); a
+    # modifier the user put on the Time curve survives a re-key (Key Drying
+    # keeps the curve: removing it would free every reference to it)
+    common.find_fcurve(t, time_path).modifiers.new("CYCLES")
     check(bpy.ops.soak.key_drying(frame_start=5, frame_end=9) == {"FINISHED"}, "key_drying 5..9")
-    time_fc = [fc for fc in common.fcurves(t) if fc.keyframe_points and fc.data_path == fcs[0].data_path]
+    time_fc = [fc for fc in common.fcurves(t) if fc.keyframe_points and fc.data_path == time_path]
+    check(len(time_fc) == 1, f"explicit frames: {len(time_fc)} Time curves")
     keys = [(k.co[0], k.co[1]) for k in time_fc[0].keyframe_points]
     check(keys == [(5.0, 20.0), (9.0, 62.0)], f"explicit frames: {keys}")
+    mods = [fm.type for fm in time_fc[0].modifiers]
+    check(mods == ["CYCLES"], f"Key Drying dropped the Time curve's modifier: {mods}")
+    time_fc[0].modifiers.remove(time_fc[0].modifiers[0])
+    bpy.context.view_layer.update()   # the keys bound Time again: the handler rebuilds the group for them
     state = common.tree_state(t)
     msg = op_error(bpy.ops.soak.key_drying, frame_start=9, frame_end=9)
     check("must come after" in msg and common.tree_state(t) == state, f"empty range: {msg}")

@@ -59,6 +59,61 @@ def main(path):
         if abs(got - want) > 1e-9:
             sys.exit(f"FAIL: schedule at t={t}, t0={t0}, T={T}: {got}, soak_fill_fraction gives {want}")
     print(f"PASS: {n} knots within {worst:.1e}, {len(cases)} schedule points")
+    folding(d)
+
+
+def load_wet_bounds():
+    """The add-on's wet_bounds (its folding and interval arithmetic) with a
+    stand-in for Blender's bpy module, which its helpers import."""
+    import importlib
+    import os
+    import types
+    addon = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon")
+    sys.modules.setdefault("bpy", types.ModuleType("bpy"))
+    pkg = types.ModuleType("soak")
+    pkg.__path__ = [os.path.join(addon, "soak")]
+    sys.modules["soak"] = pkg
+    return importlib.import_module("soak.wet_bounds")
+
+
+def folding(d):
+    """wet_bounds (issue 33, a varying wetness): a program folded to what
+    its inputs can be equals the exported one there (run by this file's own
+    interpreter), and the intervals hold every sampled value. The film-free
+    row program of each table against the full one on [0, saturation]; the
+    liquid program with some inputs fixed against the full one."""
+    import random
+    wb = load_wet_bounds()
+    rng = random.Random(33)
+    worst, dropped = 0.0, 0
+    for m in d["materials"]:
+        for liquid, t in m["liquids"].items():
+            folded = wb.row_program(t, False)
+            dropped += len(t["row_program"]) - len(folded)
+            for k in range(101):
+                x = t["saturation"] * k / 100
+                worst = max(worst, abs(run(folded, {"x": x}) - run(t["row_program"], {"x": x})))
+    full = wb.liquid_program()
+    names = list(wb.NAMES.values())
+    for trial in range(300):
+        box = {}
+        for name in names:
+            a, b = sorted(rng.uniform(-0.5, 3.0) for _ in range(2))
+            box[name] = (a, a) if rng.random() < 0.5 else (a, b)
+        folded = wb.fold_program(full, box)
+        iv = wb.intervals(full, box)[-1]
+        for _ in range(20):
+            env = {k: rng.uniform(*v) for k, v in box.items()}
+            got, want = run(folded, env), run(full, env)
+            worst = max(worst, abs(got - want))
+            if not iv[0] - 1e-12 <= want <= iv[1] + 1e-12:
+                sys.exit(f"FAIL: liquid {want} outside its interval {iv} for {box}")
+    if worst > 1e-6:
+        sys.exit(f"FAIL: a folded program differs from the exported one by {worst:.2e}")
+    porous = sum(1 for m in d["materials"] if m["porosity"] > 0) * 4
+    if dropped < 2 * porous:
+        sys.exit(f"FAIL: the film-free row programs dropped {dropped} operations, expected 2 per porous table")
+    print(f"PASS: folded programs within {worst:.1e} of the exported ones; {dropped} film operations dropped")
 
 
 main(sys.argv[1])

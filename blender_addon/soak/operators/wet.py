@@ -160,9 +160,12 @@ class SOAK_OT_key_drying(bpy.types.Operator):
         gn.inputs["Fill Time"].default_value = fill
         index = list(gn.inputs).index(gn.inputs["Time"])
         path = f'nodes["{gn.name}"].inputs[{index}].default_value'
+        # the Time curve is kept and only its keys replaced: removing it would
+        # free every reference to it (the Graph Editor's, a script's: in 5.x
+        # a freed channel-bag F-curve reads back garbage) and its modifiers
         old = compat.find_fcurve(tree, path)
         if old is not None:
-            compat.remove_fcurve(tree, old)
+            old.keyframe_points.clear()
         gn.inputs["Schedule"].default_value = 1.0
         gn.inputs["Drying"].default_value = 1.0
         t = gn.inputs["Time"]
