@@ -216,6 +216,19 @@ static inline double rt_rr_weight(const rt_path *p) { return rgb_max(p->beta) * 
  * path->L, updates beta and sets the next ray (or alive = 0). */
 void rt_surface(rt_thread *t, const soak_hit *hit, rt_path *path);
 
+/* ---- render_mix.c: a surface's dry / wet / pore BSDFs as one mixture ---- */
+typedef struct rt_bsdf_mix {
+    int n;                 /* components (1: a single BSDF) */
+    const soak_bsdf *b[3];
+    double w[3];           /* shares, summing to 1 */
+    int chosen;            /* the component drawn for the continuation */
+} rt_bsdf_mix;
+/* 1 when every component is closed-form and reflecting (see render_mix.c). */
+int rt_mix_can(const rt_bsdf_mix *m);
+int rt_mix_flags(const rt_bsdf_mix *m);
+soak_status rt_mix_eval(const rt_bsdf_mix *m, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf);
+int rt_mix_reweight(const rt_bsdf_mix *m, soak_vec3 wo, soak_bsdf_sample *s);
+
 /* ---- materials to BSDFs (render_bsdfs.c) ---- */
 /* Sets up bsdfs[i] for every material (n_materials entries); trace_films:
  * films over Lambert traced bounce by bounce instead of their closed form.
