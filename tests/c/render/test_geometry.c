@@ -384,6 +384,64 @@ static void test_clear_distance(void)
     soak_geometry_destroy(g);
 }
 
+/* A box that no other object's bounds meet (a thin sheet, a sphere beside
+ * it) answers from its clear box: for random segments from inside, the
+ * occlusion query equals the independent answer (convex: crossed iff the
+ * end is outside, where the end is more than 1e-6 from a face) and the scene
+ * query; the clear distance is the distance to the nearest face less at
+ * most the margin 1e-5 (1 + max |coordinate|), never more. A box with a
+ * sphere inside it gets no clear box: a segment through the sphere is
+ * occluded. */
+static void test_clear_box(void)
+{
+    soak_geometry *g = NULL;
+    char err[256];
+    if (!check_status("create", soak_geometry_create(&g, err, sizeof err), SOAK_OK) || !g) return;
+    unsigned sheet, ball, hollow, inner;
+    soak_vec3 lo = soak_v3(-4, -3, -0.2), hi = soak_v3(4, 3, 0);
+    check_status("add sheet", soak_geometry_add_box(g, lo, hi, &sheet), SOAK_OK);
+    soak_geometry_add_sphere(g, soak_v3(0, 0, 2), 0.5, &ball);
+    soak_geometry_add_box(g, soak_v3(10, 10, 0), soak_v3(12, 12, 2), &hollow);
+    soak_geometry_add_sphere(g, soak_v3(11, 11, 1), 0.3, &inner);
+    check_status("commit", soak_geometry_commit(g), SOAK_OK);
+    unsigned long long s = 9191;
+    int wrong = 0, differ = 0, checked = 0, over = 0, loose = 0, n = 20000;
+    const double margin = 1e-5 * (1 + 4);
+    for (int i = 0; i < n; ++i) {
+        soak_vec3 o = soak_v3(lo.x + 1e-3 + (hi.x - lo.x - 2e-3) * lcg01(&s), lo.y + 1e-3 + (hi.y - lo.y - 2e-3) * lcg01(&s),
+                              lo.z + 1e-3 + (hi.z - lo.z - 2e-3) * lcg01(&s));
+        double face = fmin(fmin(fmin(o.x - lo.x, hi.x - o.x), fmin(o.y - lo.y, hi.y - o.y)), fmin(o.z - lo.z, hi.z - o.z));
+        double cd = soak_geometry_clear_distance(g, sheet, o);
+        over += cd > face;
+        loose += cd < face - margin - 1e-12;
+        soak_vec3 d = unit_dir(&s);
+        soak_ray r = {o, d, 0.0, 0.3 * lcg01(&s)};
+        soak_vec3 e = soak_v3_add(o, soak_v3_scale(d, r.tfar));
+        double gap = fmin(fmin(fmin(fabs(e.x - lo.x), fabs(e.x - hi.x)), fmin(fabs(e.y - lo.y), fabs(e.y - hi.y))),
+                          fmin(fabs(e.z - lo.z), fabs(e.z - hi.z)));
+        int outside = e.x < lo.x || e.x > hi.x || e.y < lo.y || e.y > hi.y || e.z < lo.z || e.z > hi.z;
+        int occ_local = -1, occ_scene = -1;
+        soak_geometry_occluded_local(g, sheet, &r, &occ_local);
+        soak_geometry_occluded(g, &r, &occ_scene);
+        differ += occ_local != occ_scene;
+        if (gap > 1e-6) {
+            ++checked;
+            wrong += occ_local != outside;
+        }
+    }
+    printf("  clear box: %d of %d segments checked, %d wrong, %d differ from the scene query; clear distance over %d, "
+           "looser than the margin %d\n", checked, n, wrong, differ, over, loose);
+    check_true("sheet occlusion = ends outside the box", wrong == 0 && checked > n / 2);
+    check_true("sheet occlusion = scene occlusion", differ == 0);
+    check_true("sheet clear distance <= distance to the nearest face", over == 0);
+    check_true("sheet clear distance >= that distance less the margin", loose == 0);
+    soak_ray through = {soak_v3(10.5, 11, 1), soak_v3(1, 0, 0), 0.0, 1.0};
+    int occ = 0;
+    soak_geometry_occluded_local(g, hollow, &through, &occ);
+    check_true("box with a sphere inside: a segment through the sphere is occluded", occ == 1);
+    soak_geometry_destroy(g);
+}
+
 static int write_file(const char *path, const char *text)
 {
     FILE *f = fopen(path, "w");
@@ -684,6 +742,7 @@ int main(void)
     test_robust_modes();
     test_clear_ball();
     test_clear_distance();
+    test_clear_box();
     test_local_queries();
     test_mesh_files();
     test_threads();
