@@ -23,6 +23,7 @@ int rt_mix_can(const rt_bsdf_mix *m)
 
 int rt_mix_flags(const rt_bsdf_mix *m)
 {
+    if (m->n == 1) return m->b[0]->flags;
     int f = 0;
     for (int i = 0; i < m->n; ++i) f |= soak_bsdf_get_flags(m->b[i]);
     return f;
@@ -30,6 +31,7 @@ int rt_mix_flags(const rt_bsdf_mix *m)
 
 soak_status rt_mix_eval(const rt_bsdf_mix *m, soak_vec3 wi, soak_vec3 wo, soak_rgb *f, double *pdf)
 {
+    if (m->n == 1) return soak_bsdf_eval(m->b[0], wi, wo, f, pdf);
     soak_rgb fs = soak_rgb3(0, 0, 0);
     double ps = 0;
     for (int i = 0; i < m->n; ++i) {
