@@ -65,7 +65,8 @@ typedef struct rt_env {
 } rt_env;
 
 /* The BSDFs of one material (soak/bsdf.h), set up once per render: dry,
- * and wet (chosen with probability wetness * film coverage) when has_wet. */
+ * and wet (weight wetness * film coverage: light estimates see the mixture
+ * of both, a continuation samples one by its weight, render_mix.c) when has_wet. */
 typedef struct rt_material_bsdf {
     soak_bsdf dry, wet;
     soak_bsdf pore; /* the wet state's interface at zero thickness (has_pore) */
