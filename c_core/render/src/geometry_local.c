@@ -13,7 +13,12 @@ soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned objec
 {
     if (!g || !ray || !hit || !found) return SOAK_ERR_NULL;
     const geo_object *o = g->committed ? local_sphere(g, object_id) : NULL;
-    if (!o) return geo_intersect_scene(g, ray, want_uv, hit, found);
+    if (!o) {
+        if (!ray_ok(ray)) return SOAK_ERR_ARG;
+        if (!want_uv && g->committed && object_id < g->count && geo_box_exit(&g->objects[object_id], object_id, ray, hit, found))
+            return SOAK_OK;
+        return geo_intersect_scene(g, ray, want_uv, hit, found);
+    }
     if (!ray_ok(ray)) return SOAK_ERR_ARG;
     double t0, t1, t;
     *found = 0;
