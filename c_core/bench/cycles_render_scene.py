@@ -24,8 +24,8 @@ Only the subset of the scene format used by the benchmark scenes (scenes/bench_w
 bench_wet_paper.json, bench_wet_puddles.json) is translated: sun lights, a constant
 environment, `plane`, `quad`, `box` and `sphere` objects, constant wetness 1 or a wetness
 `map` (an Image Texture over the object's UVs mixing the dry base and the wet material:
-soak draws the wet BSDF with probability = the map's value, Cycles mixes the closures
-with that weight), `lambert` materials and `wet` materials with a lambert or homogeneous
+soak shades the dry/wet mixture with the map's value as weight, render_mix.c, as Cycles
+mixes the closures), `lambert` materials and `wet` materials with a lambert or homogeneous
 medium base (two HG lobes become one with the same mean cosine). Anything else is an
 error (the benchmark must not silently compare different scenes).
 

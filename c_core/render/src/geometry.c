@@ -250,7 +250,10 @@ soak_status soak_geometry_commit(soak_geometry *g)
     if (g->error[0]) return SOAK_ERR_NUMERIC;
     g->committed = 1;
     for (unsigned i = 0; i < g->count; ++i)
-        if (g->objects[i].kind != SOAK_SHAPE_SPHERE) geo_mark_clear_ball(g, i);
+        if (g->objects[i].kind != SOAK_SHAPE_SPHERE) {
+            geo_mark_clear_ball(g, i);
+            geo_mark_clear_box(g, i);
+        }
     return geo_mark_isolated(g);
 }
 

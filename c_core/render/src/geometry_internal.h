@@ -25,6 +25,9 @@ typedef struct geo_object {
     int isolated; /* no other surface enters the interior (spheres; set at commit) */
     soak_vec3 clear_c; /* a ball no surface enters (set at commit; clear_r2 = 0: none) */
     double clear_r2;
+    int has_clear_box; /* boxes: clear_lo..clear_hi meets no surface (geometry_clear_box.c) */
+    soak_vec3 clear_lo, clear_hi;
+    soak_vec3 box_lo, box_hi; /* the box's own bounds, with has_clear_box */
 } geo_object;
 
 struct soak_geometry {
@@ -99,6 +102,16 @@ soak_status geo_commit_and_attach(soak_geometry *g, RTCGeometry geom, unsigned *
  * triangle object id. */
 soak_status geo_mark_isolated(soak_geometry *g);
 void geo_mark_clear_ball(soak_geometry *g, unsigned id);
+/* geometry_clear_box.c, run at commit: the clear box of box object id; the
+ * distance from p to its faces (0 outside it or without one) and whether a
+ * segment lies inside it. */
+void geo_mark_clear_box(soak_geometry *g, unsigned id);
+double geo_clear_box_distance(const geo_object *o, soak_vec3 p);
+int geo_segment_in_clear_box(const geo_object *o, soak_vec3 a, soak_vec3 b);
+/* The first hit of a ray starting strictly inside a box with a clear box
+ * (its exit face, outward normal, no texture coordinates), in closed form;
+ * 0 when it does not apply (the caller asks the scene). */
+int geo_box_exit(const geo_object *o, unsigned object_id, const soak_ray *ray, soak_hit *hit, int *found);
 /* geometry_query.c: the closest hit in the whole scene; detail 0 skips the
  * texture coordinates and the shading normal (a walk's boundary query). */
 soak_status geo_intersect_scene(const soak_geometry *g, const soak_ray *ray, int detail, soak_hit *hit, int *found);

@@ -13,7 +13,12 @@ soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned objec
 {
     if (!g || !ray || !hit || !found) return SOAK_ERR_NULL;
     const geo_object *o = g->committed ? local_sphere(g, object_id) : NULL;
-    if (!o) return geo_intersect_scene(g, ray, want_uv, hit, found);
+    if (!o) {
+        if (!ray_ok(ray)) return SOAK_ERR_ARG;
+        if (!want_uv && g->committed && object_id < g->count && geo_box_exit(&g->objects[object_id], object_id, ray, hit, found))
+            return SOAK_OK;
+        return geo_intersect_scene(g, ray, want_uv, hit, found);
+    }
     if (!ray_ok(ray)) return SOAK_ERR_ARG;
     double t0, t1, t;
     *found = 0;
@@ -39,10 +44,13 @@ soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned objec
  * mark_clear_ball): no surface on it, no traversal needed. */
 static int segment_clear(const soak_geometry *g, unsigned id, const soak_ray *ray)
 {
-    if (!g->committed || id >= g->count || !(g->objects[id].clear_r2 > 0) || !(ray->tfar < INFINITY)) return 0;
+    if (!g->committed || id >= g->count || !(ray->tfar < INFINITY)) return 0;
     const geo_object *o = &g->objects[id];
-    soak_vec3 a = soak_v3_sub(soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tnear)), o->clear_c);
-    soak_vec3 b = soak_v3_sub(soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tfar)), o->clear_c);
+    soak_vec3 pa = soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tnear));
+    soak_vec3 pb = soak_v3_add(ray->org, soak_v3_scale(ray->dir, ray->tfar));
+    if (geo_segment_in_clear_box(o, pa, pb)) return 1;
+    if (!(o->clear_r2 > 0)) return 0;
+    soak_vec3 a = soak_v3_sub(pa, o->clear_c), b = soak_v3_sub(pb, o->clear_c);
     return soak_v3_dot(a, a) < o->clear_r2 && soak_v3_dot(b, b) < o->clear_r2;
 }
 
@@ -87,5 +95,5 @@ double soak_geometry_clear_distance(const soak_geometry *g, unsigned object_id, 
     soak_vec3 c = sph ? sph->center : o->clear_c;
     double r = sph ? sph->radius : sqrt(o->clear_r2);
     double d = r - soak_v3_len(soak_v3_sub(p, c));
-    return d > 0 ? d : 0.0;
+    return fmax(d > 0 ? d : 0.0, geo_clear_box_distance(o, p));
 }

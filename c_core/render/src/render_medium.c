@@ -156,9 +156,13 @@ typedef struct nee_ctx {
     const rt_med_surface *surf;
     unsigned object_id;
     rt_path *path;
-    /* Survival cap of the vertex being estimated, from the distance to the
-     * nearest surface (see clear_survival). */
-    double q_clear;
+    /* Distance from the vertex being estimated to the nearest surface (0:
+     * unknown), and the survival cap it gives for the light at hand (see
+     * clear_survival). */
+    double d_clear, q_clear;
+    /* Roulette scale of the light at hand (see RT_NEE_ROULETTE_T_BEHIND) and
+     * the optical depth past which its survival is the floor. */
+    double t_ref, floor_depth;
     /* Exit point and outward normal of the last shadow path found for light
      * li < RT_NEE_CACHE: its tangent plane predicts the next exit distance. */
     int cached[RT_NEE_CACHE];
@@ -177,16 +181,25 @@ static double plane_distance(soak_vec3 x, soak_vec3 d, soak_vec3 p, soak_vec3 n)
 
 /* Survival probability of the roulette on a shadow estimate whose medium
  * transmittance is about T. */
-static double nee_survival(double T) { return rt_min(1.0, rt_max(RT_NEE_SURVIVAL_MIN, T / RT_NEE_ROULETTE_T)); }
+static double nee_survival(const nee_ctx *c, double T) { return rt_min(1.0, rt_max(RT_NEE_SURVIVAL_MIN, T / c->t_ref)); }
 
 /* nee_survival of the largest channel transmittance over distance d; the
  * exponential is skipped where the survival is the floor whatever it gives
- * (the optical depth is then above -log(RT_NEE_SURVIVAL_MIN)). */
-static double depth_survival(soak_rgb sigma_t, double d)
+ * (the optical depth is then above -log(RT_NEE_SURVIVAL_MIN t_ref)). */
+static double depth_survival(const nee_ctx *c, double d)
 {
+    soak_rgb sigma_t = c->med->sigma_t;
     double tau = rt_min(sigma_t.r, rt_min(sigma_t.g, sigma_t.b)) * d;
-    if (tau > RT_NEE_FLOOR_DEPTH) return RT_NEE_SURVIVAL_MIN;
-    return nee_survival(exp(-tau));
+    if (tau > c->floor_depth) return RT_NEE_SURVIVAL_MIN;
+    return nee_survival(c, exp(-tau));
+}
+
+/* Roulette scale for a light in front of (behind = 0) or behind the face the
+ * path last crossed. */
+static void set_roulette_scale(nee_ctx *c, int behind)
+{
+    c->t_ref = behind ? RT_NEE_ROULETTE_T_BEHIND : RT_NEE_ROULETTE_T;
+    c->floor_depth = behind ? RT_NEE_FLOOR_DEPTH_BEHIND : RT_NEE_FLOOR_DEPTH;
 }
 
 /* Roulette on the shadow estimate with survival q: 0 when it dies, else
@@ -213,21 +226,20 @@ static double predicted_survival(const nee_ctx *c, int li, soak_vec3 x, soak_vec
     double sd = c->surf->lost ? INFINITY : plane_distance(x, d3, wh->p, wh->ng);
     if (li < RT_NEE_CACHE && c->cached[li]) sd = rt_min(sd, plane_distance(x, d3, c->cache_p[li], c->cache_n[li]));
     if (!(sd < INFINITY)) return 1.0;
-    return rt_max(RT_NEE_PREDICT_MIN, depth_survival(c->med->sigma_t, sd));
+    return rt_max(RT_NEE_PREDICT_MIN, depth_survival(c, sd));
 }
 
 /* Survival of the roulette for the transmittance allowed by the distance
- * from x to the nearest surface (soak_geometry_clear_distance), for every
- * light at once: no shadow path is shorter, so the survival the exit found
+ * from x to the nearest surface (soak_geometry_clear_distance, asked once
+ * per vertex; the survival is per light, with its scale): no shadow path is shorter, so the survival the exit found
  * would give (stage 2) is at most this. Capping stage 1 there keeps the
  * overall survival min(q1, q2) as it was and spares the rays of vertices deep
  * inside (on the bench sphere ~70 % of the first exit rays were cast only to
  * be ended by stage 2). 1 for a grid medium, which plays no roulette. */
-static double clear_survival(const nee_ctx *c, soak_vec3 x)
+static double clear_survival(const nee_ctx *c)
 {
     if (c->med->coeffs) return 1.0;
-    double d = soak_geometry_clear_distance(c->t->ctx->scene->geometry, c->obj->object_id, x);
-    return d > 0 ? depth_survival(c->med->sigma_t, d) : 1.0;
+    return c->d_clear > 0 ? depth_survival(c, c->d_clear) : 1.0;
 }
 
 /* Where the shadow path of a delta light leaves the medium. */
@@ -261,7 +273,10 @@ static int find_exit(nee_ctx *c, const soak_light *l, int li, soak_vec3 x, nee_e
     /* A light behind the face the path came in through (a thin sheet lit
      * from behind) reaches x through another face: start from the opposite
      * normal, the exit search below finds the real face. */
-    if (!(soak_v3_dot(wl, n) > 0)) n = soak_v3_scale(n, -1.0);
+    int behind = !(soak_v3_dot(wl, n) > 0);
+    if (behind) n = soak_v3_scale(n, -1.0);
+    set_roulette_scale(c, behind);
+    c->q_clear = clear_survival(c);
     e->inv_q = 1.0;
     /* The prediction cannot go below RT_NEE_PREDICT_MIN: a cap at or under it
      * decides stage 1 alone, before any direction is computed (most vertices
@@ -300,7 +315,7 @@ static int find_exit(nee_ctx *c, const soak_light *l, int li, soak_vec3 x, nee_e
      * light near the surface), and a survival from the first distance then
      * weights a bright estimate by up to 1 / RT_NEE_SURVIVAL_MIN (fireflies:
      * one such path of 307,200 added 65 to a pixel on the bench scene). */
-    if (!c->med->coeffs && !nee_roulette(t, rt_min(1.0, depth_survival(c->med->sigma_t, e->h.t) / q1), &e->inv_q))
+    if (!c->med->coeffs && !nee_roulette(t, rt_min(1.0, depth_survival(c, e->h.t) / q1), &e->inv_q))
         return 0;
     e->n = n;
     e->wl = wl;
@@ -377,7 +392,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
     (void)rng; /* the thread's generator: rt_rand draws from the same stream */
     nee_ctx *c = ctx;
     const soak_scene *s = c->t->ctx->scene;
-    c->q_clear = clear_survival(c, x);
+    c->d_clear = c->med->coeffs ? 0.0 : soak_geometry_clear_distance(s->geometry, c->obj->object_id, x);
     for (int li = 0; li < s->n_lights; ++li) {
         const soak_light *l = &s->lights[li];
         if (l->type != SOAK_LIGHT_DIRECTIONAL && l->type != SOAK_LIGHT_POINT) continue;

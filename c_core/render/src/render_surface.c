@@ -1,7 +1,8 @@
 /* Surface interactions of the path tracer: a dispatcher over the BSDF
  * interface (soak/bsdf.h). Each material has a dry and a wet BSDF, set up
  * once per render (rt_bsdfs_setup); at a hit the wet one is chosen with
- * probability wetness * film coverage. Two ways through a BSDF:
+ * probability wetness * film coverage (where that lies strictly between 0
+ * and 1 light estimates see the mixture, render_mix.c). Two ways through a BSDF:
  *   - smooth glass (SOAK_BSDF_TRANSMIT): a delta choice that also updates
  *     the path's inside state, absorption and eta_scale;
  *   - every other BSDF (a traced film too: its eval and pdf are estimates):
@@ -52,7 +53,7 @@ static void continue_delta(rt_path *path, const soak_hit *hit, soak_vec3 ng, con
 
 /* Next-event estimation from every light into path->L. */
 static void sample_lights(rt_thread *t, const soak_hit *hit, soak_vec3 ng, const rt_frame *f, soak_vec3 wl,
-                          const soak_bsdf *b, rt_path *path)
+                          const rt_bsdf_mix *b, rt_path *path)
 {
     soak_vec3 p_out = soak_geometry_offset(hit->p, ng, ng);
     int nl = rt_light_count(t->ctx);
@@ -64,7 +65,7 @@ static void sample_lights(rt_thread *t, const soak_hit *hit, soak_vec3 ng, const
         if (!(l1.z > 0)) continue;
         soak_rgb fv;
         double pdf;
-        if (soak_bsdf_eval(b, l1, wl, &fv, &pdf) != SOAK_OK || !(rgb_max(fv) > 0)) continue;
+        if (rt_mix_eval(b, l1, wl, &fv, &pdf) != SOAK_OK || !(rgb_max(fv) > 0)) continue;
         double mis = ls.pdf > 0 ? rt_power(ls.pdf, pdf) : 1.0;
         if (!rt_visible(t, p_out, ls.wi, ls.dist)) continue;
         soak_rgb contrib = soak_rgb_scale(soak_rgb_mul(path->beta, soak_rgb_mul(fv, ls.L)), l1.z * mis / (ls.pdf > 0 ? ls.pdf : 1.0));
@@ -78,8 +79,8 @@ static void draw3(rt_thread *t, double u[3])
     rt_rand2(t, &u[1], &u[2]);
 }
 
-/* Any reflecting BSDF: lights, then one sample. */
-static void reflect(rt_thread *t, const soak_hit *hit, const soak_bsdf *b, rt_path *path)
+/* Any reflecting BSDF (or mixture of them): lights, then one sample. */
+static void reflect(rt_thread *t, const soak_hit *hit, const rt_bsdf_mix *b, rt_path *path)
 {
     soak_vec3 ng, wl;
     rt_frame f;
@@ -87,12 +88,13 @@ static void reflect(rt_thread *t, const soak_hit *hit, const soak_bsdf *b, rt_pa
         path->alive = 0;
         return;
     }
-    if (b->flags & (SOAK_BSDF_DIFFUSE | SOAK_BSDF_GLOSSY)) sample_lights(t, hit, ng, &f, wl, b, path);
+    if (rt_mix_flags(b) & (SOAK_BSDF_DIFFUSE | SOAK_BSDF_GLOSSY)) sample_lights(t, hit, ng, &f, wl, b, path);
     double u[3];
     draw3(t, u);
     soak_bsdf_sample s;
     int ok = 0;
-    if (soak_bsdf_sample_dir(b, wl, u, &s, &ok) != SOAK_OK || !ok || !(rgb_max(s.weight) > 0)) {
+    if (soak_bsdf_sample_dir(b->b[b->chosen], wl, u, &s, &ok) != SOAK_OK || !ok || (b->n > 1 && !rt_mix_reweight(b, wl, &s)) ||
+        !(rgb_max(s.weight) > 0)) {
         path->alive = 0;
         return;
     }
@@ -125,6 +127,36 @@ static void dielectric(rt_thread *t, const soak_hit *hit, const soak_material *m
     path->prev_delta = 1;
 }
 
+/* The BSDFs at a hit: dry, wet and pore by their shares; one is drawn (one
+ * draw: the film's pixels stay as they were without pores) and, unless the
+ * components can be mixed (rt_mix_can), it alone is kept. */
+static void surface_mix(rt_thread *t, const soak_hit *hit, const soak_object *obj, const soak_material *m,
+                        const rt_material_bsdf *mb, rt_bsdf_mix *mix)
+{
+    mix->n = 1;
+    mix->b[0] = &mb->dry;
+    mix->w[0] = 1.0;
+    mix->chosen = 0;
+    if (!mb->has_wet) return;
+    double w = soak_scene_wetness(obj, hit->p, hit->u, hit->v) * m->film_coverage;
+    double u = rt_rand(t), wet = mb->has_pore ? w * (1.0 - m->film_pore_share) : w;
+    const soak_bsdf *parts[3] = {&mb->dry, &mb->wet, &mb->pore};
+    double share[3] = {1.0 - w, wet, w - wet};
+    int pick = u < wet ? 1 : (u < w ? 2 : 0);
+    mix->n = 0;
+    for (int i = 0; i < 3; ++i) {
+        if (!(share[i] > 0)) continue;
+        if (i == pick) mix->chosen = mix->n;
+        mix->b[mix->n] = parts[i];
+        mix->w[mix->n++] = share[i];
+    }
+    if (mix->n >= 2 && rt_mix_can(mix)) return;
+    mix->n = 1;
+    mix->b[0] = parts[pick];
+    mix->w[0] = 1.0;
+    mix->chosen = 0;
+}
+
 void rt_surface(rt_thread *t, const soak_hit *hit, rt_path *path)
 {
     const soak_scene *s = t->ctx->scene;
@@ -139,12 +171,8 @@ void rt_surface(rt_thread *t, const soak_hit *hit, rt_path *path)
         rt_wet_medium(t, hit, obj, m, path);
         return;
     }
-    const soak_bsdf *b = &mb->dry;
-    if (mb->has_wet) {
-        double w = soak_scene_wetness(obj, hit->p, hit->u, hit->v) * m->film_coverage;
-        double u = rt_rand(t); /* one draw: the film's pixels stay as they were without pores */
-        if (u < w) b = mb->has_pore && u >= w * (1.0 - m->film_pore_share) ? &mb->pore : &mb->wet;
-    }
-    if (b->flags & SOAK_BSDF_TRANSMIT) dielectric(t, hit, m, b, path);
-    else reflect(t, hit, b, path);
+    rt_bsdf_mix mix;
+    surface_mix(t, hit, obj, m, mb, &mix);
+    if (mix.n == 1 && (mix.b[0]->flags & SOAK_BSDF_TRANSMIT)) dielectric(t, hit, m, mix.b[0], path);
+    else reflect(t, hit, &mix, path);
 }

@@ -32,11 +32,11 @@ static const char *SHEET =
     "              \"g1\": %g, \"w\": 1}}},"
     " \"objects\": [{\"type\": \"box\", \"min\": [-4, -3, -0.2], \"max\": [4, 3, 0], \"material\": \"paper\"}]}";
 
-static void compare(const char *what, const char *fmt, double g, int spp_total)
+static void compare(const char *what, const char *fmt, double g, double guide_prob, int spp_total)
 {
     char text[2][2048];
     double m[2], se[2];
-    const double guide[2] = {0.0, 0.7};
+    const double guide[2] = {0.0, guide_prob};
     for (int k = 0; k < 2; ++k) {
         snprintf(text[k], sizeof text[k], fmt, guide[k], g);
         if (!rh_render_mean(what, text[k], ".", REPS, spp_total / REPS, 91 + 17 * k, RH_ALL_PIXELS, &m[k], &se[k]))
@@ -51,8 +51,13 @@ static void compare(const char *what, const char *fmt, double g, int spp_total)
 
 int main(void)
 {
-    compare("wet subsurface sphere", SPHERE, 0.3, 2048);
-    compare("wet subsurface sphere", SPHERE, 0.0, 2048);
-    compare("back-lit wet sheet", SHEET, 0.71, 2048);
+    compare("wet subsurface sphere", SPHERE, 0.3, 0.7, 2048);
+    compare("wet subsurface sphere", SPHERE, 0.0, 0.7, 2048);
+    /* Guided toward the entry face at 0.7, the back-lit sheet's estimate is
+     * heavy-tailed (per-seed means of 1024 spp from 0.30 to 0.94 around the
+     * analog 0.43): a mean of a few seeds is then mostly below the truth and
+     * its standard error meaningless. At 0.25 the per-seed means stay within
+     * 5 % of each other. */
+    compare("back-lit wet sheet", SHEET, 0.71, 0.25, 2048);
     return check_finish();
 }

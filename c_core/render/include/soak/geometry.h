@@ -127,7 +127,8 @@ soak_status soak_geometry_occluded_fan(const soak_geometry *g, soak_vec3 org, co
  * at commit) is answered in closed form in double precision, without the
  * BVH; every other case falls back to the scene query, except that an
  * occlusion query whose segment lies in the object's clear ball (about the
- * centre of its bounds, free of every surface, found at commit) answers 0
+ * centre of its bounds, free of every surface, found at commit) or, for a
+ * box that no other object's bounds meet, in its interior answers 0
  * without traversal. Cycles' subsurface
  * walk likewise intersects only its own object (scene_intersect_local).
  * With want_uv = 0 a hit leaves u = v = 0 and ns = ng (a walk needs texture
@@ -139,7 +140,8 @@ soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object
 int soak_geometry_object_isolated(const soak_geometry *g, unsigned object_id);
 /* A lower bound on the distance from p, inside object object_id, to any
  * surface: from an isolated sphere's own radius, or from the object's clear
- * ball; 0 when p is outside both or there is neither. No traversal. */
+ * ball or clear box (the larger); 0 when p is outside them or there is
+ * none. No traversal. */
 double soak_geometry_clear_distance(const soak_geometry *g, unsigned object_id, soak_vec3 p);
 
 /* Origin for a ray leaving the surface at p toward direction dir: p moved off
