@@ -7,6 +7,8 @@ interleaved:
 
   wet      the wiring with the ripple normal unlinked from the group (the
            wet map still drives the wetness; Cycles compiles no unlinked node);
+  sharp    the ripples without the far flipbook (the sharp one straight into
+           the Normal Map node: no far lookup, no distance blend);
   ripples  the whole wiring: flipbooks, distance blend, normal map, flood mix.
 
 Prints each run, min and median per state, the ratio ripples/wet, and the
@@ -47,6 +49,9 @@ rain.wire(mat, sequence("wet.0001.exr"), 1, 1, sequence("ripples.0000.exr"), 64,
 rain.sync_level(mat)
 ripple_link = gn.inputs["Normal"].links[0]
 source = ripple_link.from_socket
+nm = next(n for n in rain.rain_nodes(tree) if n.type == "NORMAL_MAP")
+sharp_tex = next(n for n in rain.rain_nodes(tree) if n.type == "TEX_IMAGE" and "far" not in n.label)
+blend = nm.inputs["Color"].links[0].from_socket
 
 
 def render_cpu():
@@ -55,7 +60,7 @@ def render_cpu():
     return time.process_time() - t0
 
 
-states = ("wet", "ripples")
+states = ("wet", "sharp", "ripples")
 times = {s: [] for s in states}
 for r in range(repeat):
     for state in states:
@@ -64,6 +69,7 @@ for r in range(repeat):
                 tree.links.remove(link)
         else:
             tree.links.new(source, gn.inputs["Normal"])
+            tree.links.new(sharp_tex.outputs["Color"] if state == "sharp" else blend, nm.inputs["Color"])
         times[state].append(render_cpu())
         print(f"run {r} {state}: {times[state][-1]:.3f} s CPU", flush=True)
 mins = {k: min(v) for k, v in times.items()}
@@ -73,4 +79,5 @@ print(f"Blender {bpy.app.version_string}, load average {os.getloadavg()[0]:.1f},
       f"{len(kinds)} rain nodes: {', '.join(kinds)}")
 for k in states:
     print(f"{k}: min {mins[k]:.3f} s, median {meds[k]:.3f} s CPU")
-print(f"ratio ripples/wet: min {mins['ripples'] / mins['wet']:.3f}, median {meds['ripples'] / meds['wet']:.3f}")
+for k in ("sharp", "ripples"):
+    print(f"ratio {k}/wet: min {mins[k] / mins['wet']:.3f}, median {meds[k] / meds['wet']:.3f}")

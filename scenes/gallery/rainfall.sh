@@ -98,6 +98,10 @@ open(sys.argv[2], "wb").write(buf.getvalue())
 PY
   echo "rainfall: $OUT/rainfall_$r.png $(( $(stat -c %s "$OUT/rainfall_$r.png") / 1024 )) KB"
 }
+inset() { # frame close-up: the close-up (half size) into the frame's lower right corner, a white frame round it
+  oiiotool "$2" --pattern constant:color=1,1,1 "$((FW / 2 + 4))x$((FH / 2 + 4))" 3 --paste +2+2 -d uint8 -o inset.png
+  oiiotool inset.png "$1" --paste "+$((FW / 2 - 6))+$((FH / 2 - 6))" -d uint8 -o "$1"
+}
 frames_pov=() frames_bl=()
 if [ "$WHICH" != blender ]; then
   command -v povray >/dev/null || { echo "FAIL: povray not found (installed by the README's set-up)"; exit 1; }
@@ -111,6 +115,12 @@ if [ "$WHICH" != blender ]; then
     frames_pov+=("pov.$f.png")
     step "POV-Ray frame $((k + 1)) (t = ${TIMES[$k]} s): $(( $(date +%s) - t0 )) s"
   done
+  # the last frame's puddle close up, pasted into its lower right corner
+  povray "+I$SCN/rainfall.pov" +Opov.close.exr +FE "+W$((FW / 2))" "+H$((FH / 2))" -D -V +WT2 "+L$ROOT/povray" "+L$WORK" \
+    Output_Alpha=off +A0.05 +AM2 +R2 "Declare=Frame=${#TIMES[@]}" "Declare=Time=${TIMES[-1]}" Declare=Close=1 \
+    "Declare=WallWet=$wall" >pov.close.log 2>&1 || { echo "FAIL: povray rainfall.pov close-up"; tail -5 pov.close.log; exit 1; }
+  oiiotool pov.close.exr --colorconvert linear sRGB -d uint8 -o pov.close.png
+  inset "${frames_pov[-1]}" pov.close.png
   strip povray "${frames_pov[@]}"
 fi
 if [ "$WHICH" != povray ]; then
@@ -126,6 +136,7 @@ if [ "$WHICH" != povray ]; then
     || { echo "FAIL: Blender, see the log:"; tail -15 blender.log; exit 1; }
   grep '^rainfall' blender.log || true
   for k in "${!TIMES[@]}"; do frames_bl+=("bl.$(printf %04d $((k + 1))).png"); done
+  inset "${frames_bl[-1]}" bl.close.png
   strip blender "${frames_bl[@]}"
 fi
 # the animation: the frames side by side (POV-Ray left, Blender right), a second each

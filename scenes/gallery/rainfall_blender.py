@@ -32,6 +32,7 @@ rain = sys.modules[[m for m in sys.modules if m.endswith("soak.rain")][0]]
 
 X0, X1, Y0, Y1 = -0.6, 3.2, -1.6, 0.0     # the paving map's extent (rain_ground.py)
 RIPPLE_TILE = 0.5                         # m, soak bake ripples --tile
+EXAGGERATE = 10.0                         # the ripples' slopes (rainfall.pov's Exaggerate)
 
 
 def _sequence(name):
@@ -65,6 +66,9 @@ def _rain(ob, preset, wet_files, level, tiles):
         if n.type == "MAPPING":
             n.inputs["Scale"].default_value = (tiles[0], tiles[1], 1.0)
     rain.sync_level(mat)
+    for n in rain.rain_nodes(mat.node_tree):   # slopes x 10, as rainfall.pov: the physical rings
+        if n.type == "NORMAL_MAP":              # do not show under this overcast light at this size
+            n.inputs["Strength"].default_value = EXAGGERATE
     return mat
 
 
@@ -118,6 +122,13 @@ def main():
         t0 = time.time()
         bpy.ops.render.render(write_still=True)
         print(f"rainfall: Blender {bpy.app.version_string} frame {k}: {time.time() - t0:.1f} s", flush=True)
+    # the last frame's puddle close up (rainfall.sh pastes it into that frame), half size
+    cam = sc.camera
+    seeds._camera(sc, (1.3, -1.25, 0.42), (1.3, -0.3, 0.0), lens=18 / math.tan(math.radians(20)))
+    sc.render.resolution_x, sc.render.resolution_y = w // 2, h // 2
+    sc.render.filepath = os.path.join(work, "bl.close.png")
+    bpy.ops.render.render(write_still=True)
+    sc.camera = cam
 
 
 main()
