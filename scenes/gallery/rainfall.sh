@@ -8,7 +8,8 @@
 #   OUT/rainfall.webp                                   both renderers side by side, animated (< 2 MB)
 # usage: scenes/gallery/rainfall.sh SOAK OUT [povray|blender|both]   (make rainfall-gallery)
 # Environment: RAIN_BLENDER (3.4, 4.3 or 5.2; default 3.4) through tests/blender/run_blender.sh
-# with the add-on zip RAIN_ADDON (default build/soak_blender.zip); RAIN_SAMPLES (Cycles, 24).
+# with the add-on zip RAIN_ADDON (default build/soak_blender.zip); RAIN_SAMPLES (Cycles, 24);
+# RAIN_WORK=DIR keeps the bakes in DIR and reuses them on the next run (delete DIR/baked to re-bake).
 #
 # Per frame at time t the wet map of each surface is our composition of two bakes:
 #   w(t) = max(S * drops(t), rain(t))
