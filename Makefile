@@ -9,13 +9,13 @@ PREFIX     ?= /usr/local
 # building the C core only its compile dependencies; the demo adds the
 # renderers, the tests everything. A goal's tier reaches its prerequisites.
 DEPS_TIER  ?= build
-demo gallery povray-gallery soak-gallery: DEPS_TIER = demo
+demo gallery povray-gallery soak-gallery rainfall-gallery: DEPS_TIER = demo
 package: DEPS_TIER = package
 test test-release test-asan blender43 blender52: DEPS_TIER = test
 # The project's own builds treat warnings as errors (a plain cmake build does not).
 CMAKE_DEV  = -DSOAK_WERROR=ON
 
-.PHONY: all deps install package build build-asan blender43 blender52 addon exports demo gallery povray-gallery soak-gallery test test-release test-asan bench fuzz clean
+.PHONY: all deps install package build build-asan blender43 blender52 addon exports demo gallery povray-gallery soak-gallery rainfall-gallery test test-release test-asan bench fuzz clean
 
 all: build
 
@@ -94,6 +94,16 @@ SOAK_GALLERY_LIMIT ?= 420
 SOAK_GALLERY_SCENES ?=
 soak-gallery: build
 	@bash scenes/gallery/render.sh $(BUILD)/bin/soak docs/images/gallery $(SOAK_GALLERY_SPP) $(SOAK_GALLERY_LIMIT) $(SOAK_GALLERY_SCENES)
+
+# The "Rainfall over time" section of docs/gallery.md: the bas-relief through a shower,
+# six frames by POV-Ray and by Blender (RAIN_BLENDER: 3.4, 4.3 or 5.2) from the same
+# bakes, into docs/images/gallery/rainfall_{povray,blender}.png and rainfall.webp
+# (scenes/gallery/rainfall.sh; about 10 minutes on two shared cores).
+RAIN_BLENDER ?= 3.4
+rainfall-gallery: build addon $(if $(filter 5.2,$(RAIN_BLENDER)),blender52) $(if $(filter 4.3,$(RAIN_BLENDER)),blender43)
+	@RAIN_BLENDER=$(RAIN_BLENDER) RAIN_ADDON=$(CURDIR)/$(BUILD)/soak_blender.zip \
+	  SOAK_BLENDER43_ROOT=$(CURDIR)/$(BUILD)/trixie-root SOAK_BLENDER52_ROOT=$(CURDIR)/$(BUILD)/sid-root \
+	  bash scenes/gallery/rainfall.sh $(BUILD)/bin/soak docs/images/gallery both
 
 # Each pass lists the skipped tests with their reasons and fails when a test
 # failed, was skipped for want of povray or blender (the set-up installs

@@ -9,15 +9,26 @@ removes them) and never changes the group itself.
   drops frame  --Color-->  group Wet Map
        |                          (the wetness source, role "source")
        +--> Greater Than (Puddle Level - 1e-4, kept equal by the panel's Puddle Level) = mask
-  ripple frame --> Normal Map (tangent, the mesh's UVs) = r
+  ripple frame, far ripple frame (the --far flipbook) mixed by
+    f = smoothstep(near, far, Camera Data View Distance)
+    --> Normal Map (tangent, the mesh's UVs) = r
   base normal (the user's link into the group's Normal, else Geometry Normal) = b
   normalize(b + mask (r - b))  -->  group Normal
+
+The far flipbook is the sharp one low-passed (`soak bake ripples --far`):
+where a pixel covers more than half the rings' wavelength the sharp rings
+alias into noise, so the far one takes over there. `far` is the distance
+at which a pixel of the scene's camera spans half a wavelength (set when
+wired, from the camera and resolution; far_distances), `near` half of it.
+The mix is of the encoded colours (a linear blend of the two textures, as a
+texture's own mip levels blend), before the Normal Map node.
 
 Image sequences (Blender's image user, ``BKE_image_user_frame_get``): the
 file number is clamp(scene frame - frame_start + 1, 0, duration) +
 frame_offset, or with cycling the same modulo duration (0 -> duration)."""
 
 import json
+import math
 
 import bpy
 
@@ -90,22 +101,74 @@ def _drops_node(tree, gn, drops, first, last):
     return n
 
 
-def _ripple_normal(tree, gn, ripples, frames, scene_start, repeat, uv_map):
+RIPPLE_WAVELENGTH = 0.0171      # m, soak bake ripples' default carrier
+FAR_KEY = "soak_rain_far"        # on the Map Range node: From Min / Max are near / far (m)
+
+
+def far_distances(scene, wavelength=RIPPLE_WAVELENGTH):
+    """(near, far) camera distances in metres: at `far` one pixel of the
+    scene's camera spans half the rings' wavelength (the sharp flipbook
+    aliases beyond it), `near` = far / 2. An orthographic camera's pixel
+    has one size at every distance: all near (1e6 m) or all far (0 m)."""
+    cam = scene.camera
+    res = max(scene.render.resolution_x, scene.render.resolution_y) * scene.render.resolution_percentage / 100
+    if cam is None or cam.type != "CAMERA" or res < 1:
+        return 5.0, 10.0
+    if cam.data.type == "ORTHO":
+        far = 1e6 if cam.data.ortho_scale / res < wavelength / 2 else 1e-6
+        return far / 2, far
+    pixel = 2.0 * math.tan(cam.data.angle / 2) / res      # radians: angle spans the larger side
+    far = wavelength / 2 / max(pixel, 1e-9)
+    return far / 2, far
+
+
+def _flipbook(tree, image, frames, scene_start, x, y, label):
+    tex = _node(tree, "ShaderNodeTexImage", x, y, label)
+    tex.image = image
+    tex.extension = "REPEAT"
+    tex.interpolation = "Linear"
+    ripples_user(tex.image_user, frames, scene_start)
+    return tex
+
+
+def _far_mix(tree, sharp, far, distances, x, y):
+    """sharp + f (far - sharp), f = smoothstep over the view distance."""
+    cam = _node(tree, "ShaderNodeCameraData", x, y - 420, "Soak Rain: view distance")
+    mr = _node(tree, "ShaderNodeMapRange", x + 180, y - 420, "Soak Rain: far ripples")
+    mr.interpolation_type = "SMOOTHSTEP"
+    mr.clamp = True
+    mr[FAR_KEY] = True
+    mr.inputs["From Min"].default_value, mr.inputs["From Max"].default_value = distances
+    tree.links.new(cam.outputs["View Distance"], mr.inputs["Value"])
+    d = _vmath(tree, "SUBTRACT", x + 180, y - 260, "Soak Rain: far - sharp")
+    sc = _vmath(tree, "SCALE", x + 360, y - 260, "Soak Rain: by distance")
+    a = _vmath(tree, "ADD", x + 540, y - 260, "Soak Rain: ripple colour")
+    tree.links.new(far.outputs["Color"], d.inputs[0])
+    tree.links.new(sharp.outputs["Color"], d.inputs[1])
+    tree.links.new(d.outputs["Vector"], sc.inputs[0])
+    tree.links.new(mr.outputs["Result"], sc.inputs["Scale"])
+    tree.links.new(sharp.outputs["Color"], a.inputs[0])
+    tree.links.new(sc.outputs["Vector"], a.inputs[1])
+    return a.outputs["Vector"]
+
+
+def _ripple_normal(tree, gn, ripples, frames, scene_start, repeat, uv_map, far=None, distances=(5.0, 10.0)):
     x, y = gn.location.x - 1000, gn.location.y - 500
     uv = _node(tree, "ShaderNodeTexCoord", x, y, "Soak Rain: UV")
     mp = _node(tree, "ShaderNodeMapping", x + 180, y, "Soak Rain: ripple tiles")
     mp.inputs["Scale"].default_value = (repeat, repeat, 1.0)
-    tex = _node(tree, "ShaderNodeTexImage", x + 360, y, "Soak Rain: ripples")
-    tex.image = ripples
-    tex.extension = "REPEAT"
-    tex.interpolation = "Linear"
-    ripples_user(tex.image_user, frames, scene_start)
+    tex = _flipbook(tree, ripples, frames, scene_start, x + 360, y, "Soak Rain: ripples")
     nm = _node(tree, "ShaderNodeNormalMap", x + 640, y, "Soak Rain: ripple normal")
     nm.space = "TANGENT"
     nm.uv_map = uv_map
     tree.links.new(uv.outputs["UV"], mp.inputs["Vector"])
     tree.links.new(mp.outputs["Vector"], tex.inputs["Vector"])
-    tree.links.new(tex.outputs["Color"], nm.inputs["Color"])
+    colour = tex.outputs["Color"]
+    if far is not None:
+        ftex = _flipbook(tree, far, frames, scene_start, x + 360, y - 280, "Soak Rain: far ripples")
+        tree.links.new(mp.outputs["Vector"], ftex.inputs["Vector"])
+        colour = _far_mix(tree, tex, ftex, distances, x + 360, y)
+    tree.links.new(colour, nm.inputs["Color"])
     return nm.outputs["Normal"]
 
 
@@ -155,14 +218,14 @@ def sync_level(mat):
             n.inputs[1].default_value = level - FLOOD_EPS
 
 
-def _wire(mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv_map):
+def _wire(mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv_map, far, distances):
     tree = mat.node_tree
     gn = gns[0]
     old = rain_nodes(tree) + nodes._source_nodes(tree)
     base = _base_normal(tree, gn)
     src = _drops_node(tree, gn, drops, first, last)
     wet = src.outputs["Color"]
-    ripple = _ripple_normal(tree, gn, ripples, frames, scene_start, repeat, uv_map)
+    ripple = _ripple_normal(tree, gn, ripples, frames, scene_start, repeat, uv_map, far, distances)
     normal, mask = _flood_mix(tree, gn, wet, ripple, base)
     for g in gns:
         tree.links.new(wet, g.inputs["Wet Map"])
@@ -177,10 +240,12 @@ def _wire(mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv
     return src
 
 
-def wire(mat, drops, first, last, ripples, frames, scene_start, repeat, uv_map):
+def wire(mat, drops, first, last, ripples, frames, scene_start, repeat, uv_map, far=None, distances=(5.0, 10.0)):
     """Wires a baked drops sequence (files first..last, file f = scene frame
     f) and ripple flipbook (`frames` files from 0, looping from the scene's
-    first frame, `repeat` tiles across the UV square) into a wet material.
+    first frame, `repeat` tiles across the UV square) into a wet material;
+    with `far` (the --far flipbook, same frames) blended in from distances
+    (near, far) metres from the camera on (far_distances).
     All or nothing: on failure the tree is as before."""
     tree = mat.node_tree
     gns = nodes.group_nodes(tree) if tree is not None else []
@@ -189,7 +254,8 @@ def wire(mat, drops, first, last, ripples, frames, scene_start, repeat, uv_map):
     nodes.check_editable(mat)
     if any(nodes.RESTORE_KEY not in g for g in gns):
         raise RuntimeError(f"material '{mat.name}': a Soak Wet node has no restore record (Make Dry, then Make Wet)")
-    return nodes._atomic(tree, _wire, mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv_map)
+    return nodes._atomic(tree, _wire, mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv_map,
+                         far, distances)
 
 
 TAG = "soak_rain_for"            # on the images a rain bake loaded: the object's name

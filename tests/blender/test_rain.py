@@ -19,6 +19,13 @@ is the baked file of the frame the scene frame must show, read on its own
  3. the normal entering the group is normalize(2 c - 1) of ripples.<k>.exr,
     k = (frame - scene start) mod 64, where w >= p, and the plane's +Z
     elsewhere (tangent +X, bitangent +Y for the plane's UVs);
+ 3b. the far flipbook (soak bake ripples --far) blends in with the view
+    distance: this camera's pixel (0.5 m / 256 = 2 mm) is under half the
+    rings' wavelength (8.55 mm), so the wiring puts the plane near (the
+    checks of 3 see the sharp flipbook); with the blend's distances moved
+    below the plane's, the same render shows ripples_far.<k>.exr; and a
+    50 mm lens on a 36 mm sensor at 1920 px (3.75e-4 rad a pixel) puts the
+    far distance at 8.55 mm / 3.75e-4 = 22.8 m;
  4. sheltered texels (under the board) stay dry while open ones get wet;
  5. all or nothing: a failing soak, a failing wiring half-way and a
     backwards frame range leave the node tree as it was (common.tree_state),
@@ -157,9 +164,9 @@ def check_liquid(sc, mat, gn, ref, frame, level):
     check(err < TOL / level, f"frame {frame}: Liquid = min(w / {level}, 1) (max |diff| {err:.2e})")
 
 
-def check_normal(sc, mat, gn, plane, ref, frame, level):
+def check_normal(sc, mat, gn, plane, ref, frame, level, flipbook="ripples", min_bent=1e-3):
     k = (frame - sc.frame_start) % 64
-    rip, w = read(os.path.join(folder(plane), f"ripples.{k:04d}.exr"))
+    rip, w = read(os.path.join(folder(plane), f"{flipbook}.{k:04d}.exr"))
     check(w == N, f"ripple frame {w} wide")
     got = render(sc, mat, gn.inputs["Normal"].links[0].from_socket, frame, vector=True)
     worst, flooded, bent = 0.0, 0, 0.0
@@ -174,10 +181,36 @@ def check_normal(sc, mat, gn, plane, ref, frame, level):
             n = [0.0, 0.0, 1.0]
         g = [2.0 * got[4 * p + c] - 1.0 for c in range(3)]
         worst = max(worst, max(abs(a - b) for a, b in zip(g, n)))
-    check(flooded > 100 and bent > 1e-3, f"frame {frame}: {flooded} flooded texels, ripples tilt up to "
+    check(flooded > 100 and bent > min_bent, f"{flipbook}, frame {frame}: {flooded} flooded texels, ripples tilt up to "
                                          f"{math.degrees(math.acos(1 - bent)):.1f} deg")
-    check(worst < 4 * TOL, f"frame {frame}: rendered normal = ripples.{k:04d}.exr where w >= {level}, +Z "
+    check(worst < 4 * TOL, f"frame {frame}: rendered normal = {flipbook}.{k:04d}.exr where w >= {level}, +Z "
                            f"elsewhere (max |diff| {worst:.2e})")
+    return bent
+
+
+def check_far(sc, mat, gn, plane, ref, frame, level, bent_sharp):
+    """3b: the far flipbook by view distance (see the module's docstring)."""
+    mr = next(n for n in mat.node_tree.nodes if n.get("soak_rain_far"))
+    near, far = mr.inputs["From Min"].default_value, mr.inputs["From Max"].default_value
+    check(near > 2.0 and far > near, f"the plane (2 m from an orthographic camera with 2 mm pixels) is near: "
+                                     f"far ripples from {near:g} m to {far:g} m")
+    mr.inputs["From Min"].default_value, mr.inputs["From Max"].default_value = 1e-4, 2e-4
+    bent_far = check_normal(sc, mat, gn, plane, ref, frame, level, "ripples_far", 1e-6)
+    mr.inputs["From Min"].default_value, mr.inputs["From Max"].default_value = near, far
+    check(bent_far < 0.5 * bent_sharp, f"far ripples tilt less (1 - n.z up to {bent_far:.2e}, sharp {bent_sharp:.2e})")
+    rain = sys.modules["soak.rain"]
+    cd = sc.camera.data
+    cd.type, cd.lens, cd.sensor_width, cd.sensor_fit = "PERSP", 50.0, 36.0, "AUTO"
+    x, y = sc.render.resolution_x, sc.render.resolution_y
+    sc.render.resolution_x, sc.render.resolution_y = 1920, 1080
+    try:
+        got = rain.far_distances(sc)
+    finally:
+        cd.type = "ORTHO"
+        sc.render.resolution_x, sc.render.resolution_y = x, y
+    want = 0.0171 / 2 / (36.0 / 50.0 / 1920)
+    check(abs(got[1] - want) < 1e-3 * want and abs(got[0] - want / 2) < 1e-3 * want,
+          f"50 mm lens, 1920 px: far ripples from {got[0]:.2f} m to {got[1]:.2f} m (expected {want / 2:.2f}, {want:.2f})")
 
 
 def check_shelter(ref):
@@ -250,7 +283,7 @@ def check_undo(sc):
     mat = bpy.data.materials["Wet ground"]
     tex = [n for n in mat.node_tree.nodes if n.type == "TEX_IMAGE" and n.image is not None]
     files = [bpy.path.abspath(n.image.filepath) for n in tex]
-    check(common.tree_state(mat.node_tree) == before and len(tex) == 2 and all(os.path.isfile(f) for f in files),
+    check(common.tree_state(mat.node_tree) == before and len(tex) == 3 and all(os.path.isfile(f) for f in files),
           f"undo of Bake Rain restores the tree; its images find their frames ({len(tex)} image nodes)")
 
 
@@ -281,7 +314,8 @@ def main():
     check(m_last < m_end, f"drying after the rain: mean {m_end:.3f} -> {m_last:.3f}")
     check_shelter(ref_end)
     check_liquid(sc, mat, gn, ref_end, END, 0.6)
-    check_normal(sc, mat, gn, plane, ref_end, END, 0.6)
+    bent = check_normal(sc, mat, gn, plane, ref_end, END, 0.6)
+    check_far(sc, mat, gn, plane, ref_end, END, 0.6, bent)
     check_normal(sc, mat, gn, plane, ref, 12, 0.6)
     check_refusals(sc, mat, plane)
     old = sorted(i.name for i in bpy.data.images if i.get("soak_rain_for"))
@@ -289,7 +323,7 @@ def main():
     check(bpy.ops.soak.bake_rain() == {"FINISHED"}, "a second Bake Rain")
     now = sorted(n.name for n in mat.node_tree.nodes if n.get("soak_role") == "rain")
     imgs = [i for i in bpy.data.images if i.get("soak_rain_for")]
-    check(len(now) == len(rain_nodes) and len(imgs) == 2,
+    check(len(now) == len(rain_nodes) and len(imgs) == 3,
           f"the second bake replaced the first's nodes ({len(now)}) and images ({old} -> {[i.name for i in imgs]})")
     check_undo(sc)
     mat = bpy.data.materials["Wet ground"]

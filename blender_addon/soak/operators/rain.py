@@ -54,7 +54,13 @@ def ripples_command(exe, out, s, fps):
     return [exe, "bake", "ripples", "--rate", f"{s.rate:.9g}", "--tile", f"{RIPPLE_TILE:.9g}",
             "--width", str(RIPPLE_SIZE), "--height", str(RIPPLE_SIZE), "--loop-frames", str(RIPPLE_FRAMES),
             "--period", f"{RIPPLE_FRAMES / fps:.9g}", "--seed", str(s.seed),
-            "--frames", f"0-{RIPPLE_FRAMES - 1}", "-o", out]
+            "--frames", f"0-{RIPPLE_FRAMES - 1}", "-o", out, "--far", far_path(out)]
+
+
+def far_path(out):
+    """The --far flipbook beside the sharp one: ripples.%04d.exr -> ripples_far.%04d.exr."""
+    head, tail = os.path.split(out)
+    return os.path.join(head, tail.replace("ripples", "ripples_far", 1))
 
 
 def output_folder(ob):
@@ -209,20 +215,21 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
             self.report({"ERROR"}, f"cannot move the baked frames to {self._folder}: {e}")
             return {"CANCELLED"}
         drops, ripples = self._sequence("drops", self._first), self._sequence("ripples", 0)
+        far = self._sequence("ripples_far", 0)
         try:
             rain.wire(self._mat, drops, self._first, self._last, ripples, RIPPLE_FRAMES, self._scene_start,
-                      self._repeat, self._uv)
+                      self._repeat, self._uv, far, rain.far_distances(context.scene))
         except Exception as e:         # ours (RuntimeError) or a bug: the tree is back as it was either way
-            bpy.data.images.remove(drops)
-            bpy.data.images.remove(ripples)
+            for img in (drops, ripples, far):
+                bpy.data.images.remove(img)
             shutil.rmtree(self._folder, ignore_errors=True)
             why = str(e) if isinstance(e, RuntimeError) else f"{type(e).__name__}: {e}"
             self.report({"ERROR"}, f"rain baked but not wired (frames removed): {why}")
             return {"CANCELLED"}
         # the panel's Source shows the drops (set without re-wiring: the node is in place)
         properties._revert(self._mat.soak, {"wetness_source": "IMAGE", "wet_map": drops})
-        rain.drop_old_images(self._ob.name, (drops, ripples))
-        for img, name in ((drops, "drops"), (ripples, "ripples")):
+        rain.drop_old_images(self._ob.name, (drops, ripples, far))
+        for img, name in ((drops, "drops"), (ripples, "ripples"), (far, "ripples_far")):
             if bpy.data.images.get(self._base_name(name)) is None:
                 img.name = self._base_name(name)
         where = (" (earlier bakes' folders are kept for undo)" if self._saved
