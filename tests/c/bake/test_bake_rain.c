@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "surface_mesh.h"
 #include "soak/bake_rain.h"
 
 /* Grid mesh (n x n quads) over uv in [0,1]^2 with z = f(x, y), x, y = uv * L
@@ -79,14 +80,6 @@ static void append_quad(soak_mesh *m, const double q[4][3])
     append_mesh(m, &b);
 }
 
-static void mesh_free(soak_mesh *m)
-{
-    free(m->positions);
-    free(m->uvs);
-    free(m->indices);
-    free(m->normals);
-}
-
 static double paraboloid(double x, double y)
 {
     return 2.0 * (x * x + y * y); /* bowl of radius 0.5 m, 0.5 m deep at the corners */
@@ -131,7 +124,7 @@ static void test_open_plane(void)
     }
     check_true("open plane, hemisphere sky: every texel exactly 1", lo == 1.0 && hi == 1.0);
     soak_rain_result_free(&r);
-    mesh_free(&m);
+    surface_mesh_free(&m);
 }
 
 static void test_roof(void)
@@ -157,8 +150,8 @@ static void test_roof(void)
     check_close("floor under a roof: max exposure", emax, 0.0, 1e-3);
     check_close("floor under a roof: max water depth (m)", wmax, 0.0, 1e-12);
     soak_rain_result_free(&r);
-    mesh_free(&floor_m);
-    mesh_free(&roof);
+    surface_mesh_free(&floor_m);
+    surface_mesh_free(&roof);
 }
 
 /* Floor of a square well (half-width a, walls of height H), hemisphere sky:
@@ -193,7 +186,7 @@ static void test_well(void)
     check_close("well floor centre: exposure vs view factor to the opening (4 sd)", got, F,
                 4.0 * sqrt(F * (1 - F) / p.rays));
     soak_rain_result_free(&r);
-    mesh_free(&m);
+    surface_mesh_free(&m);
 }
 
 static void test_bowl(void)
@@ -251,7 +244,7 @@ static void test_bowl(void)
     m.uvs = NULL;
     check_status("mesh without UVs", soak_bake_rain(&m, W, W, &p, NULL, &r, err, sizeof err), SOAK_ERR_ARG);
     check_true("message says the mesh has no UVs", strstr(err, "no UVs") != NULL);
-    mesh_free(&m);
+    surface_mesh_free(&m);
 }
 
 static void test_params(void)

@@ -23,46 +23,12 @@
 
 #include "bake_rain_film.h"
 #include "check.h"
+#include "surface_mesh.h"
 #include "soak/bake_rain.h"
 #include "soak/rng.h"
 
 /* Water at 20 C (CRC Handbook) and standard gravity, written out here. */
 static const double MU = 1.002e-3, RHO = 998.2, G = 9.80665;
-
-typedef void (*surface_fn)(double u, double v, double out[3]);
-
-/* nu x nv quads over uv in [0,1]^2, CCW in (u, v). */
-static void surface_mesh(soak_mesh *m, int nu, int nv, surface_fn f)
-{
-    m->n_vertices = (size_t)(nu + 1) * (nv + 1);
-    m->n_triangles = 2 * (size_t)nu * nv;
-    m->positions = malloc(3 * m->n_vertices * sizeof(double));
-    m->uvs = malloc(2 * m->n_vertices * sizeof(double));
-    m->normals = NULL;
-    m->indices = malloc(3 * m->n_triangles * sizeof(unsigned));
-    for (int j = 0; j <= nv; ++j)
-        for (int i = 0; i <= nu; ++i) {
-            size_t k = (size_t)j * (nu + 1) + i;
-            m->uvs[2 * k] = (double)i / nu;
-            m->uvs[2 * k + 1] = (double)j / nv;
-            f(m->uvs[2 * k], m->uvs[2 * k + 1], m->positions + 3 * k);
-        }
-    size_t t = 0;
-    for (int j = 0; j < nv; ++j)
-        for (int i = 0; i < nu; ++i) {
-            unsigned a = (unsigned)(j * (nu + 1) + i), b = a + 1, c = a + (unsigned)(nu + 1), d = c + 1;
-            unsigned tri[6] = {a, b, d, a, d, c};
-            memcpy(m->indices + 3 * t, tri, sizeof tri);
-            t += 2;
-        }
-}
-
-static void mesh_free(soak_mesh *m)
-{
-    free(m->positions);
-    free(m->uvs);
-    free(m->indices);
-}
 
 static const double PLANE_L = 1.0;
 static double plane_cos, plane_sin; /* set before building a plane */
@@ -105,7 +71,7 @@ static void check_plane(double theta_deg, soak_vec3 rain_dir, double exposure, c
     soak_rain_result r;
     char err[256] = "", what[160];
     if (!check_status(name, soak_bake_rain(&m, N, N, &p, NULL, &r, err, sizeof err), SOAK_OK)) {
-        mesh_free(&m);
+        surface_mesh_free(&m);
         return;
     }
     double a = PLANE_L / N, rain = p.rainfall_mm_h / 3.6e6, s = plane_sin;
@@ -127,7 +93,7 @@ static void check_plane(double theta_deg, soak_vec3 rain_dir, double exposure, c
     snprintf(what, sizeof what, "%s: all of it drips off the edges (1 %%)", name);
     check_rel(what, o->dripped, o->in, 0.01);
     soak_rain_result_free(&r);
-    mesh_free(&m);
+    surface_mesh_free(&m);
 }
 
 static void test_nusselt_planes(void)
@@ -399,7 +365,7 @@ static void test_relief(void)
     soak_rain_result_free(&on);
     p.film = 2;
     check_status("film flag 2 refused", soak_rain_check(&p), SOAK_ERR_ARG);
-    mesh_free(&m);
+    surface_mesh_free(&m);
 }
 
 int main(void)

@@ -23,46 +23,12 @@
 
 #include "bake_rain_wave.h"
 #include "check.h"
+#include "surface_mesh.h"
 #include "soak/bake_rain.h"
 
 /* Water at 20 C (CRC Handbook) and standard gravity, written out here. */
 static const double MU = 1.002e-3, RHO = 998.2, G = 9.80665;
 enum { N = 64 };
-
-typedef void (*surface_fn)(double u, double v, double out[3]);
-
-/* n x n quads over uv in [0,1]^2, CCW in (u, v). */
-static void surface_mesh(soak_mesh *m, int n, surface_fn f)
-{
-    m->n_vertices = (size_t)(n + 1) * (n + 1);
-    m->n_triangles = 2 * (size_t)n * n;
-    m->positions = malloc(3 * m->n_vertices * sizeof(double));
-    m->uvs = malloc(2 * m->n_vertices * sizeof(double));
-    m->normals = NULL;
-    m->indices = malloc(3 * m->n_triangles * sizeof(unsigned));
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i) {
-            size_t k = (size_t)j * (n + 1) + i;
-            m->uvs[2 * k] = (double)i / n;
-            m->uvs[2 * k + 1] = (double)j / n;
-            f(m->uvs[2 * k], m->uvs[2 * k + 1], m->positions + 3 * k);
-        }
-    size_t t = 0;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            unsigned a = (unsigned)(j * (n + 1) + i), b = a + 1, c = a + (unsigned)(n + 1), d = c + 1;
-            unsigned tri[6] = {a, b, d, a, d, c};
-            memcpy(m->indices + 3 * t, tri, sizeof tri);
-            t += 2;
-        }
-}
-
-static void mesh_free(soak_mesh *m)
-{
-    free(m->positions);
-    free(m->uvs);
-    free(m->indices);
-}
 
 /* 1 m square rising with v at 30 deg; normal (0, -sin, cos). */
 static const double SIN30 = 0.5, COS30 = 0.86602540378443865;
@@ -98,7 +64,7 @@ static void params(soak_rain_params *p, double duration, int steps, double evapo
 static int plane_film(const soak_rain_params *p, const double *times, int n_times, double *film /* n_times * N */)
 {
     soak_mesh m;
-    surface_mesh(&m, N, plane30);
+    surface_mesh(&m, N, N, plane30);
     soak_rain_frames *f = NULL;
     char err[256] = "";
     int ok = check_status("plane: frames created", soak_rain_frames_create(&m, N, N, p, NULL, &f, err, sizeof err),
@@ -110,7 +76,7 @@ static int plane_film(const soak_rain_params *p, const double *times, int n_time
         if (ok) soak_rain_frame_free(&fr);
     }
     soak_rain_frames_destroy(f);
-    mesh_free(&m);
+    surface_mesh_free(&m);
     return ok;
 }
 
@@ -296,14 +262,14 @@ static void test_balance_threads_chunks(void)
     const char *names[2] = {"plane 30 deg", "bowl"};
     for (int s = 0; s < 2; ++s) {
         soak_mesh m;
-        surface_mesh(&m, N, shapes[s]);
+        surface_mesh(&m, N, N, shapes[s]);
         soak_rain_frames *f = NULL, *g = NULL;
         char err[256] = "";
         soak_bake_exec one = {1, NULL, NULL};
         if (!check_status("frames created", soak_rain_frames_create(&m, N, N, &p, &one, &f, err, sizeof err), SOAK_OK) ||
             !check_status("frames created", soak_rain_frames_create(&m, N, N, &p, &one, &g, err, sizeof err), SOAK_OK)) {
             soak_rain_frames_destroy(f);
-            mesh_free(&m);
+            surface_mesh_free(&m);
             continue;
         }
         /* Rain through the face's horizontal projection: the plane's is 1 x cos 30, the bowl's 1 x 1. */
@@ -321,7 +287,7 @@ static void test_balance_threads_chunks(void)
         }
         soak_rain_frames_destroy(f);
         soak_rain_frames_destroy(g);
-        mesh_free(&m);
+        surface_mesh_free(&m);
     }
 }
 
@@ -331,7 +297,7 @@ static void test_wetness(void)
     soak_rain_params p;
     params(&p, 60, 30, 0.5);
     soak_mesh m;
-    surface_mesh(&m, N, plane30);
+    surface_mesh(&m, N, N, plane30);
     soak_rain_frames *f = NULL;
     char err[256] = "";
     soak_rain_frame fr;
@@ -352,7 +318,7 @@ static void test_wetness(void)
         soak_rain_frame_free(&fr);
     }
     soak_rain_frames_destroy(f);
-    mesh_free(&m);
+    surface_mesh_free(&m);
 }
 
 static void test_bad_input(void)
@@ -360,7 +326,7 @@ static void test_bad_input(void)
     soak_rain_params p;
     params(&p, 0, 30, 0);
     soak_mesh m;
-    surface_mesh(&m, 8, plane30);
+    surface_mesh(&m, 8, 8, plane30);
     soak_rain_frames *f = NULL;
     char err[256] = "";
     check_status("duration 0: no frames", soak_rain_frames_create(&m, 8, 8, &p, NULL, &f, err, sizeof err), SOAK_ERR_ARG);
@@ -374,7 +340,7 @@ static void test_bad_input(void)
                          SOAK_ERR_ARG);
     }
     soak_rain_frames_destroy(f);
-    mesh_free(&m);
+    surface_mesh_free(&m);
 }
 
 int main(void)
