@@ -43,6 +43,11 @@ finish() {
   exit 0
 }
 
+# wall_obj FILE: a 1 x 1 m wall in the x-z plane facing -y (z up), UVs across it.
+wall_obj() {
+  printf 'v 0 0 0\nv 1 0 0\nv 1 0 1\nv 0 0 1\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n' >"$1"
+}
+
 # A unit plane (y = 0) with UVs, as OBJ, in $1 and, when $2 is given, the
 # same plane without UVs in $2 (the bakes' fixture).
 uv_plane_obj() {

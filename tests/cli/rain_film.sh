@@ -10,19 +10,7 @@ rm -rf "$D"
 mkdir -p "$D"
 command -v oiiotool >/dev/null || { skip "oiiotool not on PATH" "reading the film map"; finish; }
 
-# A 1 x 1 m wall in the x-z plane facing -y, z up.
-cat > "$D/wall.obj" <<'OBJ'
-v 0 0 0
-v 1 0 0
-v 1 0 1
-v 0 0 1
-vt 0 0
-vt 1 0
-vt 1 1
-vt 0 1
-f 1/1 2/2 3/3
-f 1/1 3/3 4/4
-OBJ
+wall_obj "$D/wall.obj"
 # Rain from (0,-1,1) in a cone of spread 0: exposure n.u / u.up = 1 exactly.
 P=(bake rain "$D/wall.obj" --up z --rain-dir 0,-1,1 --spread 0 --rays 1 --rainfall 10 --evaporation 0
    --duration 60 --steps 1 --width 32 --height 32 --threads 2)

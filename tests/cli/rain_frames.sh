@@ -13,18 +13,7 @@ rm -rf "$D"
 mkdir -p "$D/one" "$D/chunks"
 command -v oiiotool >/dev/null || { skip "oiiotool not on PATH" "reading the frames"; finish; }
 
-cat > "$D/wall.obj" <<'OBJ'
-v 0 0 0
-v 1 0 0
-v 1 0 1
-v 0 0 1
-vt 0 0
-vt 1 0
-vt 1 1
-vt 0 1
-f 1/1 2/2 3/3
-f 1/1 3/3 4/4
-OBJ
+wall_obj "$D/wall.obj"
 # Exposure n.u / u.up = 1 exactly; frame f at t = 20 f s.
 P=(bake rain "$D/wall.obj" --up z --rain-dir 0,-1,1 --spread 0 --rays 1 --rainfall 10 --evaporation 0
    --duration 60 --steps 60 --width 32 --height 32 --fps 0.05)
