@@ -11,6 +11,8 @@ by tests/blender/test_compat.py."""
 
 import bpy
 
+from . import data
+
 # role -> (Blender 3.x name, Blender 4.x name); None: no such input.
 PRINCIPLED = {
     "base_color": ("Base Color", "Base Color"),
@@ -118,10 +120,6 @@ def coat_base_compensation(b, coat_weight, coat_ior, normal):
     return b.math("DIVIDE", 1.0, b.math("SUBTRACT", 1.0, dim))
 
 
-def _f0(n):
-    return ((n - 1.0) / (n + 1.0)) ** 2
-
-
 def specular_for_f0(bsdf, f0, version=None):
     """The Principled value (3.x Specular / 4.x Specular IOR Level) whose
     normal-incidence reflectance is f0: 3.x's F0 is 0.08 x Specular
@@ -130,7 +128,7 @@ def specular_for_f0(bsdf, f0, version=None):
     if scheme(version) == 0:
         return f0 / 0.08
     ior = principled_input(bsdf, "ior").default_value
-    return 0.5 * f0 / _f0(ior) if ior != 1.0 else 0.5
+    return 0.5 * f0 / data.normal_reflectance(ior) if ior != 1.0 else 0.5
 
 
 def exact_lookups_required(version=None):

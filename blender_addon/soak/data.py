@@ -56,6 +56,18 @@ def table(preset, liquid_name):
         raise SoakDataError(f"preset '{preset}' has no table for liquid '{liquid_name}'") from None
 
 
+def normal_reflectance(ior):
+    """Fresnel's normal-incidence reflectance of a dielectric of index ior,
+    read from the core's table (soak_data.json "normal_reflectance", linear
+    between its indices; clamped to its range, 1 to 3)."""
+    t = load()["normal_reflectance"]
+    values = t["values"]
+    x = (ior - t["ior_first"]) / t["ior_step"]
+    x = min(max(x, 0.0), len(values) - 1.0)
+    i = min(int(x), len(values) - 2)
+    return values[i] + (values[i + 1] - values[i]) * (x - i)
+
+
 def preset_items(_self=None, _context=None):
     return [(m["name"], m["display_name"], m["kind"].replace("_", " ")) for m in load()["materials"]]
 

@@ -301,7 +301,7 @@ def _preset_specular(gn, bsdf, settings):
     if m["kind"] == "conductor" or gn.inputs["Specular"].is_linked:
         return
     weight = data.table(settings.preset, settings.liquid)["params"][0][4]   # params pixel 1, green
-    f0 = ((m["ior"] - 1.0) / (m["ior"] + 1.0)) ** 2
+    f0 = data.normal_reflectance(m["ior"])
     gn.inputs["Specular"].default_value = compat.specular_for_f0(bsdf, weight * f0)
 
 

@@ -28,6 +28,7 @@
 #include <string.h>
 
 #include "soak/export.h"
+#include "soak/fresnel.h"
 #include "soak/json_writer.h"
 #include "soak/sheet.h"
 #include "soak/wet_specular.h"
@@ -36,6 +37,9 @@
 #define BL_FORMAT_VERSION 4
 #define BL_DIGITS 6             /* significant digits of pixels and facts */
 #define BL_ZERO 5e-13           /* written as 0 below this */
+#define BL_F0_IOR_FIRST 1.0     /* normal_reflectance table: indices 1.00 ... 3.00 */
+#define BL_F0_IOR_STEP 0.01
+#define BL_F0_N 201
 #define BL_PROGRAM_DIGITS 10    /* node program constants: positions of rows */
 #define BL_PROGRAM_ZERO 5e-16
 #define BL_MAX_COLS 257
@@ -420,6 +424,23 @@ static soak_status add_material(soak_json *j, cJSON *materials, const soak_prese
     return SOAK_OK;
 }
 
+/* Fresnel's normal-incidence reflectance of a dielectric over the index, for
+ * the add-on's conversions between a Principled BSDF's IOR and its specular
+ * (3.x Specular, 4.x Specular IOR Level): read there by linear interpolation,
+ * whose error at this step is below 1e-6 (F0'' < 0.1 on [1, 3]). */
+static void add_normal_reflectance(soak_json *j, cJSON *root)
+{
+    cJSON *t = soak_json_object(j, root, "normal_reflectance");
+    soak_json_num(j, t, "ior_first", BL_F0_IOR_FIRST);
+    soak_json_num(j, t, "ior_step", BL_F0_IOR_STEP);
+    cJSON *values = soak_json_array(j, t, "values");
+    for (int i = 0; i < BL_F0_N; ++i) {
+        double f0 = 0.0;
+        if (soak_fresnel_r0(BL_F0_IOR_FIRST + i * BL_F0_IOR_STEP, 0.0, &f0) != SOAK_OK) j->ok = 0;
+        soak_json_num(j, values, NULL, f0);
+    }
+}
+
 static void add_header(soak_json *j, cJSON *root, const soak_export_header *h)
 {
     soak_json_str(j, root, "format", BL_FORMAT);
@@ -444,6 +465,7 @@ static void add_header(soak_json *j, cJSON *root, const soak_export_header *h)
                   "the worst error of that against the core, view_max_error the view factor's (views up to 75 deg, "
                   "times the wet albedo of a white dry colour: the error on the colour).");
     add_schedule_program(j, root);
+    add_normal_reflectance(j, root);
 }
 
 soak_status soak_export_write_blender(const soak_preset_db *db, FILE *out, char *err, size_t errlen)
