@@ -65,7 +65,38 @@ source = gn.inputs["Normal"].links[0].from_socket
 nm = next(n for n in rain.rain_nodes(tree) if n.type == "NORMAL_MAP")
 sharp_tex = next(n for n in rain.rain_nodes(tree) if n.type == "TEX_IMAGE" and "far" not in n.label)
 blend = nm.inputs["Color"].links[0].from_socket
-band_print(f"Blender {bpy.app.version_string}, load average {os.getloadavg()[0]:.1f}, "
+band_kinds = sorted(n.bl_idname for n in rain.rain_nodes(tree))
+
+
+def render_cpu():
+    t0 = time.process_time()
+    bpy.ops.render.render()
+    return time.process_time() - t0
+
+
+states = ("wet", "sharp", "ripples", "near")
+times = {s: [] for s in states}
+for r in range(repeat):
+    for state in states:
+        if state == "wet":
+            for link in list(gn.inputs["Normal"].links):
+                tree.links.remove(link)
+        elif state == "near":
+            wire(rain.NEAR)
+        else:
+            tree.links.new(source, gn.inputs["Normal"])
+            tree.links.new(sharp_tex.outputs["Color"] if state == "sharp" else blend, nm.inputs["Color"])
+        times[state].append(render_cpu())
+        print(f"run {r} {state}: {times[state][-1]:.3f} s CPU", flush=True)
+    near_kinds = sorted(n.bl_idname for n in rain.rain_nodes(tree))
+    wire(rain.BAND)
+    source = gn.inputs["Normal"].links[0].from_socket
+    nm = next(n for n in rain.rain_nodes(tree) if n.type == "NORMAL_MAP")
+    sharp_tex = next(n for n in rain.rain_nodes(tree) if n.type == "TEX_IMAGE" and "far" not in n.label)
+    blend = nm.inputs["Color"].links[0].from_socket
+mins = {k: min(v) for k, v in times.items()}
+meds = {k: statistics.median(v) for k, v in times.items()}
+print(f"Blender {bpy.app.version_string}, load average {os.getloadavg()[0]:.1f}, "
       f"{len(band_kinds)} rain nodes (blend): {', '.join(band_kinds)}; "
       f"{len(near_kinds)} (near only): {', '.join(near_kinds)}")
 for k in states:
