@@ -155,13 +155,16 @@ def _closest_on_box(m, lo, hi, p):
     columns are orthogonal, as without shear)."""
     cols = [m.col[i].xyz for i in range(3)]
     u = [(a + b) / 2 for a, b in zip(lo, hi)]
+
+    def at(u):
+        return m.translation + cols[0] * u[0] + cols[1] * u[1] + cols[2] * u[2]
+
     for _ in range(64):
         for i in range(3):
-            r = m.translation + sum((cols[j] * u[j] for j in range(3) if j != i), cols[i] * 0.0) - p
+            r = at(u) - cols[i] * u[i] - p              # the residual without coordinate i
             c2 = cols[i].length_squared
-            t = -r.dot(cols[i]) / c2 if c2 > 0.0 else lo[i]
-            u[i] = min(max(t, lo[i]), hi[i])
-    return m.translation + sum((cols[j] * u[j] for j in range(3)), cols[0] * 0.0)
+            u[i] = min(max(-r.dot(cols[i]) / c2 if c2 > 0.0 else lo[i], lo[i]), hi[i])
+    return at(u)
 
 
 def ripple_reach(scene, objects, distances):
