@@ -23,6 +23,16 @@ wired, from the camera and resolution; far_distances), `near` half of it.
 The mix is of the encoded colours (a linear blend of the two textures, as a
 texture's own mip levels blend), before the Normal Map node.
 
+Only what the shot needs is wired (ripple_reach, decided at wiring time
+from the camera and the bounding boxes of the objects showing the
+material): all nearer than `near`, the sharp flipbook alone; all farther
+than `far`, the far one alone; else both and the blend. Cycles evaluates
+every lookup that reaches the output, whatever the blend factor: one lookup
+instead of two and no blend cost ~0.12 x the wet group less (Blender 5.2,
+c_core/bench/results/2026-11-29-blender-ripples.md). The ripple Normal Map
+node's label says which ("Ripples: near only"); a camera moved later needs
+a new Bake Rain for the choice to follow.
+
 Image sequences (Blender's image user, ``BKE_image_user_frame_get``): the
 file number is clamp(scene frame - frame_start + 1, 0, duration) +
 frame_offset, or with cycling the same modulo duration (0 -> duration)."""
@@ -31,6 +41,7 @@ import json
 import math
 
 import bpy
+import mathutils
 
 from . import nodes
 
@@ -122,6 +133,78 @@ def far_distances(scene, wavelength=RIPPLE_WAVELENGTH):
     return far / 2, far
 
 
+NEAR, FAR, BAND = "NEAR", "FAR", "BAND"
+REACH_KEY = "soak_rain_reach"    # on the ripple Normal Map node: which flipbooks were wired
+REACH_LABEL = {NEAR: "near only", FAR: "far only", BAND: "near to far blend"}
+
+
+class RippleView(tuple):
+    """(near, far) metres plus `reach`: the flipbooks the objects need
+    (NEAR: the sharp one alone, FAR: the far one alone, BAND: both and the
+    blend). Unpacks and indexes like the (near, far) pair."""
+    def __new__(cls, near, far, reach):
+        view = super().__new__(cls, (near, far))
+        view.reach = reach
+        return view
+
+
+def _closest_on_box(m, lo, hi, p):
+    """The point of the box lo..hi (local) under the affine map m nearest
+    to world point p: coordinate descent on |m u - p|^2 over the box, which
+    is convex, so it reaches the minimum (exact in one sweep when m's
+    columns are orthogonal, as without shear)."""
+    cols = [m.col[i].xyz for i in range(3)]
+    u = [(a + b) / 2 for a, b in zip(lo, hi)]
+
+    def at(u):
+        return m.translation + cols[0] * u[0] + cols[1] * u[1] + cols[2] * u[2]
+
+    for _ in range(64):
+        for i in range(3):
+            r = at(u) - cols[i] * u[i] - p              # the residual without coordinate i
+            c2 = cols[i].length_squared
+            u[i] = min(max(-r.dot(cols[i]) / c2 if c2 > 0.0 else lo[i], lo[i]), hi[i])
+    return at(u)
+
+
+def ripple_reach(scene, objects, distances):
+    """NEAR when every point of the objects' bounding boxes is nearer the
+    scene camera than `near` (the blend is all sharp there), FAR when every
+    point is farther than `far`, else BAND. Farthest point: a box corner;
+    nearest: the box's point nearest the camera. An orthographic camera's
+    pixel has one size everywhere (far_distances gives 5e5..1e6 m or
+    ~0 m): near or far by pixel size. No camera or no object: BAND."""
+    cam = scene.camera
+    boxes = [ob for ob in objects if ob.type == "MESH"]
+    if cam is None or cam.type != "CAMERA" or not boxes:
+        return BAND
+    near, far = distances
+    if cam.data.type == "ORTHO":
+        return NEAR if far > 1.0 else FAR
+    eye = cam.matrix_world.translation
+    lo_d, hi_d = math.inf, 0.0
+    for ob in boxes:
+        m = ob.matrix_world
+        corners = [m @ mathutils.Vector(c) for c in ob.bound_box]
+        hi_d = max(hi_d, max((c - eye).length for c in corners))
+        lo = [min(c[i] for c in ob.bound_box) for i in range(3)]
+        hi = [max(c[i] for c in ob.bound_box) for i in range(3)]
+        lo_d = min(lo_d, (_closest_on_box(m, lo, hi, eye) - eye).length)
+    if hi_d <= near:
+        return NEAR
+    if lo_d >= far:
+        return FAR
+    return BAND
+
+
+def material_objects(scene, mat, ob):
+    """`ob` and the scene's other mesh objects showing `mat` (one wiring
+    serves them all)."""
+    users = [o for o in scene.objects if o.type == "MESH" and o is not ob
+             and any(slot.material == mat for slot in o.material_slots)]
+    return [ob] + users
+
+
 def _flipbook(tree, image, frames, scene_start, x, y, label):
     tex = _node(tree, "ShaderNodeTexImage", x, y, label)
     tex.image = image
@@ -153,21 +236,31 @@ def _far_mix(tree, sharp, far, distances, x, y):
 
 
 def _ripple_normal(tree, gn, ripples, frames, scene_start, repeat, uv_map, far=None, distances=(5.0, 10.0)):
+    """The ripple normal. `distances` a RippleView: its reach picks the
+    flipbooks (NEAR: `ripples` alone, FAR: `far` alone, BAND: both mixed
+    by view distance); a plain (near, far) pair: BAND when `far` is given,
+    else `ripples` alone."""
+    reach = getattr(distances, "reach", BAND if far is not None else NEAR)
+    if far is None and reach != NEAR:
+        raise RuntimeError("the far ripple flipbook is needed here but was not given")
     x, y = gn.location.x - 1000, gn.location.y - 500
     uv = _node(tree, "ShaderNodeTexCoord", x, y, "Soak Rain: UV")
     mp = _node(tree, "ShaderNodeMapping", x + 180, y, "Soak Rain: ripple tiles")
     mp.inputs["Scale"].default_value = (repeat, repeat, 1.0)
-    tex = _flipbook(tree, ripples, frames, scene_start, x + 360, y, "Soak Rain: ripples")
-    nm = _node(tree, "ShaderNodeNormalMap", x + 640, y, "Soak Rain: ripple normal")
+    first = far if reach == FAR else ripples
+    tex = _flipbook(tree, first, frames, scene_start, x + 360, y,
+                    "Soak Rain: far ripples" if reach == FAR else "Soak Rain: ripples")
+    nm = _node(tree, "ShaderNodeNormalMap", x + 640, y, f"Ripples: {REACH_LABEL[reach]}")
+    nm[REACH_KEY] = reach
     nm.space = "TANGENT"
     nm.uv_map = uv_map
     tree.links.new(uv.outputs["UV"], mp.inputs["Vector"])
     tree.links.new(mp.outputs["Vector"], tex.inputs["Vector"])
     colour = tex.outputs["Color"]
-    if far is not None:
+    if reach == BAND:
         ftex = _flipbook(tree, far, frames, scene_start, x + 360, y - 280, "Soak Rain: far ripples")
         tree.links.new(mp.outputs["Vector"], ftex.inputs["Vector"])
-        colour = _far_mix(tree, tex, ftex, distances, x + 360, y)
+        colour = _far_mix(tree, tex, ftex, tuple(distances), x + 360, y)
     tree.links.new(colour, nm.inputs["Color"])
     return nm.outputs["Normal"]
 
@@ -245,7 +338,8 @@ def wire(mat, drops, first, last, ripples, frames, scene_start, repeat, uv_map, 
     f) and ripple flipbook (`frames` files from 0, looping from the scene's
     first frame, `repeat` tiles across the UV square) into a wet material;
     with `far` (the --far flipbook, same frames) blended in from distances
-    (near, far) metres from the camera on (far_distances).
+    (near, far) metres from the camera on (far_distances); `distances` a
+    RippleView wires only the flipbooks its reach names (ripple_reach).
     All or nothing: on failure the tree is as before."""
     tree = mat.node_tree
     gns = nodes.group_nodes(tree) if tree is not None else []

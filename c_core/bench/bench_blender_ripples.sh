@@ -1,7 +1,7 @@
 #!/bin/bash
 # The ripples' Cycles CPU cost in Blender 3.4, 4.3 and 5.2 (bench_blender_ripples.py:
 # the wet plane without the Rain wiring's ripple normal, with the sharp flipbook alone,
-# and with the sharp and far ones blended by distance, interleaved, min
+# with the sharp and far ones blended by distance, and Bake Rain's near-only wiring, interleaved, min
 # and median of REPEAT). VERSIONS (default "3.4 4.3 5.2") and RUN_BLENDER (default
 # tests/blender/run_blender.sh) from the environment.
 # usage: c_core/bench/bench_blender_ripples.sh [BUILD_DIR] [REPEAT]
@@ -23,5 +23,5 @@ for ver in ${VERSIONS:-3.4 4.3 5.2}; do
   SOAK_BLENDER=$ver SOAK_BLENDER43_ROOT="${SOAK_BLENDER43_ROOT:-$BUILD/trixie-root}" \
     SOAK_BLENDER52_ROOT="${SOAK_BLENDER52_ROOT:-$BUILD/sid-root}" BLENDER_USER_SCRIPTS="$TMP/user_$ver" \
     nice -n 5 bash "$RUN" "$ROOT/c_core/bench/bench_blender_ripples.py" --addon "$TMP/soak.zip" \
-    --frames "$TMP/frames" --repeat "$REPEAT" 2>&1 | grep -E '^(run |Blender [0-9]|wet:|sharp:|ripples:|ratio|Traceback|  File|[A-Za-z]*Error)'
+    --frames "$TMP/frames" --repeat "$REPEAT" 2>&1 | grep -E '^(run |Blender [0-9]|wet:|sharp:|ripples:|near:|ratio|Traceback|  File|[A-Za-z]*Error)'
 done

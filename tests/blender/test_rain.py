@@ -19,18 +19,22 @@ is the baked file of the frame the scene frame must show, read on its own
  3. the normal entering the group is normalize(2 c - 1) of ripples.<k>.exr,
     k = (frame - scene start) mod 64, where w >= p, and the plane's +Z
     elsewhere (tangent +X, bitangent +Y for the plane's UVs);
- 3b. the far flipbook (soak bake ripples --far) blends in with the view
-    distance: this camera's pixel (0.5 m / 256 = 2 mm) is under half the
-    rings' wavelength (8.55 mm), so the wiring puts the plane near (the
-    checks of 3 see the sharp flipbook); with the blend's distances moved
-    below the plane's, the same render shows ripples_far.<k>.exr; and a
-    50 mm lens on a 36 mm sensor at 1920 px (3.75e-4 rad a pixel) puts the
-    far distance at 8.55 mm / 3.75e-4 = 22.8 m;
+ 3b. only the flipbooks the camera needs are wired (ripple_reach): this
+    camera's pixel (0.5 m / 256 = 2 mm) is under half the rings'
+    wavelength (8.55 mm), so the plane is near: one ripple image node, the
+    sharp one, labelled "Ripples: near only" (the checks of 3); baked with
+    a 4 m orthographic view (15.6 mm pixels) it is far: the far flipbook
+    alone, and the same render shows ripples_far.<k>.exr; baked with a
+    perspective camera whose near..far band it spans, both and the blend,
+    each flipbook shown when the blend's distances are moved past the
+    plane; the rule itself on a perspective camera (nearest box point and
+    farthest corner against near and far) and the far distance of a 50 mm
+    lens on a 36 mm sensor at 1920 px (3.75e-4 rad a pixel): 22.8 m;
  4. sheltered texels (under the board) stay dry while open ones get wet;
  5. all or nothing: a failing soak, a failing wiring half-way and a
     backwards frame range leave the node tree as it was (common.tree_state),
     with no new image and no stray driver; a second bake replaces the first
-    one's nodes and images."""
+    one's nodes and images; undo of a third (3c's) brings back the second's tree."""
 import math
 import os
 import sys
@@ -188,29 +192,111 @@ def check_normal(sc, mat, gn, plane, ref, frame, level, flipbook="ripples", min_
     return bent
 
 
-def check_far(sc, mat, gn, plane, ref, frame, level, bent_sharp):
-    """3b: the far flipbook by view distance (see the module's docstring)."""
-    mr = next(n for n in mat.node_tree.nodes if n.get("soak_rain_far"))
-    near, far = mr.inputs["From Min"].default_value, mr.inputs["From Max"].default_value
-    check(near > 2.0 and far > near, f"the plane (2 m from an orthographic camera with 2 mm pixels) is near: "
-                                     f"far ripples from {near:g} m to {far:g} m")
-    mr.inputs["From Min"].default_value, mr.inputs["From Max"].default_value = 1e-4, 2e-4
-    bent_far = check_normal(sc, mat, gn, plane, ref, frame, level, "ripples_far", 1e-6)
-    mr.inputs["From Min"].default_value, mr.inputs["From Max"].default_value = near, far
-    check(bent_far < 0.5 * bent_sharp, f"far ripples tilt less (1 - n.z up to {bent_far:.2e}, sharp {bent_sharp:.2e})")
-    rain = sys.modules["soak.rain"]
+def ripple_nodes(mat):
+    """(the ripple image nodes' image names, the ripple Normal Map's reach tag and label, Map Range or None)."""
+    t = mat.node_tree
+    rain = [n for n in t.nodes if n.get("soak_role") == "rain"]
+    imgs = sorted(n.image.name for n in rain if n.type == "TEX_IMAGE")
+    nm = next(n for n in rain if n.type == "NORMAL_MAP")
+    mr = next((n for n in rain if n.get("soak_rain_far")), None)
+    return imgs, nm.get("soak_rain_reach"), nm.label, mr
+
+
+def check_reach(mat, reach, label, want):
+    imgs, got, lab, mr = ripple_nodes(mat)
+    kinds = sorted("far" if "ripples_far" in i else "sharp" for i in imgs)
+    check(got == reach and lab == f"Ripples: {label}" and kinds == want and (mr is not None) == (len(want) == 2),
+          f"{reach}: ripple image nodes {imgs}, label '{lab}', blend {'wired' if mr else 'absent'}")
+
+
+def bake_with(sc, seed, setup):
+    """Bake Rain with the camera changed by `setup`, then the test's
+    orthographic camera back (the wiring stays: it follows only a re-bake)."""
     cd = sc.camera.data
-    cd.type, cd.lens, cd.sensor_width, cd.sensor_fit = "PERSP", 50.0, 36.0, "AUTO"
-    x, y = sc.render.resolution_x, sc.render.resolution_y
-    sc.render.resolution_x, sc.render.resolution_y = 1920, 1080
+    keep = (cd.type, cd.ortho_scale, cd.lens, cd.sensor_width, cd.sensor_fit)
+    setup(cd)
+    sc.soak_rain.seed = seed
     try:
-        got = rain.far_distances(sc)
+        ok = bpy.ops.soak.bake_rain() == {"FINISHED"}
     finally:
-        cd.type = "ORTHO"
-        sc.render.resolution_x, sc.render.resolution_y = x, y
+        cd.type, cd.ortho_scale, cd.lens, cd.sensor_width, cd.sensor_fit = keep
+    check(ok, f"Bake Rain (seed {seed})")
+
+
+def persp(lens):
+    def setup(cd):
+        cd.type, cd.lens, cd.sensor_width, cd.sensor_fit = "PERSP", lens, 36.0, "AUTO"
+    return setup
+
+
+def check_far_only(sc, mat, gn, plane, level, bent_sharp):
+    """3b: an orthographic camera whose pixel (4 m / 256 = 15.6 mm) is over
+    half the wavelength (8.55 mm) puts the plane far: the far flipbook
+    alone; rendered with the test's camera, the normal is ripples_far."""
+    def wide(cd):
+        cd.ortho_scale = 4.0
+    bake_with(sc, 8, wide)
+    check_reach(mat, "FAR", "far only", ["far"])
+    ref, _ = read(os.path.join(folder(plane), f"drops.{END:04d}.exr"))
+    bent_far = check_normal(sc, mat, gn, plane, ref, END, level, "ripples_far", 1e-6)
+    check(bent_far < 0.5 * bent_sharp, f"far ripples tilt less (1 - n.z up to {bent_far:.2e}, sharp {bent_sharp:.2e})")
+    return ref
+
+
+def check_band(sc, mat, gn, plane, ref, level):
+    """3c: a 45 mm lens on 36 mm at 256 px (pixel 0.8 / 256 rad): far =
+    8.55 mm / (0.8 / 256) = 2.736 m, near 1.368 m; the plane 2 m below
+    spans 2.000..2.031 m: both flipbooks and the blend, at those distances;
+    the blend's ends moved past the plane show each flipbook."""
+    bake_with(sc, 8, persp(45.0))
+    check_reach(mat, "BAND", "near to far blend", ["far", "sharp"])
+    _, _, _, mr = ripple_nodes(mat)
+    near, far = mr.inputs["From Min"].default_value, mr.inputs["From Max"].default_value
+    want = 0.0171 / 2 / (0.8 / N)
+    check(abs(far - want) < 1e-3 * want and abs(near - want / 2) < 1e-3 * want,
+          f"blend from {near:.3f} m to {far:.3f} m (expected {want / 2:.3f}, {want:.3f})")
+    mr.inputs["From Min"].default_value, mr.inputs["From Max"].default_value = 1e-4, 2e-4
+    check_normal(sc, mat, gn, plane, ref, END, level, "ripples_far", 1e-6)
+    mr.inputs["From Min"].default_value, mr.inputs["From Max"].default_value = 1e5, 2e5
+    check_normal(sc, mat, gn, plane, ref, END, level)
+    mr.inputs["From Min"].default_value, mr.inputs["From Max"].default_value = near, far
+
+
+def check_reach_rule(sc, plane):
+    """ripple_reach on its own (no bake): the 45 mm camera of 3c (near
+    1.368 m, far 2.736 m) straight above the 0.5 m plane's centre at height
+    h: all near at 1.0 (corners 1.06 m), all far at 2.75, the band at 2.72
+    (the centre nearer than far, though all four corners, 2.743 m, are
+    beyond it); the plane stood up (rotated 90 deg about x) seen from 2.74
+    m and 2.72 m along y: far, band. The 50 mm lens at 1920 px puts far
+    at 8.55 mm / 3.75e-4 rad = 22.8 m."""
+    rain = sys.modules["soak.rain"]
+    cd, co = sc.camera.data, sc.camera
+    keep = (cd.type, cd.lens, cd.sensor_width, cd.sensor_fit, co.location.copy(), co.rotation_euler.copy(),
+            plane.rotation_euler.copy(), sc.render.resolution_x, sc.render.resolution_y)
+    persp(45.0)(cd)
+    try:
+        dist = rain.far_distances(sc)
+        got = []
+        for loc, rot, prot in (((0, 0, 1.0), (0, 0, 0), (0, 0, 0)), ((0, 0, 2.75), (0, 0, 0), (0, 0, 0)),
+                               ((0, 0, 2.72), (0, 0, 0), (0, 0, 0)),
+                               ((0, 2.74, 0), (-math.pi / 2, 0, 0), (math.pi / 2, 0, 0)),
+                               ((0, 2.72, 0), (-math.pi / 2, 0, 0), (math.pi / 2, 0, 0))):
+            co.location, co.rotation_euler, plane.rotation_euler = loc, rot, prot
+            bpy.context.view_layer.update()
+            got.append(rain.ripple_reach(sc, [plane], dist))
+        sc.render.resolution_x, sc.render.resolution_y = 1920, 1080
+        cd.lens = 50.0
+        wide = rain.far_distances(sc)
+    finally:
+        (cd.type, cd.lens, cd.sensor_width, cd.sensor_fit, co.location, co.rotation_euler, plane.rotation_euler,
+         sc.render.resolution_x, sc.render.resolution_y) = keep
+        bpy.context.view_layer.update()
+    check(got == ["NEAR", "FAR", "BAND", "FAR", "BAND"], f"reach by the nearest and farthest box points: {got}")
     want = 0.0171 / 2 / (36.0 / 50.0 / 1920)
-    check(abs(got[1] - want) < 1e-3 * want and abs(got[0] - want / 2) < 1e-3 * want,
-          f"50 mm lens, 1920 px: far ripples from {got[0]:.2f} m to {got[1]:.2f} m (expected {want / 2:.2f}, {want:.2f})")
+    check(abs(wide[1] - want) < 1e-3 * want and abs(wide[0] - want / 2) < 1e-3 * want,
+          f"50 mm lens, 1920 px: far ripples from {wide[0]:.2f} m to {wide[1]:.2f} m "
+          f"(expected {want / 2:.2f}, {want:.2f})")
 
 
 def check_shelter(ref):
@@ -270,20 +356,20 @@ def check_refusals(sc, mat, plane):
           f"a wiring that fails half-way leaves the tree, images and drivers as they were ({msg})")
 
 
-def check_undo(sc):
-    """Undo of a Bake Rain puts back the tree of the bake before it, whose
-    images still find their frames."""
+def check_undo(sc, gn, plane, ref, level):
+    """Undo of a Bake Rain (the band bake of 3c, checked before the undo)
+    puts back the tree of the bake before it (far only), whose images still
+    find their frames."""
     mat = bpy.data.materials["Wet ground"]
     bpy.ops.ed.undo_push(message="before the third bake")
     before = common.tree_state(mat.node_tree)
-    sc.soak_rain.seed = 9
-    check(bpy.ops.soak.bake_rain() == {"FINISHED"}, "a third Bake Rain")
+    check_band(sc, mat, gn, plane, ref, level)
     bpy.ops.ed.undo_push(message="third bake")
     bpy.ops.ed.undo()
     mat = bpy.data.materials["Wet ground"]
     tex = [n for n in mat.node_tree.nodes if n.type == "TEX_IMAGE" and n.image is not None]
     files = [bpy.path.abspath(n.image.filepath) for n in tex]
-    check(common.tree_state(mat.node_tree) == before and len(tex) == 3 and all(os.path.isfile(f) for f in files),
+    check(common.tree_state(mat.node_tree) == before and len(tex) == 2 and all(os.path.isfile(f) for f in files),
           f"undo of Bake Rain restores the tree; its images find their frames ({len(tex)} image nodes)")
 
 
@@ -314,18 +400,18 @@ def main():
     check(m_last < m_end, f"drying after the rain: mean {m_end:.3f} -> {m_last:.3f}")
     check_shelter(ref_end)
     check_liquid(sc, mat, gn, ref_end, END, 0.6)
+    check_reach(mat, "NEAR", "near only", ["sharp"])
     bent = check_normal(sc, mat, gn, plane, ref_end, END, 0.6)
-    check_far(sc, mat, gn, plane, ref_end, END, 0.6, bent)
     check_normal(sc, mat, gn, plane, ref, 12, 0.6)
+    check_reach_rule(sc, plane)
     check_refusals(sc, mat, plane)
     old = sorted(i.name for i in bpy.data.images if i.get("soak_rain_for"))
-    s.seed = 8
-    check(bpy.ops.soak.bake_rain() == {"FINISHED"}, "a second Bake Rain")
+    ref8 = check_far_only(sc, mat, gn, plane, 0.6, bent)
     now = sorted(n.name for n in mat.node_tree.nodes if n.get("soak_role") == "rain")
     imgs = [i for i in bpy.data.images if i.get("soak_rain_for")]
-    check(len(now) == len(rain_nodes) and len(imgs) == 3,
+    check(len(now) == len(rain_nodes) and not set(now) & set(rain_nodes) and len(imgs) == 2,
           f"the second bake replaced the first's nodes ({len(now)}) and images ({old} -> {[i.name for i in imgs]})")
-    check_undo(sc)
+    check_undo(sc, gn, plane, ref8, 0.6)
     mat = bpy.data.materials["Wet ground"]
     check(bpy.ops.soak.make_dry() == {"FINISHED"} and not any(n.get("soak_role") for n in mat.node_tree.nodes),
           "Make Dry removes the rain's nodes")

@@ -57,6 +57,21 @@ def ripples_command(exe, out, s, fps):
             "--frames", f"0-{RIPPLE_FRAMES - 1}", "-o", out, "--far", far_path(out)]
 
 
+REACH_REPORT = {
+    rain.NEAR: "near only (the whole object is nearer the camera than the far ripples start: one flipbook)",
+    rain.FAR: "far only (the whole object is beyond where the far ripples take over: one flipbook)",
+    rain.BAND: "near to far blend (the object spans the distances where the far ripples take over)",
+}
+
+
+def ripple_view(scene, mat, ob):
+    """The far ripples' distances for the scene's camera and which
+    flipbooks the objects showing `mat` need from it, now (a camera moved
+    later needs a new bake)."""
+    near, far = rain.far_distances(scene)
+    return rain.RippleView(near, far, rain.ripple_reach(scene, rain.material_objects(scene, mat, ob), (near, far)))
+
+
 def far_path(out):
     """The --far flipbook beside the sharp one: ripples.%04d.exr -> ripples_far.%04d.exr."""
     head, tail = os.path.split(out)
@@ -98,7 +113,7 @@ def check(context, s):
 
 
 class SOAK_OT_bake_rain(bpy.types.Operator):
-    """Bake drops (wetting during the rain, then drying) over the active mesh's UVs and ripples on its puddles with the soak tool, and animate them in the wet material over the scene's frames"""
+    """Bake drops (wetting during the rain, then drying) over the active mesh's UVs and ripples on its puddles with the soak tool, and animate them in the wet material over the scene's frames. Only the ripple flipbooks the scene camera needs are wired (near, far or both): after moving the camera, bake again"""
     bl_idname = "soak.bake_rain"
     bl_label = "Bake Rain"
     bl_options = {"REGISTER", "UNDO"}
@@ -214,13 +229,16 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         except OSError as e:
             self.report({"ERROR"}, f"cannot move the baked frames to {self._folder}: {e}")
             return {"CANCELLED"}
-        drops, ripples = self._sequence("drops", self._first), self._sequence("ripples", 0)
-        far = self._sequence("ripples_far", 0)
+        view = ripple_view(context.scene, self._mat, self._ob)
+        drops = self._sequence("drops", self._first)
+        ripples = self._sequence("ripples", 0) if view.reach != rain.FAR else None
+        far = self._sequence("ripples_far", 0) if view.reach != rain.NEAR else None
+        loaded = tuple(i for i in (drops, ripples, far) if i is not None)
         try:
             rain.wire(self._mat, drops, self._first, self._last, ripples, RIPPLE_FRAMES, self._scene_start,
-                      self._repeat, self._uv, far, rain.far_distances(context.scene))
+                      self._repeat, self._uv, far, view)
         except Exception as e:         # ours (RuntimeError) or a bug: the tree is back as it was either way
-            for img in (drops, ripples, far):
+            for img in loaded:
                 bpy.data.images.remove(img)
             shutil.rmtree(self._folder, ignore_errors=True)
             why = str(e) if isinstance(e, RuntimeError) else f"{type(e).__name__}: {e}"
@@ -228,14 +246,14 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
             return {"CANCELLED"}
         # the panel's Source shows the drops (set without re-wiring: the node is in place)
         properties._revert(self._mat.soak, {"wetness_source": "IMAGE", "wet_map": drops})
-        rain.drop_old_images(self._ob.name, (drops, ripples, far))
+        rain.drop_old_images(self._ob.name, loaded)
         for img, name in ((drops, "drops"), (ripples, "ripples"), (far, "ripples_far")):
-            if bpy.data.images.get(self._base_name(name)) is None:
+            if img is not None and bpy.data.images.get(self._base_name(name)) is None:
                 img.name = self._base_name(name)
         where = (" (earlier bakes' folders are kept for undo)" if self._saved
                  else " (a temporary folder: save the .blend and bake again to keep them)")
         self.report({"INFO"}, f"rain baked: frames {self._first}-{self._last} and {RIPPLE_FRAMES} ripple frames "
-                              f"in {self._folder}{where}")
+                              f"in {self._folder}{where}; ripples {REACH_REPORT[view.reach]}")
         return {"FINISHED"}
 
     def execute(self, context):  # blocking variant (scripts, tests)
