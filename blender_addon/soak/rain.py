@@ -1,6 +1,7 @@
 """Rain over time in a wet material (issue 37): the drops bake's frame
-sequence as the wetness source, the ripple flipbook as a normal mixed in
-where the puddle level floods.
+sequence as the wetness source, the wetter of it and the rain bake's frame
+(the film on steep faces) into the Wet Map, the ripple flipbook as a normal
+mixed in where the drops reach the puddle level.
 
 Kept apart from wet_group.py and nodes.py: it only adds nodes around the
 Soak Wet group node (tagged like the other nodes Make Wet adds, so Make Dry
