@@ -31,7 +31,8 @@ is the baked file of the frame the scene frame must show, read on its own
     far distance at 8.55 mm / 3.75e-4 = 22.8 m;
  4. sheltered texels (under the board) stay dry while open ones get wet;
  4b. a steep face (a 0.3 m roof tilted 70 degrees, its own bake, 32 x 32
-    texels, seen face-on by the orthographic camera) reads the falling film:
+    texels, Shelter by Scene off, seen face-on by the orthographic camera)
+    reads the falling film:
     its film file is w = 1 where the film runs (more than 1 um: the rain
     puts r cos(70 deg) = 4.8 um/s on it; the physics is the core's test,
     test_bake_rain_frames) while the flat ground at the same time is at 0.27,
@@ -267,6 +268,7 @@ def check_steep(sc):
     check(bpy.ops.soak.make_wet() == {"FINISHED"}, "Make Wet on the roof")
     s = sc.soak_rain
     s.size, s.rays = ROOF_N, 4
+    s.shelter = False                  # nothing near: the path without a shelter (the film still needs the mesh)
     op = sys.modules["soak.operators.rain"]
     keep = op.RIPPLE_SIZE
     op.RIPPLE_SIZE = ROOF_N            # the ripples are not looked at here: 32 x 32 (0.7 s of CPU, 20 s at 256)
