@@ -1,13 +1,18 @@
 """Rain over time in a wet material (issue 37): the drops bake's frame
-sequence as the wetness source, the ripple flipbook as a normal mixed in
-where the puddle level floods.
+sequence as the wetness source, the wetter of it and the rain bake's frame
+(the film on steep faces) into the Wet Map, the ripple flipbook as a normal
+mixed in where the drops reach the puddle level.
 
 Kept apart from wet_group.py and nodes.py: it only adds nodes around the
 Soak Wet group node (tagged like the other nodes Make Wet adds, so Make Dry
 removes them) and never changes the group itself.
 
-  drops frame  --Color-->  group Wet Map
-       |                          (the wetness source, role "source")
+  drops frame (the wetness source, role "source")
+       |    rain frame (`soak bake rain --frames`: the film running down steep
+       |    faces, water on the flat)
+       |      |
+       +------+--> Maximum  -->  group Wet Map
+       |
        +--> Greater Than (Puddle Level - 1e-4, kept equal by the panel's Puddle Level) = mask
   ripple frame, far ripple frame (the --far flipbook) mixed by
     f = smoothstep(near, far, Camera Data View Distance)
@@ -311,7 +316,23 @@ def sync_level(mat):
             n.inputs[1].default_value = level - FLOOD_EPS
 
 
-def _wire(mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv_map, far, distances):
+def _film_max(tree, gn, drops_wet, film, first, last):
+    """max(drops frame, rain frame): the rain bake's sequence (same frames
+    as the drops) read like the drops, the larger wetness wins."""
+    tex = _node(tree, "ShaderNodeTexImage", gn.location.x - 700, gn.location.y + 100, "Soak Rain: film")
+    tex.image = film
+    tex.extension = "EXTEND"
+    tex.interpolation = "Linear"
+    drops_user(tex.image_user, first, last)
+    mx = _node(tree, "ShaderNodeMath", gn.location.x - 400, gn.location.y - 60, "Soak Rain: wetter of drops, film")
+    mx.operation = "MAXIMUM"
+    mx.use_clamp = False
+    tree.links.new(drops_wet, mx.inputs[0])
+    tree.links.new(tex.outputs["Color"], mx.inputs[1])
+    return mx.outputs["Value"]
+
+
+def _wire(mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv_map, far, distances, film):
     tree = mat.node_tree
     gn = gns[0]
     old = rain_nodes(tree) + nodes._source_nodes(tree)
@@ -319,7 +340,9 @@ def _wire(mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv
     src = _drops_node(tree, gn, drops, first, last)
     wet = src.outputs["Color"]
     ripple = _ripple_normal(tree, gn, ripples, frames, scene_start, repeat, uv_map, far, distances)
-    normal, mask = _flood_mix(tree, gn, wet, ripple, base)
+    normal, mask = _flood_mix(tree, gn, wet, ripple, base)    # ripples where the drops flood (not on a film)
+    if film is not None:
+        wet = _film_max(tree, gn, wet, film, first, last)
     for g in gns:
         tree.links.new(wet, g.inputs["Wet Map"])
         tree.links.new(normal, g.inputs["Normal"])
@@ -333,9 +356,11 @@ def _wire(mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv
     return src
 
 
-def wire(mat, drops, first, last, ripples, frames, scene_start, repeat, uv_map, far=None, distances=(5.0, 10.0)):
+def wire(mat, drops, first, last, ripples, frames, scene_start, repeat, uv_map, far=None, distances=(5.0, 10.0),
+         film=None):
     """Wires a baked drops sequence (files first..last, file f = scene frame
-    f) and ripple flipbook (`frames` files from 0, looping from the scene's
+    f; with `film`, the rain bake's sequence of the same frames, the wetter
+    of the two) and ripple flipbook (`frames` files from 0, looping from the scene's
     first frame, `repeat` tiles across the UV square) into a wet material;
     with `far` (the --far flipbook, same frames) blended in from distances
     (near, far) metres from the camera on (far_distances); `distances` a
@@ -349,7 +374,7 @@ def wire(mat, drops, first, last, ripples, frames, scene_start, repeat, uv_map, 
     if any(nodes.RESTORE_KEY not in g for g in gns):
         raise RuntimeError(f"material '{mat.name}': a Soak Wet node has no restore record (Make Dry, then Make Wet)")
     return nodes._atomic(tree, _wire, mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv_map,
-                         far, distances)
+                         far, distances, film)
 
 
 TAG = "soak_rain_for"            # on the images a rain bake loaded: the object's name

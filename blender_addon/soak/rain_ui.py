@@ -66,7 +66,7 @@ class SOAK_PT_wetness_rain(bpy.types.Panel):
         mat = ob.active_material if ob is not None else None
         if mat is not None and mat.node_tree is not None and any(
                 n.get(nodes.ROLE_KEY) == "rain" for n in mat.node_tree.nodes):
-            col.label(text="Ripples show where the wet map reaches Puddle Level", icon="INFO")
+            col.label(text="Ripples show where the drops reach Puddle Level", icon="INFO")
         layout.operator("soak.bake_rain", icon="OUTLINER_OB_FORCE_FIELD")
 
 

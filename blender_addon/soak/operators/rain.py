@@ -1,7 +1,9 @@
 """Bake Rain: runs `soak bake drops` (the selected mesh's UVs, sheltered by
-the rest of the visible scene, as Bake Wet Map does) and `soak bake ripples`
-in subprocesses (modal, cancellable with Esc), then loads both frame
-sequences and wires them into the wet material (rain.wire): all or nothing.
+the rest of the visible scene, as Bake Wet Map does), `soak bake ripples`
+and `soak bake rain --frames` (the same mesh and frames: the film running
+down steep faces, the water on the flat) in subprocesses (modal,
+cancellable with Esc), then loads the frame sequences and wires them into
+the wet material (rain.wire): all or nothing.
 
 The frames go to a folder next to the .blend (`//soak_rain/OBJECT/`; a
 temporary folder while the file is unsaved): Blender cannot pack image
@@ -48,6 +50,16 @@ def drops_command(exe, mesh, out, s, fps, first, last, width, size_m, shelter):
         cmd[3:3] = [mesh]
         cmd += ["--up", "z", "--rays", str(s.rays)]
     return cmd
+
+
+def film_command(exe, mesh, out, s, fps, first, last, width):
+    """`soak bake rain --frames` over the drops' frames: file f at t = (f -
+    first) / fps, the rain (the drops' rate, mm/h) falling from the first
+    frame to the panel's end frame."""
+    dur = (s.end_frame - s.start_frame) / fps
+    return [exe, "bake", "rain", mesh, "--up", "z", "--rainfall", f"{s.rate:.9g}", "--duration", f"{dur:.9g}",
+            "--fps", f"{fps:.9g}", "--width", str(width), "--height", str(width), "--rays", str(s.rays),
+            "--seed", str(s.seed), "--frames", f"{first}-{last}", "--frame-origin", str(first), "-o", out]
 
 
 def ripples_command(exe, out, s, fps):
@@ -113,7 +125,7 @@ def check(context, s):
 
 
 class SOAK_OT_bake_rain(bpy.types.Operator):
-    """Bake drops (wetting during the rain, then drying) over the active mesh's UVs and ripples on its puddles with the soak tool, and animate them in the wet material over the scene's frames. Only the ripple flipbooks the scene camera needs are wired (near, far or both): after moving the camera, bake again"""
+    """Bake drops (wetting during the rain, then drying), the film running down steep faces and ripples on puddles over the active mesh's UVs with the soak tool, and animate them in the wet material over the scene's frames. Only the ripple flipbooks the scene camera needs are wired (near, far or both): after moving the camera, bake again"""
     bl_idname = "soak.bake_rain"
     bl_label = "Bake Rain"
     bl_options = {"REGISTER", "UNDO"}
@@ -149,8 +161,7 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
             os.makedirs(parent, exist_ok=True)
             self._stage = tempfile.mkdtemp(prefix=".staging-", dir=parent)
             mesh = os.path.join(self._stage, "mesh.obj")
-            if s.shelter:
-                self._counts = export_scene_obj(context, ob, "SCENE", mesh)
+            self._counts = export_scene_obj(context, ob, "SCENE" if s.shelter else "NONE", mesh)
         except OSError as e:
             self.report({"ERROR"}, f"cannot write the rain bake's folder {parent}: {e}")
             return False
@@ -159,7 +170,10 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         self._first, self._last = s.start_frame, max(sc.frame_end, s.start_frame + 1)
         self._cmds = [drops_command(exe, mesh, os.path.join(self._stage, "drops.%04d.exr"), s, fps, self._first,
                                     self._last, s.size, map_size(ob, s), s.shelter),
-                      ripples_command(exe, os.path.join(self._stage, "ripples.%04d.exr"), s, fps)]
+                      ripples_command(exe, os.path.join(self._stage, "ripples.%04d.exr"), s, fps),
+                      film_command(exe, mesh, os.path.join(self._stage, "film.%04d.exr"), s, fps, self._first,
+                                   self._last, s.size)]
+        self._steps = len(self._cmds)
         self._repeat = map_size(ob, s) / RIPPLE_TILE
         self._mat, self._ob, self._scene_start = ob.active_material, ob, sc.frame_start
         self._uv = ob.data.uv_layers.active.name
@@ -230,13 +244,13 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
             self.report({"ERROR"}, f"cannot move the baked frames to {self._folder}: {e}")
             return {"CANCELLED"}
         view = ripple_view(context.scene, self._mat, self._ob)
-        drops = self._sequence("drops", self._first)
+        drops, film = self._sequence("drops", self._first), self._sequence("film", self._first)
         ripples = self._sequence("ripples", 0) if view.reach != rain.FAR else None
         far = self._sequence("ripples_far", 0) if view.reach != rain.NEAR else None
-        loaded = tuple(i for i in (drops, ripples, far) if i is not None)
+        loaded = tuple(i for i in (drops, ripples, far, film) if i is not None)
         try:
             rain.wire(self._mat, drops, self._first, self._last, ripples, RIPPLE_FRAMES, self._scene_start,
-                      self._repeat, self._uv, far, view)
+                      self._repeat, self._uv, far, view, film)
         except Exception as e:         # ours (RuntimeError) or a bug: the tree is back as it was either way
             for img in loaded:
                 bpy.data.images.remove(img)
@@ -247,13 +261,14 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         # the panel's Source shows the drops (set without re-wiring: the node is in place)
         properties._revert(self._mat.soak, {"wetness_source": "IMAGE", "wet_map": drops})
         rain.drop_old_images(self._ob.name, loaded)
-        for img, name in ((drops, "drops"), (ripples, "ripples"), (far, "ripples_far")):
+        for img, name in ((drops, "drops"), (ripples, "ripples"), (far, "ripples_far"), (film, "film")):
             if img is not None and bpy.data.images.get(self._base_name(name)) is None:
                 img.name = self._base_name(name)
         where = (" (earlier bakes' folders are kept for undo)" if self._saved
                  else " (a temporary folder: save the .blend and bake again to keep them)")
-        self.report({"INFO"}, f"rain baked: frames {self._first}-{self._last} and {RIPPLE_FRAMES} ripple frames "
-                              f"in {self._folder}{where}; ripples {REACH_REPORT[view.reach]}")
+        self.report({"INFO"}, f"rain baked: drops and film frames {self._first}-{self._last} and "
+                              f"{RIPPLE_FRAMES} ripple frames in {self._folder}{where}; "
+                              f"ripples {REACH_REPORT[view.reach]}")
         return {"FINISHED"}
 
     def execute(self, context):  # blocking variant (scripts, tests)
@@ -277,11 +292,11 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         return {"RUNNING_MODAL"}
 
     def _progress(self):
-        """(frames written, frames to write) over both bakes: the files in
-        the staging folder (each frame is renamed into place when done)."""
+        """(frames written, frames to write) over the three bakes: the files
+        in the staging folder (each frame is renamed into place when done)."""
         names = os.listdir(self._stage) if os.path.isdir(self._stage) else []
         done = sum(1 for n in names if n.endswith(".exr") and not n.startswith("."))
-        return done, (self._last - self._first + 1) + RIPPLE_FRAMES
+        return done, 2 * (self._last - self._first + 1) + 2 * RIPPLE_FRAMES    # drops, film; sharp and far ripples
 
     def _stop(self, context):
         wm = context.window_manager
@@ -300,9 +315,9 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         if event.type != "TIMER":
             return {"PASS_THROUGH"}
         done, total = self._progress()
-        step = 2 - len(self._cmds)           # 1 while baking drops, 2 while baking ripples
+        step = self._steps - len(self._cmds)     # 1 drops, 2 ripples, 3 film
         context.window_manager.progress_update(min(99, int(100 * done / total)))
-        context.workspace.status_text_set(f"Soak: {self._what} ({step}/2), {done} of {total} frames... "
+        context.workspace.status_text_set(f"Soak: {self._what} ({step}/{self._steps}), {done} of {total} frames... "
                                           "(Esc cancels)")
         if self._proc.poll() is None:
             return {"PASS_THROUGH"}
