@@ -13,6 +13,7 @@
 #include "soak/porous.h"
 #include "soak/preset.h"
 #include "soak/units.h"
+#include "soak/wet_specular.h"
 #include "soak/wetness.h"
 
 static void medium_majorant(soak_scene_medium *m)
@@ -459,6 +460,8 @@ static void preset_base(const preset_chain *pc, double m_per_unit, soak_material
         m->ior = pc->ior;
         m->alpha = w->ggx_alpha;
         m->coat_weight = w->specular_weight;
+        /* in the dry draw: every grain outside the film (wet_specular.h point 4) */
+        m->dry_coat_weight = soak_wet_grain_coat_weight(w);
     } else {
         /* Thin sheets keep their traced medium (translucency) under a smooth
          * boundary of the fibres' index: an index-matched boundary would match
@@ -501,6 +504,7 @@ static soak_status parse_film_over(scene_ctx *c, const cJSON *j, const char *pat
     m->film_coverage = coverage;
     m->film_pore_share = 0.0;
     m->film_thickness = thickness;
+    m->dry_coat_weight = m->coat_weight; /* no pore water: every grain outside the film is in the dry draw */
     return SOAK_OK;
 }
 
@@ -539,7 +543,7 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     preset_base(&pc, r.m_per_unit, m);
     /* "interface": 0 leaves the material's own specular interface out: what a
      * front end draws with its highlights off (tests/povray/flat_ground.py) */
-    if (interface < 0.5) m->coat_weight = 0.0;
+    if (interface < 0.5) m->coat_weight = m->dry_coat_weight = 0.0;
     st = parse_film_over(c, j, path, m);
     if (st != SOAK_OK || !r.model) return st;
     char mp[320];

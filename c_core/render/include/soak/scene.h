@@ -112,6 +112,11 @@ typedef struct soak_material {
      * specular weight coat_weight = 1 - porosity, wetness.h step 6); under
      * the liquid its index is relative to the liquid. 0: no interface. */
     double coat_weight;
+    /* the same interface's weight in the dry draw, which holds every grain
+     * outside the film: ks / (1 - porosity fill) (soak/wet_specular.h point 4,
+     * soak_wet_grain_coat_weight), so that the lobe in air weighs ks (1 - c);
+     * the pore-water draw has no coat (its body under the flat liquid). */
+    double dry_coat_weight;
     soak_scene_medium medium;     /* wet state (and dry when has_dry == 0) */
     soak_scene_medium dry_medium; /* base medium where the object is dry */
     int has_dry;
