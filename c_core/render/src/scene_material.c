@@ -416,9 +416,11 @@ static soak_status eval_preset(scene_ctx *c, const char *path, const preset_requ
  * coverage c and the pore water's surface (zero thickness) over porosity *
  * fill of the rest (soak_wet_interface_area, the one owner of that area).
  * A wet draw is the film with its thickness, or with probability
- * film_pore_share = 1 - c / area the pore water at zero thickness: a
- * coloured liquid absorbs over the film's path only where a film lies
- * (brick + coffee at w = 0.5 was 22.5 % dark with one thick film over both). */
+ * film_pore_share = 1 - c / area the pore water at zero thickness over the
+ * body alone (render_bsdfs.c; the grains stay in the dry draw, preset_base's
+ * dry_coat_weight): a coloured liquid absorbs over the film's path only where
+ * a film lies (brick + coffee at w = 0.5 was 22.5 % dark with one thick film
+ * over both). */
 static void preset_film(const soak_wet_params *w, double m_per_unit, soak_material *m)
 {
     m->film_ior = w->film_ior;

@@ -102,8 +102,9 @@ typedef struct soak_material {
     double film_thickness; /* scene length unit, for absorption */
     soak_rgb film_absorption; /* per scene length unit */
     double film_coverage;  /* probability of the film at a wet point, [0,1] (1 unless a preset says less) */
-    double film_pore_share; /* of those draws, the share that is pore water: the same interface at zero
-                             * thickness (wetness.h step 5); from a preset's chain, or the film's
+    double film_pore_share; /* of those draws, the share that is pore water: the liquid interface at zero
+                             * thickness over the base without its coat (wetness.h step 5,
+                             * wet_specular.h point 4); from a preset's chain, or the film's
                              * "pore_share" (default 0). Surface and medium bases, and soak advise's
                              * estimates (accuracy.h) */
     soak_base_type base;
