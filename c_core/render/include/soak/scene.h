@@ -116,7 +116,10 @@ typedef struct soak_material {
     /* the same interface's weight in the dry draw, which holds every grain
      * outside the film: ks / (1 - porosity fill) (soak/wet_specular.h point 4,
      * soak_wet_grain_coat_weight), so that the lobe in air weighs ks (1 - c);
-     * the pore-water draw has no coat (its body under the flat liquid). */
+     * the pore-water draw has no coat (its body under the flat liquid). Where
+     * an object's wetness (map, plane) is below 1 the dry draw also stands for
+     * its drier points, as its albedo (the chain's at the material's wetness)
+     * does: there the lobe is k_dry, not the dry chain's ks. */
     double dry_coat_weight;
     soak_scene_medium medium;     /* wet state (and dry when has_dry == 0) */
     soak_scene_medium dry_medium; /* base medium where the object is dry */
