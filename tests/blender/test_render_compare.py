@@ -32,9 +32,10 @@ Asserted (tolerances derived in blender_addon/README.md, "Error"):
     bounces) to the dry material: 0.005 of albedo (tables) + coat_dim;
   the highlight-on view (plane_cases.json "highlight"; highlight_view): the
     camera at the sun's mirror direction, the whole image against soak render's
-    whole preset material (the material's own rough interface traced), dry and
-    fully wet, within the diffuse terms + body + fresnel + multi + film + noise
-    (highlight_terms); below saturation printed (README, "Highlight view");
+    whole preset material (the material's own rough interface traced), dry,
+    at w = 0.5 (film over part, pores full or filling) and fully wet, within the
+    diffuse terms + body + fresnel + multi + film + noise (highlight_terms;
+    README, "Highlight view");
 Printed, not asserted: the full table against soak render (2-37 % apart for
 the dielectric presets: its Lambertian base sits under the material's and the
 liquid's interfaces; see the README's error table for what is and is not
@@ -407,8 +408,10 @@ def highlight_terms(mat, liq, table, w, views, e_sun):
     """Radiances (luminance, absolute) of what Cycles' Principled cannot
     represent of the reference's interface, per the README's "Highlight view":
       body:    the interface holds back the body's light, a share
-               (1 - area)(1 - (1 - ks E(l))(1 - ks E(v)) / (1 - A ks E-bar))
-               (soak/bsdf.h COATED) of the body's radiance, returned as that
+               (1 - area)(1 - (1 - k E(l))(1 - k E(v)) / (1 - A k E-bar))
+               (soak/bsdf.h COATED) of the body's radiance, k = ks (1 - c) /
+               (1 - area) the dry part's coat, which carries every grain
+               outside the film (soak/wet_specular.h point 4), returned as that
                share (the caller multiplies by the body); the Principled adds
                its lobe on top (3.x) or dims for the view only (4.x, its own
                term);
@@ -437,7 +440,8 @@ def highlight_terms(mat, liq, table, w, views, e_sun):
     wi = tuple(x / sn for x in sd)
     vc = views[len(views) // 2 + int(math.sqrt(len(views))) // 2]
     e_l, e_v, e_bar = _albedo(alpha, n, wi[2]), _albedo(alpha, n, vc[2]), _albedo_mean(alpha, n)
-    body = (1 - area) * (1 - (1 - ks * e_l) * (1 - ks * e_v) / (1 - a_sub * ks * e_bar))
+    k_dry = min(1.0, ks * (1 - c) / (1 - area)) if area < 1 else ks
+    body = (1 - area) * (1 - (1 - k_dry * e_l) * (1 - k_dry * e_v) / (1 - a_sub * k_dry * e_bar))
     eta = _eta_of_f0(ks * ((n - 1) / (n + 1)) ** 2)
     weight = ks * (1 - c)
     fres = sum(abs(ks * _lobe_f(wi, v, alpha, n) - _lobe_f(wi, v, alpha, eta)) for v in views) / len(views)
@@ -474,9 +478,8 @@ def highlight_view(ref, liquids, coat_dim, failures):
     split the difference into highlight and body. Asserted at the "asserted"
     wetness levels: |L - F| <= (the diffuse part's terms, as in the head-on
     view) x (L - S) + body x B + fresnel + multi + film + SOAK_NOISE x F
-    (highlight_terms). The other levels are printed: below saturation the
-    reference hides the grains' lobe under the pore water, which the chain
-    keeps in air (README, "Highlight view")."""
+    (highlight_terms). Below saturation both keep the grains' lobe in air
+    over ks (1 - c) (soak/wet_specular.h point 4; README, "Highlight view")."""
     hl = CASES["highlight"]
     pos = hl["camera_position"]
     views = highlight_pixels(pos)

@@ -175,8 +175,9 @@ def lobe_terms(exp, item, views, sun_dir, sky, ref):
                F at the view instead of F at the half vector: |F(v) - F(h)| over the lobe,
                under the sun (the patch's views) and the sky (F(v) E1(v) - E_F(v), E1 the
                lobe's albedo without Fresnel);
-      under:   the lobe under the liquid (index n / n_liquid), which the shader leaves
-               out, bounded by the interface area x ks x F(n / n_liquid) x the white lobe."""
+      under:   the lobe under the film (index n / n_liquid), which the shader leaves
+               out, bounded by the film's coverage c x ks x F(n / n_liquid) x the white
+               lobe (the pore water has no grain under it: soak/wet_specular.h point 4)."""
     name, w = item[0], item[1]
     m = next(m for m in exp["materials"] if m["name"] == name)
     if m["kind"] not in ("porous_dielectric", "nonporous_dielectric"):
@@ -186,8 +187,7 @@ def lobe_terms(exp, item, views, sun_dir, sky, ref):
     i = k["wetness"].index(w)
     n, alpha, ks = m["ior"], k["ggx_alpha"][i], k["specular_weight"][i]
     c = k["film_coverage"][i]
-    area = c + (1 - c) * k["water_specular_weight"][i]
-    weight = ks * (1 - area)
+    weight = ks * (1 - c)  # the grains' lobe in air (soak/wet_specular.h point 1)
     v0 = views[len(views) // 2]
 
     def f_h(v):
@@ -197,7 +197,7 @@ def lobe_terms(exp, item, views, sun_dir, sky, ref):
     e_f, e_1 = fg.ggx_albedo(n, alpha, v0), fg.ggx_albedo(n, alpha, v0, white=True)
     sky_part = abs(fg.fresnel(v0[2], n) * e_1 - e_f) * sky
     white_sun = np.mean([fg.ggx_brdf(n, alpha, sun_dir, v) / f_h(v) for v in views])
-    under = area * ks * fg.fresnel(v0[2], n / liq["ior"]) * (white_sun * fg.SUN_E * sun_dir[2] + e_1 * sky)
+    under = c * ks * fg.fresnel(v0[2], n / liq["ior"]) * (white_sun * fg.SUN_E * sun_dir[2] + e_1 * sky)
     return {"body": fg.body_factor(k, i, n, alpha, v0, sun_dir, sky),
             "fresnel": weight * (sun * fg.SUN_E * sun_dir[2] + sky_part) / ref,
             "under": under / ref}

@@ -378,12 +378,14 @@ def body_factor(k, i, n_mat, alpha, v, sun_dir, sky):
     COATED), E the GGX lobe's directional albedo (ggx_albedo), Ebar = 2 int E mu dmu,
     E(l) the sun's and the sky's (Ebar) mixed by the sun's share of the irradiance.
     POV-Ray's pigment is the chain's albedo, not lowered by it. Times the dry share of
-    the surface; under the liquid the interface's index is n / n_liquid (F0 < 0.004),
-    left out."""
-    ks, area = k["specular_weight"][i], k["film_coverage"][i]
-    area += (1 - area) * k["water_specular_weight"][i]
+    the surface, whose coat carries every grain outside the film: weight ks (1 - c) /
+    (1 - area) (soak/wet_specular.h point 4; ks when dry); the pore water has no coat;
+    under the film the interface's index is n / n_liquid (F0 < 0.004), left out."""
+    ks, c = k["specular_weight"][i], k["film_coverage"][i]
+    area = c + (1 - c) * k["water_specular_weight"][i]
     if ks <= 0 or area >= 1:
         return 0.0
+    ks = min(1.0, ks * (1 - c) / (1 - area))
     A = lum(k["albedo_subsurface"][i])
     mus = (np.arange(12) + 0.5) / 12
     e_bar = 2 * np.mean([mu * ggx_albedo(n_mat, alpha, np.array([np.sqrt(1 - mu * mu), 0.0, mu]), 32) for mu in mus])

@@ -45,7 +45,7 @@ static int fl_rgb(soak_float_list *l, soak_rgb c) { return fl_push(l, c.r) && fl
 void soak_osl_tables_free(soak_osl_tables *t)
 {
     if (!t) return;
-    soak_float_list *f[] = {&t->kw, &t->ka, &t->kc, &t->kr, &t->kt, &t->kv, &t->ks, &t->ior, &t->ba, &t->bw, &t->bg};
+    soak_float_list *f[] = {&t->kw, &t->ka, &t->kc, &t->kr, &t->kt, &t->kv, &t->ks, &t->kf, &t->ior, &t->ba, &t->bw, &t->bg};
     soak_int_list *i[] = {&t->preset, &t->kind, &t->k_off, &t->k_n, &t->ba_off, &t->ba_n, &t->bw_off, &t->bw_n, &t->bg_off};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k) free(f[k]->v);
     for (size_t k = 0; k < sizeof i / sizeof i[0]; ++k) free(i[k]->v);
@@ -79,7 +79,8 @@ static soak_status add_knots(soak_osl_tables *t, const soak_preset *p, const soa
                               log(fmax(sheet.b, SHEET_T_MIN))};
         if (!fl_push(&t->kw, knots[i]) || !fl_rgb(&t->ka, w.albedo) || !fl_push(&t->kc, interface) ||
             !fl_push(&t->kr, sqrt(w.ggx_alpha)) || !fl_rgb(&t->kt, log_sheet) ||
-            !fl_push(&t->ks, p->kind == SOAK_KIND_CONDUCTOR || p->kind == SOAK_KIND_THIN_SHEET ? 0.0 : w.specular_weight))
+            !fl_push(&t->ks, p->kind == SOAK_KIND_CONDUCTOR || p->kind == SOAK_KIND_THIN_SHEET ? 0.0 : w.specular_weight) ||
+            !fl_push(&t->kf, w.film_coverage))
             return SOAK_ERR_NOMEM;
     }
     return SOAK_OK;
@@ -250,6 +251,7 @@ static void put_tables(FILE *out, const soak_preset_db *db, const soak_osl_table
     put_floats(out, "KT", &t->kt);
     put_floats(out, "KV", &t->kv);
     put_floats(out, "KS", &t->ks);
+    put_floats(out, "KF", &t->kf);
     put_floats(out, "MAT_IOR", &t->ior);
     put_ints(out, "K_OFF", &t->k_off);
     put_ints(out, "K_N", &t->k_n);
@@ -315,9 +317,11 @@ static void put_closure(FILE *out, osl_variant v)
           "        // the diffuse albedo under the liquid interface (porous darkening and the\n"
           "        // interface's total internal reflection are in WetColor), the interface's\n"
           "        // Fresnel mirror over its area, and the material's own rough interface where\n"
-          "        // no liquid covers it (soak/bsdf.h COATED: weight ks, GGX alpha, Fresnel of\n"
-          "        // its index; the closure has none of its own, taken at the view)\n"
-          "        float lobe = soak_interp(KW, K_OFF[k], K_N[k], L, KS, K_OFF[k], 1) * (1 - Coverage)\n"
+          "        // no film covers it: the grains stay in air over 1 - c, the pore water has no\n"
+          "        // grain under it (soak/wet_specular.h point 1: weight ks (1 - c), GGX alpha,\n"
+          "        // Fresnel of its index; the closure has none of its own, taken at the view)\n"
+          "        float lobe = soak_interp(KW, K_OFF[k], K_N[k], L, KS, K_OFF[k], 1)\n"
+          "                     * (1 - soak_interp(KW, K_OFF[k], K_N[k], L, KF, K_OFF[k], 1))\n"
           "                     * soak_fresnel(cos_view, MAT_IOR[pi]);\n"
           "        BSDF = WetColor * View * diffuse(Normal) + mirror * reflection(Normal);\n",
           out);

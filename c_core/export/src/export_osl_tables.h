@@ -24,8 +24,9 @@ typedef struct soak_osl_tables {
      * (film + pore water), roughness sqrt(alpha), ln of the sheet transmittance (rgb, floored at 1e-6),
      * view factor (SOAK_EXPORT_VIEW_N rgb per knot, at 3 SOAK_EXPORT_VIEW_N k_off), the
      * material's own rough lobe's weight (wetness.h step 6's specular weight; 0 for
-     * conductors and sheets) */
-    soak_float_list kw, ka, kc, kr, kt, kv, ks;
+     * conductors and sheets), the film's coverage c alone (the lobe stays in air over
+     * 1 - c: soak/wet_specular.h point 1) */
+    soak_float_list kw, ka, kc, kr, kt, kv, ks, kf;
     soak_float_list ior;     /* per preset: the material's index (its lobe's Fresnel) */
     soak_int_list k_off, k_n;
     /* base-colour tables: nodes and values [channel][wetness][albedo] */

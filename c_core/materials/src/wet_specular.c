@@ -22,6 +22,15 @@ soak_status soak_wet_specular_under(double eta_base, double n_liquid, double two
 
 static double clamp01(double x) { return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x); }
 
+double soak_wet_grain_coat_weight(const soak_wet_params *w)
+{
+    if (!w || !soak_in_range(w->specular_weight, 0.0, 1.0) || !soak_in_range(w->water_specular_weight, 0.0, 1.0))
+        return 0.0;
+    double open = 1.0 - w->water_specular_weight; /* the dry part's share of the area outside the film */
+    if (open < 1e-9) return w->specular_weight;   /* no dry part: the weight is never drawn */
+    return fmin(1.0, w->specular_weight / open);
+}
+
 soak_status soak_wet_specular_eval(const soak_preset *p, const soak_liquid *l, const soak_wet_params *w,
                                    soak_wet_specular *out)
 {

@@ -3,14 +3,16 @@
 
 #include "render_internal.h"
 
-static void base_desc(const soak_material *m, soak_bsdf_desc *d)
+/* The material's base with its own rough interface of weight coat (a
+ * preset's lambert base: COATED; coat 0: the bare body). */
+static void base_desc(const soak_material *m, double coat, soak_bsdf_desc *d)
 {
-    if (m->type == SOAK_MAT_WET && m->base == SOAK_BASE_LAMBERT && m->coat_weight > 0) {
+    if (m->type == SOAK_MAT_WET && m->base == SOAK_BASE_LAMBERT && coat > 0) {
         soak_bsdf_desc_default(d, SOAK_BSDF_COATED);
         d->albedo = m->albedo;
         d->eta = soak_rgb3(m->ior, m->ior, m->ior);
         d->alpha = m->alpha;
-        d->coat_weight = m->coat_weight;
+        d->coat_weight = coat;
     } else if (m->type == SOAK_MAT_LAMBERT || (m->type == SOAK_MAT_WET && m->base == SOAK_BASE_LAMBERT)) {
         soak_bsdf_desc_default(d, SOAK_BSDF_LAMBERT);
         d->albedo = m->albedo;
@@ -35,6 +37,20 @@ static void model_desc(const soak_material *m, int wet, soak_bsdf_desc *d)
     soak_material_model_params(m, wet, d->params);
 }
 
+static void film_of(const soak_material *m, int trace_films, double thickness, soak_bsdf_desc *d)
+{
+    d->film_ior = m->film_ior;
+    d->film_absorption = m->film_absorption;
+    d->film_thickness = thickness;
+    d->film_traced = trace_films;
+}
+
+/* A wet surface's three draws (render_surface.c surface_mix): dry, with
+ * the coat weight that holds every grain outside the film (dry_coat_weight,
+ * soak/wet_specular.h point 4); the film with its thickness over the coated
+ * base (the grains under the liquid, index n / n_liquid); the pore water, a
+ * flat liquid surface at zero thickness over the body alone (a pore has no
+ * grain facets), a draw of its own whenever it differs from the film's. */
 static soak_status material_setup(const soak_material *m, int trace_films, rt_material_bsdf *out)
 {
     soak_bsdf_desc d;
@@ -47,17 +63,17 @@ static soak_status material_setup(const soak_material *m, int trace_films, rt_ma
         out->has_wet = 1;
         return st;
     }
-    base_desc(m, &d);
+    int wet = m->type == SOAK_MAT_WET && m->base != SOAK_BASE_MEDIUM;
+    base_desc(m, wet ? m->dry_coat_weight : m->coat_weight, &d);
     soak_status st = soak_bsdf_setup(&d, &out->dry);
-    if (st != SOAK_OK || m->type != SOAK_MAT_WET || m->base == SOAK_BASE_MEDIUM) return st;
-    d.film_ior = m->film_ior;
-    d.film_absorption = m->film_absorption;
-    d.film_thickness = m->film_thickness;
-    d.film_traced = trace_films;
+    if (st != SOAK_OK || !wet) return st;
+    base_desc(m, m->coat_weight, &d);
+    film_of(m, trace_films, m->film_thickness, &d);
     out->has_wet = 1;
     st = soak_bsdf_setup(&d, &out->wet);
-    if (st != SOAK_OK || !(m->film_pore_share > 0 && m->film_thickness > 0)) return st;
-    d.film_thickness = 0.0;
+    if (st != SOAK_OK || !(m->film_pore_share > 0 && (m->film_thickness > 0 || m->coat_weight > 0))) return st;
+    base_desc(m, 0.0, &d);
+    film_of(m, trace_films, 0.0, &d);
     out->has_pore = 1;
     return soak_bsdf_setup(&d, &out->pore);
 }

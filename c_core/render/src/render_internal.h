@@ -69,7 +69,7 @@ typedef struct rt_env {
  * of both, a continuation samples one by its weight, render_mix.c) when has_wet. */
 typedef struct rt_material_bsdf {
     soak_bsdf dry, wet;
-    soak_bsdf pore; /* the wet state's interface at zero thickness (has_pore) */
+    soak_bsdf pore; /* the liquid's surface at zero thickness over the uncoated base (has_pore) */
     int has_wet, has_pore;
 } rt_material_bsdf;
 

@@ -13,6 +13,7 @@
 #include "soak/porous.h"
 #include "soak/preset.h"
 #include "soak/units.h"
+#include "soak/wet_specular.h"
 #include "soak/wetness.h"
 
 static void medium_majorant(soak_scene_medium *m)
@@ -415,9 +416,11 @@ static soak_status eval_preset(scene_ctx *c, const char *path, const preset_requ
  * coverage c and the pore water's surface (zero thickness) over porosity *
  * fill of the rest (soak_wet_interface_area, the one owner of that area).
  * A wet draw is the film with its thickness, or with probability
- * film_pore_share = 1 - c / area the pore water at zero thickness: a
- * coloured liquid absorbs over the film's path only where a film lies
- * (brick + coffee at w = 0.5 was 22.5 % dark with one thick film over both). */
+ * film_pore_share = 1 - c / area the pore water at zero thickness over the
+ * body alone (render_bsdfs.c; the grains stay in the dry draw, preset_base's
+ * dry_coat_weight): a coloured liquid absorbs over the film's path only where
+ * a film lies (brick + coffee at w = 0.5 was 22.5 % dark with one thick film
+ * over both). */
 static void preset_film(const soak_wet_params *w, double m_per_unit, soak_material *m)
 {
     m->film_ior = w->film_ior;
@@ -459,6 +462,8 @@ static void preset_base(const preset_chain *pc, double m_per_unit, soak_material
         m->ior = pc->ior;
         m->alpha = w->ggx_alpha;
         m->coat_weight = w->specular_weight;
+        /* in the dry draw: every grain outside the film (wet_specular.h point 4) */
+        m->dry_coat_weight = soak_wet_grain_coat_weight(w);
     } else {
         /* Thin sheets keep their traced medium (translucency) under a smooth
          * boundary of the fibres' index: an index-matched boundary would match
@@ -501,6 +506,7 @@ static soak_status parse_film_over(scene_ctx *c, const cJSON *j, const char *pat
     m->film_coverage = coverage;
     m->film_pore_share = 0.0;
     m->film_thickness = thickness;
+    m->dry_coat_weight = m->coat_weight; /* no pore water: every grain outside the film is in the dry draw */
     return SOAK_OK;
 }
 
@@ -539,7 +545,7 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
     preset_base(&pc, r.m_per_unit, m);
     /* "interface": 0 leaves the material's own specular interface out: what a
      * front end draws with its highlights off (tests/povray/flat_ground.py) */
-    if (interface < 0.5) m->coat_weight = 0.0;
+    if (interface < 0.5) m->coat_weight = m->dry_coat_weight = 0.0;
     st = parse_film_over(c, j, path, m);
     if (st != SOAK_OK || !r.model) return st;
     char mp[320];

@@ -2,7 +2,8 @@
  * osl/soak_wet_math.h and of the shaders' inlined copy, compiled here as C) on the
  * tables the shaders carry (export_osl.c) against the core itself:
  *  - the pore-filling schedule = soak_wetness_eval's delivered liquid;
- *  - knot lookups of albedo, interface coverage, roughness and sheet
+ *  - knot lookups of albedo, interface coverage, the material's lobe in air
+ *    ks (1 - c) (KS x (1 - KF)), roughness and sheet
  *    transmittance = soak_wetness_eval / soak_sheet_transmittance within the
  *    export's knot tolerance (plus float rounding);
  *  - the base-colour lookup = soak_wet_params_for_base within the base
@@ -85,6 +86,11 @@ static void test_tables(const soak_preset_db *db, const soak_osl_tables *t)
                                    ? w.film_coverage
                                    : w.film_coverage + (1 - w.film_coverage) * w.water_specular_weight;
                 worst_knot = fmax(worst_knot, fabs(soak_interp(t->kw.v, off, n, (float)L, t->kc.v, off, 1) - iface));
+                /* the material's lobe in air, ks (1 - c) (soak/wet_specular.h point 1) */
+                double lobe = soak_interp(t->kw.v, off, n, (float)L, t->ks.v, off, 1) *
+                              (1 - soak_interp(t->kw.v, off, n, (float)L, t->kf.v, off, 1));
+                int own = p->kind != SOAK_KIND_CONDUCTOR && p->kind != SOAK_KIND_THIN_SHEET;
+                worst_knot = fmax(worst_knot, fabs(lobe - (own ? w.specular_weight * (1 - w.film_coverage) : 0.0)));
                 worst_knot = fmax(worst_knot,
                                   fabs(soak_interp(t->kw.v, off, n, (float)L, t->kr.v, off, 1) - sqrt(w.ggx_alpha)));
                 if (p->kind == SOAK_KIND_THIN_SHEET) {
@@ -110,7 +116,7 @@ static void test_tables(const soak_preset_db *db, const soak_osl_tables *t)
         }
     }
     check_status("core evaluations", st, SOAK_OK);
-    check_close("shader knot lookups (albedo, coverage, roughness) vs the core", worst_knot, 0.0,
+    check_close("shader knot lookups (albedo, coverage, lobe, roughness) vs the core", worst_knot, 0.0,
                 SOAK_EXPORT_KNOT_TOL + FLOAT_EPS);
     check_close("shader base-colour lookup vs soak_wet_params_for_base", worst_base, 0.0,
                 SOAK_EXPORT_BASE_TOL + FLOAT_EPS);

@@ -105,6 +105,44 @@ static void check_presets(const soak_preset_db *db)
     check_status("NULL params", soak_wet_specular_eval(sand, water, NULL, &sw), SOAK_ERR_NULL);
 }
 
+/* Point 4's dry-draw coat weight against the area bookkeeping written out:
+ * the lobe in air over the dry part (1 - c)(1 - p f) must be ks (1 - c),
+ * checked per preset and wetness, and its edges. */
+static void check_grain_coat(const soak_preset_db *db)
+{
+    const soak_liquid *water = soak_presets_find_liquid(db, "water");
+    double worst = 0;
+    int n = 0;
+    for (int i = 0; i < soak_presets_count(db); ++i) {
+        const soak_preset *p = soak_presets_at(db, i);
+        for (int k = 0; k <= 20; ++k) {
+            soak_wet_input in = soak_wet_input_steady(p, k / 20.0);
+            soak_wet_params w;
+            if (soak_wetness_eval(p, water, &in, &w) != SOAK_OK) continue;
+            double c = w.film_coverage, A = soak_wet_interface_area(&w);
+            double lobe_in_air = soak_wet_grain_coat_weight(&w) * (1 - A);
+            worst = fmax(worst, fabs(lobe_in_air - w.specular_weight * (1 - c)));
+            ++n;
+        }
+    }
+    printf("grain coat weight: %d states, worst |k_dry (1 - A) - ks (1 - c)| %.2e\n", n, worst);
+    check_true("dry draw's lobe = ks (1 - c) over every preset and wetness", n > 100 && worst <= 1e-12);
+    soak_wet_params w = {0};
+    w.specular_weight = 0.6;
+    check_close("no pore water: ks", soak_wet_grain_coat_weight(&w), 0.6, 0);
+    w.water_specular_weight = 0.4;
+    check_close("pores full (ks = 1 - p, f = 1): every dry point a grain", soak_wet_grain_coat_weight(&w), 1.0, 1e-15);
+    w.water_specular_weight = 0.2;
+    check_close("half full: 0.6 / 0.8", soak_wet_grain_coat_weight(&w), 0.75, 1e-15);
+    w.specular_weight = 0.9;
+    check_close("ks above 1 - p f: clamped to 1", soak_wet_grain_coat_weight(&w), 1.0, 0);
+    w.water_specular_weight = 1.0;
+    check_close("p f = 1: no dry part, ks", soak_wet_grain_coat_weight(&w), 0.9, 0);
+    w.water_specular_weight = NAN;
+    check_close("NaN fill: 0", soak_wet_grain_coat_weight(&w), 0.0, 0);
+    check_close("NULL: 0", soak_wet_grain_coat_weight(NULL), 0.0, 0);
+}
+
 int main(void)
 {
     check_under();
@@ -112,6 +150,7 @@ int main(void)
     char err[512];
     if (check_status("load presets", soak_presets_load(NULL, &db, err, sizeof err), SOAK_OK)) {
         check_presets(db);
+        check_grain_coat(db);
         soak_presets_free(db);
     }
     return check_finish();

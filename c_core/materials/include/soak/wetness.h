@@ -83,7 +83,9 @@
  *    tracer renders this interface: a preset's surface is soak/bsdf.h
  *    COATED (GGX of width ggx_alpha at the preset's index, weight
  *    specular_weight, over the Lambertian body of albedo_subsurface; under
- *    the liquid its index is n / n_liquid), traced facet by facet by
+ *    the film its index is n / n_liquid; the pore water lies over the body
+ *    alone and the grains outside the film keep the lobe in air,
+ *    soak/wet_specular.h point 4), traced facet by facet by
  *    `soak measure --config coated` as a second method.
  *
  * Limitations: the semi-infinite formula is used for thin sheets too (their

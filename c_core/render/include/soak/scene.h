@@ -102,8 +102,9 @@ typedef struct soak_material {
     double film_thickness; /* scene length unit, for absorption */
     soak_rgb film_absorption; /* per scene length unit */
     double film_coverage;  /* probability of the film at a wet point, [0,1] (1 unless a preset says less) */
-    double film_pore_share; /* of those draws, the share that is pore water: the same interface at zero
-                             * thickness (wetness.h step 5); from a preset's chain, or the film's
+    double film_pore_share; /* of those draws, the share that is pore water: the liquid interface at zero
+                             * thickness over the base without its coat (wetness.h step 5,
+                             * wet_specular.h point 4); from a preset's chain, or the film's
                              * "pore_share" (default 0). Surface and medium bases, and soak advise's
                              * estimates (accuracy.h) */
     soak_base_type base;
@@ -112,6 +113,14 @@ typedef struct soak_material {
      * specular weight coat_weight = 1 - porosity, wetness.h step 6); under
      * the liquid its index is relative to the liquid. 0: no interface. */
     double coat_weight;
+    /* the same interface's weight in the dry draw, which holds every grain
+     * outside the film: ks / (1 - porosity fill) (soak/wet_specular.h point 4,
+     * soak_wet_grain_coat_weight), so that the lobe in air weighs ks (1 - c);
+     * the pore-water draw has no coat (its body under the flat liquid). Where
+     * an object's wetness (map, plane) is below 1 the dry draw also stands for
+     * its drier points, as its albedo (the chain's at the material's wetness)
+     * does: there the lobe is k_dry, not the dry chain's ks. */
+    double dry_coat_weight;
     soak_scene_medium medium;     /* wet state (and dry when has_dry == 0) */
     soak_scene_medium dry_medium; /* base medium where the object is dry */
     int has_dry;
