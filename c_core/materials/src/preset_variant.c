@@ -160,7 +160,8 @@ soak_status soak_preset_variant_parse(const char *text, char *name, char *base, 
         comma = strchr(s, ',');
         size_t n = comma ? (size_t)(comma - s) : strlen(s);
         char *sep = n < sizeof item ? (memcpy(item, s, n), strchr(item, '=')) : NULL;
-        if (!sep) return soak_error_at(err, errlen, SOAK_ERR_ARG, text, NULL, "expected key=value after ','");
+        if (!sep || sep == item)
+            return soak_error_at(err, errlen, SOAK_ERR_ARG, text, NULL, "expected key=value after ','");
         *sep = '\0';
         st = read_setting(item, sep + 1, change, err, errlen);
         if (!comma) break;
