@@ -59,21 +59,27 @@ exports: build
 demo: build addon
 	@$(BUILD)/bin/soak demo --out out/demo
 	@bash povray/render_scenes.sh $(BUILD)/bin/soak out/demo/povray full
-	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender.zip --out out/demo/blender --soak $(BUILD)/bin/soak
+	@/usr/bin/python3 scenes/blender/variant_addon.py $(BUILD)/bin/soak $(BUILD)/soak_blender.zip scenes/gallery/variants.txt \
+	  $(BUILD)/soak_blender_gallery.zip
+	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender_gallery.zip --out out/demo/blender --soak $(BUILD)/bin/soak
 
 # The Blender gallery of blender_addon/README.md: the seed scenes of the physics
 # sources (scenes/blender/seeds.py), Cycles, 960x540, into blender_addon/images/
 # (gallery_*.png), in the Blender artists run: GALLERY_BLENDER (default 5.2, the
 # Debian sid root `make blender52` makes; 4.3 or 3.4 also work) through
-# tests/blender/run_blender.sh. About 30 minutes on two shared cores in 3.4;
+# tests/blender/run_blender.sh, with the add-on zip holding the presets of
+# scenes/gallery/variants.txt (soak export --variant: the porosity and film-depth
+# sweeps). About 30 minutes on two shared cores in 3.4;
 # `make demo` renders the same scenes at 320x180.
 GALLERY_SAMPLES ?= 16
 GALLERY_BLENDER ?= 5.2
 gallery: build addon $(if $(filter 5.2,$(GALLERY_BLENDER)),blender52) $(if $(filter 4.3,$(GALLERY_BLENDER)),blender43)
+	@/usr/bin/python3 scenes/blender/variant_addon.py $(BUILD)/bin/soak $(BUILD)/soak_blender.zip scenes/gallery/variants.txt \
+	  $(BUILD)/soak_blender_gallery.zip
 	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user BLENDER_USER_EXTENSIONS=$(CURDIR)/$(BUILD)/blender_user/extensions \
 	  BLENDER_USER_CONFIG=$(CURDIR)/$(BUILD)/blender_user/config SOAK_BLENDER=$(GALLERY_BLENDER) \
 	  SOAK_BLENDER43_ROOT=$(CURDIR)/$(BUILD)/trixie-root SOAK_BLENDER52_ROOT=$(CURDIR)/$(BUILD)/sid-root \
-	  bash tests/blender/run_blender.sh scenes/blender/render_all.py --addon $(CURDIR)/$(BUILD)/soak_blender.zip \
+	  bash tests/blender/run_blender.sh scenes/blender/render_all.py --addon $(CURDIR)/$(BUILD)/soak_blender_gallery.zip \
 	  --out $(CURDIR)/blender_addon/images --prefix gallery_ --size 960x540 --samples $(GALLERY_SAMPLES) --max-kb 400 \
 	  --soak $(CURDIR)/$(BUILD)/bin/soak
 	@/usr/bin/python3 scripts/png_palette.py --max-kb 390 blender_addon/images/gallery_*.png || [ $$? = 77 ]

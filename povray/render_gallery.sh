@@ -12,10 +12,11 @@ mkdir -p "$OUT"
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 pov() { # scene output width height [options...]: a linear EXR in WORK, then the sRGB PNG in OUT
+  # (run in POV_DIR, default WORK: a soak_materials.inc there comes before povray/'s)
   local scene=$1 out=$2 w=$3 h=$4; shift 4
   local t0=$(date +%s)
-  ( cd "$WORK" && povray "+I$SCN/$scene" "+O$out.exr" +FE "+W$w" "+H$h" -D -V +WT2 "+L$ROOT/povray" "+L$WORK" \
-      Output_Alpha=off +A0.05 +AM2 +R2 "$@" >"$out.log" 2>&1 ) \
+  ( cd "${POV_DIR:-$WORK}" && povray "+I$SCN/$scene" "+O$WORK/$out.exr" +FE "+W$w" "+H$h" -D -V +WT2 "+L$ROOT/povray" "+L$WORK" \
+      Output_Alpha=off +A0.05 +AM2 +R2 "$@" >"$WORK/$out.log" 2>&1 ) \
     || { echo "FAIL: povray $scene (exit $?), see $WORK/$out.log"; tail -5 "$WORK/$out.log"; exit 1; }
   echo "$out: $((`date +%s` - t0)) s"
 }
@@ -58,10 +59,18 @@ oiiotool "$WORK/inset_map.png" --pattern constant:color=0.92,0.92,0.92 "$((IW + 
 oiiotool "$WORK/inset.png" "$OUT/gallery_bas_relief_rain.png" --paste "+$((W - IW - 16))+$((H - IH - 16))" \
   -d uint8 -o "$WORK/relief_inset.png"
 cp "$WORK/relief_inset.png" "$OUT/gallery_bas_relief_rain.png"
-# 6 flowerpot porosity sweep
-pov flowerpot_porosity.pov flowerpot_porosity "$W" "$H"; png flowerpot_porosity
+# the presets the sweeps of [Hnat06] Fig. 5 (clay_p00 ... clay_p50: alpha_poro) and [Lag13]
+# (concrete_f0 ... copper_f500: film depths) need, added by soak export --variant
+# (scenes/gallery/variants.txt), in a soak_materials.inc of their own folder
+mkdir -p "$WORK/variants"
+mapfile -t VARIANTS < <(grep -v '^#' "$ROOT/scenes/gallery/variants.txt")
+"$SOAK" export --target povray "${VARIANTS[@]/#/--variant=}" -o "$WORK/variants/soak_materials.inc" >/dev/null
+# 6 flowerpot porosity sweep: clay at alpha_poro 0 ... 0.5, pores full (front) and dry (back)
+POV_DIR=$WORK/variants pov flowerpot_porosity.pov flowerpot_porosity "$W" "$H"; png flowerpot_porosity
 # 7 water films of increasing coverage into a puddle, copper under water
 pov film_copper.pov film_copper "$W" "$H"; png film_copper
+# 7b [Lag13]'s film depths at full coverage: dry, 0, 0.5 mm, 50 cm over a ground and over copper
+POV_DIR=$WORK/variants pov film_thickness.pov film_thickness "$W" "$H"; png film_thickness
 # beside them, soak render of the same description where the tracer can render it
 # (spheres, boxes and planes of presets: the beach rock and the films with copper)
 for s in beach_rock film_copper; do

@@ -8,8 +8,12 @@ Map where the scene needs them).
   cognac_table                      [JLD99] sec. 4.3, Fig. 7
   bricks_drying                     [Hnat06] sec. 3.3 / Fig. 6 (drying, four frames)
   bas_relief_rain                   [Hnat06] sec. 3.3.1 / Fig. 7 (rain bake with sky exposure)
-  flowerpot_porosity                [Hnat06] Fig. 5 (porosity sweep)
+  flowerpot_porosity                [Hnat06] Fig. 5 (alpha_poro sweep: clay_p00 ... clay_p50)
   film_copper                       [Lag13] (films over a dielectric ground; copper under water)
+  film_thickness                    [Lag13] (film depths 0, 0.5 mm, 50 cm: concrete_f0 ... copper_f500)
+
+flowerpot_porosity and film_thickness need the presets scenes/gallery/variants.txt
+adds: install the zip scenes/blender/variant_addon.py makes (make gallery does).
 
 Each build function empties the file, builds its scene and returns a list of
 renders: (name, [frames]); several frames are tiled 2 x 2 into one picture
@@ -722,40 +726,54 @@ def build_bas_relief_rain():
 POT_PROFILE = [(0.0, 0.0), (0.36, 0.0), (0.38, 0.015), (0.50, 0.86), (0.56, 0.87), (0.57, 0.88),
                (0.575, 1.02), (0.565, 1.04), (0.53, 1.04), (0.515, 1.0), (0.49, 0.89), (0.33, 0.07),
                (0.0, 0.07)]
-# the add-on's non-metal presets in order of porosity (the pores' volume fraction;
-# soak_data.json), without the thin sheets (paper, cotton)
-POROSITY_SWEEP = (("marble", 0.0), ("asphalt", 0.05), ("concrete", 0.25), ("brick", 0.35), ("clay", 0.40),
-                  ("oak", 0.53))
+# clay at the open porosities alpha_poro of [Hnat06] Fig. 5's sweep: presets the
+# core adds with `soak export --variant` (scenes/gallery/variants.txt, in the add-on
+# zip scenes/blender/variant_addon.py makes; `make gallery` installs that one)
+POROSITY_SWEEP = (("clay_p00", 0.0), ("clay_p10", 0.1), ("clay_p20", 0.2), ("clay_p30", 0.3), ("clay_p40", 0.4),
+                  ("clay_p50", 0.5))
+
+
+def _terracotta(name):
+    t = Tree(name)
+    co = t.node("ShaderNodeTexCoord").outputs["Object"]
+    t.link(t.ramp(t.noise(5.0, 6.0, 0.55, vector=co), [(0.3, (0.53, 0.20, 0.105)), (0.7, (0.57, 0.22, 0.115))]),
+           t.bsdf.inputs["Base Color"])
+    t.bump(t.noise(50.0, 3.0, 0.6, vector=co), 0.15, 0.01)
+    t.set(Roughness=0.8)
+    return t
 
 
 def build_flowerpot_porosity():
-    """[Hnat06] Fig. 5: the same terracotta pot, the same wetting (pores just
-    full: Wetness = the preset's porosity, no film yet), with the wetting
-    class of presets of increasing porosity, left to right: the more porous,
-    the darker and glossier. The leftmost (porosity 0) stays dry."""
+    """[Hnat06] Fig. 5: the same terracotta pot on the clay class with its open
+    porosity alpha_poro = 0, 0.1 ... 0.5 (left to right). Front row: the pores
+    just full (Wetness = the porosity, no film yet); back row: dry. The more
+    porous, the darker and glossier; a lamp near the camera gives the pore
+    water a highlight to show."""
     sc = _reset()
     k = len(POROSITY_SWEEP)
     for i, (preset, porosity) in enumerate(POROSITY_SWEEP):
-        pot = _lathe(f"Pot {preset}", POT_PROFILE, loc=((i - (k - 1) / 2) * 1.3, 0, 0))
-        t = Tree(f"Terracotta ({preset})")
-        co = t.node("ShaderNodeTexCoord").outputs["Object"]
-        t.link(t.ramp(t.noise(5.0, 6.0, 0.55, vector=co), [(0.3, (0.53, 0.20, 0.105)), (0.7, (0.57, 0.22, 0.115))]),
-               t.bsdf.inputs["Base Color"])
-        t.bump(t.noise(50.0, 3.0, 0.6, vector=co), 0.15, 0.01)
-        t.set(Roughness=0.8)
-        _assign(pot, t.mat)
-        make_wet(pot, preset, wetness=porosity)
-    shelf = _box("Table", (12.0, 5.0, 0.12), (0, -1.5, -0.06), bevel=0.02)
+        for row, wetness in ((0, porosity), (1, 0.0)):
+            pot = _lathe(f"Pot {preset} {'wet' if row == 0 else 'dry'}", POT_PROFILE,
+                         loc=((i - (k - 1) / 2) * 1.3, row * 2.0, 0))
+            t = _terracotta(f"Terracotta ({preset}, {'wet' if row == 0 else 'dry'})")
+            _assign(pot, t.mat)
+            make_wet(pot, preset, wetness=wetness)
+    shelf = _box("Table", (12.0, 7.0, 0.12), (0, 0.0, -0.06), bevel=0.02)
     _assign(shelf, _wood("Shelf oak", scale=0.4, rough=0.5))
-    wall = _plane("Wall", (14.0, 6.0), loc=(0, 1.6, 2.0), rot=(math.radians(90), 0, 0))
+    wall = _plane("Wall", (14.0, 6.0), loc=(0, 3.4, 2.0), rot=(math.radians(90), 0, 0))
     w = Tree("Plaster")
     w.link(w.ramp(w.noise(3.0, 6.0, 0.6), [(0.3, (0.55, 0.55, 0.52)), (0.7, (0.62, 0.61, 0.58))]),
            w.bsdf.inputs["Base Color"])
     w.set(Roughness=0.9)
     _assign(wall, w.mat)
     _sky(sc)
-    _sun(sc, 35, 215, strength=3.0, angle=2.0)
-    _camera(sc, (0.0, -10.5, 2.6), (0.0, 0.0, 0.4), lens=40)
+    _sun(sc, 55, 215, strength=2.5, angle=2.0)
+    lamp = bpy.data.lights.new("Lamp", "POINT")     # near the camera: its highlight on the pore water
+    lamp.energy, lamp.shadow_soft_size = 2500.0, 0.3
+    lo = bpy.data.objects.new("Lamp", lamp)
+    lo.location = (-2.5, -8.0, 5.5)
+    sc.collection.objects.link(lo)
+    _camera(sc, (0.0, -9.5, 4.4), (0.0, 0.8, 0.45), lens=45)
     return [("flowerpot_porosity", [1])]
 
 
@@ -819,6 +837,46 @@ def build_film_copper():
     return [("film_copper", [1])]
 
 
+# ------------------------- 8b: [Lag13]'s film depths at full coverage
+
+
+FILM_DEPTHS = ("", "_f0", "_f05", "_f500")   # dry, then 0, 0.5 mm, 50 cm (scenes/gallery/variants.txt)
+
+
+def build_film_thickness():
+    """[Lag13]: a rough dielectric ground (the concrete class with the colour of
+    scenes/gallery/film_thickness.json, back row) and copper (front row), left
+    to right dry, then fully covered by water 0, 0.5 mm and 50 cm deep (the
+    presets concrete_f0 ... copper_f500 of `soak export --variant`); a round
+    lamp far behind that the films and the metal mirror."""
+    sc = _reset()
+    for i, depth in enumerate(FILM_DEPTHS):
+        x, wet = -0.75 + 0.5 * i, 1.0 if i else 0.0
+        tile = _box(f"Ground{depth or ' dry'}", (0.46, 0.46, 0.01), (x, 0.53, 0.005))
+        t = Tree(f"Ground{depth or ' dry'}")
+        t.set(Base_Color=(0.45, 0.3, 0.2, 1), Roughness=0.8)
+        _assign(tile, t.mat)
+        make_wet(tile, "concrete" + depth, wetness=wet)
+        plate = _box(f"Copper{depth or ' dry'}", (0.46, 0.46, 0.01), (x, -0.02, 0.005))
+        _assign(plate, Tree(f"Copper{depth or ' dry'}").mat)
+        make_wet(plate, "copper" + depth, wetness=wet, colours="PRESET")
+    floor = _plane("Floor", 20.0, loc=(0, 0, -0.001))
+    f = Tree("Floor")
+    f.set(Base_Color=(0.05, 0.05, 0.05, 1), Roughness=1.0)
+    _assign(floor, f.mat)
+    w = bpy.data.worlds.new("Grey")
+    w.use_nodes = True
+    w.node_tree.nodes["Background"].inputs["Color"].default_value = (0.35, 0.35, 0.35, 1)
+    sc.world = w
+    lamp = bpy.data.lights.new("Lamp", "POINT")
+    lamp.energy, lamp.shadow_soft_size = 1900.0, 0.4
+    lo = bpy.data.objects.new("Lamp", lamp)
+    lo.location = (0.0, 6.0, 2.2)
+    sc.collection.objects.link(lo)
+    _camera(sc, (0.0, -2.3, 1.1), (0.0, 0.2, 0.0), lens=37.7)   # 51 degrees across, as the soak column
+    return [("film_thickness", [1])]
+
+
 SCENES = {
     "wet_paper_front": lambda: build_wet_paper(False),
     "wet_paper_back": lambda: build_wet_paper(True),
@@ -828,4 +886,5 @@ SCENES = {
     "bas_relief_rain": build_bas_relief_rain,
     "flowerpot_porosity": build_flowerpot_porosity,
     "film_copper": build_film_copper,
+    "film_thickness": build_film_thickness,
 }

@@ -66,6 +66,93 @@ while read -r kind name a b c d; do
   fi
 done < "$SOAK_TMP/knots.txt"
 
+# --variant: clay at the porosities of [Hnat06] Fig. 5's sweep, and copper
+# under a 50 cm film ([Lag13]), each equal to the chain on a preset file that
+# states the same material by hand (the loader's path, not the variant code)
+# and to `soak albedo --film-thickness` (the chain's own thickness input).
+PORES="0 0.1 0.2 0.3 0.4 0.5"
+vargs=(--variant copper_f500=copper,film_mm=500)
+for p in $PORES; do vargs+=(--variant "clay_p$(awk -v p="$p" 'BEGIN { printf "%02d", p * 100 + 0.5 }')=clay,porosity=$p"); done
+# (a file of clay, copper and water only: the export's time grows with presets x liquids)
+$PY - "$ROOT/c_core/data/materials.json" "$SOAK_TMP/small.json" <<'PYEOF'
+import json, sys
+db = json.load(open(sys.argv[1]))
+db["materials"] = [m for m in db["materials"] if m["name"] in ("clay", "copper")]
+db["liquids"] = [l for l in db["liquids"] if l["name"] == "water"]
+json.dump(db, open(sys.argv[2], "w"), indent=1)
+PYEOF
+expect_exit 0 "export json with variants" -- "$SOAK" export --target json --materials "$SOAK_TMP/small.json" "${vargs[@]}" \
+  -o "$SOAK_TMP/var.json"
+$PY - "$SOAK_TMP/small.json" "$SOAK_TMP/var.json" "$SOAK_TMP/var_presets.json" $PORES \
+  > "$SOAK_TMP/var.txt" <<'PYEOF'
+import copy, json, math, sys
+src, exp, out, pores = sys.argv[1], sys.argv[2], sys.argv[3], [float(x) for x in sys.argv[4:]]
+db = json.load(open(src)); ex = {m["name"]: m for m in json.load(open(exp))["materials"]}
+clay = next(m for m in db["materials"] if m["name"] == "clay")
+lum = lambda c: 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]
+for p in pores:
+    m = copy.deepcopy(clay); name = "clay_p%02d" % round(100 * p); m["name"] = name; m.pop("measured", None)
+    m["medium"]["sigma_t_per_mm"] = [s * (1 - p) / (1 - clay["porosity"]["alpha"]) for s in m["medium"]["sigma_t_per_mm"]]
+    if p == 0:   # no pores: a nonporous dielectric, as the loader reads one
+        m["kind"] = "nonporous_dielectric"; del m["porosity"]; del m["roughness"]["ggx_alpha_wet"]
+        del m["phase"]["wet"]; del m["wetting"]["t_fill"]
+    else:
+        m["porosity"]["alpha"] = p; m["roughness"]["ggx_alpha_wet"] = m["roughness"]["ggx_alpha_dry"] * math.sqrt(1 - p)
+    db["materials"].append(m)
+    k = ex[name]["liquids"]["water"]["knots"]; w = k["wetness"]
+    i = w.index(ex[name]["saturation_wetness"])
+    # pores just full: the wet state of the gallery's pots
+    print("sat", name, p, ex[name]["saturation_wetness"], k["water_specular_weight"][i], k["specular_weight"][i],
+          lum(k["albedo"][i]), lum(k["albedo"][0]))
+    for j in (i, len(w) - 1):
+        print("knot", name, repr(w[j]), *k["albedo"][j], k["ggx_alpha"][j])
+k = ex["copper_f500"]["liquids"]["water"]["knots"]
+print("film", "copper_f500", repr(k["wetness"][-1]), *k["albedo"][-1], ex["copper_f500"]["film_thickness_m"])
+json.dump(db, open(out, "w"), indent=1)
+PYEOF
+prev=""
+while read -r kind name a b c d e f; do
+  case $kind in
+    sat)
+      close "$b" "$a" 1e-12 "$name: saturation wetness = porosity $a"
+      close "$c" "$a" 1e-6 "$name: pores full: the water's mirror weight = porosity $a ([Hnat06] Eq. 3, G_p = 1)"
+      close "$d" "$(awk -v p="$a" 'BEGIN { print 1 - p }')" 1e-6 "$name: the material's own specular weight = 1 - porosity"
+      if [ "$a" = 0 ]; then close "$e" "$f" 1e-9 "$name: no pores: wet at saturation = dry"
+      elif [ -n "$prev" ]; then
+        awk -v x="$e" -v y="$prev" 'BEGIN { exit !(x < y) }' && ok "$name: pores full darker than the porosity before ($e < $prev)" \
+          || bad "$name: pores full not darker than the porosity before ($e >= $prev)"
+      fi
+      prev=$e ;;
+    knot)
+      got=$("$SOAK" albedo --materials "$SOAK_TMP/var_presets.json" --material "$name" --wetness "$a" \
+        | awk '$1 == "wet" && $2 == "albedo" && NF == 5 {print $3, $4, $5} $1 == "ggx" {print "alpha", $NF}')
+      set -- $got
+      if [ $# -eq 5 ]; then
+        close "$1" "$b" 2e-6 "$name: albedo R at wetness $a = the chain on the hand-made preset"
+        close "$3" "$d" 2e-6 "$name: albedo B at wetness $a = the chain on the hand-made preset"
+        close "$5" "$e" 2e-6 "$name: GGX alpha at wetness $a = the chain on the hand-made preset"
+      else bad "$name: soak albedo printed '$got'"; fi ;;
+    film)
+      got=$("$SOAK" albedo --materials "$SOAK_TMP/small.json" --material copper --wetness "$a" --film-thickness "$e" | awk '$1 == "wet" && $2 == "albedo" && NF == 5 {print $3, $4, $5}')
+      set -- $got
+      close "${1:-x}" "$b" 2e-6 "$name: albedo R under the film = soak albedo --film-thickness $e"
+      close "${3:-x}" "$d" 2e-6 "$name: albedo B under the film = soak albedo --film-thickness $e" ;;
+  esac
+done < "$SOAK_TMP/var.txt"
+expect_exit 2 "variant porosity out of range" -- "$SOAK" export --target json --variant a=clay,porosity=2
+expect_stderr "porosity 2 must lie in" "message names the porosity and its range"
+expect_exit 2 "variant porosity on a metal" -- "$SOAK" export --target json --variant a=copper,porosity=0.1
+expect_stderr "no pores" "message says the kind has no pores"
+expect_exit 2 "variant of an unknown preset" -- "$SOAK" export --target json --variant a=nosuch,film_mm=1
+expect_stderr "nosuch" "message names the unknown preset"
+expect_exit 2 "variant named as a preset" -- "$SOAK" export --target json --variant clay=clay,porosity=0.1
+expect_stderr "exists already" "message says the name is taken"
+expect_exit 2 "variant without a change" -- "$SOAK" export --target json --variant a=clay
+expect_exit 2 "variant with an unknown key" -- "$SOAK" export --target json --variant a=clay,depth=1
+expect_stderr "unknown setting" "message names the unknown setting"
+expect_exit 2 "variant film below 0" -- "$SOAK" export --target json --variant a=clay,film_mm=-1
+expect_exit 2 "variant porosity not a number" -- "$SOAK" export --target json --variant a=clay,porosity=nan
+
 # Atomic output: a failing run leaves the previous file untouched.
 echo previous > "$SOAK_TMP/keep.json"
 expect_exit 1 "bad preset file" -- "$SOAK" export --target json --materials "$SOAK_TMP/nosuch.json" -o "$SOAK_TMP/keep.json"

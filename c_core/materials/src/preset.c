@@ -16,20 +16,13 @@
 #include "soak/units.h"
 #include "soak/vdhulst.h"
 
+#include "preset_db.h"
+
 #define MAX_ENTRIES 1024
 #define PATH_MAX_LEN 160
 /* A conductor's albedo must equal F0(n, k) to this tolerance per channel. */
 #define CONDUCTOR_F0_TOL 2e-3
 
-struct soak_preset_db {
-    char *path;
-    soak_preset *materials;
-    int n_materials;
-    soak_liquid *liquids;
-    int n_liquids;
-    char **strings; /* every string the presets point to */
-    int n_strings, cap_strings;
-};
 
 typedef struct ctx {
     const char *file;
@@ -89,7 +82,11 @@ static void join(char *out, const char *base, const char *key)
 
 static soak_status keep_string(ctx *c, const char *s, const char **out)
 {
-    soak_preset_db *db = c->db;
+    return soak_preset_db_keep(c->db, s, out);
+}
+
+soak_status soak_preset_db_keep(soak_preset_db *db, const char *s, const char **out)
+{
     if (db->n_strings == db->cap_strings) {
         int cap = db->cap_strings ? 2 * db->cap_strings : 64;
         char **grown = realloc(db->strings, (size_t)cap * sizeof *grown);
