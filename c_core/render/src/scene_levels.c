@@ -99,7 +99,8 @@ static soak_status material_levels(scene_ctx *c, soak_scene *s, int mi, const so
     if (!p || !liq) return SOAK_ERR_NOT_FOUND; /* found when the material was parsed */
     double *t = malloc((size_t)(SOAK_LEVELS_GRID + 2 + s->n_objects) * sizeof *t);
     if (!t) return SOAK_ERR_NOMEM;
-    int n = level_knots(s, mi, saturation_knot(p, liq, rec->wetness), t);
+    /* a dry material is the same at every level */
+    int n = rec->wetness > 0 ? level_knots(s, mi, saturation_knot(p, liq, rec->wetness), t) : 0;
     soak_status st = n > 0 ? build_views(c, m->name, m, p, liq, n, t) : SOAK_OK;
     free(t);
     return st;
