@@ -10,6 +10,7 @@
 #include <time.h>
 
 #include "render_internal.h"
+#include "scene_levels.h"
 #include "soak/bsdf.h"
 #include "soak/rng.h"
 
@@ -130,28 +131,52 @@ static soak_rgb direct(const soak_bsdf *b, soak_vec3 wi, soak_vec3 wo, int sampl
     return soak_rgb3(f.r * wi.z, f.g * wi.z, f.b * wi.z);
 }
 
+/* levels: a preset's BSDFs at its levels of liquid (scene_levels.h), as
+ * the renderer sets them up (render_levels.c); n_levels = 0: none. */
 struct soak_shading_material {
     const soak_material *m;
     rt_material_bsdf mb;
+    int n_levels;
+    rt_material_bsdf *levels;
 };
+
+static soak_status shading_levels(soak_shading_material *p)
+{
+    const soak_material_levels *L = p->m->levels;
+    if (p->m->type != SOAK_MAT_WET || !L || L->n == 0) return SOAK_OK;
+    p->levels = calloc((size_t)L->n, sizeof *p->levels);
+    if (!p->levels) return SOAK_ERR_NOMEM;
+    for (int i = 0; i < L->n; ++i) {
+        soak_status st = rt_material_bsdf_setup(&L->view[i], 0, &p->levels[i]);
+        if (st != SOAK_OK) return st;
+    }
+    p->n_levels = L->n;
+    return SOAK_OK;
+}
 
 soak_status soak_shading_material_new(const soak_material *m, soak_shading_material **out)
 {
     if (!m || !out) return SOAK_ERR_NULL;
     *out = NULL;
-    soak_shading_material *p = malloc(sizeof *p);
+    soak_shading_material *p = calloc(1, sizeof *p);
     if (!p) return SOAK_ERR_NOMEM;
     p->m = m;
     soak_status st = material_bsdfs(m, 0, &p->mb);
+    if (st == SOAK_OK) st = shading_levels(p);
     if (st != SOAK_OK) {
-        free(p);
+        soak_shading_material_free(p);
         return st;
     }
     *out = p;
     return SOAK_OK;
 }
 
-void soak_shading_material_free(soak_shading_material *p) { free(p); }
+void soak_shading_material_free(soak_shading_material *p)
+{
+    if (!p) return;
+    free(p->levels);
+    free(p);
+}
 
 soak_status soak_material_radiance(const soak_material *m, double wetness, soak_vec3 wo, soak_rgb env,
                                    const soak_local_light *lights, int n_lights, int samples, uint64_t seed,
@@ -178,16 +203,13 @@ static soak_rgb direct_mix(const rt_material_bsdf *mb, state_mix mix, int sample
     return L;
 }
 
-soak_status soak_shading_radiance(const soak_shading_material *p, double wetness, soak_vec3 wo, soak_rgb env,
-                                  const soak_local_light *lights, int n_lights, int samples, uint64_t seed,
-                                  soak_albedo_estimate *out)
+/* The radiance of one material state (its BSDFs mb) in the mix of states
+ * at wetness (film probability wetness * m's coverage). */
+static soak_status state_radiance(const rt_material_bsdf *mb, const soak_material *m, double wetness, soak_vec3 wo,
+                                  soak_rgb env, const soak_local_light *lights, int n_lights, int samples,
+                                  uint64_t seed, soak_albedo_estimate *out)
 {
-    if (!p || !out || (!lights && n_lights > 0)) return SOAK_ERR_NULL;
-    if (!soak_in_range(wetness, 0, 1) || !soak_v3_is_unit(wo) || !(wo.z > 0) || !(n_lights >= 0) ||
-        !(samples >= 1 && samples <= 100000000))
-        return SOAK_ERR_ARG;
-    const rt_material_bsdf *mb = &p->mb;
-    state_mix mix = mix_of(mb, p->m, wetness);
+    state_mix mix = mix_of(mb, m, wetness);
     soak_albedo_estimate a;
     soak_status st = albedo_of(mb, mix, wo, samples, seed, &a);
     if (st != SOAK_OK) return st;
@@ -200,6 +222,43 @@ soak_status soak_shading_radiance(const soak_shading_material *p, double wetness
     out->value = L;
     out->std_error = soak_rgb3(a.std_error.r * env.r, a.std_error.g * env.g, a.std_error.b * env.b);
     return SOAK_OK;
+}
+
+/* (1 - f) a + f b, the errors added in quadrature. */
+static soak_albedo_estimate lerp_estimate(soak_albedo_estimate a, soak_albedo_estimate b, double f)
+{
+    soak_albedo_estimate r;
+    for (int ch = 0; ch < 3; ++ch) {
+        double ea = (1 - f) * soak_rgb_at(a.std_error, ch), eb = f * soak_rgb_at(b.std_error, ch);
+        soak_rgb_set(&r.value, ch, (1 - f) * soak_rgb_at(a.value, ch) + f * soak_rgb_at(b.value, ch));
+        soak_rgb_set(&r.std_error, ch, sqrt(ea * ea + eb * eb));
+    }
+    return r;
+}
+
+soak_status soak_shading_radiance(const soak_shading_material *p, double wetness, soak_vec3 wo, soak_rgb env,
+                                  const soak_local_light *lights, int n_lights, int samples, uint64_t seed,
+                                  soak_albedo_estimate *out)
+{
+    if (!p || !out || (!lights && n_lights > 0)) return SOAK_ERR_NULL;
+    if (!soak_in_range(wetness, 0, 1) || !soak_v3_is_unit(wo) || !(wo.z > 0) || !(n_lights >= 0) ||
+        !(samples >= 1 && samples <= 100000000))
+        return SOAK_ERR_ARG;
+    if (p->n_levels == 0) return state_radiance(&p->mb, p->m, wetness, wo, env, lights, n_lights, samples, seed, out);
+    /* a preset's levels: the linear interpolation in the object wetness the
+     * renderer's level draw has as its mean (render_levels.c) */
+    const soak_material_levels *L = p->m->levels;
+    double f, film = L->recipe.film_over ? wetness : 1.0;
+    int i = scene_levels_find(L, wetness, &f);
+    soak_albedo_estimate a, b;
+    soak_status st = state_radiance(&p->levels[i], &L->view[i], film, wo, env, lights, n_lights, samples, seed, &a);
+    if (st != SOAK_OK || !(f > 0)) {
+        *out = a;
+        return st;
+    }
+    st = state_radiance(&p->levels[i + 1], &L->view[i + 1], film, wo, env, lights, n_lights, samples, seed, &b);
+    if (st == SOAK_OK) *out = lerp_estimate(a, b, f);
+    return st;
 }
 
 static const soak_bsdf *shaded(const rt_material_bsdf *mb) { return mb->has_wet ? &mb->wet : &mb->dry; }

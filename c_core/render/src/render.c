@@ -125,6 +125,7 @@ typedef struct worker_arg worker_arg;
 typedef struct render_job {
     rt_ctx ctx;
     rt_material_bsdf *bsdfs; /* ctx.bsdfs, owned */
+    rt_levels *levels;       /* ctx.levels, owned */
     rt_photon_map caustics;
     cam_setup cam;
     int W, H, spp, passes, tiles_x, tiles_y, n_tiles, threads;
@@ -280,6 +281,11 @@ static soak_status prepare_scene(render_job *j, const soak_scene *scene, const s
     if (!j->bsdfs) return SOAK_ERR_NOMEM;
     j->ctx.bsdfs = j->bsdfs;
     soak_status st = rt_bsdfs_setup(scene, opt->trace_films, j->bsdfs, err, errlen);
+    if (st != SOAK_OK) return st;
+    j->levels = calloc(scene->n_materials > 0 ? (size_t)scene->n_materials : 1, sizeof *j->levels);
+    if (!j->levels) return SOAK_ERR_NOMEM;
+    j->ctx.levels = j->levels;
+    st = rt_levels_setup(scene, opt->trace_films, j->levels, err, errlen);
     if (st != SOAK_OK) return st;
     st = rt_env_build(&j->ctx.env, &scene->env);
     if (st == SOAK_OK && scene->caustic_photons > 0) {
@@ -447,6 +453,7 @@ static void job_free(render_job *j)
     free(j->args);
     free(j->th);
     free(j->bsdfs);
+    rt_levels_free(j->levels, j->ctx.scene ? j->ctx.scene->n_materials : 0);
     free(j);
 }
 

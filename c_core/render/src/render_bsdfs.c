@@ -89,3 +89,8 @@ soak_status rt_bsdfs_setup(const soak_scene *s, int trace_films, rt_material_bsd
     }
     return SOAK_OK;
 }
+
+soak_status rt_material_bsdf_setup(const soak_material *m, int trace_films, rt_material_bsdf *out)
+{
+    return material_setup(m, trace_films, out);
+}

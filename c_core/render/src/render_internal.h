@@ -73,11 +73,19 @@ typedef struct rt_material_bsdf {
     int has_wet, has_pore;
 } rt_material_bsdf;
 
+/* The BSDFs of a preset's levels (scene_levels.h, render_levels.c): n
+ * entries beside the material's levels->view; n = 0: none. */
+typedef struct rt_levels {
+    int n;
+    rt_material_bsdf *bsdf;
+} rt_levels;
+
 struct rt_photon_map;
 typedef struct rt_ctx {
     const soak_scene *scene;
     rt_env env;
     const rt_material_bsdf *bsdfs; /* one per material */
+    const rt_levels *levels;       /* one per material; NULL: none */
     int max_depth;
     const struct rt_photon_map *caustics; /* NULL: no caustic photons */
 } rt_ctx;
@@ -235,6 +243,19 @@ int rt_mix_reweight(const rt_bsdf_mix *m, soak_vec3 wo, soak_bsdf_sample *s);
  * films over Lambert traced bounce by bounce instead of their closed form.
  * On failure err names the material. */
 soak_status rt_bsdfs_setup(const soak_scene *s, int trace_films, rt_material_bsdf *bsdfs, char *err, size_t errlen);
+/* The same for one material. */
+soak_status rt_material_bsdf_setup(const soak_material *m, int trace_films, rt_material_bsdf *out);
+
+/* ---- a preset's levels of liquid (render_levels.c) ---- */
+/* Sets up out[i] (n_materials entries) for every material with levels. */
+soak_status rt_levels_setup(const soak_scene *s, int trace_films, rt_levels *out, char *err, size_t errlen);
+void rt_levels_free(rt_levels *levels, int n_materials);
+/* The material state a hit of obj is shaded with: *m and *mb (the
+ * material's own on entry) become a drawn level's when the material has
+ * levels. Returns the probability of the liquid's interface (film or pore
+ * water) at the hit. */
+double rt_level_at(rt_thread *t, const soak_object *obj, const soak_hit *hit, const soak_material **m,
+                   const rt_material_bsdf **mb);
 
 /* ---- the layer stack (render_stack.c) ---- */
 /* The air | film | material layer stack of a wet surface. */

@@ -127,18 +127,17 @@ static void dielectric(rt_thread *t, const soak_hit *hit, const soak_material *m
     path->prev_delta = 1;
 }
 
-/* The BSDFs at a hit: dry, wet and pore by their shares; one is drawn (one
+/* The BSDFs at a hit: dry, wet and pore by their shares (w: the liquid
+ * interface's, rt_level_at); one is drawn (one
  * draw: the film's pixels stay as they were without pores) and, unless the
  * components can be mixed (rt_mix_can), it alone is kept. */
-static void surface_mix(rt_thread *t, const soak_hit *hit, const soak_object *obj, const soak_material *m,
-                        const rt_material_bsdf *mb, rt_bsdf_mix *mix)
+static void surface_mix(rt_thread *t, double w, const soak_material *m, const rt_material_bsdf *mb, rt_bsdf_mix *mix)
 {
     mix->n = 1;
     mix->b[0] = &mb->dry;
     mix->w[0] = 1.0;
     mix->chosen = 0;
     if (!mb->has_wet) return;
-    double w = soak_scene_wetness(obj, hit->p, hit->u, hit->v) * m->film_coverage;
     double u = rt_rand(t), wet = mb->has_pore ? w * (1.0 - m->film_pore_share) : w;
     const soak_bsdf *parts[3] = {&mb->dry, &mb->wet, &mb->pore};
     double share[3] = {1.0 - w, wet, w - wet};
@@ -172,7 +171,8 @@ void rt_surface(rt_thread *t, const soak_hit *hit, rt_path *path)
         return;
     }
     rt_bsdf_mix mix;
-    surface_mix(t, hit, obj, m, mb, &mix);
+    double w = rt_level_at(t, obj, hit, &m, &mb);
+    surface_mix(t, w, m, mb, &mix);
     if (mix.n == 1 && (mix.b[0]->flags & SOAK_BSDF_TRANSMIT)) dielectric(t, hit, m, mix.b[0], path);
     else reflect(t, hit, &mix, path);
 }

@@ -14,6 +14,7 @@
 #include <strings.h>
 
 #include "scene_json.h"
+#include "scene_levels.h"
 
 /* Counts are whole numbers: 31.7 is an error, not 31. */
 static soak_status whole(scene_ctx *c, const char *path, double v)
@@ -497,6 +498,7 @@ soak_status soak_scene_parse(const char *text, const char *name, const char *bas
     if (st == SOAK_OK) st = parse_lights(&c, cJSON_GetObjectItemCaseSensitive(root, "lights"));
     if (st == SOAK_OK) st = parse_objects(&c, cJSON_GetObjectItemCaseSensitive(root, "objects"));
     cJSON_Delete(root);
+    if (st == SOAK_OK) st = scene_levels_build(&c, scene);
     if (st == SOAK_OK && scene->n_objects == 0) st = sj_fail(&c, SOAK_ERR_ARG, "objects", "the scene has no objects");
     if (st == SOAK_OK && scene->n_lights == 0 && scene->env.type == SOAK_ENV_NONE)
         st = sj_fail(&c, SOAK_ERR_ARG, "lights", "the scene has neither lights nor an environment");

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "scene_json.h"
+#include "scene_levels.h"
 #include "soak/base_colour.h"
 #include "soak/fresnel.h"
 #include "soak/json_number.h"
@@ -510,6 +511,51 @@ static soak_status parse_film_over(scene_ctx *c, const cJSON *j, const char *pat
     return SOAK_OK;
 }
 
+/* What parse_preset read, kept for the material's states at the wetness of
+ * each point (scene_levels.c); after parse_film_over. */
+static soak_status keep_recipe(const preset_request *r, int no_interface, const cJSON *j, soak_material *m)
+{
+    scene_preset_recipe rec;
+    memset(&rec, 0, sizeof rec);
+    snprintf(rec.name, sizeof rec.name, "%s", r->name);
+    snprintf(rec.liquid, sizeof rec.liquid, "%s", r->liquid ? r->liquid : "water");
+    rec.wetness = r->wetness;
+    rec.m_per_unit = r->m_per_unit;
+    rec.has_base = r->has_base;
+    rec.base = r->base;
+    rec.no_interface = no_interface;
+    rec.film_over = cJSON_GetObjectItemCaseSensitive(j, "film_over") != NULL;
+    rec.over_coverage = m->film_coverage;
+    rec.over_thickness = m->film_thickness;
+    return scene_levels_keep(&rec, m);
+}
+
+soak_status scene_preset_view(const soak_preset *p, const soak_liquid *liq, const scene_preset_recipe *rec,
+                              double wetness, soak_material *m)
+{
+    preset_chain pc;
+    memset(&pc, 0, sizeof pc);
+    soak_wet_input in = soak_wet_input_steady(p, wetness);
+    soak_status st = rec->has_base ? soak_wet_params_for_base(p, liq, &in, rec->base, &pc.w)
+                                   : soak_wetness_eval(p, liq, &in, &pc.w);
+    if (st != SOAK_OK) return st;
+    if (p->kind == SOAK_KIND_THIN_SHEET) return SOAK_ERR_UNSUPPORTED; /* its dry medium follows the wetness */
+    pc.kind = p->kind;
+    pc.ior = p->ior;
+    pc.n = p->ior_n;
+    pc.k = p->ior_k;
+    m->type = SOAK_MAT_WET;
+    preset_film(&pc.w, rec->m_per_unit, m);
+    preset_base(&pc, rec->m_per_unit, m);
+    if (rec->no_interface) m->coat_weight = 0.0;
+    if (rec->film_over) {
+        m->film_coverage = rec->over_coverage;
+        m->film_pore_share = 0.0;
+        m->film_thickness = rec->over_thickness;
+    }
+    return SOAK_OK;
+}
+
 /* Preset + wetness through soak/wetness.h (steady state). The chain is in
  * SI (m, 1/m); "unit_mm" is the scene length unit in mm (the scene file's
  * documented key), converted here once to metres per unit. */
@@ -547,6 +593,7 @@ static soak_status parse_preset(scene_ctx *c, const cJSON *j, const char *path, 
      * front end draws with its highlights off (tests/povray/flat_ground.py) */
     if (interface < 0.5) m->coat_weight = m->dry_coat_weight = 0.0;
     st = parse_film_over(c, j, path, m);
+    if (st == SOAK_OK && !r.model && pc.kind != SOAK_KIND_THIN_SHEET) st = keep_recipe(&r, interface < 0.5, j, m);
     if (st != SOAK_OK || !r.model) return st;
     char mp[320];
     sj_path(mp, sizeof mp, path, "model");
@@ -653,6 +700,7 @@ soak_status scene_parse_wetness(scene_ctx *c, const cJSON *j, const char *path, 
 
 void scene_material_free(soak_material *m)
 {
+    scene_levels_free(m);
     if (m->medium.volume) {
         soak_volume_free(m->medium.volume);
         free(m->medium.volume);

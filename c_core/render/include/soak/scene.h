@@ -134,6 +134,11 @@ typedef struct soak_material {
     soak_model_params model_params[3];
     soak_rgb wet_albedo; /* albedo for models that do not model pores */
     int has_model_params;
+    /* An opaque or metal preset's states at other liquid amounts, for
+     * objects whose wetness (a map, a plane, a constant below 1) scales the
+     * material's: the chain at the point's liquid amount (scene_levels.h).
+     * NULL for every other material. Owned by the scene. */
+    struct soak_material_levels *levels;
 } soak_material;
 
 typedef enum soak_wetness_type {
