@@ -547,11 +547,12 @@ soak_status scene_preset_view(const soak_preset *p, const soak_liquid *liq, cons
     m->type = SOAK_MAT_WET;
     preset_film(&pc.w, rec->m_per_unit, m);
     preset_base(&pc, rec->m_per_unit, m);
-    if (rec->no_interface) m->coat_weight = 0.0;
+    if (rec->no_interface) m->coat_weight = m->dry_coat_weight = 0.0;
     if (rec->film_over) {
         m->film_coverage = rec->over_coverage;
         m->film_pore_share = 0.0;
         m->film_thickness = rec->over_thickness;
+        m->dry_coat_weight = m->coat_weight; /* as parse_film_over: no pore water */
     }
     return SOAK_OK;
 }
