@@ -8,8 +8,8 @@
  *     for that grade (and below 95 %, the top of copier papers' range);
  *  3. transmittance and its colour against the same two published numbers
  *     by a second route: Kubelka's closed forms from the measured R_inf (the
- *     preset's albedo: pb.info 'Office Paper' with its blue taken without
- *     the brighteners' fluorescence, c_core/data/materials.json) and the
+ *     preset's albedo: the green of pb.info 'Office Paper' with the chromaticity
+ *     of an unbrightened cellulose sheet, c_core/data/materials.json) and the
  *     opacity 0.90 alone, with one S for the three channels (fibres much
  *     wider than the wavelength): the chain's T per channel within 10 %, its
  *     blue/red ratio within 5 %, and warm or neutral: red/blue >= 1 in both

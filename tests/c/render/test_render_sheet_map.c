@@ -20,15 +20,16 @@
  *     interfaces; the wet sheet's film is not in the bound).
  *  4. White light through the dry sheet has the colour of the published data:
  *     red/blue against Kubelka's closed forms (Kubelka 1948) from the preset's
- *     R_inf per channel (its albedo: measured, blue without brightener
- *     fluorescence, c_core/data/materials.json) and the published opacity
+ *     R_inf per channel (its albedo: measured green, the chromaticity of an
+ *     unbrightened cellulose sheet, c_core/data/materials.json) and the published opacity
  *     R0/R_inf = 0.90 (JCP O-63), one S for the three channels, with the
  *     sheet's two faces of index n (Saunderson 1942). The tolerance is the sum
  *     of named terms: Monte Carlo (4 sigma of the ratio), the two-flux form's
  *     colour error against transport (TWO_FLUX_COLOUR) and the RGB projection
- *     of the spectrum (RGB_PROJECTION). The issue-39 sheets (0.05 at 0.8 mm;
- *     0.80 with the brightened blue) fail it. The wet spot is warm or neutral
- *     and no more coloured than that (index matching shortens the paths). */
+ *     of the spectrum (RGB_PROJECTION). And not blue: red/blue >= 1, which the
+ *     issue-39 sheets (0.05 at 0.8 mm; 0.80 with the brightened albedo) fail.
+ *     The wet spot is warm or neutral and no more coloured than the dry sheet
+ *     (index matching shortens the paths). */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdint.h>
