@@ -23,8 +23,8 @@ Asserted:
      sum only for world light, black here) is not Cycles' sampled GGX,
      measured from the black-base renders of each state;
   3. the highlight view against soak render (plane_cases.json "highlight":
-     the camera at the sun's mirror direction; its presets, dry and fully
-     wet; test_render_compare.py's view for Cycles): EEVEE's whole image E
+     the camera at the sun's mirror direction; its presets and asserted
+     wetness levels; test_render_compare.py's view for Cycles): EEVEE's whole image E
      of the Soak material against soak render's whole preset material F,
        |E - F - (Q_E - Q_C)| <= Cycles' named terms (highlight_named: the
            diffuse part's terms, body hold-back, Fresnel form, 4.x
@@ -41,7 +41,7 @@ Asserted:
      renderer measured without our nodes. Centring the interval on it is
      stricter than adding |Q_E - Q_C| to the tolerance (which it implies),
      and keeps the check meaningful where EEVEE Next's image of the sun is
-     1.3-2.7x the whole wet image; an error of ours (a wrong lobe weight:
+     0.4-2.7x the rest of the wet image; an error of ours (a wrong lobe weight:
      1.3 x the specular fails 3.4, 1.5 x fails 4.3 and 5.2) is in E only.
      Cycles' image of the Soak material, rendered here for the terms, is
      held to |C - F| <= Cycles' named terms + 3 sigma as well.
