@@ -521,6 +521,23 @@ def highlight_terms(mat, liq, table, w, views, e_sun):
     return {"body": body, "fresnel": fres, "multi": multi, "film": film}
 
 
+def highlight_named(ref, liquids, p, w, diffuse, version_term, full, body):
+    """The highlight view's named terms, absolute radiances (luminance): for
+    preset p (water) at wetness w, a Principled image whose diffuse part is
+    diffuse (L - S) and whose version term (3.x coat dimming, 4.x specular
+    layering) is version_term, against soak render's whole material full and
+    its body alone body. Also used by test_eevee.py (EEVEE's highlight view)."""
+    t = ref[p]["liquids"]["water"]
+    d = CASES["sun"]["direction"]
+    theta_sun = math.degrees(math.acos(d[2] / math.sqrt(sum(x * x for x in d))))
+    terms = highlight_terms(ref[p], liquids["water"], t, w, highlight_pixels(CASES["highlight"]["camera_position"]),
+                            CASES["sun"]["irradiance"])
+    share = version_term + 0.005 / lum(knot(t, "albedo", w)) + factor_table_term(t, w) + \
+        light_angle_term(t, w, theta_sun, SUN_SHARE)
+    return {"diffuse": share * diffuse, "body": terms["body"] * body, "fresnel": terms["fresnel"],
+            "multi": terms["multi"], "film": terms["film"], "noise": SOAK_NOISE * full}
+
+
 def highlight_view(ref, liquids, coat_dim, failures):
     """The highlight-on view (plane_cases.json "highlight"): the camera at the
     sun's mirror direction, the whole Cycles image L against soak render's
@@ -535,10 +552,6 @@ def highlight_view(ref, liquids, coat_dim, failures):
     over ks (1 - c) (soak/wet_specular.h point 4; README, "Highlight view")."""
     hl = CASES["highlight"]
     pos = hl["camera_position"]
-    views = highlight_pixels(pos)
-    d = CASES["sun"]["direction"]
-    theta_sun = math.degrees(math.acos(d[2] / math.sqrt(sum(x * x for x in d))))
-    e_sun = CASES["sun"]["irradiance"]
     out = []
     for p in hl["presets"]:
         t = ref[p]["liquids"]["water"]
@@ -560,11 +573,7 @@ def highlight_view(ref, liquids, coat_dim, failures):
             m = {"type": "preset", "name": p, "wetness": w, "liquid": "water", "unit_mm": CASES["soak_unit_mm"]}
             full = lum(soak_render(f"hl_{p}_{w}", m, camera=pos))
             body = lum(soak_render(f"hl_{p}_{w}_body", dict(m, interface=0), camera=pos))
-            terms = highlight_terms(ref[p], liquids["water"], t, w, views, e_sun)
-            diffuse = coat_dim + layer + 0.005 / lum(knot(t, "albedo", w)) + factor_table_term(t, w) + \
-                light_angle_term(t, w, theta_sun, SUN_SHARE)
-            named = {"diffuse": diffuse * (lb - sb), "body": terms["body"] * body, "fresnel": terms["fresnel"],
-                     "multi": terms["multi"], "film": terms["film"], "noise": SOAK_NOISE * full}
+            named = highlight_named(ref, liquids, p, w, lb - sb, coat_dim + layer, full, body)
             tol = sum(named.values()) / full
             rel = lb / full - 1.0
             asserted = w in hl["asserted"]
@@ -842,4 +851,5 @@ def main():
     print("PASS")
 
 
-main()
+if __name__ == "__main__":   # Blender's --python runs the script as __main__; test_eevee.py imports it
+    main()
