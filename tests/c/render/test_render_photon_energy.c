@@ -16,7 +16,9 @@
  * photons lie under the plate. A second scene, the plate index-matched and
  * the slab reflecting nothing more, checks the same sum against E A albedo.
  * The stored power is what the gather turns into light: with it wrong every
- * caustic is off by the same factor. */
+ * caustic is off by the same factor. The gather's volume near a face (the
+ * sphere below a plane at depth d above its centre) is checked against the
+ * integral of its slices, pi (r^2 (d + r) - (d^3 + r^3) / 3). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -71,9 +73,28 @@ static int photon_power(const char *text, double *sum, double *se, long *outside
     return ok;
 }
 
+/* The sphere's volume below the plane, summed slice by slice from its bottom. */
+static double slices_below(double r, double d) { return SOAK_PI * (r * r * (d + r) - (d * d * d + r * r * r) / 3); }
+
+static void check_clipped_volume(void)
+{
+    const double r = 0.3, depths[] = {0.0, 0.05, 0.15, 0.29};
+    for (int i = 0; i < 4; ++i) {
+        char what[96];
+        snprintf(what, sizeof what, "gather volume below a face at depth %.2f r", depths[i] / r);
+        check_close(what, rt_sphere_volume_below(r, depths[i]), slices_below(r, depths[i]), 1e-12);
+    }
+    check_close("gather volume beyond the radius: the whole sphere", rt_sphere_volume_below(r, 0.5), slices_below(r, r),
+                1e-12);
+    check_close("gather volume, no face known (INFINITY)", rt_sphere_volume_below(r, INFINITY), slices_below(r, r), 1e-12);
+    check_close("gather volume, centre above the face: clamped to half", rt_sphere_volume_below(r, -0.1),
+                slices_below(r, 0), 1e-12);
+}
+
 int main(void)
 {
     setvbuf(stdout, NULL, _IONBF, 0);
+    check_clipped_volume();
     const double E = 2.0, A = 4.0, albedo = 1.0 / 1.25;
     double R = sq(0.5 / 2.5), Tp = (1 - R) / (1 + R), Rp = 2 * R / (1 + R), F = sq(0.4 / 2.4);
     double want = E * A * Tp * (1 - F) / (1 - F * Rp) * albedo;
