@@ -6,8 +6,10 @@ into OUTDIR (scenes/gallery/render.sh calls this; nothing here is checked in):
   wall.obj        a brick wall 1.6 x 0.9 m, bricks 4 mm proud of the mortar, UVs over the wall
   mortar.obj      the mortar behind them, same UVs
   pot.obj         a flowerpot 0.16 m high (lathe, closed: outer wall, rim, inner wall, floor)
-  glass.obj       a tumbler 0.16 m high, 2 mm walls (closed)
-  cognac.obj      the liquid in it, 5 cm deep, 0.3 mm inside the glass
+  glass.obj       a tumbler 0.16 m high, 2 mm walls (closed), 384 facets round: the tracer
+                  refracts at the flat facets, whose shadow stripes and split caustic
+                  show at 96
+  cognac.obj      the liquid in it, 5 cm deep, 0.3 mm inside the glass, 384 facets round
   table.obj       a table top 1.0 x 0.9 x 0.04 m from (-0.5, -0.4, -0.04), UVs over its top
   spill.pgm       the spilled pool on the table (u, v over the top), 16 bit
 usage: meshes.py OUTDIR"""
@@ -134,9 +136,9 @@ def main(out):
            (0.072, 0.145), (0.05, 0.012), (0, 0.012)]
     write_obj(os.path.join(out, "pot.obj"), *lathe(pot))
     glass = [(0, 0), (0.035, 0), (0.036, 0.16), (0.034, 0.16), (0.033, 0.008), (0, 0.008)]
-    write_obj(os.path.join(out, "glass.obj"), *lathe(glass))
+    write_obj(os.path.join(out, "glass.obj"), *lathe(glass, steps=384))
     cognac = [(0, 0.0083), (0.0327, 0.0083), (0.0327, 0.058), (0, 0.058)]
-    write_obj(os.path.join(out, "cognac.obj"), *lathe(cognac))
+    write_obj(os.path.join(out, "cognac.obj"), *lathe(cognac, steps=384))
     v, t, f = [], [], []
     box_faces(v, t, f, (-0.5, -0.4, -0.04), (0.5, 0.5, 0), lambda x, y, z: (x + 0.5, (y + 0.4) / 0.9))
     write_obj(os.path.join(out, "table.obj"), v, t, f)

@@ -167,6 +167,9 @@ typedef struct nee_ctx {
      * li < RT_NEE_CACHE: its tangent plane predicts the next exit distance. */
     int cached[RT_NEE_CACHE];
     soak_vec3 cache_p[RT_NEE_CACHE], cache_n[RT_NEE_CACHE];
+    /* Where the path entered the medium and the face's outward unit normal:
+     * the plane the photon gather is clipped by (rt_photons_gather). */
+    soak_vec3 entry_p, entry_n;
 } nee_ctx;
 
 /* Distance along d from x to the plane through p with normal n (pointing
@@ -374,11 +377,13 @@ static void add_delta_light(nee_ctx *c, const soak_light *l, soak_vec3 x, soak_v
     c->path->L = soak_rgb_add(c->path->L, L);
 }
 
-/* Caustic in-scattering from the photon map: sigma_s L_s / sigma_s, times 1/n3^2. */
+/* Caustic in-scattering from the photon map: sigma_s L_s / sigma_s, times
+ * 1/n3^2. The gather is clipped by the entry face's plane, x's depth below it. */
 static soak_rgb caustic_light(const nee_ctx *c, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, const soak_medium_point *local)
 {
     double n3 = c->m->medium.ior;
-    soak_rgb g = rt_photons_gather(c->t->ctx->caustics, x, d_in, &local->phase, c->object_id);
+    double depth = soak_v3_dot(soak_v3_sub(c->entry_p, x), c->entry_n);
+    soak_rgb g = rt_photons_gather(c->t->ctx->caustics, x, d_in, &local->phase, c->object_id, depth);
     soak_rgb ss = local->sigma_s;
     soak_rgb ls = soak_rgb3(ss.r > 0 ? g.r / ss.r : 0, ss.g > 0 ? g.g / ss.g : 0, ss.b > 0 ? g.b / ss.b : 0);
     return soak_rgb_scale(soak_rgb_mul(beta, ls), 1.0 / (n3 * n3 * c->path->eta_scale));
@@ -511,6 +516,8 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     nc.surf = &surf;
     nc.object_id = hit->object_id;
     nc.path = path;
+    nc.entry_p = hit->p;
+    nc.entry_n = soak_v3_norm(n_out);
     /* The walk's roulette plays on its weight: start it at beta * eta_scale
      * (rt_rr_weight's convention) and undo the scale on what it returns. */
     soak_walk_options opt = rt_walk_options(soak_rgb_scale(path->beta, path->eta_scale));
