@@ -22,6 +22,8 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 # A unit (one input) slower than this is reported as a hang. 60 s, not 10: at
 # nice 10 on a loaded machine a starved fuzzer has stalled 46-66 s on inputs
 # that take 0.5 s alone (tests/fuzz/README.md, runs of 2026-11-27).
+# libFuzzer also saves a "slow unit" artifact past 10 s by default; the same
+# limit applies (a 1-byte image input was saved at load 10, 2026-11-29).
 UNIT_TIMEOUT=${SOAK_FUZZ_UNIT_TIMEOUT:-60}
 OUT="$B/fuzz"
 [ $short = 1 ] && OUT="$B/fuzz-short"
@@ -42,7 +44,7 @@ for t in $TARGETS; do
     [ "$t" = mesh ] && extra+=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
     ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 \
         LSAN_OPTIONS=suppressions=$HERE/../lsan.supp:fast_unwind_on_malloc=0 \
-        nice -n 10 "$exe" "$OUT/corpus/$t" -max_total_time="$SECS" -timeout="$UNIT_TIMEOUT" -rss_limit_mb=3072 \
+        nice -n 10 "$exe" "$OUT/corpus/$t" -max_total_time="$SECS" -timeout="$UNIT_TIMEOUT" -report_slow_units="$UNIT_TIMEOUT" -rss_limit_mb=3072 \
         -artifact_prefix="$OUT/artifacts/$t/" -print_final_stats=1 "${extra[@]}" >"$OUT/$t.log" 2>&1
     rc=$?
     execs=$(grep -E "stat::number_of_executed_units" "$OUT/$t.log" | tail -1 | awk '{ print $2 }')

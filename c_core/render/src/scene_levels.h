@@ -48,7 +48,7 @@ void scene_levels_free(soak_material *m);
  * fraction of the way to level i + 1, in [0, 1]. Needs L->n >= 1. */
 int scene_levels_find(const soak_material_levels *L, double x, double *frac);
 
-/* The preset rec at liquid amount `wetness` (scene_material.c: the code
+/* The preset rec at liquid amount `wetness` (scene_preset.c: the code
  * that parse_preset runs), written over m's film, base and interface. */
 soak_status scene_preset_view(const soak_preset *p, const soak_liquid *liq, const scene_preset_recipe *rec,
                               double wetness, soak_material *m);
