@@ -1,5 +1,5 @@
 // Gallery: a sheet of paper with a wet blot ([JLD99] sec. 4.1, Fig. 5), lying on an
-// oak desk and lit from the front (the blot is darker), or (Declare=Back=1) held up
+// oak desk over a pencil and lit from the front (the blot is darker), or (Declare=Back=1) held up
 // against a bright window (its pane and glazing bars seen beside the sheet), lit from behind (the blot is brighter: water lets more
 // light through the fibres).
 #version 3.7;
@@ -22,6 +22,8 @@ global_settings { assumed_gamma 1.0 ambient_light 1 }
   camera { location <0.5, -0.75, 1.1> look_at <0.5, 0.62, 0> sky z up z right -x * image_width / image_height angle 48 }
   light_source { <-0.6, -0.4, 1> * 1e4 rgb 1 parallel point_at 0 }
   sky_sphere { pigment { rgb 0.9 } }
-  box { <0, 0, 0>, <1, 1.3, 0.001> Soak_Wet_Material_Fn("paper", "water", function { Blot(x, y - 0.15, 0) }) }
+  // the sheet lies on a yellow pencil (JLD99's test of translucency) that crosses the blot and sticks out on the left
+  box { <0, 0, 0.034>, <1, 1.3, 0.035> Soak_Wet_Material_Fn("paper", "water", function { Blot(x, y - 0.15, 0) }) }
+  box { <-0.22, 0.633, 0>, <0.9, 0.667, 0.034> pigment { rgb <0.72, 0.5, 0.06> } finish { ambient Soak_Ambient diffuse 1 } }
   box { <-2, -2, -0.05>, <3, 3, 0> Soak_Wet_Material("oak", "water", 0) }
 #end
