@@ -8,14 +8,12 @@
 #include "scene_json.h"
 #include "scene_levels.h"
 #include "scene_preset.h"
-#include "soak/base_colour.h"
 #include "soak/fresnel.h"
-#include "soak/json_number.h"
 #include "soak/ggx.h"
+#include "soak/json_number.h"
 #include "soak/porous.h"
 #include "soak/preset.h"
 #include "soak/units.h"
-#include "soak/wet_specular.h"
 #include "soak/wetness.h"
 
 void scene_medium_majorant(soak_scene_medium *m)

@@ -9,6 +9,7 @@
 #include "scene_json.h"
 #include "scene_levels.h"
 #include "scene_preset.h"
+#include "soak/base_colour.h"
 #include "soak/json_number.h"
 #include "soak/preset.h"
 #include "soak/units.h"
