@@ -3,6 +3,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "soak/scene.h"
 #include "soak/input_file.h"
+#include "soak/preset.h"
 #include "soak/render.h"
 
 #include <errno.h>
@@ -15,6 +16,7 @@
 
 #include "scene_json.h"
 #include "scene_levels.h"
+#include "scene_material.h"
 
 /* Counts are whole numbers: 31.7 is an error, not 31. */
 static soak_status whole(scene_ctx *c, const char *path, double v)
@@ -467,7 +469,7 @@ soak_status soak_scene_parse(const char *text, const char *name, const char *bas
 {
     if (!text || !scene) return SOAK_ERR_NULL;
     memset(scene, 0, sizeof *scene);
-    scene_ctx c = {name ? name : "(scene)", base_dir ? base_dir : "", err, errlen, scene};
+    scene_ctx c = {name ? name : "(scene)", base_dir ? base_dir : "", err, errlen, scene, NULL};
     snprintf(scene->path, sizeof scene->path, "%s", c.name);
     const char *end = NULL;
     cJSON *root = cJSON_ParseWithOpts(text, &end, 1);
@@ -499,6 +501,7 @@ soak_status soak_scene_parse(const char *text, const char *name, const char *bas
     if (st == SOAK_OK) st = parse_objects(&c, cJSON_GetObjectItemCaseSensitive(root, "objects"));
     cJSON_Delete(root);
     if (st == SOAK_OK) st = scene_levels_build(&c, scene);
+    soak_presets_free(c.db);
     if (st == SOAK_OK && scene->n_objects == 0) st = sj_fail(&c, SOAK_ERR_ARG, "objects", "the scene has no objects");
     if (st == SOAK_OK && scene->n_lights == 0 && scene->env.type == SOAK_ENV_NONE)
         st = sj_fail(&c, SOAK_ERR_ARG, "lights", "the scene has neither lights nor an environment");

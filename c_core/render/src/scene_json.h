@@ -15,6 +15,10 @@ typedef struct scene_ctx {
     char *err;
     size_t errlen;
     soak_scene *scene;
+    /* The presets (materials.json), loaded by the first preset material and
+     * shared by every later one and by the levels (scene_presets_db); the
+     * parser frees it. NULL until then. */
+    struct soak_preset_db *db;
 } scene_ctx;
 
 /* Formats the message and returns status. */
@@ -49,10 +53,5 @@ void sj_syntax_error(const char *text, const char *at, const char *name, char *e
 /* The first key that appears twice in one object anywhere in the tree;
  * NULL when there is none. */
 const char *sj_duplicate_key(const cJSON *root);
-
-/* scene_material.c */
-soak_status scene_parse_material(scene_ctx *c, const cJSON *j, const char *path, soak_material *m);
-soak_status scene_parse_wetness(scene_ctx *c, const cJSON *j, const char *path, soak_wetness *w);
-void scene_material_free(soak_material *m);
 
 #endif

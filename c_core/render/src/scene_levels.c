@@ -6,15 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "soak/wetness.h"
-
-soak_status scene_levels_keep(const scene_preset_recipe *rec, soak_material *m)
-{
-    m->levels = calloc(1, sizeof *m->levels);
-    if (!m->levels) return SOAK_ERR_NOMEM;
-    m->levels->recipe = *rec;
-    return SOAK_OK;
-}
 
 void scene_levels_free(soak_material *m)
 {
@@ -57,16 +48,6 @@ static int level_knots(const soak_scene *s, int mi, double kink, double *t)
     return k;
 }
 
-/* The object wetness where the chain's pores are full (wetness.h step 2:
- * L = w_sat), a bend of every quantity in L. */
-static double saturation_knot(const soak_preset *p, const soak_liquid *liq, double wetness)
-{
-    soak_wet_input in = soak_wet_input_steady(p, wetness);
-    soak_wet_params w;
-    if (!(wetness > 0) || soak_wetness_eval(p, liq, &in, &w) != SOAK_OK) return -1.0;
-    return w.saturation / wetness;
-}
-
 static soak_status build_views(scene_ctx *c, const char *name, soak_material *m, const soak_preset *p,
                                const soak_liquid *liq, int n, const double *t)
 {
@@ -78,7 +59,9 @@ static soak_status build_views(scene_ctx *c, const char *name, soak_material *m,
         L->t[i] = t[i];
         L->view[i] = *m;
         L->view[i].levels = NULL;
-        soak_status st = scene_preset_view(p, liq, &L->recipe, t[i] * L->recipe.wetness, &L->view[i]);
+        /* at object wetness 1 the level is the material as parsed: the
+         * same chain at the same liquid amount, not run again */
+        soak_status st = t[i] == 1.0 ? SOAK_OK : scene_preset_view(p, liq, &L->recipe, t[i] * L->recipe.wetness, &L->view[i]);
         if (st != SOAK_OK) {
             char path[128];
             snprintf(path, sizeof path, "materials.%s", name);
@@ -99,8 +82,9 @@ static soak_status material_levels(scene_ctx *c, soak_scene *s, int mi, const so
     if (!p || !liq) return SOAK_ERR_NOT_FOUND; /* found when the material was parsed */
     double *t = malloc((size_t)(SOAK_LEVELS_GRID + 2 + s->n_objects) * sizeof *t);
     if (!t) return SOAK_ERR_NOMEM;
-    /* a dry material is the same at every level */
-    int n = rec->wetness > 0 ? level_knots(s, mi, saturation_knot(p, liq, rec->wetness), t) : 0;
+    /* a dry material is the same at every level; the object wetness where
+     * the pores are full (L = w_sat) is a bend of every quantity in L */
+    int n = rec->wetness > 0 ? level_knots(s, mi, rec->saturation / rec->wetness, t) : 0;
     soak_status st = n > 0 ? build_views(c, m->name, m, p, liq, n, t) : SOAK_OK;
     free(t);
     return st;
@@ -111,13 +95,10 @@ soak_status scene_levels_build(scene_ctx *c, soak_scene *s)
     int needed = 0;
     for (int i = 0; i < s->n_materials; ++i) needed |= s->materials[i].levels != NULL && s->materials[i].type == SOAK_MAT_WET;
     if (!needed) return SOAK_OK;
-    soak_preset_db *db = NULL;
-    char msg[1024];
-    soak_status st = soak_presets_load(NULL, &db, msg, sizeof msg);
-    if (st != SOAK_OK) return sj_fail(c, st, "materials", "cannot load the presets: %s", msg);
+    const soak_preset_db *db = NULL; /* loaded by the preset materials */
+    soak_status st = scene_presets_db(c, "materials", &db);
     for (int i = 0; i < s->n_materials && st == SOAK_OK; ++i)
         if (s->materials[i].levels && s->materials[i].type == SOAK_MAT_WET) st = material_levels(c, s, i, db);
-    soak_presets_free(db);
     return st;
 }
 

@@ -13,33 +13,12 @@
 #define SOAK_SCENE_LEVELS_H
 
 #include "scene_json.h"
-#include "soak/preset.h"
+#include "scene_preset.h"
 #include "soak/scene.h"
 
 /* Uniform levels of a mapped or planar wetness (plus the knots above). */
 #define SOAK_LEVELS_GRID 33
 
-/* What parse_preset read, to build the material again at another wetness. */
-typedef struct scene_preset_recipe {
-    char name[64], liquid[64];
-    double wetness, m_per_unit;
-    int has_base;
-    soak_rgb base;
-    int no_interface; /* "interface": 0 */
-    int film_over;    /* "film_over" given: its coverage and thickness below */
-    double over_coverage, over_thickness;
-} scene_preset_recipe;
-
-typedef struct soak_material_levels soak_material_levels;
-struct soak_material_levels {
-    scene_preset_recipe recipe;
-    int n;              /* 0: the material's one state (no object needs others) */
-    double *t;          /* n object wetnesses, increasing, t[n - 1] = 1 */
-    soak_material *view; /* n materials: the preset at liquid amount t[i] * wetness */
-};
-
-/* Keeps rec with m (m->levels, no levels yet). */
-soak_status scene_levels_keep(const scene_preset_recipe *rec, soak_material *m);
 /* After the objects: the levels of every kept material that an object
  * uses with a wetness other than the constant 1. */
 soak_status scene_levels_build(scene_ctx *c, soak_scene *s);
@@ -47,10 +26,5 @@ void scene_levels_free(soak_material *m);
 /* The level i at or below object wetness x (i < n - 1 when n >= 2) and x's
  * fraction of the way to level i + 1, in [0, 1]. Needs L->n >= 1. */
 int scene_levels_find(const soak_material_levels *L, double x, double *frac);
-
-/* The preset rec at liquid amount `wetness` (scene_preset.c: the code
- * that parse_preset runs), written over m's film, base and interface. */
-soak_status scene_preset_view(const soak_preset *p, const soak_liquid *liq, const scene_preset_recipe *rec,
-                              double wetness, soak_material *m);
 
 #endif

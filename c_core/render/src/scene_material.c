@@ -1,5 +1,8 @@
-/* Scene materials and per-object wetness (format: scenes/README.md). */
+/* Scene materials and per-object wetness, parsed (format: scenes/README.md;
+ * scene_material.h). */
 #define _POSIX_C_SOURCE 200809L
+#include "scene_material.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -7,6 +10,7 @@
 
 #include "scene_json.h"
 #include "scene_levels.h"
+#include "scene_model.h"
 #include "scene_preset.h"
 #include "soak/fresnel.h"
 #include "soak/ggx.h"
@@ -15,20 +19,6 @@
 #include "soak/preset.h"
 #include "soak/units.h"
 #include "soak/wetness.h"
-
-void scene_medium_majorant(soak_scene_medium *m)
-{
-    double mj = soak_rgb_max(soak_rgb3(m->sigma_s.r + m->sigma_a.r, m->sigma_s.g + m->sigma_a.g, m->sigma_s.b + m->sigma_a.b));
-    if (m->volume) {
-        size_t n = soak_volume_count(m->volume);
-        for (int ch = 0; ch < 3; ++ch) {
-            const float *s = soak_volume_plane(m->volume, SOAK_VOL_SIGMA_S_R + ch);
-            const float *a = soak_volume_plane(m->volume, SOAK_VOL_SIGMA_A_R + ch);
-            for (size_t i = 0; i < n; ++i) mj = fmax(mj, (double)s[i] + (double)a[i]);
-        }
-    }
-    m->majorant = mj;
-}
 
 static soak_status check_volume(scene_ctx *c, const soak_volume *v, const char *path)
 {
@@ -84,130 +74,14 @@ static soak_status parse_medium(scene_ctx *c, const cJSON *j, const char *path, 
     return st;
 }
 
-/* ---- Materials rendered through a model of soak_models() ----
- * model_params describe a material in the models' terms (per channel): the
- * dry albedo, base index, roughness, the liquid film and the pore fill.
- * wet_albedo is the albedo of models that do not model pores themselves
- * (the preset chain's darkened subsurface albedo; the albedo otherwise). */
-static void model_view_base(soak_material *m)
-{
-    for (int ch = 0; ch < 3; ++ch) {
-        soak_model_params *q = &m->model_params[ch];
-        soak_model_params_default(q);
-        q->albedo = 0.0;
-        q->n_film = 1.0;
-        q->absorption = 0.0;
-        q->thickness = 0.0;
-        q->fill = 0.0;
-    }
-    m->has_model_params = 1;
-}
 
-static void model_view_film(soak_material *m)
-{
-    for (int ch = 0; ch < 3; ++ch) {
-        soak_model_params *q = &m->model_params[ch];
-        q->n_film = m->film_ior;
-        q->absorption = soak_rgb_at(m->film_absorption, ch);
-        q->thickness = m->film_thickness;
-        q->fill = 1.0;
-    }
-}
 
-static void model_view_lambert(soak_material *m)
-{
-    model_view_base(m);
-    for (int ch = 0; ch < 3; ++ch) m->model_params[ch].albedo = soak_rgb_at(m->albedo, ch);
-    m->wet_albedo = m->albedo;
-}
 
-static void model_view_ggx(soak_material *m)
-{
-    model_view_base(m);
-    for (int ch = 0; ch < 3; ++ch) {
-        m->model_params[ch].ior = soak_rgb_at(m->eta, ch);
-        m->model_params[ch].k = soak_rgb_at(m->k, ch);
-        m->model_params[ch].roughness = m->alpha;
-    }
-    m->wet_albedo = soak_rgb3(0, 0, 0);
-}
 
-/* Preset at the chain's steady state: dry albedo and pores for the porous
- * models, the chain's subsurface albedo for the others. */
-void scene_preset_model_view(const soak_preset *p, const soak_wet_params *w, double m_per_unit, soak_material *m)
-{
-    model_view_base(m);
-    for (int ch = 0; ch < 3; ++ch) {
-        soak_model_params *q = &m->model_params[ch];
-        int conductor = p->kind == SOAK_KIND_CONDUCTOR;
-        q->albedo = conductor ? 0.0 : soak_rgb_at(p->albedo, ch);
-        q->ior = conductor ? soak_rgb_at(p->ior_n, ch) : p->ior;
-        q->k = conductor ? soak_rgb_at(p->ior_k, ch) : 0.0;
-        q->roughness = w->ggx_alpha;
-        q->n_film = w->film_ior;
-        q->absorption = soak_per_unit_from_per_m(soak_rgb_at(w->film_absorption_per_m, ch), m_per_unit);
-        q->thickness = w->film_coverage > 0 ? soak_units_from_m(w->film_thickness_m, m_per_unit) : 0.0;
-        q->porosity = p->porosity;
-        q->sp = p->s_p;
-        q->fill = w->fill;
-    }
-    m->wet_albedo = p->kind == SOAK_KIND_CONDUCTOR ? soak_rgb3(0, 0, 0) : w->albedo_subsurface;
-}
 
-/* Switches m to be rendered through `model`, from its model view (both
- * states must pass the model's set-up); the object wetness then picks the
- * model's wet state with probability wetness * film_coverage (coverage 1
- * unless the film covers part of a preset's surface; the porous models'
- * pores fill everywhere). */
-static soak_status material_use_model(soak_material *m, const soak_model *model)
-{
-    if (!m->has_model_params) return SOAK_ERR_UNSUPPORTED;
-    const soak_model *was = m->model;
-    m->model = model;
-    soak_model_params q[3];
-    soak_model_ctx ctx;
-    soak_status st = SOAK_OK;
-    for (int wet = 0; wet <= 1 && st == SOAK_OK; ++wet) {
-        const soak_model *md = soak_material_model(m, wet);
-        soak_material_model_params(m, wet, q);
-        for (int ch = 0; ch < 3 && st == SOAK_OK; ++ch) st = md ? md->setup(&q[ch], &ctx) : SOAK_ERR_NOT_FOUND;
-    }
-    if (st != SOAK_OK) {
-        m->model = was;
-        return st;
-    }
-    if (strncmp(model->name, "porous", 6) == 0 || m->type != SOAK_MAT_WET) m->film_coverage = 1.0;
-    m->type = SOAK_MAT_MODEL;
-    return SOAK_OK;
-}
 
-const soak_model *soak_material_model(const soak_material *m, int wet)
-{
-    if (!m->model || wet || !m->model->exact) return m->model;
-    return soak_model_find(m->model->exact);
-}
 
-void soak_material_model_params(const soak_material *m, int wet, soak_model_params out[3])
-{
-    int pores = m->model && strncmp(m->model->name, "porous", 6) == 0;
-    for (int ch = 0; ch < 3; ++ch) {
-        out[ch] = m->model_params[ch];
-        if (!pores) out[ch].albedo = soak_rgb_at(m->wet_albedo, ch);
-        if (wet) continue;
-        out[ch].n_film = 1.0;
-        out[ch].thickness = 0.0;
-        out[ch].fill = 0.0;
-    }
-}
 
-soak_status scene_use_model(scene_ctx *c, const char *path, const char *name, soak_material *m)
-{
-    const soak_model *model = soak_model_find(name);
-    if (!model) return sj_fail(c, SOAK_ERR_NOT_FOUND, path, "no model named '%s' (see `soak eval --list`)", name);
-    soak_status st = material_use_model(m, model);
-    if (st != SOAK_OK) return sj_fail(c, st, path, "the model '%s' rejects this material's parameters (%s)", name, soak_status_str(st));
-    return SOAK_OK;
-}
 
 /* A model material: {"type": "<model>", albedo, ior, k, roughness, film
  * {ior, thickness, absorption}, porosity, sp, fill, ks, ks_water}. */
@@ -244,8 +118,8 @@ static soak_status parse_model(scene_ctx *c, const cJSON *j, const char *path, c
     m->film_thickness = thick;
     m->film_absorption = absorption;
     m->film_coverage = 1.0;
-    model_view_lambert(m);
-    model_view_film(m);
+    scene_model_view_lambert(m);
+    scene_model_view_film(m);
     for (int ch = 0; ch < 3; ++ch) {
         soak_model_params *q = &m->model_params[ch];
         q->ior = soak_rgb_at(ior, ch);
@@ -347,9 +221,9 @@ static soak_status parse_wet(scene_ctx *c, const cJSON *j, const char *path, soa
     if (st == SOAK_OK) st = parse_wet_base(c, cJSON_GetObjectItemCaseSensitive(j, "base"), bp, m);
     if (st == SOAK_OK) st = parse_dry(c, cJSON_GetObjectItemCaseSensitive(j, "dry"), dp, m);
     if (st != SOAK_OK) return st;
-    if (m->base == SOAK_BASE_LAMBERT) model_view_lambert(m);
-    if (m->base == SOAK_BASE_GGX) model_view_ggx(m);
-    if (m->base != SOAK_BASE_MEDIUM) model_view_film(m);
+    if (m->base == SOAK_BASE_LAMBERT) scene_model_view_lambert(m);
+    if (m->base == SOAK_BASE_GGX) scene_model_view_ggx(m);
+    if (m->base != SOAK_BASE_MEDIUM) scene_model_view_film(m);
     return SOAK_OK;
 }
 
@@ -363,7 +237,7 @@ soak_status scene_parse_material(scene_ctx *c, const cJSON *j, const char *path,
         m->type = SOAK_MAT_LAMBERT;
         st = sj_keys(c, j, path, keys);
         if (st == SOAK_OK) st = sj_rgb(c, j, "albedo", path, 0, 1, 1, soak_rgb3(0, 0, 0), &m->albedo);
-        if (st == SOAK_OK) model_view_lambert(m);
+        if (st == SOAK_OK) scene_model_view_lambert(m);
         return st;
     }
     if (strcmp(type, "dielectric") == 0) {
@@ -379,7 +253,7 @@ soak_status scene_parse_material(scene_ctx *c, const cJSON *j, const char *path,
         m->type = SOAK_MAT_CONDUCTOR;
         st = sj_keys(c, j, path, keys);
         if (st == SOAK_OK) st = parse_ggx(c, j, path, m);
-        if (st == SOAK_OK) model_view_ggx(m);
+        if (st == SOAK_OK) scene_model_view_ggx(m);
         return st;
     }
     if (strcmp(type, "wet") == 0) return parse_wet(c, j, path, m);
@@ -459,48 +333,4 @@ void scene_material_free(soak_material *m)
     }
 }
 
-double soak_scene_wetness(const soak_object *obj, soak_vec3 p, double u, double v)
-{
-    const soak_wetness *w = &obj->wetness;
-    double x = 1.0;
-    switch (w->type) {
-    case SOAK_WETNESS_CONSTANT: x = w->value; break;
-    case SOAK_WETNESS_MAP: {
-        const soak_image *im = &w->map;
-        double fu = u - floor(u), fv = v - floor(v);
-        int px = (int)(fu * im->width), py = (int)((1.0 - fv) * im->height);
-        px = px < 0 ? 0 : (px >= im->width ? im->width - 1 : px);
-        py = py < 0 ? 0 : (py >= im->height ? im->height - 1 : py);
-        const float *pix = im->pixels + ((size_t)py * im->width + px) * im->channels;
-        int nc = im->channels >= 3 ? 3 : 1;
-        double s = 0;
-        for (int i = 0; i < nc; ++i) s += pix[i];
-        x = s / nc;
-        break;
-    }
-    case SOAK_WETNESS_PLANE: {
-        double d = soak_v3_dot(w->normal, p) - w->offset;
-        x = w->blend > 0 ? 0.5 - d / w->blend : (d < 0 ? 1.0 : 0.0);
-        break;
-    }
-    }
-    return x < 0 ? 0 : (x > 1 ? 1 : x);
-}
 
-soak_status soak_scene_set_model(soak_scene *scene, const char *material, const char *model, char *err, size_t errlen)
-{
-    if (!scene || !material || !model) return SOAK_ERR_NULL;
-    const soak_model *md = soak_model_find(model);
-    soak_material *m = NULL;
-    for (int i = 0; i < scene->n_materials; ++i)
-        if (scene->materials[i].type != SOAK_MAT_EMITTER && strcmp(scene->materials[i].name, material) == 0) m = &scene->materials[i];
-    soak_status st = !m || !md ? SOAK_ERR_NOT_FOUND : material_use_model(m, md);
-    if (st != SOAK_OK && err && errlen)
-        snprintf(err, errlen, "%s: material '%s' through model '%s': %s", scene->path, material, model,
-                 !m ? "no such material"
-                    : (!md ? "no such model"
-                           : (st == SOAK_ERR_UNSUPPORTED ? "no model describes it (dielectric, emitter or medium base)"
-                                                         : soak_status_str(st))));
-    if (st != SOAK_OK && err && errlen) soak_message_printable(err);
-    return st;
-}

@@ -1,14 +1,16 @@
 /* A preset material of a scene: the wetness chain's state of a named preset
- * (soak/wetness.h) made a soak_material (format: scenes/README.md). */
+ * (soak/wetness.h) made a soak_material (format: scenes/README.md;
+ * scene_preset.h). */
 #define _POSIX_C_SOURCE 200809L
+#include "scene_preset.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "scene_json.h"
-#include "scene_levels.h"
-#include "scene_preset.h"
+#include "scene_model.h"
 #include "soak/base_colour.h"
 #include "soak/json_number.h"
 #include "soak/preset.h"
@@ -34,16 +36,28 @@ typedef struct preset_chain {
     soak_rgb n, k;
 } preset_chain;
 
-/* Loads the presets and evaluates the chain (steady state) for the
- * request; sets m's model view. */
+soak_status scene_presets_db(scene_ctx *c, const char *path, const soak_preset_db **db)
+{
+    if (!c->db) {
+        char msg[1024];
+        soak_status st = soak_presets_load(NULL, &c->db, msg, sizeof msg);
+        if (st != SOAK_OK) return sj_fail(c, st, path, "cannot load the presets: %s", msg);
+    }
+    *db = c->db;
+    return SOAK_OK;
+}
+
+/* Evaluates the chain (steady state) for the request with the scene's
+ * presets; sets m's model view. The dry state only for a thin sheet (its
+ * dry medium). */
 static soak_status eval_preset(scene_ctx *c, const char *path, const preset_request *r, soak_material *m,
                                preset_chain *out)
 {
-    char np[320], msg[1024];
+    char np[320];
     sj_path(np, sizeof np, path, "name");
-    soak_preset_db *db = NULL;
-    soak_status st = soak_presets_load(NULL, &db, msg, sizeof msg);
-    if (st != SOAK_OK) return sj_fail(c, st, np, "cannot load the presets: %s", msg);
+    const soak_preset_db *db = NULL;
+    soak_status st = scene_presets_db(c, np, &db);
+    if (st != SOAK_OK) return st;
     const char *liquid = r->liquid ? r->liquid : "water";
     const soak_preset *p = soak_presets_find(db, r->name);
     const soak_liquid *liq = soak_presets_find_liquid(db, liquid);
@@ -59,7 +73,7 @@ static soak_status eval_preset(scene_ctx *c, const char *path, const preset_requ
         if (r->has_base) own.albedo = r->base; /* the model view's dry albedo */
         st = r->has_base ? soak_wet_params_for_base(p, liq, &in, r->base, &out->w)
                          : soak_wetness_eval(p, liq, &in, &out->w);
-        if (st == SOAK_OK)
+        if (st == SOAK_OK && p->kind == SOAK_KIND_THIN_SHEET)
             st = r->has_base ? soak_wet_params_for_base(p, liq, &dry, r->base, &out->w_dry)
                              : soak_wetness_eval(p, liq, &dry, &out->w_dry);
         out->kind = p->kind;
@@ -71,7 +85,6 @@ static soak_status eval_preset(scene_ctx *c, const char *path, const preset_requ
         else
             st = sj_fail(c, st, path, "wetness evaluation failed (%s)", soak_status_str(st));
     }
-    soak_presets_free(db);
     return st;
 }
 
@@ -174,8 +187,9 @@ static soak_status parse_film_over(scene_ctx *c, const cJSON *j, const char *pat
 }
 
 /* What parse_preset read, kept for the material's states at the wetness of
- * each point (scene_levels.c); after parse_film_over. */
-static soak_status keep_recipe(const preset_request *r, int no_interface, const cJSON *j, soak_material *m)
+ * each point (scene_levels.c builds them); after parse_film_over. */
+static soak_status keep_recipe(const preset_request *r, const preset_chain *pc, int no_interface, const cJSON *j,
+                               soak_material *m)
 {
     scene_preset_recipe rec;
     memset(&rec, 0, sizeof rec);
@@ -189,7 +203,11 @@ static soak_status keep_recipe(const preset_request *r, int no_interface, const 
     rec.film_over = cJSON_GetObjectItemCaseSensitive(j, "film_over") != NULL;
     rec.over_coverage = m->film_coverage;
     rec.over_thickness = m->film_thickness;
-    return scene_levels_keep(&rec, m);
+    rec.saturation = pc->w.saturation;
+    m->levels = calloc(1, sizeof *m->levels);
+    if (!m->levels) return SOAK_ERR_NOMEM;
+    m->levels->recipe = rec;
+    return SOAK_OK;
 }
 
 soak_status scene_preset_view(const soak_preset *p, const soak_liquid *liq, const scene_preset_recipe *rec,
@@ -256,7 +274,7 @@ soak_status scene_parse_preset(scene_ctx *c, const cJSON *j, const char *path, s
      * front end draws with its highlights off (tests/povray/flat_ground.py) */
     if (interface < 0.5) m->coat_weight = m->dry_coat_weight = 0.0;
     st = parse_film_over(c, j, path, m);
-    if (st == SOAK_OK && !r.model && pc.kind != SOAK_KIND_THIN_SHEET) st = keep_recipe(&r, interface < 0.5, j, m);
+    if (st == SOAK_OK && !r.model && pc.kind != SOAK_KIND_THIN_SHEET) st = keep_recipe(&r, &pc, interface < 0.5, j, m);
     if (st != SOAK_OK || !r.model) return st;
     char mp[320];
     sj_path(mp, sizeof mp, path, "model");
