@@ -9,7 +9,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "render_internal.h"
+#include "rt_ctx.h"
+#include "render_bsdfs.h"
 #include "scene_levels.h"
 #include "soak/bsdf.h"
 #include "soak/rng.h"

@@ -9,7 +9,13 @@
 #include <stdlib.h>
 #include <time.h>
 
-#include "render_internal.h"
+#include "rt_ctx.h"
+#include "render_lights.h"
+#include "render_surface.h"
+#include "render_bsdfs.h"
+#include "render_levels.h"
+#include "render_photon_map.h"
+#include "render_photons.h"
 
 #define TILE 16
 

@@ -1,7 +1,7 @@
 /* Scene materials to BSDFs (soak/bsdf.h), once per render. */
 #include <stdio.h>
 
-#include "render_internal.h"
+#include "render_bsdfs.h"
 
 /* The material's base with its own rough interface of weight coat (a
  * preset's lambert base: COATED; coat 0: the bare body). */

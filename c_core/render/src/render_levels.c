@@ -7,7 +7,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "render_internal.h"
+#include "render_levels.h"
+#include "render_bsdfs.h"
 #include "scene_levels.h"
 
 soak_status rt_levels_setup(const soak_scene *s, int trace_films, rt_levels *out, char *err, size_t errlen)

@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "render_internal.h"
+#include "render_lights.h"
 
 soak_status rt_env_build(rt_env *env, const soak_environment *e)
 {

@@ -52,7 +52,10 @@
  * paths, so for delta lights it is missing; it is second order in the
  * Fresnel reflectances: for water on n3 = 1.5, 7e-5 of the transmitted light
  * at normal incidence, 3e-4 at 60 degrees, 2.4e-3 at 80 degrees. */
-#include "render_internal.h"
+#include "render_medium.h"
+#include "render_lights.h"
+#include "render_stack.h"
+#include "render_photon_map.h"
 #include "soak/fresnel.h"
 #include "soak/hg.h"
 #include "soak/jensen.h"

@@ -11,7 +11,7 @@
  * P). Closed-form components only: a traced film's eval is an estimate and
  * a ratio of estimates would be biased, glass transmits; those keep the
  * one-component choice (rt_mix_can). */
-#include "render_internal.h"
+#include "render_mix.h"
 
 int rt_mix_can(const rt_bsdf_mix *m)
 {

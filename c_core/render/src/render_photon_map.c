@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "render_internal.h"
+#include "render_photon_map.h"
 
 static uint32_t cell_hash(int64_t x, int64_t y, int64_t z, size_t mask)
 {

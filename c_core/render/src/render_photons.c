@@ -20,7 +20,10 @@
 #include <string.h>
 #include <time.h>
 
-#include "render_internal.h"
+#include "render_photons.h"
+#include "render_stack.h"
+#include "render_medium.h"
+#include "render_photon_map.h"
 #include "soak/hg.h"
 
 typedef struct photon_list {

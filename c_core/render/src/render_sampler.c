@@ -19,7 +19,7 @@
  * pixel, lobe and direction choices they serve (the walk's free flights,
  * whose logarithm needs the 2^-53 grid, draw from the PCG stream). */
 #include "soak/hash.h"
-#include "render_internal.h"
+#include "rt_ctx.h"
 
 static uint32_t reverse_bits(uint32_t x)
 {

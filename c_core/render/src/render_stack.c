@@ -3,7 +3,7 @@
  * stochastic crossing of the whole stack, and Snell's direction after it. */
 #include <math.h>
 
-#include "render_internal.h"
+#include "render_stack.h"
 #include "soak/fresnel.h"
 
 static double pow_k(double F, double k) { return k == 1.0 ? F : pow(F, k); }

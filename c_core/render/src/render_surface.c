@@ -11,7 +11,12 @@
  * Wet media (base "medium") go to render_medium.c. */
 #include <stdlib.h>
 
-#include "render_internal.h"
+#include "render_surface.h"
+#include "render_lights.h"
+#include "render_mix.h"
+#include "render_bsdfs.h"
+#include "render_levels.h"
+#include "render_medium.h"
 
 /* Shading frame at a hit seen from path->dir: geometric normal on the
  * viewer's side, shading normal flipped to agree (or replaced by the

@@ -103,7 +103,7 @@ int main(void)
             "{\"type\": \"wet\", \"base\": {\"type\": \"medium\", \"sigma_s\": 8, \"g1\": 0.5, \"ior\": 1.5}, "
             "\"film\": {\"coverage\": 0}}",
             65536, 0);
-    /* Radiance convention (render_internal.h, rt_rr_weight): inside glass beta
+    /* Radiance convention (rt_ctx.h, rt_rr_weight): inside glass beta
      * holds 1/n^2 but roulette plays on beta * eta_scale = 1, so it never
      * fires and every path returns L exactly: zero variance. Playing it on
      * beta alone kills 56 % of the paths inside n = 1.5 glass (noise). */

@@ -24,7 +24,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "render_internal.h"
+#include "render_photons.h"
 #include "soak/scene.h"
 
 #define N_PHOTONS 200000

@@ -17,7 +17,7 @@
 #include <string.h>
 
 #include "check.h"
-#include "render_internal.h"
+#include "rt_ctx.h"
 
 static void draw_pair(rt_thread *t, uint64_t seed, uint64_t pixel, uint32_t s, int pair, double *x, double *y)
 {
