@@ -34,7 +34,7 @@ printf '{\n  %s,\n  "objects": [\n    {"type": "sphere", "radius": 1,, "material
 expect syntax 1 "$dir/syntax.json" "line 4" "syntax"
 
 printf '{ %s, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "m", "raduis": 2}] }\n' "$head" >"$dir/unknown_key.json"
-expect unknown_key 1 "$dir/unknown_key.json" "objects[0].raduis" "unknown key"
+expect unknown_key 1 "$dir/unknown_key.json" "objects[0].raduis" "unknown key (accepted: type, material"
 
 printf '{ %s, "objects": [{"type": "mesh", "file": "no_such_mesh.obj", "material": "m"}] }\n' "$head" >"$dir/missing_mesh.json"
 expect missing_mesh 1 "$dir/missing_mesh.json" "objects[0].file" "no_such_mesh.obj" "cannot open"
