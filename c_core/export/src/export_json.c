@@ -175,26 +175,6 @@ static soak_status add_material(soak_json *j, cJSON *list, const soak_preset_db 
     return st != SOAK_OK ? st : (j->ok ? SOAK_OK : SOAK_ERR_NOMEM);
 }
 
-static soak_status add_liquid(soak_json *j, cJSON *list, const soak_liquid *l)
-{
-    cJSON *o = soak_json_object(j, list, NULL);
-    if (!o) return SOAK_ERR_NOMEM;
-    soak_json_str(j, o, "name", l->name);
-    soak_json_str(j, o, "display_name", l->display_name);
-    soak_json_num(j, o, "ior", l->ior);
-    soak_json_rgb(j, o, "sigma_a_per_m", l->sigma_a_per_m);
-    soak_json_rgb(j, o, "sigma_s_per_m", l->sigma_s_per_m);
-    double f0 = 0.0, hemi = 0.0;
-    soak_status st = soak_fresnel_r0(l->ior, 0.0, &f0);
-    soak_film film = {l->ior, 0.0, 0.0};
-    if (st == SOAK_OK) st = soak_film_albedo_diffuse(&film, 0.0, &hemi);
-    if (st != SOAK_OK) return st;
-    soak_json_num(j, o, "film_normal_reflectance", f0);
-    soak_json_num(j, o, "film_hemispherical_reflectance", hemi);
-    soak_json_str(j, o, "source", l->source);
-    return j->ok ? SOAK_OK : SOAK_ERR_NOMEM;
-}
-
 static void add_header(soak_json *j, cJSON *root, const soak_export_header *h)
 {
     soak_json_str(j, root, "format", SOAK_EXPORT_FORMAT);
@@ -240,7 +220,7 @@ soak_status soak_export_write_json(const soak_preset_db *db, FILE *out, char *er
     add_header(&j, root, &h);
     cJSON *liquids = soak_json_array(&j, root, "liquids"), *materials = soak_json_array(&j, root, "materials");
     for (int i = 0; st == SOAK_OK && j.ok && i < soak_presets_liquid_count(db); ++i)
-        st = add_liquid(&j, liquids, soak_presets_liquid_at(db, i));
+        st = soak_json_liquid(&j, liquids, soak_presets_liquid_at(db, i), SOAK_JSON_PER_M, 1);
     for (int i = 0; st == SOAK_OK && j.ok && i < soak_presets_count(db); ++i) {
         st = add_material(&j, materials, db, soak_presets_at(db, i));
         if (st != SOAK_OK) snprintf(err, errlen, "preset '%s': %s", soak_presets_at(db, i)->name, soak_status_str(st));

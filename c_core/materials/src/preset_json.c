@@ -1,7 +1,10 @@
 #include "soak/preset_json.h"
 
-void soak_json_preset_optics(soak_json *j, cJSON *o, const soak_preset *p, const char *albedo_key,
-                             int with_sources)
+#include "soak/film.h"
+#include "soak/fresnel.h"
+#include "soak/units.h"
+
+void soak_json_preset_optics(soak_json *j, cJSON *o, const soak_preset *p, const char *albedo_key, int with_sources)
 {
     soak_json_str(j, o, "name", p->name);
     soak_json_str(j, o, "display_name", p->display_name);
@@ -20,4 +23,29 @@ void soak_json_preset_optics(soak_json *j, cJSON *o, const soak_preset *p, const
     if (with_sources) soak_json_str(j, o, "ior_source", p->ior_source);
     soak_json_num(j, o, "porosity", p->porosity);
     soak_json_num(j, o, "saturation_wetness", soak_material_kind_porous(p->kind) ? p->porosity : 0.0);
+}
+
+soak_status soak_json_liquid(soak_json *j, cJSON *list, const soak_liquid *l, soak_json_length unit, int with_film)
+{
+    cJSON *o = soak_json_object(j, list, NULL);
+    if (!o) return SOAK_ERR_NOMEM;
+    int mm = unit == SOAK_JSON_PER_MM;
+    soak_json_str(j, o, "name", l->name);
+    soak_json_str(j, o, "display_name", l->display_name);
+    soak_json_num(j, o, "ior", l->ior);
+    soak_json_rgb(j, o, mm ? "sigma_a_per_mm" : "sigma_a_per_m",
+                  mm ? soak_rgb_per_mm_from_per_m(l->sigma_a_per_m) : l->sigma_a_per_m);
+    soak_json_rgb(j, o, mm ? "sigma_s_per_mm" : "sigma_s_per_m",
+                  mm ? soak_rgb_per_mm_from_per_m(l->sigma_s_per_m) : l->sigma_s_per_m);
+    if (with_film) {
+        double f0 = 0.0, hemi = 0.0;
+        soak_status st = soak_fresnel_r0(l->ior, 0.0, &f0);
+        soak_film film = {l->ior, 0.0, 0.0};
+        if (st == SOAK_OK) st = soak_film_albedo_diffuse(&film, 0.0, &hemi);
+        if (st != SOAK_OK) return st;
+        soak_json_num(j, o, "film_normal_reflectance", f0);
+        soak_json_num(j, o, "film_hemispherical_reflectance", hemi);
+    }
+    soak_json_str(j, o, "source", l->source);
+    return j->ok ? SOAK_OK : SOAK_ERR_NOMEM;
 }

@@ -82,19 +82,6 @@ static soak_status add_material(soak_json *j, cJSON *arr, const soak_preset *p, 
     return j->ok ? SOAK_OK : SOAK_ERR_NOMEM;
 }
 
-static soak_status add_liquid(soak_json *j, cJSON *arr, const soak_liquid *l)
-{
-    cJSON *o = soak_json_object(j, arr, NULL);
-    if (!o) return SOAK_ERR_NOMEM;
-    soak_json_str(j, o, "name", l->name);
-    soak_json_str(j, o, "display_name", l->display_name);
-    soak_json_num(j, o, "ior", l->ior);
-    soak_json_rgb(j, o, "sigma_a_per_mm", soak_rgb_per_mm_from_per_m(l->sigma_a_per_m));
-    soak_json_rgb(j, o, "sigma_s_per_mm", soak_rgb_per_mm_from_per_m(l->sigma_s_per_m));
-    soak_json_str(j, o, "source", l->source);
-    return j->ok ? SOAK_OK : SOAK_ERR_NOMEM;
-}
-
 static soak_status build(soak_json *j, cJSON *root, const soak_preset_db *db, const soak_liquid *liq, int table_n)
 {
     soak_json_str(j, root, "format", "soak-materials-export");
@@ -121,7 +108,7 @@ static soak_status build(soak_json *j, cJSON *root, const soak_preset_db *db, co
     for (int i = 0; st == SOAK_OK && i < soak_presets_count(db); ++i)
         st = add_material(j, mats, soak_presets_at(db, i), liq, table_n, rows);
     for (int i = 0; st == SOAK_OK && i < soak_presets_liquid_count(db); ++i)
-        st = add_liquid(j, liqs, soak_presets_liquid_at(db, i));
+        st = soak_json_liquid(j, liqs, soak_presets_liquid_at(db, i), SOAK_JSON_PER_MM, 0);
     free(rows);
     return st;
 }
