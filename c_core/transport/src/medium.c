@@ -169,21 +169,6 @@ static soak_medium_point homogeneous_point(const soak_medium_rgb *m)
     return p;
 }
 
-/* Distance to the surface from pos along dir into *dmax, for a flight whose
- * sampled length is t. With a within test that rules the surface out
- * before t, the closest-hit query is skipped and *dmax = INFINITY: the
- * flight then ends at its collision, exactly as it would against the true
- * distance (> t). */
-soak_status medium_surface_distance(const soak_boundary *b, soak_vec3 pos, soak_vec3 dir, double t, double *dmax)
-{
-    if (b->within && t < INFINITY && !b->within(b->ctx, pos, dir, t)) {
-        *dmax = INFINITY;
-        return SOAK_OK;
-    }
-    *dmax = b->distance(b->ctx, pos, dir);
-    return *dmax >= 0.0 ? SOAK_OK : SOAK_ERR_NUMERIC;
-}
-
 /* Homogeneous free flight toward the surface (channel MIS, see
  * soak/medium.h): the distance t is sampled first, then the surface
  * distance *dmax is asked (lazily, see medium_surface_distance). On a collision
