@@ -85,6 +85,17 @@ def tree_state(tree):
     return json.dumps({"nodes": nodes, "links": links}, sort_keys=True)
 
 
+def render_lum(sc, path):
+    """Renders scene sc to path (EXR) and returns the image's mean Rec. 709 luminance."""
+    sc.render.filepath = path
+    bpy.ops.render.render(write_still=True)
+    img = bpy.data.images.load(path, check_existing=False)
+    px = list(img.pixels)
+    bpy.data.images.remove(img)
+    n = len(px) // 4
+    return sum(0.2126 * px[4 * i] + 0.7152 * px[4 * i + 1] + 0.0722 * px[4 * i + 2] for i in range(n)) / n
+
+
 def fail(msg):
     print("FAIL:", msg)
     raise SystemExit(1)

@@ -36,16 +36,6 @@ def common_coat_name(bsdf):
     return "Coat Weight" if "Coat Weight" in bsdf.inputs else "Clearcoat"
 
 
-def render_lum(sc, path):
-    sc.render.filepath = path
-    bpy.ops.render.render(write_still=True)
-    img = bpy.data.images.load(path, check_existing=False)
-    px = list(img.pixels)
-    bpy.data.images.remove(img)
-    n = len(px) // 4
-    return sum(0.2126 * px[4 * i] + 0.7152 * px[4 * i + 1] + 0.0722 * px[4 * i + 2] for i in range(n)) / n
-
-
 def expect_error(pattern):
     import re
     try:
@@ -139,7 +129,7 @@ def main():
     lums = []
     for f in range(1, 6):
         sc.frame_set(f)
-        lums.append(render_lum(sc, os.path.join(A["tmp"], f"dry_{f}.exr")))
+        lums.append(common.render_lum(sc, os.path.join(A["tmp"], f"dry_{f}.exr")))
     print("drying luminance by frame:", ["%.4f" % v for v in lums])
     if not all(b > a for a, b in zip(lums, lums[1:])):
         common.fail(f"drying is not monotonic: {lums}")
@@ -153,7 +143,7 @@ def main():
     for wet_map, level in ((1.0, 1.0), (0.4, 0.4), (0.4, 1.0)):
         gn.inputs["Wet Map"].default_value = wet_map
         gn.inputs["Puddle Level"].default_value = level
-        looks[(wet_map, level)] = render_lum(sc, os.path.join(A["tmp"], f"puddle_{wet_map}_{level}.exr"))
+        looks[(wet_map, level)] = common.render_lum(sc, os.path.join(A["tmp"], f"puddle_{wet_map}_{level}.exr"))
     print("puddle level:", looks)
     if abs(looks[(0.4, 0.4)] - looks[(1.0, 1.0)]) > 1e-4 * looks[(1.0, 1.0)]:
         common.fail(f"wet map 0.4 at puddle level 0.4 is not fully wet: {looks}")

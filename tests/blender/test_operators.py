@@ -234,15 +234,7 @@ def setup_render(sc):
 
 
 def render_lum(name):
-    sc = bpy.context.scene
-    path = os.path.join(A["tmp"], name + ".exr")
-    sc.render.filepath = path
-    bpy.ops.render.render(write_still=True)
-    img = bpy.data.images.load(path, check_existing=False)
-    px = list(img.pixels)
-    bpy.data.images.remove(img)
-    n = len(px) // 4
-    return sum(0.2126 * px[4 * i] + 0.7152 * px[4 * i + 1] + 0.0722 * px[4 * i + 2] for i in range(n)) / n
+    return common.render_lum(bpy.context.scene, os.path.join(A["tmp"], name + ".exr"))
 
 
 def test_rebuild(ob):

@@ -20,4 +20,18 @@ int rh_render_mean(const char *what, const char *text, const char *base_dir, int
 int rh_render_mean_opt(const char *what, const char *text, const char *base_dir, int reps, int spp_per_rep,
                        uint64_t seed_base, rh_reduce reduce, int trace_films, double *mean, double *se);
 
+/* Per-channel mean and standard error of a few estimates of one point's
+ * radiance, and the standard error of their red/blue (channels share their
+ * paths, so red/blue is estimated from the estimates' own ratios). */
+typedef struct rh_rgb {
+    double mean[3], se[3];
+    double rb_se;
+} rh_rgb;
+/* Parses `text` (paths against "."), renders it on 2 threads with spp
+ * samples per pixel: reps >= 2 renders with seeds seed, seed + 1, ... whose
+ * first pixel is one estimate each, or (reps = 1) one render whose every
+ * pixel is an estimate (pixels that all see the same point). Every render
+ * must report no NaN path and no geometry error (checked). */
+int rh_render_rgb(const char *what, const char *text, int reps, int spp, uint64_t seed, rh_rgb *e);
+
 #endif

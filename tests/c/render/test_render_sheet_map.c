@@ -36,6 +36,7 @@
 #include <stdio.h>
 
 #include "check.h"
+#include "render_harness.h"
 #include "soak/fresnel.h"
 #include "soak/image.h"
 #include "soak/preset.h"
@@ -57,55 +58,10 @@
  * (tests/c/export/test_export.c) with red and blue sharing most of it: 0.02. */
 #define TWO_FLUX_COLOUR 0.02
 
-typedef struct rgb_est {
-    double mean[3], se[3];
-    double rb_se; /* standard error of red/blue, from the renders' own ratios (channels share their paths) */
-} rgb_est;
-
-/* Per-channel mean of the one pixel over REPS renders and its standard error. */
-static int render_rgb(const char *what, const char *text, uint64_t seed, rgb_est *e)
-{
-    soak_scene scene;
-    char err[1024] = "";
-    if (!check_status(what, soak_scene_parse(text, what, ".", &scene, err, sizeof err), SOAK_OK)) {
-        printf("  %s\n", err);
-        return 0;
-    }
-    double s[3] = {0}, s2[3] = {0}, q = 0, q2 = 0;
-    int ok = 1;
-    for (int r = 0; r < REPS && ok; ++r) {
-        soak_render_options opt;
-        soak_render_options_default(&opt);
-        opt.threads = 2;
-        opt.spp = SPP;
-        opt.seed = seed + (uint64_t)r;
-        soak_image img;
-        soak_render_stats stats;
-        ok = check_status(what, soak_render(&scene, &opt, &img, &stats, err, sizeof err), SOAK_OK);
-        if (!ok) break;
-        ok = check_true("no NaN path, no geometry error", stats.nan_paths == 0 && stats.geometry_errors == 0);
-        for (int c = 0; c < 3; ++c) {
-            s[c] += img.pixels[c];
-            s2[c] += img.pixels[c] * img.pixels[c];
-        }
-        double rb = img.pixels[0] / fmax(img.pixels[2], 1e-300);
-        q += rb;
-        q2 += rb * rb;
-        soak_image_free(&img);
-    }
-    soak_scene_free(&scene);
-    for (int c = 0; c < 3 && ok; ++c) {
-        e->mean[c] = s[c] / REPS;
-        e->se[c] = sqrt(fmax(0.0, (s2[c] / REPS - e->mean[c] * e->mean[c]) / (REPS - 1)));
-    }
-    if (ok) e->rb_se = sqrt(fmax(0.0, (q2 / REPS - (q / REPS) * (q / REPS)) / (REPS - 1)));
-    return ok;
-}
-
 /* One pixel of a sheet of paper (thickness t mm, units mm) at x = x0, seen
  * along its normal, a sun behind it; material at preset wetness `mat_w`,
  * object wetness `object_w` (JSON). */
-static int sheet(const char *what, double t, double x0, double mat_w, const char *object_w, uint64_t seed, rgb_est *e)
+static int sheet(const char *what, double t, double x0, double mat_w, const char *object_w, uint64_t seed, rh_rgb *e)
 {
     char text[2048];
     snprintf(text, sizeof text,
@@ -116,7 +72,7 @@ static int sheet(const char *what, double t, double x0, double mat_w, const char
              " \"objects\": [{\"type\": \"box\", \"min\": [-60, -60, %.17g], \"max\": [60, 60, 0], \"material\": \"m\","
              " \"wetness\": %s}]}",
              x0, x0, mat_w, -t, object_w);
-    return render_rgb(what, text, seed, e);
+    return rh_render_rgb(what, text, REPS, SPP, seed, e);
 }
 
 /* The published sheet's numbers the renders are checked against. */
@@ -167,12 +123,12 @@ static int published(const soak_preset *p, const soak_liquid *water, published_s
     return 1;
 }
 
-static double luminance(const rgb_est *e)
+static double luminance(const rh_rgb *e)
 {
     return 0.2126 * e->mean[0] + 0.7152 * e->mean[1] + 0.0722 * e->mean[2];
 }
 
-static void check_same(const char *what, const rgb_est *a, const rgb_est *b)
+static void check_same(const char *what, const rh_rgb *a, const rh_rgb *b)
 {
     for (int c = 0; c < 3; ++c) {
         printf("  %s [%c]: %.5f +- %.5f against %.5f +- %.5f\n", what, "rgb"[c], a->mean[c], a->se[c], b->mean[c],
@@ -199,7 +155,7 @@ int main(void)
     const published_sheet *ref = &pub;
 
     const char *half = "{\"type\": \"plane\", \"normal\": [1, 0, 0], \"offset\": 0, \"blend\": 1}";
-    rgb_est dry, wet, map_dry, map_wet, uniform;
+    rh_rgb dry, wet, map_dry, map_wet, uniform;
     /* different seeds: the references are independent estimates, not the same paths */
     if (!sheet("dry preset", t, 20, 0, "1", 100, &dry) || !sheet("wet preset", t, -20, 1, "1", 200, &wet) ||
         !sheet("map, dry half", t, 20, 1, half, 300, &map_dry) || !sheet("map, wet half", t, -20, 1, half, 400, &map_wet) ||
@@ -207,7 +163,7 @@ int main(void)
         return check_finish();
     check_same("half-wet map, dry half = the dry preset", &map_dry, &dry);
     check_same("half-wet map, wet half = the wet preset", &map_wet, &wet);
-    rgb_est mix;
+    rh_rgb mix;
     for (int c = 0; c < 3; ++c) {
         mix.mean[c] = 0.5 * (dry.mean[c] + wet.mean[c]);
         mix.se[c] = 0.5 * sqrt(dry.se[c] * dry.se[c] + wet.se[c] * wet.se[c]);

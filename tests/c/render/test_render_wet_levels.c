@@ -32,6 +32,7 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "render_harness.h"
 #include "soak/accuracy.h"
 #include "soak/image.h"
 #include "soak/preset.h"
@@ -47,50 +48,11 @@
 /* cos of the view's 20 degrees off the normal (camera at (x0, -1.82, 5)) */
 #define VIEW_COS (5.0 / sqrt(1.82 * 1.82 + 25.0))
 
-typedef struct rgb_est {
-    double mean[3], se[3];
-} rgb_est;
-
-/* Per-channel mean over the pixels and its standard error. */
-static int render_rgb(const char *what, const char *text, uint64_t seed, rgb_est *e)
-{
-    soak_scene scene;
-    char err[1024] = "";
-    if (!check_status(what, soak_scene_parse(text, what, ".", &scene, err, sizeof err), SOAK_OK)) {
-        printf("  %s\n", err);
-        return 0;
-    }
-    soak_render_options opt;
-    soak_render_options_default(&opt);
-    opt.threads = 2;
-    opt.spp = SPP;
-    opt.seed = seed;
-    soak_image img;
-    soak_render_stats stats;
-    int ok = check_status(what, soak_render(&scene, &opt, &img, &stats, err, sizeof err), SOAK_OK);
-    soak_scene_free(&scene);
-    if (!ok) return 0;
-    ok = check_true("no NaN path, no geometry error", stats.nan_paths == 0 && stats.geometry_errors == 0);
-    int n = img.width * img.height;
-    for (int c = 0; c < 3; ++c) {
-        double s = 0, s2 = 0;
-        for (int i = 0; i < n; ++i) {
-            double x = img.pixels[(size_t)i * img.channels + c];
-            s += x;
-            s2 += x * x;
-        }
-        e->mean[c] = s / n;
-        e->se[c] = sqrt(fmax(0.0, (s2 / n - e->mean[c] * e->mean[c]) / (n - 1)));
-    }
-    soak_image_free(&img);
-    return ok;
-}
-
 /* A large plane around x = x0 seen from above at 20 degrees off
  * the normal; a uniform sky and (sun != 0) a sun; preset `name` at
  * material wetness mat_w, object wetness `object_w` (JSON, NULL: none). */
 static int plane(const char *what, const char *name, double mat_w, const char *object_w, double x0, int sun,
-                 uint64_t seed, rgb_est *e)
+                 uint64_t seed, rh_rgb *e)
 {
     /* sun = 0: the sky only and the preset without its own specular interface
      * ("interface": 0), the part of the surface the chain's albedo describes */
@@ -106,12 +68,12 @@ static int plane(const char *what, const char *name, double mat_w, const char *o
              " \"material\": \"m\"%s}]}",
              SIDE, SIDE, x0, x0, sun ? "{\"type\": \"sun\", \"direction\": [-0.5, 0.4, 0.77], \"irradiance\": 2}" : "", name, mat_w,
              sun, wet);
-    return render_rgb(what, text, seed, e);
+    return rh_render_rgb(what, text, 1, SPP, seed, e);
 }
 
 static double luminance(const double c[3]) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; }
 
-static void check_same(const char *what, const rgb_est *a, const rgb_est *b)
+static void check_same(const char *what, const rh_rgb *a, const rh_rgb *b)
 {
     for (int c = 0; c < 3; ++c) {
         printf("  %s [%c]: %.5f +- %.5f against %.5f +- %.5f\n", what, "rgb"[c], a->mean[c], a->se[c], b->mean[c],
@@ -140,7 +102,7 @@ static void identity(const char *name, const char *map, uint64_t seed)
     static const double v[3] = {0.0, 0.3, 0.7};
     for (int i = 0; i < 3; ++i) {
         char what[160], cw[64], pw[256];
-        rgb_est ref, con, pl;
+        rh_rgb ref, con, pl;
         snprintf(cw, sizeof cw, "%.17g", v[i]);
         /* x = 0.5 - (x0 - offset) / blend = v at x0 = 0 */
         snprintf(pw, sizeof pw, "{\"type\": \"plane\", \"normal\": [1, 0, 0], \"offset\": %.17g, \"blend\": 1e6}",
@@ -153,7 +115,7 @@ static void identity(const char *name, const char *map, uint64_t seed)
         if (plane(what, name, 1, pw, 0, 1, seed + 10 * (uint64_t)i + 2000, &pl)) check_same(what, &pl, &ref);
         if (v[i] != 0.0) continue;
         char mw[1200];
-        rgb_est mp;
+        rh_rgb mp;
         snprintf(mw, sizeof mw, "{\"type\": \"map\", \"file\": \"%s\"}", map);
         snprintf(what, sizeof what, "%s, a wet map of zeros = the dry preset", name);
         if (plane(what, name, 1, mw, 0, 1, seed + 3000, &mp)) check_same(what, &mp, &ref);
@@ -188,7 +150,7 @@ static double chain_ratio(const char *name)
 static void half_wet(const char *name, uint64_t seed)
 {
     const char *half = "{\"type\": \"plane\", \"normal\": [1, 0, 0], \"offset\": 0, \"blend\": 0}";
-    rgb_est dry, wet;
+    rh_rgb dry, wet;
     char what[160];
     snprintf(what, sizeof what, "%s half-wet, dry half", name);
     if (!plane(what, name, 1, half, 20, 0, seed, &dry)) return;
