@@ -86,7 +86,10 @@ def main():
         while d:
             tree.add(d)
             d = os.path.dirname(d)
-    exists = lambda p: p in tree or os.path.exists(os.path.join(repo, p))
+
+    def exists(p):
+        return p in tree or os.path.exists(os.path.join(repo, p))
+
     ordered = sorted(tree)
 
     def prefix_exists(p):

@@ -38,7 +38,8 @@ static soak_status parse_robust(scene_ctx *c, const cJSON *j, int *robust)
 
 static soak_status parse_render(scene_ctx *c, const cJSON *j)
 {
-    static const char *const keys[] = {"width", "height", "spp", "max_depth", "caustic_photons", "caustic_radius", "robust", "walk_guide", NULL};
+    static const char *const keys[] = {"width",          "height", "spp",        "max_depth", "caustic_photons",
+                                       "caustic_radius", "robust", "walk_guide", NULL};
     soak_scene *s = c->scene;
     double w = 256, h = 192, spp = 16, md = 256, np = 0, rad = 0, guide = SOAK_RENDER_WALK_GUIDE;
     int robust = 1;
@@ -73,7 +74,8 @@ static soak_status parse_render(scene_ctx *c, const cJSON *j)
 
 static soak_status parse_camera(scene_ctx *c, const cJSON *j)
 {
-    static const char *const keys[] = {"position", "look_at", "up", "fov", "aperture", "focus_distance", "exposure", NULL};
+    static const char *const keys[] = {"position", "look_at",        "up",       "fov",
+                                       "aperture", "focus_distance", "exposure", NULL};
     if (!j) return sj_fail(c, SOAK_ERR_PARSE, "camera", "missing (required)");
     soak_camera *cam = &c->scene->camera;
     soak_status st = sj_keys(c, j, "camera", keys);
@@ -83,7 +85,8 @@ static soak_status parse_camera(scene_ctx *c, const cJSON *j)
     if (st == SOAK_OK) st = sj_num_gt(c, j, "fov", "camera", 0, 179, 0, 40, &cam->fov_deg);
     if (st == SOAK_OK) st = sj_num(c, j, "aperture", "camera", 0, 1e6, 0, 0, &cam->aperture);
     double dist = soak_v3_len(soak_v3_sub(cam->look_at, cam->position));
-    if (st == SOAK_OK && !(dist > 0)) return sj_fail(c, SOAK_ERR_ARG, "camera.look_at", "must differ from camera.position");
+    if (st == SOAK_OK && !(dist > 0))
+        return sj_fail(c, SOAK_ERR_ARG, "camera.look_at", "must differ from camera.position");
     if (st == SOAK_OK) st = sj_num_gt(c, j, "focus_distance", "camera", 0, 1e12, 0, dist, &cam->focus_distance);
     if (st == SOAK_OK) st = sj_num(c, j, "exposure", "camera", -50, 50, 0, 0, &cam->exposure);
     if (st != SOAK_OK) return st;
@@ -439,7 +442,8 @@ static soak_status parse_object(scene_ctx *c, const cJSON *o, const char *p)
     const shape_type *shape = find_shape(type);
     if (!shape) {
         sj_path(q, sizeof q, p, "type");
-        return sj_fail(c, SOAK_ERR_PARSE, q, "unknown object type '%s' (accepted: sphere, quad, plane, box, mesh)", type);
+        return sj_fail(c, SOAK_ERR_PARSE, q, "unknown object type '%s' (accepted: sphere, quad, plane, box, mesh)",
+                       type);
     }
     unsigned id = 0;
     st = shape->add(c, o, p, &id);

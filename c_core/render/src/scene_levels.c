@@ -6,7 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-
 void scene_levels_free(soak_material *m)
 {
     if (!m->levels) return;
@@ -61,7 +60,8 @@ static soak_status build_views(scene_ctx *c, const char *name, soak_material *m,
         L->view[i].levels = NULL;
         /* at object wetness 1 the level is the material as parsed: the
          * same chain at the same liquid amount, not run again */
-        soak_status st = t[i] == 1.0 ? SOAK_OK : scene_preset_view(p, liq, &L->recipe, t[i] * L->recipe.wetness, &L->view[i]);
+        soak_status st =
+            t[i] == 1.0 ? SOAK_OK : scene_preset_view(p, liq, &L->recipe, t[i] * L->recipe.wetness, &L->view[i]);
         if (st != SOAK_OK) {
             char path[128];
             snprintf(path, sizeof path, "materials.%s", name);
@@ -93,7 +93,8 @@ static soak_status material_levels(scene_ctx *c, soak_scene *s, int mi, const so
 soak_status scene_levels_build(scene_ctx *c, soak_scene *s)
 {
     int needed = 0;
-    for (int i = 0; i < s->n_materials; ++i) needed |= s->materials[i].levels != NULL && s->materials[i].type == SOAK_MAT_WET;
+    for (int i = 0; i < s->n_materials; ++i)
+        needed |= s->materials[i].levels != NULL && s->materials[i].type == SOAK_MAT_WET;
     if (!needed) return SOAK_OK;
     const soak_preset_db *db = NULL; /* loaded by the preset materials */
     soak_status st = scene_presets_db(c, "materials", &db);

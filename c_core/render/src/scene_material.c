@@ -74,20 +74,13 @@ static soak_status parse_medium(scene_ctx *c, const cJSON *j, const char *path, 
     return st;
 }
 
-
-
-
-
-
-
-
-
-
 /* A model material: {"type": "<model>", albedo, ior, k, roughness, film
  * {ior, thickness, absorption}, porosity, sp, fill, ks, ks_water}. */
-static soak_status parse_model(scene_ctx *c, const cJSON *j, const char *path, const soak_model *model, soak_material *m)
+static soak_status parse_model(scene_ctx *c, const cJSON *j, const char *path, const soak_model *model,
+                               soak_material *m)
 {
-    static const char *const keys[] = {"type", "albedo", "ior", "k", "roughness", "film", "porosity", "sp", "fill", "ks", "ks_water", NULL};
+    static const char *const keys[] = {"type",     "albedo", "ior",  "k",  "roughness", "film",
+                                       "porosity", "sp",     "fill", "ks", "ks_water",  NULL};
     static const char *const fkeys[] = {"ior", "thickness", "absorption", NULL};
     soak_model_params d;
     soak_model_params_default(&d);
@@ -95,9 +88,11 @@ static soak_status parse_model(scene_ctx *c, const cJSON *j, const char *path, c
     double rough, n_film = SOAK_WATER_IOR, thick = 0, por, sp, fill, ks, ksw;
     soak_status st = sj_keys(c, j, path, keys);
     if (st == SOAK_OK) st = sj_rgb(c, j, "albedo", path, 0, 1, 0, soak_rgb3(d.albedo, d.albedo, d.albedo), &albedo);
-    if (st == SOAK_OK) st = sj_rgb(c, j, "ior", path, SOAK_ETA_MIN, SOAK_ETA_MAX, 0, soak_rgb3(d.ior, d.ior, d.ior), &ior);
+    if (st == SOAK_OK)
+        st = sj_rgb(c, j, "ior", path, SOAK_ETA_MIN, SOAK_ETA_MAX, 0, soak_rgb3(d.ior, d.ior, d.ior), &ior);
     if (st == SOAK_OK) st = sj_rgb(c, j, "k", path, 0, SOAK_GGX_K_MAX, 0, soak_rgb3(0, 0, 0), &k);
-    if (st == SOAK_OK) st = sj_num(c, j, "roughness", path, SOAK_GGX_ALPHA_MIN, SOAK_GGX_ALPHA_MAX, 0, d.roughness, &rough);
+    if (st == SOAK_OK)
+        st = sj_num(c, j, "roughness", path, SOAK_GGX_ALPHA_MIN, SOAK_GGX_ALPHA_MAX, 0, d.roughness, &rough);
     if (st == SOAK_OK) st = sj_num(c, j, "porosity", path, 0, 1, 0, d.porosity, &por);
     if (st == SOAK_OK) st = sj_num(c, j, "sp", path, 0, 1e3, 0, d.sp, &sp);
     if (st == SOAK_OK) st = sj_num(c, j, "fill", path, 0, 1, 0, 1, &fill);
@@ -197,7 +192,8 @@ static soak_status parse_wet_base(scene_ctx *c, const cJSON *base, const char *b
 static soak_status parse_dry(scene_ctx *c, const cJSON *dry, const char *dp, soak_material *m)
 {
     if (!dry) return SOAK_OK;
-    if (m->base != SOAK_BASE_MEDIUM) return sj_fail(c, SOAK_ERR_ARG, dp, "dry medium parameters need base.type \"medium\"");
+    if (m->base != SOAK_BASE_MEDIUM)
+        return sj_fail(c, SOAK_ERR_ARG, dp, "dry medium parameters need base.type \"medium\"");
     m->dry_medium = m->medium;
     m->dry_medium.volume = NULL;
     soak_status st = parse_medium(c, dry, dp, &m->dry_medium, 0);
@@ -262,7 +258,9 @@ soak_status scene_parse_material(scene_ctx *c, const cJSON *j, const char *path,
     if (model) return parse_model(c, j, path, model, m);
     char tp[320];
     sj_path(tp, sizeof tp, path, "type");
-    return sj_fail(c, SOAK_ERR_PARSE, tp, "unknown material type '%s' (accepted: lambert, dielectric, conductor, wet, preset, or a model of `soak eval --list`: ww, ww-triace, porous, porous-ggx, ...)",
+    return sj_fail(c, SOAK_ERR_PARSE, tp,
+                   "unknown material type '%s' (accepted: lambert, dielectric, conductor, wet, preset, or a model of "
+                   "`soak eval --list`: ww, ww-triace, porous, porous-ggx, ...)",
                    type);
 }
 
@@ -320,7 +318,8 @@ soak_status scene_parse_wetness(scene_ctx *c, const cJSON *j, const char *path, 
     }
     char tp[400];
     sj_path(tp, sizeof tp, path, "type");
-    return sj_fail(c, SOAK_ERR_PARSE, tp, "unknown wetness type '%s' (accepted: constant, map, plane, or a number)", type);
+    return sj_fail(c, SOAK_ERR_PARSE, tp, "unknown wetness type '%s' (accepted: constant, map, plane, or a number)",
+                   type);
 }
 
 void scene_material_free(soak_material *m)
@@ -332,5 +331,3 @@ void scene_material_free(soak_material *m)
         m->medium.volume = NULL;
     }
 }
-
-

@@ -80,10 +80,8 @@ static soak_status eval_preset(scene_ctx *c, const char *path, const preset_requ
         out->ior = p->ior;
         out->n = p->ior_n;
         out->k = p->ior_k;
-        if (st == SOAK_OK)
-            scene_preset_model_view(&own, &out->w, r->m_per_unit, m);
-        else
-            st = sj_fail(c, st, path, "wetness evaluation failed (%s)", soak_status_str(st));
+        if (st == SOAK_OK) scene_preset_model_view(&own, &out->w, r->m_per_unit, m);
+        else st = sj_fail(c, st, path, "wetness evaluation failed (%s)", soak_status_str(st));
     }
     return st;
 }
@@ -178,7 +176,8 @@ static soak_status parse_film_over(scene_ctx *c, const cJSON *j, const char *pat
     if (st == SOAK_OK) st = sj_num(c, f, "coverage", fp, 0, 1, 0, 1, &coverage);
     if (st == SOAK_OK) st = sj_num_gt(c, f, "thickness", fp, 0, 1e3, 1, 0, &thickness);
     if (st != SOAK_OK) return st;
-    if (m->base == SOAK_BASE_GGX) return sj_fail(c, SOAK_ERR_ARG, fp, "not for a metal preset (its film is the chain's)");
+    if (m->base == SOAK_BASE_GGX)
+        return sj_fail(c, SOAK_ERR_ARG, fp, "not for a metal preset (its film is the chain's)");
     m->film_coverage = coverage;
     m->film_pore_share = 0.0;
     m->film_thickness = thickness;
@@ -216,8 +215,8 @@ soak_status scene_preset_view(const soak_preset *p, const soak_liquid *liq, cons
     preset_chain pc;
     memset(&pc, 0, sizeof pc);
     soak_wet_input in = soak_wet_input_steady(p, wetness);
-    soak_status st = rec->has_base ? soak_wet_params_for_base(p, liq, &in, rec->base, &pc.w)
-                                   : soak_wetness_eval(p, liq, &in, &pc.w);
+    soak_status st =
+        rec->has_base ? soak_wet_params_for_base(p, liq, &in, rec->base, &pc.w) : soak_wetness_eval(p, liq, &in, &pc.w);
     if (st != SOAK_OK) return st;
     if (p->kind == SOAK_KIND_THIN_SHEET) return SOAK_ERR_UNSUPPORTED; /* its dry medium follows the wetness */
     pc.kind = p->kind;
@@ -242,8 +241,8 @@ soak_status scene_preset_view(const soak_preset *p, const soak_liquid *liq, cons
  * documented key), converted here once to metres per unit. */
 soak_status scene_parse_preset(scene_ctx *c, const cJSON *j, const char *path, soak_material *m)
 {
-    static const char *const keys[] = {"type", "name", "wetness", "liquid", "unit_mm", "model", "base_colour",
-                                       "interface", "film_over", NULL};
+    static const char *const keys[] = {"type",  "name",        "wetness",   "liquid",    "unit_mm",
+                                       "model", "base_colour", "interface", "film_over", NULL};
     preset_request r;
     double interface = 1;
     soak_status st = sj_keys(c, j, path, keys);
@@ -264,8 +263,10 @@ soak_status scene_parse_preset(scene_ctx *c, const cJSON *j, const char *path, s
     if (r.has_base && pc.kind == SOAK_KIND_CONDUCTOR) {
         char bp[320];
         sj_path(bp, sizeof bp, path, "base_colour");
-        return sj_fail(c, SOAK_ERR_ARG, bp, "'%s' is a metal: its colour is its complex index (n, k), "
-                       "base_colour wets a dielectric's or a thin sheet's own colour", r.name);
+        return sj_fail(c, SOAK_ERR_ARG, bp,
+                       "'%s' is a metal: its colour is its complex index (n, k), "
+                       "base_colour wets a dielectric's or a thin sheet's own colour",
+                       r.name);
     }
     m->type = SOAK_MAT_WET;
     preset_film(&pc.w, r.m_per_unit, m);
