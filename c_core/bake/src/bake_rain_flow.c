@@ -281,6 +281,35 @@ soak_status soak_rain_flow(const soak_rain_flow_grid *g, double *depth, int iter
     return st;
 }
 
+/* The routing's drops from texel i on the dry surface (levels without the
+ * water): diff and their sum as route_drops gives them; 0 where nothing is
+ * lower (a pit or flat). */
+static int dry_drops(const soak_rain_flow_grid *g, size_t i, double diff[9], double *sum)
+{
+    int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
+    double nb[8], mx;
+    for (int d = 0; d < 8; ++d)
+        nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
+    route_drops(g, i, g->level[i], nb, 0.0, diff, sum, &mx);
+    return *sum > 0.0;
+}
+
+/* The index of neighbour d of texel i (it must exist). */
+static size_t neighbour(const soak_rain_flow_grid *g, size_t i, int d)
+{
+    return (size_t)((ptrdiff_t)i + (ptrdiff_t)SOAK_RAIN_DY[d] * g->w + SOAK_RAIN_DX[d]);
+}
+
+/* Spreads q over the lower neighbours of i in the shares diff / sum into
+ * inflow; returns the share that drips off. */
+static double spread(const soak_rain_flow_grid *g, size_t i, double q, const double diff[9], double sum,
+                     double *inflow)
+{
+    for (int d = 0; d < 8; ++d)
+        if (diff[d] > 0.0) inflow[neighbour(g, i, d)] += q * diff[d] / sum;
+    return q * diff[8] / sum;
+}
+
 /* ---- steady discharge: the same routing, every texel passing on all it gets ---- */
 
 typedef struct level_order {
@@ -327,18 +356,12 @@ static void pass_on(const soak_rain_flow_grid *g, size_t i, double got, double l
         b->dripped += q;
         return;
     }
-    int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
-    double nb[8], diff[9], sum, mx;
-    for (int d = 0; d < 8; ++d)
-        nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
-    route_drops(g, i, g->level[i], nb, 0.0, diff, &sum, &mx);
-    if (!(sum > 0.0)) {
+    double diff[9], sum;
+    if (!dry_drops(g, i, diff, &sum)) {
         b->held += q;
         return;
     }
-    for (int d = 0; d < 8; ++d)
-        if (diff[d] > 0.0) inflow[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] += q * diff[d] / sum;
-    b->dripped += q * diff[8] / sum;
+    b->dripped += spread(g, i, q, diff, sum, inflow);
 }
 
 soak_status soak_rain_flow_discharge(const soak_rain_flow_grid *g, const double *source, double loss,
@@ -347,27 +370,21 @@ soak_status soak_rain_flow_discharge(const soak_rain_flow_grid *g, const double 
     if (!g || !source || !discharge || !balance) return SOAK_ERR_NULL;
     if (g->w < 1 || g->h < 1 || !(loss >= 0.0 && loss < 1e300)) return SOAK_ERR_ARG;
     if (!g->covered || !g->adj || !g->area || !g->drip || !g->level) return SOAK_ERR_NULL;
-    size_t n = (size_t)g->w * g->h, m = 0;
-    size_t *idx = malloc(n * sizeof *idx), *tmp = malloc(n * sizeof *tmp);
+    size_t n = (size_t)g->w * g->h, m = 0, *idx = NULL;
     double *inflow = calloc(n, sizeof *inflow);
-    if (!idx || !tmp || !inflow) {
-        free(idx);
-        free(tmp);
+    soak_status st = inflow ? soak_rain_flow_order(g, &idx, &m) : SOAK_ERR_NOMEM;
+    if (st != SOAK_OK) {
         free(inflow);
-        return SOAK_ERR_NOMEM;
+        return st;
     }
     memset(balance, 0, sizeof *balance);
     for (size_t i = 0; i < n; ++i) {
         discharge[i] = 0.0;
-        if (!g->covered[i]) continue;
-        idx[m++] = i;
-        balance->in += source[i];
+        if (g->covered[i]) balance->in += source[i];
     }
-    sort_by_level(idx, tmp, m, g->level);
     for (size_t k = 0; k < m; ++k) /* every share goes strictly downhill: to a texel later in the order */
         pass_on(g, idx[k], source[idx[k]] + inflow[idx[k]], loss, inflow, discharge, balance);
     free(idx);
-    free(tmp);
     free(inflow);
     return SOAK_OK;
 }
@@ -410,18 +427,12 @@ static double cascade_texel(const soak_rain_flow_grid *g, const unsigned char *f
     depth[i] = g->retain[i];
     double q = have - keep;
     if (g->drip[i] < 0.0f) return q;
-    int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
-    double nb[8], diff[9], sum, mx;
-    for (int d = 0; d < 8; ++d)
-        nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
-    route_drops(g, i, g->level[i], nb, 0.0, diff, &sum, &mx);
-    if (!(sum > 0.0)) {
+    double diff[9], sum;
+    if (!dry_drops(g, i, diff, &sum)) {
         depth[i] = have / a;
         return 0.0;
     }
-    for (int d = 0; d < 8; ++d)
-        if (diff[d] > 0.0) inflow[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] += q * diff[d] / sum;
-    return q * diff[8] / sum;
+    return spread(g, i, q, diff, sum, inflow);
 }
 
 soak_status soak_rain_flow_cascade(const soak_rain_flow_grid *g, const unsigned char *fast, const size_t *order,
@@ -443,12 +454,8 @@ int soak_rain_flow_shares(const soak_rain_flow_grid *g, size_t i, double share[9
         share[8] = 1.0;
         return 1;
     }
-    int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
-    double nb[8], diff[9], sum, mx;
-    for (int d = 0; d < 8; ++d)
-        nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
-    route_drops(g, i, g->level[i], nb, 0.0, diff, &sum, &mx);
-    if (!(sum > 0.0)) return 0;
+    double diff[9], sum;
+    if (!dry_drops(g, i, diff, &sum)) return 0;
     for (int d = 0; d < 9; ++d) share[d] = diff[d] / sum;
     return 1;
 }
