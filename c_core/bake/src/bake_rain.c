@@ -299,7 +299,7 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
     unsigned char *covered = malloc(n);
     water_flow f;
     memset(&f, 0, sizeof f);
-    soak_rain_flow_grid grid = {s->w, s->h, covered, s->adj, s->area, s->drip, s->level, j.retain};
+    soak_rain_flow_grid grid = {s->w, s->h, covered, s->adj, s->area, s->drip, s->level, j.retain, s->descent};
     f.grid = &grid;
     soak_status st = j.deposit && j.retain && covered ? SOAK_OK : SOAK_ERR_NOMEM;
     soak_vec3 up = soak_v3_norm(p->up);
@@ -525,6 +525,7 @@ void soak_rain_scene_free(soak_rain_scene *sc)
     free(sc->area);
     free(sc->drip);
     free(sc->level);
+    free(sc->descent);
     free(sc->up_dot_n);
     soak_image_free(&sc->exposure);
     memset(sc, 0, sizeof *sc);
@@ -541,8 +542,8 @@ soak_status soak_rain_scene_build(const soak_mesh *mesh, int width, int height, 
     size_t n = (size_t)width * height;
     out->w = width, out->h = height;
     out->covered = malloc(n), out->up_dot_n = malloc(n * sizeof *out->up_dot_n);
-    out->adj = s.adj, out->area = s.area, out->drip = s.drip, out->level = s.level;
-    s.adj = NULL, s.area = NULL, s.drip = NULL, s.level = NULL;
+    out->adj = s.adj, out->area = s.area, out->drip = s.drip, out->level = s.level, out->descent = s.descent;
+    s.adj = NULL, s.area = NULL, s.drip = NULL, s.level = NULL, s.descent = NULL;
     soak_vec3 up = soak_v3_norm(p->up);
     if (out->covered && out->up_dot_n)
         for (size_t i = 0; i < n; ++i) {

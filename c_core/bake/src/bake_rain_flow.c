@@ -1,9 +1,12 @@
 /* Fused downhill-flow sweeps of the rain bake (bake_rain_flow.h). */
 #include "bake_rain_flow.h"
 
+#include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "soak/vec.h"
 
 #include "bake_rain_flow_rows.h"
 
@@ -281,23 +284,83 @@ soak_status soak_rain_flow(const soak_rain_flow_grid *g, double *depth, int iter
     return st;
 }
 
+/* The index of neighbour d of texel i (it must exist). */
+static size_t neighbour(const soak_rain_flow_grid *g, size_t i, int d)
+{
+    return (size_t)((ptrdiff_t)i + (ptrdiff_t)SOAK_RAIN_DY[d] * g->w + SOAK_RAIN_DX[d]);
+}
+
+/* Shares below this go to the other neighbour: a direction along a grid
+ * axis or diagonal sends to one texel, not a rounding error to its side. */
+#define DESCENT_SHARE_MIN 1e-6
+
+/* Whether the surface's edge at texel i faces down the descent (a, b) (water
+ * runs off it) rather than along it: the outward direction, the sum of the
+ * steps to the neighbours that are not adjacent, within 60 deg of the
+ * descent. */
+static int edge_faces_downhill(const soak_rain_flow_grid *g, size_t i, double a, double b)
+{
+    double ox = 0.0, oy = 0.0;
+    for (int d = 0; d < 8; ++d)
+        if (!(g->adj[i] >> d & 1u)) ox += SOAK_RAIN_DX[d], oy += SOAK_RAIN_DY[d];
+    double dot = ox * a + oy * b, len = sqrt((ox * ox + oy * oy) * (a * a + b * b));
+    return !(len > 0.0) || dot > 0.5 * len;
+}
+
+/* The steepest descent's two-neighbour split (the D-infinity routing of
+ * Tarboton 1997, Water Resources Research 33(2), 309-319, with the
+ * direction from the surface's own gradient instead of a facet fit):
+ * direction d points at angle 45 d degrees (x right, y up the image), and
+ * what leaves i goes to the two directions bracketing the descent angle in
+ * proportion to closeness. A share whose texel is off the surface drips
+ * (an open edge, a seam) where the edge faces down the slope; along an edge
+ * parallel to the flow it goes to the other texel (the stream stays on the
+ * surface). 0 (use the level drops) where the texel is level or a target is
+ * not lower. */
+static int descent_drops(const soak_rain_flow_grid *g, size_t i, double diff[9], double *sum)
+{
+    if (!g->descent) return 0;
+    double a = g->descent[2 * i], b = g->descent[2 * i + 1];
+    if (!(a * a + b * b > 0.0)) return 0;
+    double t = atan2(-b, a) / (0.25 * SOAK_PI);
+    t = t < 0.0 ? t + 8.0 : t;
+    int k = (int)t;
+    double f = t - k;
+    k &= 7;
+    int to[2] = {k, (k + 1) & 7};
+    double share[2] = {1.0 - f, f};
+    if (share[1] < DESCENT_SHARE_MIN) share[0] = 1.0, share[1] = 0.0;
+    if (share[0] < DESCENT_SHARE_MIN) share[0] = 0.0, share[1] = 1.0;
+    for (int d = 0; d < 9; ++d) diff[d] = 0.0;
+    int on[2] = {g->adj[i] >> to[0] & 1u, g->adj[i] >> to[1] & 1u};
+    if (on[0] != on[1] && !edge_faces_downhill(g, i, a, b)) /* running along an edge: stays on the surface */
+        share[on[1]] = 1.0, share[!on[1]] = 0.0;
+    for (int s = 0; s < 2; ++s) {
+        if (!(share[s] > 0.0)) continue;
+        if (!on[s]) { /* across an open edge (or a seam): this share drips */
+            diff[8] += share[s];
+            continue;
+        }
+        if (!(g->level[neighbour(g, i, to[s])] < g->level[i])) return 0;
+        diff[to[s]] = share[s];
+    }
+    *sum = 1.0;
+    return 1;
+}
+
 /* The routing's drops from texel i on the dry surface (levels without the
- * water): diff and their sum as route_drops gives them; 0 where nothing is
- * lower (a pit or flat). */
+ * water): the steepest descent's split where it applies, else diff and
+ * their sum as route_drops gives them; 0 where nothing is lower (a pit or
+ * flat). */
 static int dry_drops(const soak_rain_flow_grid *g, size_t i, double diff[9], double *sum)
 {
+    if (descent_drops(g, i, diff, sum)) return 1;
     int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
     double nb[8], mx;
     for (int d = 0; d < 8; ++d)
         nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
     route_drops(g, i, g->level[i], nb, 0.0, diff, sum, &mx);
     return *sum > 0.0;
-}
-
-/* The index of neighbour d of texel i (it must exist). */
-static size_t neighbour(const soak_rain_flow_grid *g, size_t i, int d)
-{
-    return (size_t)((ptrdiff_t)i + (ptrdiff_t)SOAK_RAIN_DY[d] * g->w + SOAK_RAIN_DX[d]);
 }
 
 /* Spreads q over the lower neighbours of i in the shares diff / sum into
@@ -458,4 +521,14 @@ int soak_rain_flow_shares(const soak_rain_flow_grid *g, size_t i, double share[9
     if (!dry_drops(g, i, diff, &sum)) return 0;
     for (int d = 0; d < 9; ++d) share[d] = diff[d] / sum;
     return 1;
+}
+
+double soak_rain_flow_width(const soak_rain_flow_grid *g, size_t i)
+{
+    double area = g->area[i];
+    if (g->descent) {
+        double a = fabs(g->descent[2 * i]), b = fabs(g->descent[2 * i + 1]), m = a > b ? a : b;
+        if (m > 0.0) return area * m;
+    }
+    return sqrt(area);
 }

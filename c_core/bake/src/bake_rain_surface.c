@@ -23,6 +23,7 @@ void soak_rain_surface_free(rain_surface *s)
     free(s->level);
     free(s->adj);
     free(s->drip);
+    free(s->descent);
 }
 
 void soak_rain_surface_rasterise(const soak_mesh *m, rain_surface *s, soak_vec3 up)
@@ -81,6 +82,26 @@ void soak_rain_surface_rasterise(const soak_mesh *m, rain_surface *s, soak_vec3 
     }
 }
 
+/* The direction water runs on the surface, in texel steps per metre run:
+ * gravity's part in the tangent plane, g_t = -(up - (up.n) n), written as
+ * a dpdx + b dpdy by least squares through the UV Jacobian (dpdx, dpdy) and
+ * divided by |g_t|. (0, 0) where the surface is level or the Jacobian
+ * degenerate. */
+static void descent_direction(soak_vec3 sx, soak_vec3 sy, soak_vec3 n, soak_vec3 up, float out[2])
+{
+    out[0] = out[1] = 0.0f;
+    soak_vec3 gt = soak_v3_sub(soak_v3_scale(n, soak_v3_dot(up, n)), up);
+    double slope = soak_v3_len(gt);
+    if (!(slope > SOAK_RAIN_LEVEL_TOL)) return;
+    double xx = soak_v3_dot(sx, sx), xy = soak_v3_dot(sx, sy), yy = soak_v3_dot(sy, sy);
+    double rx = soak_v3_dot(sx, gt), ry = soak_v3_dot(sy, gt), det = xx * yy - xy * xy;
+    if (!(det > 1e-12 * xx * yy)) return;
+    double a = (yy * rx - xy * ry) / det / slope, b = (xx * ry - xy * rx) / det / slope;
+    if (!soak_is_finite(a) || !soak_is_finite(b) || !(a * a + b * b > 0.0)) return;
+    out[0] = (float)a;
+    out[1] = (float)b;
+}
+
 typedef struct connect_job {
     rain_surface *s;
     soak_vec3 up;
@@ -98,8 +119,11 @@ static void connect_row(void *ctx, int y, int thread)
         size_t i = (size_t)y * s->w + x;
         s->adj[i] = 0;
         s->drip[i] = 0.0f;
+        s->descent[2 * i] = s->descent[2 * i + 1] = 0.0f;
         if (s->tri[i] < 0) continue;
-        soak_vec3 p = soak_rain_vget(s->pos, i), sx = soak_rain_fget(s->dpdx, i), sy = soak_rain_fget(s->dpdy, i), n = soak_rain_fget(s->nrm, i);
+        soak_vec3 p = soak_rain_vget(s->pos, i), sx = soak_rain_fget(s->dpdx, i), sy = soak_rain_fget(s->dpdy, i);
+        soak_vec3 n = soak_rain_fget(s->nrm, i);
+        descent_direction(sx, sy, n, up, s->descent + 2 * i);
         int best = -1;
         double best_drop = 0.0;
         for (int d = 0; d < 8; ++d) {
@@ -157,7 +181,9 @@ soak_status soak_rain_surface_alloc(rain_surface *s, int w, int h)
     s->level = malloc(n * sizeof *s->level);
     s->adj = malloc(n);
     s->drip = malloc(n * sizeof *s->drip);
-    if (!s->tri || !s->pos || !s->nrm || !s->dpdx || !s->dpdy || !s->area || !s->level || !s->adj || !s->drip) {
+    s->descent = malloc(2 * n * sizeof *s->descent);
+    if (!s->tri || !s->pos || !s->nrm || !s->dpdx || !s->dpdy || !s->area || !s->level || !s->adj || !s->drip ||
+        !s->descent) {
         soak_rain_surface_free(s);
         return SOAK_ERR_NOMEM;
     }

@@ -17,8 +17,13 @@ typedef struct rain_surface {
     double *level;     /* p.up */
     unsigned char *adj;/* bit d: neighbour d is 3D-adjacent and covered */
     float *drip;       /* > 0: level drop toward the open edge the water drips off */
+    float *descent;    /* 2 per texel: steepest descent, texels (x, y down) per metre; 0, 0 if level */
     double mean_texel; /* mean sqrt(area) of covered texels */
 } rain_surface;
+
+/* Below this |tangential gravity| (sin of the slope) a texel is level: no
+ * descent direction, the routing falls back to level drops. */
+#define SOAK_RAIN_LEVEL_TOL 1e-6
 
 static inline soak_vec3 soak_rain_vget(const double *a, size_t i)
 {
