@@ -222,7 +222,8 @@ static soak_status add_film(const rain_surface *s, const soak_rain_params *p, co
     if (!up_dot_n) return SOAK_ERR_NOMEM;
     soak_vec3 up = soak_v3_norm(p->up);
     soak_rain_flow_balance b;
-    for (size_t i = 0; i < n; ++i) up_dot_n[i] = s->tri[i] >= 0 ? (float)soak_v3_dot(soak_rain_fget(s->nrm, i), up) : 1.0f;
+    for (size_t i = 0; i < n; ++i)
+        up_dot_n[i] = s->tri[i] >= 0 ? (float)soak_v3_dot(soak_rain_fget(s->nrm, i), up) : 1.0f;
     soak_status st = soak_rain_film_map(grid, up_dot_n, exposure, p->rainfall_mm_h / 3.6e6,
                                         p->evaporation_mm_h / 3.6e6, film, &b);
     if (st == SOAK_OK) *runoff = (soak_rain_runoff){b.in, b.dripped, b.held, b.lost};

@@ -45,8 +45,8 @@ void soak_rain_surface_rasterise(const soak_mesh *m, rain_surface *s, soak_vec3 
         if (!(fabs(den) > 1e-12) || !(area3 > 0.0) || !soak_is_finite(den)) continue; /* degenerate */
         soak_vec3 ng = soak_v3_scale(cr, 0.5 / area3);
         if (m->normals) {
-            soak_vec3 vn = soak_v3_add(soak_v3_add(soak_rain_vget(m->normals, ix[0]), soak_rain_vget(m->normals, ix[1])),
-                                       soak_rain_vget(m->normals, ix[2]));
+            soak_vec3 v0 = soak_rain_vget(m->normals, ix[0]), v1 = soak_rain_vget(m->normals, ix[1]);
+            soak_vec3 vn = soak_v3_add(soak_v3_add(v0, v1), soak_rain_vget(m->normals, ix[2]));
             if (soak_v3_dot(vn, ng) < 0) ng = soak_v3_scale(ng, -1.0);
         }
         double texel_area = area3 / (0.5 * fabs(den));
@@ -133,7 +133,8 @@ static void connect_row(void *ctx, int y, int thread)
             int ok = jx >= 0 && jy >= 0 && jx < s->w && jy < s->h;
             if (ok) {
                 size_t j = (size_t)jy * s->w + jx;
-                ok = s->tri[j] >= 0 && soak_v3_len(soak_v3_sub(soak_rain_vget(s->pos, j), p)) <= 2.0 * soak_v3_len(step) + 1e-12;
+                ok = s->tri[j] >= 0; /* pos is set on covered texels only */
+                if (ok) ok = soak_v3_len(soak_v3_sub(soak_rain_vget(s->pos, j), p)) <= 2.0 * soak_v3_len(step) + 1e-12;
                 if (ok) s->adj[i] |= (unsigned char)(1u << d);
             }
             if (drop > best_drop * (1 + 1e-9)) {
