@@ -174,6 +174,21 @@ static void check_uniform_plane(double deg)
              100 * worst, worst_x, worst_y);
     check_true(what, worst <= 0.01);
     printf("uniform plane, UVs turned %g deg: worst bottom-edge film error %.3f %%\n", deg, 100 * worst);
+    if (deg == 0.0) { /* the report's column count: the bottom row, every column, edges included */
+        int thin = 0, y;
+        double edge = 0.0;
+        for (y = N - 1; y >= 0 && r.coverage.pixels[(size_t)y * N + N / 2] < 0.5f; --y) continue;
+        for (int x = 0, cols = 0; x < N; ++x) {
+            size_t i = (size_t)y * N + x;
+            double st[2];
+            texel_chart(x, y, N, deg, st);
+            if (r.coverage.pixels[i] < 0.5f) continue;
+            double q = rain * (1.0 - st[1]), e = r.film.pixels[i] / cbrt(3.0 * MU * q / (RHO * G * sin(THETA))) - 1.0;
+            thin += e < -0.05;
+            if (cols++ == 0) edge = e;
+        }
+        printf("uniform plane: %d bottom-row columns > 5 %% thin, the first column %.1f %%\n", thin, 100 * edge);
+    }
     soak_rain_result_free(&r);
     builder_free(&b);
 }
