@@ -61,6 +61,19 @@ extern const cli_opt bake_image_opts[];
 extern const size_t bake_image_opts_n;
 extern const cli_opt bake_sequence_opts[];
 extern const size_t bake_sequence_opts_n;
+/* The most entries a shared table has (bake_table_help's copies). */
+#define BAKE_SHARED_OPTS_MAX 8
+/* Copies the shared table src (n <= BAKE_SHARED_OPTS_MAX entries) into dst
+ * with the --help text of option `name` replaced by help: for a kind whose
+ * default differs from the shared one. Returns n. */
+size_t bake_table_help(const cli_opt *src, size_t n, cli_opt *dst, const char *name, const char *help);
+/* --frame-origin's help where it defaults to 0 (bake drops, bake rain). */
+#define BAKE_ORIGIN_ZERO_HELP                                                                                   \
+    "frame baked at time T (default 0: frame f at T + f DT whatever\n"                                            \
+    "range is baked, so chunks equal one run)"
+/* What a --rate of the Marshall-Palmer drop sizes at Atlas et al.'s speeds
+ * delivers (docs/rain.md: 1.17x at 5 mm/h, 1.16x at 10, 1.13x at 25). */
+#define BAKE_DELIVERED_RATE_HELP "; delivers 1.13-1.17x it\n(Marshall-Palmer sizes at Atlas speeds, docs/rain.md)"
 #define BAKE_IMAGE_TABLE(dst) {bake_image_opts, bake_image_opts_n, (dst)}
 #define BAKE_SEQUENCE_TABLE(dst) {bake_sequence_opts, bake_sequence_opts_n, (dst)}
 /* The noise of soak bake turbulence and soak bake volume, a table of

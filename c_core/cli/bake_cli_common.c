@@ -78,6 +78,16 @@ const cli_opt bake_sequence_opts[] = {
 const size_t bake_sequence_opts_n = sizeof bake_sequence_opts / sizeof bake_sequence_opts[0];
 #undef F
 
+size_t bake_table_help(const cli_opt *src, size_t n, cli_opt *dst, const char *name, const char *help)
+{
+    n = n < BAKE_SHARED_OPTS_MAX ? n : BAKE_SHARED_OPTS_MAX;
+    for (size_t k = 0; k < n; ++k) {
+        dst[k] = src[k];
+        if (strcmp(src[k].name, name) == 0) dst[k].help = help;
+    }
+    return n;
+}
+
 #define N(field) CLI_FIELD(soak_turbulence_params, field)
 const cli_opt bake_noise_opts[] = {
     {"--turbulence", NULL, CLI_OPT_FLAG, .flag = SOAK_NOISE_TURBULENCE, N(sum),

@@ -29,7 +29,7 @@ static const cli_choice axes[] = {{"x", 0, 0},  {"y", 1, 0},  {"z", 2, 0}, {"-x"
 #define F(field) CLI_FIELD(drops_job, field)
 static const cli_opt drops_opts[] = {
     {"--rate", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = SOAK_DROP_RATE_MAX, F(p.rate_mm_h), .meta = "MM_H",
-     .help = "rain rate, %R mm/h (default 10)"},
+     .help = "rain rate, %R mm/h (default 10)" BAKE_DELIVERED_RATE_HELP},
     {"--duration", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = SOAK_DROPS_MAX_TIME, F(p.duration), .meta = "S",
      .help = "seconds of rain from t = 0; then the surface dries (default 10)"},
     {"--texel", NULL, CLI_OPT_DOUBLE, .lo = 1e-9, .hi = SOAK_DROPS_MAX_SCALE, F(p.texel_m), CLI_SEEN(drops_job, have_texel),
@@ -77,7 +77,9 @@ static void usage(FILE *out)
             "bytes on any number of threads. Without --frames one map at --time (default: the\n"
             "rain's end). Frame 0 is at t = 0 unless --time / --frame-origin say otherwise.\n\n"
             "options:\n");
-    const cli_opt_table tables[] = DROPS_TABLES(NULL, NULL);
+    cli_opt seq[BAKE_SHARED_OPTS_MAX];
+    size_t n = bake_table_help(bake_sequence_opts, bake_sequence_opts_n, seq, "--frame-origin", BAKE_ORIGIN_ZERO_HELP);
+    const cli_opt_table tables[] = {BAKE_IMAGE_TABLE(NULL), CLI_TABLE(drops_opts, NULL), {seq, n, NULL}};
     cli_opts_help(out, tables, sizeof tables / sizeof tables[0]);
     fprintf(out, "\nexample:\n"
                  "  soak bake drops --rate 10 --map-size 1 --duration 8 --frames 0-239 --fps 24 -o drops.%%04d.exr\n");

@@ -131,9 +131,16 @@ static void usage(FILE *out)
             "h -> sqrt(nu x / (g sin theta t))) and evaporation dries what is left. --film and\n"
             "--water are then frame patterns too; --exposure is one map. Time steps are\n"
             "--duration / --steps, the same after the rain. Prints where the water went by\n"
-            "the last frame.\n\n"
+            "the last frame.\n"
+            "The single map (no --frames) is not a frame of the sequence: it holds the steady\n"
+            "film of rain that has fallen long enough (kept on every face steeper than flat)\n"
+            "and the water of --steps steps, at the rain's end. The sequence's film grows from\n"
+            "the top of each face at its own speed and drains once the rain stops, so a frame\n"
+            "at or after --duration can show less film and lower wetness (docs/rain.md).\n\n"
             "options:\n");
-    const cli_opt_table tables[] = RAIN_TABLES(NULL, NULL);
+    cli_opt seq[BAKE_SHARED_OPTS_MAX];
+    size_t n = bake_table_help(bake_sequence_opts, bake_sequence_opts_n, seq, "--frame-origin", BAKE_ORIGIN_ZERO_HELP);
+    const cli_opt_table tables[] = {BAKE_IMAGE_TABLE(NULL), CLI_TABLE(rain_opts, NULL), {seq, n, NULL}};
     cli_opts_help(out, tables, sizeof tables / sizeof tables[0]);
     fprintf(out, "\nexample:\n"
                  "  soak bake rain statue.glb --width 2048 --height 2048 --rays 64 --duration 1800 \\\n"
@@ -160,14 +167,14 @@ static void on_progress(void *user, double fraction)
 
 /* Writes every requested image or none: all are staged, then renamed
  * together, so a failure keeps every previous output. */
-static int write_outputs(const char *const *paths, const soak_image *const *imgs, int n)
+static int write_outputs(const char *const *paths, const soak_image *const *imgs, int n, int float_exr)
 {
     char err[4352] = "";
     soak_staged stage;
     soak_staged_init(&stage);
     soak_status st = SOAK_OK;
     for (int k = 0; k < n && st == SOAK_OK; ++k)
-        if (paths[k]) st = soak_bake_stage(&stage, paths[k], imgs[k], 0, err, sizeof err);
+        if (paths[k]) st = soak_bake_stage(&stage, paths[k], imgs[k], float_exr, err, sizeof err);
     if (st != SOAK_OK) {
         soak_staged_abort(&stage);
         return bake_fail(CMD, st, err);
@@ -345,7 +352,7 @@ static int run_frames(rain_args *a, const bake_opts *o)
     if (rc == SOAK_EXIT_OK && a->exposure_path) {
         const char *paths[1] = {a->exposure_path};
         const soak_image *imgs[1] = {soak_rain_frames_exposure(a->frames)};
-        rc = write_outputs(paths, imgs, 1);
+        rc = write_outputs(paths, imgs, 1, o->float_exr);
     }
     const soak_rain_balance *b = &a->last.balance;
     if (rc == SOAK_EXIT_OK)
@@ -372,7 +379,7 @@ int soak_bake_rain_main(int argc, char **argv)
     if (bake(&a, &o, &res) != SOAK_OK) return SOAK_EXIT_FAIL;
     const char *paths[4] = {o.output, a.exposure_path, a.water_path, a.film_path};
     const soak_image *imgs[4] = {&res.wetness, &res.exposure, &res.water, &res.film};
-    rc = write_outputs(paths, imgs, 4);
+    rc = write_outputs(paths, imgs, 4, o.float_exr);
     if (rc == SOAK_EXIT_OK) printf("%s: %ldx%ld rain wetness from %s\n", o.output, o.width, o.height, a.mesh_path);
     const soak_rain_runoff *r = &res.runoff;
     if (rc == SOAK_EXIT_OK && r->in > 0.0) /* m^3/s -> L/h */

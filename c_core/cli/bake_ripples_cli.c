@@ -21,7 +21,7 @@ typedef struct ripples_job {
 #define F(field) CLI_FIELD(ripples_job, field)
 static const cli_opt ripples_opts[] = {
     {"--rate", NULL, CLI_OPT_DOUBLE, .lo = 1e-6, .hi = 500, F(p.rate_mm_h), .meta = "MM_H",
-     .help = "rain rate, (0, 500] mm/h (default 10)"},
+     .help = "rain rate, (0, 500] mm/h (default 10)" BAKE_DELIVERED_RATE_HELP},
     {"--tile", NULL, CLI_OPT_DOUBLE, .lo = 1e-6, .hi = 100, F(p.tile_m), .meta = "M",
      .help = "side of the square tile in metres (default 0.5)"},
     {"--loop-frames", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RIPPLES_MAX_FRAMES, F(p.frames), .meta = "N",
@@ -29,7 +29,7 @@ static const cli_opt ripples_opts[] = {
     {"--period", NULL, CLI_OPT_DOUBLE, .lo = 1e-6, .hi = 1e4, F(p.period), .meta = "S",
      .help = "loop duration, seconds (default 2.56)"},
     {"--wavelength", NULL, CLI_OPT_DOUBLE, .lo = 1e-6, .hi = 10, F(p.wavelength_m), .meta = "M",
-     .help = "ring carrier wavelength, m (default 0.0171, the slowest capillary-gravity wave)"},
+     .help = "ring carrier wavelength, m (default 2 pi sqrt(sigma / (rho g)) = 0.01713,\nthe slowest capillary-gravity wave, water at 20 C)"},
     {"--ring-width", NULL, CLI_OPT_DOUBLE, .lo = 1e-6, .hi = 10, F(p.width_m), .meta = "M",
      .help = "ring envelope standard deviation, m (default: half a wavelength)"},
     {"--lifetime", NULL, CLI_OPT_DOUBLE, .lo = 1e-6, .hi = 1e3, F(p.lifetime), .meta = "S",
@@ -61,7 +61,10 @@ static void usage(FILE *out)
             "--width (default 512 here) sets its size; frame f is at f * period / loop-frames\n"
             "(--time, --frame-time and --frame-origin do not apply).\n\n"
             "options:\n");
-    const cli_opt_table tables[] = RIPPLES_TABLES(NULL, NULL);
+    cli_opt img[BAKE_SHARED_OPTS_MAX];
+    size_t n = bake_table_help(bake_image_opts, bake_image_opts_n, img, "--width", "tile side in texels, %R (default 512)");
+    bake_table_help(img, n, img, "--height", "the same as --width if given (the tile is square)");
+    const cli_opt_table tables[] = {{img, n, NULL}, CLI_TABLE(ripples_opts, NULL), BAKE_SEQUENCE_TABLE(NULL)};
     cli_opts_help(out, tables, sizeof tables / sizeof tables[0]);
     fprintf(out, "\nexample:\n"
                  "  soak bake ripples --rate 10 --width 512 --frames 0-63 -o ripples.%%04d.exr --far far.%%04d.exr\n");

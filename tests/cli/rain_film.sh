@@ -30,6 +30,15 @@ grep -q "steady rain" "$SOAK_TMP/last.out" && bad "--no-film printed a steady-ra
 expect_exit 2 "--film same as -o" -- "$SOAK" "${P[@]}" --film "$D/same.exr" -o "$D/same.exr"
 expect_stderr "\-\-film" "the refusal names --film"
 [ -e "$D/same.exr" ] && bad "a refused run left output" || ok "the refused run left no output"
+# --float: every map of the single bake as 32-bit EXR (half floats store a 10 um film to ~0.3 %).
+expect_exit 0 "wall with --float" -- "$SOAK" "${P[@]}" --float --film "$D/ffilm.exr" --water "$D/fwater.exr" \
+  --exposure "$D/fexp.exr" -o "$D/fwet.exr"
+for f in fwet ffilm fwater fexp; do
+  oiiotool --info -v "$D/$f.exr" | grep -q "float" && ok "--float: $f.exr is 32-bit float" ||
+    bad "--float: $f.exr is not float: $(oiiotool --info "$D/$f.exr")"
+done
+got=$(oiiotool --dumpdata "$D/ffilm.exr" | sed -n 's/^ *Pixel (16, 31): *//p')
+close "$got" "$want" "$(awk -v w="$want" 'BEGIN { printf "%.3g", 1e-4 * w }')" "--float film at the foot vs Nusselt (1e-4)"
 expect_exit 0 "--help" -- "$SOAK" bake rain --help
 grep -q -- "--no-film" "$SOAK_TMP/last.out" && ok "--help lists --no-film" || bad "--help lacks --no-film"
 finish

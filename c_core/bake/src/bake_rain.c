@@ -12,6 +12,10 @@
 #include "bake_rain_film.h"
 #include "bake_rain_flow.h"
 #include "bake_rain_scene.h"
+#include "bake_rain_surface.h"
+
+static const int *const DX = SOAK_RAIN_DX;
+static const int *const DY = SOAK_RAIN_DY;
 
 void soak_rain_defaults(soak_rain_params *p)
 {
@@ -59,165 +63,6 @@ soak_status soak_rain_check(const soak_rain_params *p)
         !(p->saturation_depth > 0 && p->saturation_depth <= SOAK_RAIN_MAX_SATURATION))
         return SOAK_ERR_ARG;
     return SOAK_OK;
-}
-
-/* ---- step 1: surface sampling ---- */
-
-static const int *const DX = SOAK_RAIN_DX;
-static const int *const DY = SOAK_RAIN_DY;
-
-typedef struct rain_surface {
-    int w, h;
-    int *tri;          /* per texel, -1 = empty */
-    double *pos;       /* 3 per texel */
-    float *nrm;        /* 3 per texel */
-    float *dpdx, *dpdy;/* 3 per texel: world step of one texel in +x, +y (image rows down) */
-    float *area;       /* world area of the texel */
-    double *level;     /* p.up */
-    unsigned char *adj;/* bit d: neighbour d is 3D-adjacent and covered */
-    float *drip;       /* > 0: level drop toward the open edge the water drips off */
-    double mean_texel; /* mean sqrt(area) of covered texels */
-} rain_surface;
-
-static void surface_free(rain_surface *s)
-{
-    free(s->tri);
-    free(s->pos);
-    free(s->nrm);
-    free(s->dpdx);
-    free(s->dpdy);
-    free(s->area);
-    free(s->level);
-    free(s->adj);
-    free(s->drip);
-}
-
-static soak_vec3 vget(const double *a, size_t i)
-{
-    return soak_v3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
-}
-
-static soak_status rasterise(const soak_mesh *m, rain_surface *s, soak_vec3 up)
-{
-    size_t n = (size_t)s->w * s->h;
-    for (size_t i = 0; i < n; ++i) s->tri[i] = -1;
-    for (size_t t = 0; t < m->n_triangles; ++t) {
-        unsigned ix[3] = {m->indices[3 * t], m->indices[3 * t + 1], m->indices[3 * t + 2]};
-        double X[3], Y[3];
-        soak_vec3 P[3];
-        for (int k = 0; k < 3; ++k) {
-            X[k] = m->uvs[2 * ix[k]] * s->w;
-            Y[k] = (1.0 - m->uvs[2 * ix[k] + 1]) * s->h;
-            P[k] = vget(m->positions, ix[k]);
-        }
-        double den = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
-        soak_vec3 cr = soak_v3_cross(soak_v3_sub(P[1], P[0]), soak_v3_sub(P[2], P[0]));
-        double area3 = 0.5 * soak_v3_len(cr);
-        if (!(fabs(den) > 1e-12) || !(area3 > 0.0) || !soak_is_finite(den)) continue; /* degenerate */
-        soak_vec3 ng = soak_v3_scale(cr, 0.5 / area3);
-        if (m->normals) {
-            soak_vec3 vn = soak_v3_add(soak_v3_add(vget(m->normals, ix[0]), vget(m->normals, ix[1])),
-                                       vget(m->normals, ix[2]));
-            if (soak_v3_dot(vn, ng) < 0) ng = soak_v3_scale(ng, -1.0);
-        }
-        double texel_area = area3 / (0.5 * fabs(den));
-        /* World step per texel: solve P = P0 + a (P1-P0) + b (P2-P0) for X, Y. */
-        double ia = 1.0 / den;
-        soak_vec3 e1 = soak_v3_sub(P[1], P[0]), e2 = soak_v3_sub(P[2], P[0]);
-        /* d(a,b)/dX and d(a,b)/dY of the barycentric map. */
-        double dadx = (Y[2] - Y[0]) * ia, dbdx = -(Y[1] - Y[0]) * ia;
-        double dady = -(X[2] - X[0]) * ia, dbdy = (X[1] - X[0]) * ia;
-        soak_vec3 sx = soak_v3_add(soak_v3_scale(e1, dadx), soak_v3_scale(e2, dbdx));
-        soak_vec3 sy = soak_v3_add(soak_v3_scale(e1, dady), soak_v3_scale(e2, dbdy));
-        double xmin = fmin(X[0], fmin(X[1], X[2])), xmax = fmax(X[0], fmax(X[1], X[2]));
-        double ymin = fmin(Y[0], fmin(Y[1], Y[2])), ymax = fmax(Y[0], fmax(Y[1], Y[2]));
-        int x0 = (int)fmax(0.0, floor(xmin - 0.5)), x1 = (int)fmin(s->w - 1.0, ceil(xmax - 0.5));
-        int y0 = (int)fmax(0.0, floor(ymin - 0.5)), y1 = (int)fmin(s->h - 1.0, ceil(ymax - 0.5));
-        const double eps = -1e-9;
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                size_t i = (size_t)y * s->w + x;
-                if (s->tri[i] >= 0) continue;
-                double px = x + 0.5 - X[0], py = y + 0.5 - Y[0];
-                double a = px * dadx + py * dady, b = px * dbdx + py * dbdy;
-                if (a < eps || b < eps || a + b > 1.0 - eps) continue;
-                soak_vec3 p = soak_v3_add(P[0], soak_v3_add(soak_v3_scale(e1, a), soak_v3_scale(e2, b)));
-                s->tri[i] = (int)(t < 0x7fffffff ? t : 0x7fffffff);
-                s->pos[3 * i] = p.x, s->pos[3 * i + 1] = p.y, s->pos[3 * i + 2] = p.z;
-                s->nrm[3 * i] = (float)ng.x, s->nrm[3 * i + 1] = (float)ng.y, s->nrm[3 * i + 2] = (float)ng.z;
-                s->dpdx[3 * i] = (float)sx.x, s->dpdx[3 * i + 1] = (float)sx.y, s->dpdx[3 * i + 2] = (float)sx.z;
-                s->dpdy[3 * i] = (float)sy.x, s->dpdy[3 * i + 1] = (float)sy.y, s->dpdy[3 * i + 2] = (float)sy.z;
-                s->area[i] = (float)texel_area;
-                s->level[i] = soak_v3_dot(p, up);
-            }
-    }
-    return SOAK_OK;
-}
-
-static soak_vec3 fget(const float *a, size_t i)
-{
-    return soak_v3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
-}
-
-typedef struct connect_job {
-    rain_surface *s;
-    soak_vec3 up;
-} connect_job;
-
-/* Neighbour adjacency (covered, and where the UV step says it should be in
- * 3D: not across a UV seam) and the drip edges of row y. */
-static void connect_row(void *ctx, int y, int thread)
-{
-    (void)thread;
-    const connect_job *c = ctx;
-    rain_surface *s = c->s;
-    soak_vec3 up = c->up;
-    for (int x = 0; x < s->w; ++x) {
-        size_t i = (size_t)y * s->w + x;
-        s->adj[i] = 0;
-        s->drip[i] = 0.0f;
-        if (s->tri[i] < 0) continue;
-        soak_vec3 p = vget(s->pos, i), sx = fget(s->dpdx, i), sy = fget(s->dpdy, i), n = fget(s->nrm, i);
-        int best = -1;
-        double best_drop = 0.0;
-        for (int d = 0; d < 8; ++d) {
-            soak_vec3 step = soak_v3_add(soak_v3_scale(sx, DX[d]), soak_v3_scale(sy, DY[d]));
-            double drop = -soak_v3_dot(step, up); /* level decrease along this step */
-            int jx = x + DX[d], jy = y + DY[d];
-            int ok = jx >= 0 && jy >= 0 && jx < s->w && jy < s->h;
-            if (ok) {
-                size_t j = (size_t)jy * s->w + jx;
-                ok = s->tri[j] >= 0 && soak_v3_len(soak_v3_sub(vget(s->pos, j), p)) <= 2.0 * soak_v3_len(step) + 1e-12;
-                if (ok) s->adj[i] |= (unsigned char)(1u << d);
-            }
-            if (drop > best_drop * (1 + 1e-9)) {
-                best_drop = drop;
-                best = d;
-            }
-        }
-        /* Steepest-descent step leaves the surface: an open edge. */
-        if (best >= 0 && !(s->adj[i] >> best & 1u)) s->drip[i] = (float)best_drop;
-        /* Faces down (an overhang): everything mobile drips. A vertical face
-         * (n.up = 0 up to the float normal's rounding) carries its film down. */
-        if (soak_v3_dot(n, up) < -SOAK_RAIN_OVERHANG_TOL) s->drip[i] = -1.0f;
-    }
-}
-
-/* Adjacency and drips by rows in parallel, then the mean texel size as one
- * sum in texel order. */
-static soak_status connect(rain_surface *s, soak_vec3 up, const soak_bake_exec *exec)
-{
-    connect_job c = {s, up};
-    soak_status st = soak_parallel_rows(s->h, exec, connect_row, &c, 0.0, 0.0);
-    double sum = 0.0;
-    long count = 0;
-    for (size_t i = 0; i < (size_t)s->w * s->h; ++i)
-        if (s->tri[i] >= 0) {
-            sum += sqrt(s->area[i]);
-            ++count;
-        }
-    s->mean_texel = count ? sum / (double)count : 0.0;
-    return st;
 }
 
 /* ---- step 2: exposure ---- */
@@ -273,7 +118,7 @@ static double texel_exposure(exposure_job *j, size_t i, ray_batch *b)
 {
     const rain_surface *s = j->s;
     int N = j->p->rays;
-    soak_vec3 p = vget(s->pos, i), n = fget(s->nrm, i), t, bt;
+    soak_vec3 p = soak_rain_vget(s->pos, i), n = soak_rain_fget(s->nrm, i), t, bt;
     soak_v3_basis(n, &t, &bt);
     b->org[0] = soak_geometry_offset(p, n, n);
     b->org[1] = soak_geometry_offset(p, n, soak_v3_scale(n, -1.0));
@@ -377,7 +222,8 @@ static soak_status add_film(const rain_surface *s, const soak_rain_params *p, co
     if (!up_dot_n) return SOAK_ERR_NOMEM;
     soak_vec3 up = soak_v3_norm(p->up);
     soak_rain_flow_balance b;
-    for (size_t i = 0; i < n; ++i) up_dot_n[i] = s->tri[i] >= 0 ? (float)soak_v3_dot(fget(s->nrm, i), up) : 1.0f;
+    for (size_t i = 0; i < n; ++i)
+        up_dot_n[i] = s->tri[i] >= 0 ? (float)soak_v3_dot(soak_rain_fget(s->nrm, i), up) : 1.0f;
     soak_status st = soak_rain_film_map(grid, up_dot_n, exposure, p->rainfall_mm_h / 3.6e6,
                                         p->evaporation_mm_h / 3.6e6, film, &b);
     if (st == SOAK_OK) *runoff = (soak_rain_runoff){b.in, b.dripped, b.held, b.lost};
@@ -454,13 +300,13 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
     unsigned char *covered = malloc(n);
     water_flow f;
     memset(&f, 0, sizeof f);
-    soak_rain_flow_grid grid = {s->w, s->h, covered, s->adj, s->area, s->drip, s->level, j.retain};
+    soak_rain_flow_grid grid = {s->w, s->h, covered, s->adj, s->area, s->drip, s->level, j.retain, s->descent};
     f.grid = &grid;
     soak_status st = j.deposit && j.retain && covered ? SOAK_OK : SOAK_ERR_NOMEM;
     soak_vec3 up = soak_v3_norm(p->up);
     for (size_t i = 0; i < n && st == SOAK_OK; ++i) {
         covered[i] = s->tri[i] >= 0;
-        j.retain[i] = covered[i] ? p->retention * fmax(0.0, soak_v3_dot(fget(s->nrm, i), up)) : 0.0;
+        j.retain[i] = covered[i] ? p->retention * fmax(0.0, soak_v3_dot(soak_rain_fget(s->nrm, i), up)) : 0.0;
     }
     if (st == SOAK_OK) st = prepare_film(s, p, exposure, &j, &f, film, runoff);
     if (st == SOAK_OK) st = soak_rain_flow_create(&grid, exec, SOAK_RAIN_FLOW_AUTO, &f.plan);
@@ -586,64 +432,6 @@ static soak_status build_geometry(const soak_mesh *mesh, soak_geometry **g, char
     return st;
 }
 
-static soak_status surface_alloc(rain_surface *s, int w, int h)
-{
-    memset(s, 0, sizeof *s);
-    s->w = w;
-    s->h = h;
-    size_t n = (size_t)w * h;
-    s->tri = malloc(n * sizeof *s->tri);
-    s->pos = malloc(3 * n * sizeof *s->pos);
-    s->nrm = malloc(3 * n * sizeof *s->nrm);
-    s->dpdx = malloc(3 * n * sizeof *s->dpdx);
-    s->dpdy = malloc(3 * n * sizeof *s->dpdy);
-    s->area = malloc(n * sizeof *s->area);
-    s->level = malloc(n * sizeof *s->level);
-    s->adj = malloc(n);
-    s->drip = malloc(n * sizeof *s->drip);
-    if (!s->tri || !s->pos || !s->nrm || !s->dpdx || !s->dpdy || !s->area || !s->level || !s->adj || !s->drip) {
-        surface_free(s);
-        return SOAK_ERR_NOMEM;
-    }
-    return SOAK_OK;
-}
-
-/* Texture coordinates beyond this are not a texture layout but corrupt data
- * (a UV of 1e30 was called "not finite"). */
-#define SOAK_RAIN_UV_MAX 1e6
-
-static soak_status check_mesh(const soak_mesh *m, char *err, size_t errlen)
-{
-    if (!m->positions || !m->indices || m->n_triangles == 0 || m->n_vertices == 0) {
-        if (err && errlen) snprintf(err, errlen, "mesh has no triangles");
-        return SOAK_ERR_ARG;
-    }
-    if (!m->uvs) {
-        if (err && errlen) snprintf(err, errlen, "mesh has no UVs: the rain bake needs texture coordinates");
-        return SOAK_ERR_ARG;
-    }
-    for (size_t i = 0; i < 3 * m->n_triangles; ++i)
-        if (m->indices[i] >= m->n_vertices) {
-            if (err && errlen) snprintf(err, errlen, "mesh index %zu out of range", i);
-            return SOAK_ERR_ARG;
-        }
-    for (size_t i = 0; i < m->n_vertices; ++i) {
-        for (int k = 0; k < 3; ++k)
-            if (!soak_is_finite(m->positions[3 * i + k])) {
-                if (err && errlen) snprintf(err, errlen, "mesh vertex %zu is not finite", i);
-                return SOAK_ERR_ARG;
-            }
-        if (!soak_in_range(m->uvs[2 * i], -SOAK_RAIN_UV_MAX, SOAK_RAIN_UV_MAX) ||
-            !soak_in_range(m->uvs[2 * i + 1], -SOAK_RAIN_UV_MAX, SOAK_RAIN_UV_MAX)) {
-            if (err && errlen)
-                snprintf(err, errlen, "mesh UV %zu (%g, %g) is out of range: UVs must be finite and within [-%g, %g]",
-                         i, m->uvs[2 * i], m->uvs[2 * i + 1], SOAK_RAIN_UV_MAX, SOAK_RAIN_UV_MAX);
-            return SOAK_ERR_ARG;
-        }
-    }
-    return SOAK_OK;
-}
-
 /* Steps 1 and 2: the surface of mesh and its sky exposure (allocated into
  * *exposure); on error neither is kept. */
 static soak_status surface_and_exposure(const soak_mesh *mesh, int width, int height, const soak_rain_params *p,
@@ -657,12 +445,12 @@ static soak_status surface_and_exposure(const soak_mesh *mesh, int width, int he
     }
     if ((st = soak_bake_check_size(width, height)) != SOAK_OK) return st;
     if (exec && soak_bake_threads(exec) == 0) return SOAK_ERR_ARG;
-    if ((st = check_mesh(mesh, err, errlen)) != SOAK_OK) return st;
+    if ((st = soak_rain_check_mesh(mesh, err, errlen)) != SOAK_OK) return st;
     soak_vec3 up = soak_v3_norm(p->up);
-    if ((st = surface_alloc(s, width, height)) != SOAK_OK) return st;
-    rasterise(mesh, s, up);
+    if ((st = soak_rain_surface_alloc(s, width, height)) != SOAK_OK) return st;
+    soak_rain_surface_rasterise(mesh, s, up);
     soak_geometry *g = NULL;
-    st = connect(s, up, exec);
+    st = soak_rain_surface_connect(s, up, exec);
     if (st == SOAK_OK) st = build_geometry(mesh, &g, err, errlen);
     if (st == SOAK_OK) st = soak_image_alloc(exposure, width, height, 1);
     if (st == SOAK_OK) {
@@ -682,7 +470,7 @@ static soak_status surface_and_exposure(const soak_mesh *mesh, int width, int he
         if (st != SOAK_OK) soak_image_free(exposure);
     }
     soak_geometry_destroy(g);
-    if (st != SOAK_OK) surface_free(s);
+    if (st != SOAK_OK) soak_rain_surface_free(s);
     return st;
 }
 
@@ -719,7 +507,7 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
     }
     free(depth);
     free(film);
-    surface_free(&s);
+    soak_rain_surface_free(&s);
     if (st != SOAK_OK) {
         soak_rain_result_free(&r);
         return st;
@@ -738,6 +526,7 @@ void soak_rain_scene_free(soak_rain_scene *sc)
     free(sc->area);
     free(sc->drip);
     free(sc->level);
+    free(sc->descent);
     free(sc->up_dot_n);
     soak_image_free(&sc->exposure);
     memset(sc, 0, sizeof *sc);
@@ -754,17 +543,17 @@ soak_status soak_rain_scene_build(const soak_mesh *mesh, int width, int height, 
     size_t n = (size_t)width * height;
     out->w = width, out->h = height;
     out->covered = malloc(n), out->up_dot_n = malloc(n * sizeof *out->up_dot_n);
-    out->adj = s.adj, out->area = s.area, out->drip = s.drip, out->level = s.level;
-    s.adj = NULL, s.area = NULL, s.drip = NULL, s.level = NULL;
+    out->adj = s.adj, out->area = s.area, out->drip = s.drip, out->level = s.level, out->descent = s.descent;
+    s.adj = NULL, s.area = NULL, s.drip = NULL, s.level = NULL, s.descent = NULL;
     soak_vec3 up = soak_v3_norm(p->up);
     if (out->covered && out->up_dot_n)
         for (size_t i = 0; i < n; ++i) {
             out->covered[i] = s.tri[i] >= 0;
-            out->up_dot_n[i] = s.tri[i] >= 0 ? (float)soak_v3_dot(fget(s.nrm, i), up) : 1.0f;
+            out->up_dot_n[i] = s.tri[i] >= 0 ? (float)soak_v3_dot(soak_rain_fget(s.nrm, i), up) : 1.0f;
         }
     else
         st = SOAK_ERR_NOMEM;
-    surface_free(&s);
+    soak_rain_surface_free(&s);
     if (st != SOAK_OK) soak_rain_scene_free(out);
     return st;
 }

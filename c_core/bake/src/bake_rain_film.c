@@ -38,7 +38,7 @@ soak_status soak_rain_film_map(const soak_rain_flow_grid *g, const float *up_dot
         film[i] = 0.0;
         if (!g->covered[i] || !(g->area[i] > 0.0f)) continue;
         double c = up_dot_n[i], s2 = 1.0 - c * c;
-        film[i] = soak_rain_film_thickness(discharge[i] / sqrt(g->area[i]), sqrt(s2 > 0.0 ? s2 : 0.0));
+        film[i] = soak_rain_film_thickness(discharge[i] / soak_rain_flow_width(g, i), sqrt(s2 > 0.0 ? s2 : 0.0));
     }
     free(source);
     free(discharge);

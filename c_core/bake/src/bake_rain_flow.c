@@ -1,9 +1,12 @@
 /* Fused downhill-flow sweeps of the rain bake (bake_rain_flow.h). */
 #include "bake_rain_flow.h"
 
+#include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "soak/vec.h"
 
 #include "bake_rain_flow_rows.h"
 
@@ -281,6 +284,95 @@ soak_status soak_rain_flow(const soak_rain_flow_grid *g, double *depth, int iter
     return st;
 }
 
+/* The index of neighbour d of texel i (it must exist). */
+static size_t neighbour(const soak_rain_flow_grid *g, size_t i, int d)
+{
+    return (size_t)((ptrdiff_t)i + (ptrdiff_t)SOAK_RAIN_DY[d] * g->w + SOAK_RAIN_DX[d]);
+}
+
+/* Shares below this go to the other neighbour: a direction along a grid
+ * axis or diagonal sends to one texel, not a rounding error to its side. */
+#define DESCENT_SHARE_MIN 1e-6
+
+/* Whether the surface's edge at texel i faces down the descent (a, b) (water
+ * runs off it) rather than along it: the outward direction, the sum of the
+ * steps to the neighbours that are not adjacent, within 60 deg of the
+ * descent. */
+static int edge_faces_downhill(const soak_rain_flow_grid *g, size_t i, double a, double b)
+{
+    double ox = 0.0, oy = 0.0;
+    for (int d = 0; d < 8; ++d)
+        if (!(g->adj[i] >> d & 1u)) ox += SOAK_RAIN_DX[d], oy += SOAK_RAIN_DY[d];
+    double dot = ox * a + oy * b, len = sqrt((ox * ox + oy * oy) * (a * a + b * b));
+    return !(len > 0.0) || dot > 0.5 * len;
+}
+
+/* The steepest descent's two-neighbour split (the D-infinity routing of
+ * Tarboton 1997, Water Resources Research 33(2), 309-319, with the
+ * direction from the surface's own gradient instead of a facet fit):
+ * direction d points at angle 45 d degrees (x right, y up the image), and
+ * what leaves i goes to the two directions bracketing the descent angle in
+ * proportion to closeness. A share whose texel is off the surface drips
+ * (an open edge, a seam) where the edge faces down the slope; along an edge
+ * parallel to the flow it goes to the other texel (the stream stays on the
+ * surface). 0 (use the level drops) where the texel is level or a target is
+ * not lower. */
+static int descent_drops(const soak_rain_flow_grid *g, size_t i, double diff[9], double *sum)
+{
+    if (!g->descent) return 0;
+    double a = g->descent[2 * i], b = g->descent[2 * i + 1];
+    if (!(a * a + b * b > 0.0)) return 0;
+    double t = atan2(-b, a) / (0.25 * SOAK_PI);
+    t = t < 0.0 ? t + 8.0 : t;
+    int k = (int)t;
+    double f = t - k;
+    k &= 7;
+    int to[2] = {k, (k + 1) & 7};
+    double share[2] = {1.0 - f, f};
+    if (share[1] < DESCENT_SHARE_MIN) share[0] = 1.0, share[1] = 0.0;
+    if (share[0] < DESCENT_SHARE_MIN) share[0] = 0.0, share[1] = 1.0;
+    for (int d = 0; d < 9; ++d) diff[d] = 0.0;
+    int on[2] = {g->adj[i] >> to[0] & 1u, g->adj[i] >> to[1] & 1u};
+    if (on[0] != on[1] && !edge_faces_downhill(g, i, a, b)) /* running along an edge: stays on the surface */
+        share[on[1]] = 1.0, share[!on[1]] = 0.0;
+    for (int s = 0; s < 2; ++s) {
+        if (!(share[s] > 0.0)) continue;
+        if (!on[s]) { /* across an open edge (or a seam): this share drips */
+            diff[8] += share[s];
+            continue;
+        }
+        if (!(g->level[neighbour(g, i, to[s])] < g->level[i])) return 0;
+        diff[to[s]] = share[s];
+    }
+    *sum = 1.0;
+    return 1;
+}
+
+/* The routing's drops from texel i on the dry surface (levels without the
+ * water): the steepest descent's split where it applies, else diff and
+ * their sum as route_drops gives them; 0 where nothing is lower (a pit or
+ * flat). */
+static int dry_drops(const soak_rain_flow_grid *g, size_t i, double diff[9], double *sum)
+{
+    if (descent_drops(g, i, diff, sum)) return 1;
+    int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
+    double nb[8], mx;
+    for (int d = 0; d < 8; ++d)
+        nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
+    route_drops(g, i, g->level[i], nb, 0.0, diff, sum, &mx);
+    return *sum > 0.0;
+}
+
+/* Spreads q over the lower neighbours of i in the shares diff / sum into
+ * inflow; returns the share that drips off. */
+static double spread(const soak_rain_flow_grid *g, size_t i, double q, const double diff[9], double sum,
+                     double *inflow)
+{
+    for (int d = 0; d < 8; ++d)
+        if (diff[d] > 0.0) inflow[neighbour(g, i, d)] += q * diff[d] / sum;
+    return q * diff[8] / sum;
+}
+
 /* ---- steady discharge: the same routing, every texel passing on all it gets ---- */
 
 typedef struct level_order {
@@ -327,18 +419,12 @@ static void pass_on(const soak_rain_flow_grid *g, size_t i, double got, double l
         b->dripped += q;
         return;
     }
-    int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
-    double nb[8], diff[9], sum, mx;
-    for (int d = 0; d < 8; ++d)
-        nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
-    route_drops(g, i, g->level[i], nb, 0.0, diff, &sum, &mx);
-    if (!(sum > 0.0)) {
+    double diff[9], sum;
+    if (!dry_drops(g, i, diff, &sum)) {
         b->held += q;
         return;
     }
-    for (int d = 0; d < 8; ++d)
-        if (diff[d] > 0.0) inflow[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] += q * diff[d] / sum;
-    b->dripped += q * diff[8] / sum;
+    b->dripped += spread(g, i, q, diff, sum, inflow);
 }
 
 soak_status soak_rain_flow_discharge(const soak_rain_flow_grid *g, const double *source, double loss,
@@ -347,27 +433,21 @@ soak_status soak_rain_flow_discharge(const soak_rain_flow_grid *g, const double 
     if (!g || !source || !discharge || !balance) return SOAK_ERR_NULL;
     if (g->w < 1 || g->h < 1 || !(loss >= 0.0 && loss < 1e300)) return SOAK_ERR_ARG;
     if (!g->covered || !g->adj || !g->area || !g->drip || !g->level) return SOAK_ERR_NULL;
-    size_t n = (size_t)g->w * g->h, m = 0;
-    size_t *idx = malloc(n * sizeof *idx), *tmp = malloc(n * sizeof *tmp);
+    size_t n = (size_t)g->w * g->h, m = 0, *idx = NULL;
     double *inflow = calloc(n, sizeof *inflow);
-    if (!idx || !tmp || !inflow) {
-        free(idx);
-        free(tmp);
+    soak_status st = inflow ? soak_rain_flow_order(g, &idx, &m) : SOAK_ERR_NOMEM;
+    if (st != SOAK_OK) {
         free(inflow);
-        return SOAK_ERR_NOMEM;
+        return st;
     }
     memset(balance, 0, sizeof *balance);
     for (size_t i = 0; i < n; ++i) {
         discharge[i] = 0.0;
-        if (!g->covered[i]) continue;
-        idx[m++] = i;
-        balance->in += source[i];
+        if (g->covered[i]) balance->in += source[i];
     }
-    sort_by_level(idx, tmp, m, g->level);
     for (size_t k = 0; k < m; ++k) /* every share goes strictly downhill: to a texel later in the order */
         pass_on(g, idx[k], source[idx[k]] + inflow[idx[k]], loss, inflow, discharge, balance);
     free(idx);
-    free(tmp);
     free(inflow);
     return SOAK_OK;
 }
@@ -410,18 +490,12 @@ static double cascade_texel(const soak_rain_flow_grid *g, const unsigned char *f
     depth[i] = g->retain[i];
     double q = have - keep;
     if (g->drip[i] < 0.0f) return q;
-    int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
-    double nb[8], diff[9], sum, mx;
-    for (int d = 0; d < 8; ++d)
-        nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
-    route_drops(g, i, g->level[i], nb, 0.0, diff, &sum, &mx);
-    if (!(sum > 0.0)) {
+    double diff[9], sum;
+    if (!dry_drops(g, i, diff, &sum)) {
         depth[i] = have / a;
         return 0.0;
     }
-    for (int d = 0; d < 8; ++d)
-        if (diff[d] > 0.0) inflow[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] += q * diff[d] / sum;
-    return q * diff[8] / sum;
+    return spread(g, i, q, diff, sum, inflow);
 }
 
 soak_status soak_rain_flow_cascade(const soak_rain_flow_grid *g, const unsigned char *fast, const size_t *order,
@@ -443,12 +517,18 @@ int soak_rain_flow_shares(const soak_rain_flow_grid *g, size_t i, double share[9
         share[8] = 1.0;
         return 1;
     }
-    int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
-    double nb[8], diff[9], sum, mx;
-    for (int d = 0; d < 8; ++d)
-        nb[d] = g->adj[i] >> d & 1u ? g->level[(size_t)(y + SOAK_RAIN_DY[d]) * g->w + (x + SOAK_RAIN_DX[d])] : 0.0;
-    route_drops(g, i, g->level[i], nb, 0.0, diff, &sum, &mx);
-    if (!(sum > 0.0)) return 0;
+    double diff[9], sum;
+    if (!dry_drops(g, i, diff, &sum)) return 0;
     for (int d = 0; d < 9; ++d) share[d] = diff[d] / sum;
     return 1;
+}
+
+double soak_rain_flow_width(const soak_rain_flow_grid *g, size_t i)
+{
+    double area = g->area[i];
+    if (g->descent) {
+        double a = fabs(g->descent[2 * i]), b = fabs(g->descent[2 * i + 1]), m = a > b ? a : b;
+        if (m > 0.0) return area * m;
+    }
+    return sqrt(area);
 }

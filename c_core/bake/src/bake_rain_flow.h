@@ -29,6 +29,8 @@ typedef struct soak_rain_flow_grid {
     const float *drip;            /* > 0: level drop toward an open edge; < 0: faces down */
     const double *level;          /* p.up */
     const double *retain;         /* film depth kept */
+    const float *descent;         /* 2 per texel, the steepest descent in texel steps (x right, y down) per
+                                     metre run, (0, 0) where level; NULL: route by level drops only */
 } soak_rain_flow_grid;
 
 /* What a run of sweeps needs besides the depths, made once per grid: who
@@ -94,5 +96,10 @@ soak_status soak_rain_flow_cascade(const soak_rain_flow_grid *g, const unsigned 
  * surface (an open edge; all of it where the texel faces down). Returns 0
  * (all shares 0) where nothing is lower: a pit or flat. */
 int soak_rain_flow_shares(const soak_rain_flow_grid *g, size_t i, double share[9]);
+
+/* The width of the stream texel i carries (m): its area over the run of
+ * one texel step along the steepest descent (area * max(|a|, |b|) of the
+ * descent), sqrt(area) where there is no descent direction. */
+double soak_rain_flow_width(const soak_rain_flow_grid *g, size_t i);
 
 #endif

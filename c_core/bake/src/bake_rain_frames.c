@@ -67,7 +67,7 @@ static soak_status film_faces(soak_rain_frames *f)
         double c = sc->up_dot_n[i], s2 = 1.0 - c * c;
         f->kappa[i] = 0.0;
         if (!(film[i] > 0.0 && film[i] >= f->retain[i])) continue;
-        f->kappa[i] = soak_rain_wave_kappa(sc->area[i], sqrt(s2 > 0.0 ? s2 : 0.0));
+        f->kappa[i] = soak_rain_wave_kappa(soak_rain_flow_width(&f->grid, i), sqrt(s2 > 0.0 ? s2 : 0.0));
         f->retain[i] = FILM_TEXEL_RETAIN;
     }
     free(film);
@@ -85,7 +85,7 @@ static soak_status frames_alloc(soak_rain_frames *f, const soak_bake_exec *exec)
     f->cut.depth = malloc(n * sizeof *f->cut.depth);
     if (!f->retain || !f->kappa || !f->source || !f->inflow || !f->now.depth || !f->cut.depth) return SOAK_ERR_NOMEM;
     f->grid = (soak_rain_flow_grid){f->sc.w, f->sc.h, f->sc.covered, f->sc.adj, f->sc.area, f->sc.drip, f->sc.level,
-                                    f->retain};
+                                    f->retain, f->sc.descent};
     soak_status st = film_faces(f);
     if (st == SOAK_OK) st = soak_rain_flow_order(&f->grid, &f->order, &f->count);
     if (st == SOAK_OK) st = soak_rain_flow_create(&f->grid, exec, SOAK_RAIN_FLOW_AUTO, &f->plan);

@@ -12,6 +12,7 @@ typedef struct soak_rain_scene {
     float *area;            /* world area of the texel */
     float *drip;            /* > 0: level drop toward an open edge; < 0: faces down */
     double *level;          /* p.up */
+    float *descent;         /* 2 per texel: steepest descent in texel steps */
     float *up_dot_n;        /* n.up (1 on uncovered texels) */
     soak_image exposure;    /* step 2 */
 } soak_rain_scene;

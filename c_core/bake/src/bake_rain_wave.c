@@ -6,11 +6,11 @@
 
 #include "soak/bake_rain.h"
 
-double soak_rain_wave_kappa(double area, double sin_theta)
+double soak_rain_wave_kappa(double width, double sin_theta)
 {
-    if (!(sin_theta > 0.0) || !(area > 0.0)) return 0.0;
+    if (!(sin_theta > 0.0) || !(width > 0.0)) return 0.0;
     double s = sin_theta < 1.0 ? sin_theta : 1.0;
-    return sqrt(area) * SOAK_RAIN_WATER_DENSITY * SOAK_RAIN_GRAVITY * s / (3.0 * SOAK_RAIN_WATER_VISCOSITY);
+    return width * SOAK_RAIN_WATER_DENSITY * SOAK_RAIN_GRAVITY * s / (3.0 * SOAK_RAIN_WATER_VISCOSITY);
 }
 
 /* Newton from above on the convex, increasing f(h) = area h + c h^3 -

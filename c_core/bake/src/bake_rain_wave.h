@@ -5,10 +5,11 @@
 
 #include "bake_rain_flow.h"
 
-/* kappa (m^3/s per m^3 of h^3) of a film texel of area `area` at sin_theta:
- * its outflow is kappa h^3, Nusselt's q = rho g sin theta h^3 / (3 mu) per
- * unit width times the width sqrt(area). 0 for sin_theta <= 0 or NaN. */
-double soak_rain_wave_kappa(double area, double sin_theta);
+/* kappa (m^3/s per m^3 of h^3) of a film texel carrying a stream `width`
+ * wide (soak_rain_flow_width) at sin_theta: its outflow is kappa h^3,
+ * Nusselt's q = rho g sin theta h^3 / (3 mu) per unit width times the
+ * width. 0 for sin_theta <= 0 or NaN. */
+double soak_rain_wave_kappa(double width, double sin_theta);
 
 /* Depth h >= 0 (m) with area * h + c * h^3 = volume (c = dt * kappa >= 0,
  * volume >= 0): the implicit step of one texel. */

@@ -193,6 +193,11 @@ soak_status encode_image(const char *path, const char *ext_c, const soak_image *
     if (o.tone == SOAK_TONE_SRGB) spec.attribute("oiio:ColorSpace", "sRGB");
     else spec.attribute("oiio:ColorSpace", "Linear");
     if (ext == "exr") spec.attribute("compression", "zip");
+    // Our four-channel maps are data with a straight alpha (ripples: normal
+    // and height). Without this OIIO takes RGB as premultiplied and divides
+    // it by alpha when writing PNG (unpremultiplied by format), which made
+    // the ripples' stored normals up to 0.73 too long (issue 48).
+    if (img->channels == 4) spec.attribute("oiio:UnassociatedAlpha", 1);
     // An empty DateTime keeps OIIO's EXR and TIFF writers from stamping the
     // clock into the file: the same pixels give the same bytes.
     spec.attribute("DateTime", "");

@@ -198,7 +198,7 @@ static void test_discharge_balance(void)
     soak_rng r;
     soak_rng_seed(&r, 37, 39);
     grid_fill(&d, w, h, &r);
-    soak_rain_flow_grid g = {w, h, d.covered, d.adj, d.area, d.drip, d.level, retain};
+    soak_rain_flow_grid g = {w, h, d.covered, d.adj, d.area, d.drip, d.level, retain, NULL};
     const double loss = 2e-4; /* m/s: a strong evaporation, so some texels run dry */
     soak_rain_flow_balance b;
     if (!check_status("discharge", soak_rain_flow_discharge(&g, d.source, loss, d.discharge, &b), SOAK_OK)) return;
@@ -244,7 +244,7 @@ static void test_cascade_balance(void)
         depth[i] = before[i] = d.covered[i] ? 2e-4 * soak_rng_uniform(&r) : 0.0;
         fast[i] = soak_rng_uniform(&r) < 0.8;
     }
-    soak_rain_flow_grid g = {w, h, d.covered, d.adj, d.area, d.drip, d.level, retain};
+    soak_rain_flow_grid g = {w, h, d.covered, d.adj, d.area, d.drip, d.level, retain, NULL};
     double dripped = 0.0, v0 = 0.0, v1 = 0.0;
     if (!check_status("cascade order", soak_rain_flow_order(&g, &order, &count), SOAK_OK) ||
         !check_status("cascade", soak_rain_flow_cascade(&g, fast, order, count, depth, inflow, &dripped), SOAK_OK))

@@ -175,7 +175,7 @@ static void compare(int w, int h, int iterations, int drips, int charts, uint64_
         snprintf(what, sizeof what, "reference conserves volume without drips (%dx%d, %d sweeps)", w, h, iterations);
         check_rel(what, volume(&d, ref), v0, 1e-6);
     }
-    soak_rain_flow_grid g = {w, h, d.covered, d.adj, d.area, d.drip, d.level, d.retain};
+    soak_rain_flow_grid g = {w, h, d.covered, d.adj, d.area, d.drip, d.level, d.retain, NULL};
     double moved = 0.0;
     for (size_t i = 0; i < n; ++i) moved = fmax(moved, fabs(ref[i] - d.depth[i]));
     snprintf(what, sizeof what, "water moves in the reference (%dx%d)", w, h);
@@ -226,7 +226,7 @@ int main(void)
     compare(11, 9, 9, 1, 0, 19);   /* a group of eight and three texels left */
     compare(83, 70, 20, 1, 1, 13); /* charts: interiors, dry runs, uncovered runs */
     compare(80, 40, 20, 0, 1, 17);
-    soak_rain_flow_grid g = {4, 4, NULL, NULL, NULL, NULL, NULL, NULL};
+    soak_rain_flow_grid g = {4, 4, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
     check_status("NULL depth refused", soak_rain_flow(&g, NULL, 1, NULL, 0, 1), SOAK_ERR_NULL);
     soak_rain_flow_plan *plan = NULL;
     check_status("grid without arrays refused", soak_rain_flow_create(&g, NULL, SOAK_RAIN_FLOW_AUTO, &plan), SOAK_ERR_NULL);

@@ -193,12 +193,12 @@ static void test_shock(void)
         drip[y] = y + 1 == ROWS ? (float)a : 0.0f; /* the foot: an open edge */
         level[y] = -a * y;
         retain[y] = 0.0;
-        kappa[y] = soak_rain_wave_kappa(area[y], 1.0);
+        kappa[y] = soak_rain_wave_kappa(sqrt(area[y]), 1.0);
         source[y] = y == 0 ? q * sqrt(area[0]) : 0.0;
         depth[y] = 0.0;
         order[y] = (size_t)y;
     }
-    soak_rain_flow_grid g = {1, ROWS, covered, adj, area, drip, level, retain};
+    soak_rain_flow_grid g = {1, ROWS, covered, adj, area, drip, level, retain, NULL};
     double hs = cbrt(3.0 * MU * q / (RHO * G)), U = q / hs, us = RHO * G * hs * hs / (2.0 * MU);
     double t = 0.6 * ROWS * a / U, dt = t / 2000, dripped = 0.0, out = 0.0;
     for (int k = 0; k < 2000; ++k) {

@@ -64,11 +64,23 @@
  *      Water at 20 C: mu = 1.002e-3 Pa s, rho = 998.2 kg/m^3; g = 9.80665.
  *      q per texel comes from the steady discharge Q (m^3/s) of the same
  *      routing as the flow (soak_rain_flow_discharge, private): each texel
- *      receives rainfall * E * A, loses evaporation * A, passes the rest to
- *      its lower neighbours in the routing's shares, drips it off open edges
- *      and down-facing texels, or holds it (pits); q = Q / sqrt(A) (the
- *      texel's width across the flow; exact for uniform flow on a plane along
- *      a texel axis and, with the routing's shares, along a diagonal). The
+ *      receives rainfall * E * A, loses evaporation * A, passes the rest
+ *      along the surface's steepest descent, drips it off open edges and
+ *      down-facing texels, or holds it (pits). The descent is gravity
+ *      projected on the surface, -(up - (up.n) n), mapped into texel steps
+ *      through the UV Jacobian (least squares on dpdx, dpdy), and split
+ *      between the two of the 8 neighbours whose directions bracket it, in
+ *      proportion to the angle (the D-infinity routing of D. G. Tarboton,
+ *      "A new method for the determination of flow directions and upslope
+ *      areas in grid digital elevation models", Water Resour. Res. 33(2)
+ *      (1997) 309-319, with the direction from the surface's own gradient);
+ *      a share crossing an edge that faces down the slope drips, one
+ *      crossing an edge along the flow goes to the other texel; level
+ *      texels (|g_t| < 1e-6) and targets that are not lower fall back to
+ *      the level drops of the sweeps. q = Q / width with width = A * (texel
+ *      steps per metre along the descent's larger texel axis): the stream's
+ *      width across the flow, exact on a plane along an axis or a diagonal
+ *      of the grid and for stretched texels. The
  *      film is kept as the texel's retention (the larger of the two), so
  *      the water of the time loop fills it, the flow passes what exceeds it
  *      on downhill, and mass is conserved. The film moves at u_s, 5-20 mm/s
