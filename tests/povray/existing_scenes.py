@@ -1,0 +1,176 @@
+"""POV-Ray's own sample scenes (Debian's povray-examples), wetted by the three
+steps of povray/README.md "Wet your own scene" and otherwise unchanged:
+  1. dry = original: each scene with Soak's layer at wetness 0 (Soak_Wet_Layer)
+     and with a varying wetness that is 0 everywhere (Soak_Wet_Existing_Fn)
+     renders like the untouched scene within 1 % per channel (max over pixels,
+     relative to the pixel, floor 0.01 absolute for near-black pixels);
+  2. wet darker by the core's ratio: with the film's reflection and glint off
+     (Soak_Film = 0, a setting for checks) the wet object over the dry one,
+     the median over the object's pixels per channel, lies in the band of the
+     core's ratio from the JSON export (`soak export --target json`: the
+     base_colour table, bilinear, at the dry albedo given, times the preset's
+     view factor at w over the one at 0, for view angles 0..80 deg), widened by
+     2 % (half-float output, POV-Ray's aoi map lerped in angle);
+  3. wet with film: darker than dry on the object's median, and not black.
+Prints each scene's parse and trace CPU time (POV-Ray's statistics), original
+against wet, for the README's table; the timings are not asserted.
+Exits 77 (SKIPPED) when povray-examples is not installed.
+
+usage: existing_scenes.py SOAK ROOT TMPDIR [--images DIR]"""
+import os
+import re
+import shutil
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from soakpov import export_json, fail, povray, read_image, setup_args  # noqa: E402
+
+EXAMPLES = "/usr/share/doc/povray/examples"
+
+# (name, scene file, where to add the layer (regex; the layer goes right after the match),
+#  preset, dry albedo (the texture's pigment x its diffuse), wetness, gamma, what the ratio check
+#  removes from both renders: the scene's own mirror reflection (POV-Ray does not filter a lower
+#  layer's reflection: it stays as it was), fog (light the surface does not shade) and radiosity
+#  (the wet floor's darker bounce changes the walls: the band holds for the floor's own pixels))
+SCENES = [
+    ("woodbox", "advanced/woodbox.pov",
+     r"(translate z\*4\s*\n\s*\})", "oak", (0.30, 0.16, 0.07), 0.7, 1.2,
+     [("reflection 0.25", "")]),
+    ("patio", "radiosity/patio-radio_37.pov",
+     r"(plane \{y,0 pigment \{color rgb <0\.776,0\.706,0\.706>\})", "concrete", (0.466, 0.424, 0.424), 0.8, 1.0,
+     [("\nfog {", "\n#declare Soak_Test_No_Fog = fog {"), ("#declare Rad_Quality = 2;", "#declare Rad_Quality = 0;")]),
+    ("brickwall", "advanced/wallstucco.pov",
+     r"(object \{HF_Wall  translate <0,0,-0.8>)", "brick", (0.30, 0.18, 0.15), 0.8, 1.0,
+     []),
+]
+STATS = re.compile(r"(Parse|Trace) Time:.*?with ([0-9.]+) CPU-seconds", re.S)
+
+
+def skip(reason):
+    print(f"SKIPPED: {reason}")
+    sys.exit(77)
+
+
+def stats(log):
+    t = {k: float(v) for k, v in STATS.findall(log)}
+    return t.get("Parse", float("nan")), t.get("Trace", float("nan"))
+
+
+def scene_text(src, where, layer, gamma):
+    text = open(src).read()
+    head = f'#include "soak.inc"\nSoak_Check_Gamma({gamma})\n'
+    text, n = re.subn(where, lambda m: m.group(1) + "\n " + layer + "\n", text, count=1)
+    if n != 1:
+        fail(f"{src}: the object to wet ({where}) is not in the scene any more")
+    # step 1 of the README: include soak.inc after the scene's #version line
+    m = re.search(r"#version[^;]*;\n", text)
+    pos = m.end() if m else 0
+    return text[:pos] + head + text[pos:]
+
+
+def render(tmp, tag, text, lib, w, h, extra=()):
+    pov = os.path.join(tmp, f"{tag}.pov")
+    with open(pov, "w") as f:
+        f.write(text)
+    out = os.path.join(tmp, f"{tag}.exr")
+    rc, log = povray(pov, out, w, h, lib, extra=extra, cwd=tmp)
+    if rc != 0:
+        fail(f"{tag}: povray exit {rc}\n{log[-2000:]}")
+    return read_image(out), stats(log), log
+
+
+def core_band(exp, preset, w, dry):
+    """min, max per channel over view angles 0..80 deg of the core's wet/dry ratio."""
+    m = next(m for m in exp["materials"] if m["name"] == preset)
+    liq = m["liquids"]["water"]
+    t = liq["base_colour"]
+    a, ws, tab = np.array(t["dry_albedo"]), np.array(t["wetness"]), np.array(t["albedo"])
+    k = np.array([np.interp(w, ws, [np.interp(dry[c], a, tab[c][i]) for i in range(len(ws))]) / dry[c]
+                  for c in range(3)])
+    kn = liq["knots"]
+    vf = np.array(kn["view_factor"])  # [knot][view][channel]
+    out = []
+    for j, cosv in enumerate(exp["view_cos"]):
+        if cosv < np.cos(np.radians(80)):
+            continue
+        vw = np.array([np.interp(w, kn["wetness"], vf[:, j, c]) for c in range(3)])
+        out.append(k * vw / vf[0, j])
+    out = np.array(out)
+    return out.min(0), out.max(0)
+
+
+def main():
+    soak, root, tmp, lib = setup_args(__doc__)
+    images = sys.argv[sys.argv.index("--images") + 1] if "--images" in sys.argv else None
+    if not os.path.isdir(EXAMPLES):
+        skip(f"{EXAMPLES} missing: install Debian's povray-examples (scripts/install-deps.sh test tier)")
+    exp = export_json(soak, tmp)
+    size = (320, 240) if images else (96, 72)
+    bad = 0
+    for name, rel, where, preset, dry, w, gamma, strip in SCENES:
+        src = os.path.join(EXAMPLES, rel)
+        if not os.path.isfile(src):
+            skip(f"{src} missing (povray-examples incomplete)")
+        d = os.path.join(tmp, name)
+        os.makedirs(d, exist_ok=True)
+        orig_text = open(src).read()
+        dryc = f"<{dry[0]}, {dry[1]}, {dry[2]}>"
+        orig, t_orig, _ = render(d, "original", orig_text, lib, *size)
+        orig_full = orig
+        cases = {
+            "dry_layer": f'Soak_Wet_Layer("{preset}", "water", 0, {dryc})',
+            "wet_nofilm": f'Soak_Wet_Layer("{preset}", "water", {w}, {dryc})',
+            "wet": f'Soak_Wet_Layer("{preset}", "water", {w}, {dryc})',
+        }
+        res = {}
+        for tag, layer in cases.items():
+            text = scene_text(src, where, layer, gamma)
+            if tag == "wet_nofilm":
+                text = "#declare Soak_Film = 0;\n" + text
+                for a, b in strip:
+                    text = text.replace(a, b)
+            res[tag] = render(d, tag, text, lib, *size)
+        # dry = original
+        for tag in ("dry_layer",):
+            img = res[tag][0]
+            err = np.abs(img - orig) / np.maximum(np.abs(orig), 0.01)
+            ok = err.max() <= 0.01
+            bad += not ok
+            print(f"{'ok  ' if ok else 'FAIL'} {name} {tag}: max relative error {err.max():.2e} (<= 1 %)")
+        # wet darker by the core's ratio, on the pixels the layer changes
+        if strip:
+            for a, b in strip:
+                orig_text = orig_text.replace(a, b)
+            orig, _, _ = render(d, "original_stripped", orig_text, lib, *size)
+        wimg = res["wet_nofilm"][0]
+        mask = np.abs(wimg - orig).max(2) > 1e-3
+        if mask.sum() < 20:
+            bad += 1
+            print(f"FAIL {name}: the wet layer changed only {mask.sum()} pixels")
+            continue
+        ratio = np.median(wimg[mask] / np.maximum(orig[mask], 1e-4), axis=0)
+        lo, hi = core_band(exp, preset, w, dry)
+        ok = np.all(ratio >= lo * 0.98) and np.all(ratio <= hi * 1.02)
+        bad += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} {name} wet/dry ratio {np.round(ratio, 4)} in core band "
+              f"[{np.round(lo, 4)}, {np.round(hi, 4)}] (w={w}, {preset}, dry {dry}, {mask.sum()} px)")
+        fimg = res["wet"][0]
+        fr = np.median(fimg[mask].mean(1) / np.maximum(orig_full[mask].mean(1), 1e-4))
+        ok = 0.05 < fr < 1
+        bad += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} {name} wet with film: median luminance ratio {fr:.3f} (darker, not black)")
+        print(f"time {name}: parse CPU original {t_orig[0]:.3f} s wet {res['wet'][1][0]:.3f} s; "
+              f"trace CPU original {t_orig[1]:.3f} s wet {res['wet'][1][1]:.3f} s "
+              f"({res['wet'][1][1] / max(t_orig[1], 1e-3):.2f}x)")
+        if images:
+            for tag in ("original", "wet"):
+                shutil.copy(os.path.join(d, f"{tag}.exr"), os.path.join(images, f"{name}_{tag}.exr"))
+    if bad:
+        fail(f"{bad} checks failed")
+    print("PASS")
+
+
+if __name__ == "__main__":
+    main()
