@@ -101,6 +101,45 @@ def core_band(exp, preset, w, dry):
     return out.min(0), out.max(0)
 
 
+FN_SCENE = """#version 3.7;
+global_settings { assumed_gamma 1.0 }
+#include "woods.inc"
+#include "soak.inc"
+camera { location <0, 2, -3> look_at 0 }
+light_source { <3, 5, -2> rgb 1 }
+sky_sphere { pigment { gradient y color_map { [0 rgb <0.6, 0.7, 1>] [1 rgb <0.1, 0.2, 0.6>] } } }
+sphere { <0, 0.5, 1>, 0.5 pigment { rgb <1, 0, 0> } }
+"""
+
+
+def fn_check(tmp, lib):
+    """Soak_Wet_Existing_Fn on woods.inc's layered T_Wood10 (y-up ground, Soak_Place_Fn): a
+    wetness 0 everywhere renders as the texture itself within 1 %; a wet half (x > 0) is
+    darker than the dry half's counterpart and the dry half unchanged."""
+    d = os.path.join(tmp, "woods_fn")
+    os.makedirs(d, exist_ok=True)
+    orig, _, _ = render(d, "original", FN_SCENE + "plane { y, 0 texture { T_Wood10 } }\n", lib, 64, 48)
+    zero, _, _ = render(d, "zero", FN_SCENE + 'plane { y, 0 Soak_Wet_Existing_Fn(T_Wood10, "oak", "water", '
+                        'function { 0 }, <0.3, 0.2, 0.1>) }\n', lib, 64, 48)
+    half, _, _ = render(d, "half", FN_SCENE + '#declare W = Soak_Place_Fn(function { x > 0.5 }, 4, '
+                        'transform { translate <-2, 0, -2> })\n'
+                        'plane { y, 0 Soak_Wet_Existing_Fn(T_Wood10, "oak", "water", W, <0.3, 0.2, 0.1>) }\n',
+                        lib, 64, 48)
+    bad = 0
+    err = (np.abs(zero - orig) / np.maximum(np.abs(orig), 0.01)).max()
+    ok = err <= 0.01
+    bad += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} woods.inc T_Wood10 Soak_Wet_Existing_Fn at wetness 0: max relative error {err:.2e}")
+    # bottom rows: the ground in front; left half (x < 0, scene x maps to map x - 0.5) dry, right half wet
+    rows = slice(36, 48)
+    dl = (np.abs(half[rows, :24] - orig[rows, :24]) / np.maximum(orig[rows, :24], 0.01)).max()
+    rr = half[rows, 40:].mean() / orig[rows, 40:].mean()
+    ok = dl <= 0.01 and rr < 0.9
+    bad += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} Soak_Place_Fn y-up: dry half unchanged (max {dl:.2e}), wet half {rr:.3f} of dry")
+    return bad
+
+
 def main():
     soak, root, tmp, lib = setup_args(__doc__)
     images = sys.argv[sys.argv.index("--images") + 1] if "--images" in sys.argv else None
@@ -167,6 +206,7 @@ def main():
         if images:
             for tag in ("original", "wet"):
                 shutil.copy(os.path.join(d, f"{tag}.exr"), os.path.join(images, f"{name}_{tag}.exr"))
+    bad += fn_check(tmp, lib)
     if bad:
         fail(f"{bad} checks failed")
     print("PASS")
