@@ -127,7 +127,18 @@ def fn_check(tmp, lib):
                         'transform { translate <-2, 0, -2> })\n'
                         'plane { y, 0 Soak_Wet_Existing_Fn(T_Wood10, "oak", "water", W, <0.3, 0.2, 0.1>) }\n',
                         lib, 64, 48)
+    # the map's y runs along the scene's z (y-up): the far ground (z > 0, upper rows) wet, the near one dry
+    far, _, _ = render(d, "far", FN_SCENE + '#declare W = Soak_Place_Fn(function { y > 0.5 }, 4, '
+                       'transform { translate <-2, 0, -2> })\n'
+                       'plane { y, 0 Soak_Wet_Existing_Fn(T_Wood10, "oak", "water", W, <0.3, 0.2, 0.1>) }\n',
+                       lib, 64, 48)
     bad = 0
+    near_d = (np.abs(far[40:, :] - orig[40:, :]) / np.maximum(orig[40:, :], 0.01)).max()
+    far_r = far[4:16, :12].mean() / orig[4:16, :12].mean()
+    ok = near_d <= 0.01 and far_r < 0.9
+    bad += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} Soak_Place_Fn y-up: map y along scene z: near ground unchanged "
+          f"(max {near_d:.2e}), far ground {far_r:.3f} of dry")
     err = (np.abs(zero - orig) / np.maximum(np.abs(orig), 0.01)).max()
     ok = err <= 0.01
     bad += not ok
