@@ -12,6 +12,9 @@ steps of povray/README.md "Wet your own scene" and otherwise unchanged:
      view factor at w over the one at 0, for view angles 0..80 deg), widened by
      2 % (half-float output, POV-Ray's aoi map lerped in angle);
   3. wet with film: darker than dry on the object's median, and not black.
+  4. woods.inc's layered textures through Soak_Wet_Existing_Fn: wetness 0 = the
+     texture (also as texture_map entries, in material { } and on a CSG union);
+     Soak_Place_Fn lays a map on the y-up ground (its y along the scene's z).
 Prints each scene's parse and trace CPU time (POV-Ray's statistics), original
 against wet, for the README's table; the timings are not asserted.
 Exits 77 (SKIPPED) when povray-examples is not installed.
@@ -132,7 +135,24 @@ def fn_check(tmp, lib):
                        'transform { translate <-2, 0, -2> })\n'
                        'plane { y, 0 Soak_Wet_Existing_Fn(T_Wood10, "oak", "water", W, <0.3, 0.2, 0.1>) }\n',
                        lib, 64, 48)
+    # every syntax at wetness 0 renders as the original: a checker of two wetted woods (a patterned
+    # texture: wet each entry), material { } with an interior, a CSG union with a layer after its texture
+    syn_o = ('plane { y, 0 texture { checker texture { T_Wood10 } texture { T_Wood1 } scale 0.5 } }\n'
+             'sphere { <-1, 0.4, 0>, 0.4 material { texture { T_Wood3 } interior { ior 1.5 } } }\n'
+             'union { box { <0.6, 0, -0.5>, <1.2, 0.6, 0.1> } sphere { <0.9, 0.6, -0.2>, 0.3 } texture { T_Wood7 } }\n')
+    syn_w = ('#declare Z = function { 0 }\n#declare D = <0.3, 0.2, 0.1>;\n'
+             'plane { y, 0 texture { checker Soak_Wet_Existing_Fn(T_Wood10, "oak", "water", Z, D) '
+             'Soak_Wet_Existing_Fn(T_Wood1, "oak", "water", Z, D) scale 0.5 } }\n'
+             'sphere { <-1, 0.4, 0>, 0.4 material { Soak_Wet_Existing_Fn(T_Wood3, "oak", "water", Z, D) interior { ior 1.5 } } }\n'
+             'union { box { <0.6, 0, -0.5>, <1.2, 0.6, 0.1> } sphere { <0.9, 0.6, -0.2>, 0.3 } texture { T_Wood7 } '
+             'Soak_Wet_Layer("oak", "water", 0, D) }\n')
+    so, _, _ = render(d, "syntax_original", FN_SCENE + syn_o, lib, 64, 48)
+    sw, _, _ = render(d, "syntax_dry", FN_SCENE + syn_w, lib, 64, 48)
     bad = 0
+    err = (np.abs(sw - so) / np.maximum(np.abs(so), 0.01)).max()
+    ok = err <= 0.01
+    bad += not ok
+    print(f"{'ok  ' if ok else 'FAIL'} texture_map entries, material {{ }}, CSG at wetness 0: max relative error {err:.2e}")
     near_d = (np.abs(far[40:, :] - orig[40:, :]) / np.maximum(orig[40:, :], 0.01)).max()
     far_r = far[4:16, :12].mean() / orig[4:16, :12].mean()
     ok = near_d <= 0.01 and far_r < 0.9
