@@ -206,6 +206,11 @@ def main():
                 for a, b in strip:
                     text = text.replace(a, b)
             res[tag] = render(d, tag, text, lib, *size)
+        # the gamma warning: printed for woodbox's assumed_gamma 1.2, not for the others' 1.0
+        warned = "Soak_Check_Gamma: assumed_gamma" in re.sub(r"\s+", " ", res["dry_layer"][2])
+        ok = warned == (gamma != 1.0)
+        bad += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} {name}: assumed_gamma {gamma}: Soak_Check_Gamma warned {warned}")
         # dry = original
         for tag in ("dry_layer",):
             img = res[tag][0]
