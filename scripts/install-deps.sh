@@ -18,7 +18,7 @@ package=(dpkg-dev file)
 demo=(povray blender xvfb python3 openimageio-tools)
 test=(
   git python3-numpy python3-jsonschema python3-matplotlib valgrind debootstrap hyperfine
-  slurm-wlm munge nodejs man-db clang-format flake8
+  slurm-wlm munge nodejs man-db clang-format flake8 povray-examples
 )
 case "$tier" in
   build) packages=("${build[@]}") ;;

@@ -30,6 +30,16 @@ CASES = [  # (what, object line, macro, argument)
     ("string for the puddle level", 'Soak_Puddle_Material("concrete", "water", function { x }, "0.8", normal { bumps 0.1 })',
      "Soak_Puddle_Material", "Level"),
     ("number for a map file", 'Soak_Wet_Material_Fn("sand", "water", Soak_Map_Fn(3))', "Soak_Map_Fn", "File"),
+    ("string for an existing texture's dry colour", 'texture { pigment { rgb 0.5 } } Soak_Wet_Layer("oak", "water", 0.5, "brown")',
+     "Soak_Wet_Layer", "Dry_Colour"),
+    ("number for the existing texture's Wet_Fn",
+     'Soak_Wet_Existing_Fn(texture { pigment { rgb 0.5 } }, "oak", "water", 0.5, <0.3, 0.2, 0.1>)',
+     "Soak_Wet_Existing_Fn", "Wet_Fn"),
+    ("pigment for the map to place", 'Soak_Wet_Existing_Fn(texture { pigment { rgb 0.5 } }, "oak", "water", '
+     'Soak_Place_Fn(pigment { rgb 1 }, 10, transform { }), <0.3, 0.2, 0.1>)', "Soak_Place_Fn", "Fn"),
+    ("a patterned texture (POV-Ray cannot layer over it)",
+     'Soak_Wet_Existing_Fn(texture { checker texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } }, '
+     '"oak", "water", function { x }, <0.3, 0.2, 0.1>)', "Soak_Wet_Existing_Fn", "Texture"),
     ("material { } around a material macro", 'material { Soak_Wet_Material("sand", "water", 0.5) }',
      "Soak_Wet_Material", "material { }"),
 ]
