@@ -20,6 +20,7 @@ class Snapshot:
         self.values = {(n.name, s.identifier): socket_value(s) for n in tree.nodes for s in n.inputs}
         self.groups = {g.name for g in bpy.data.node_groups}
         self.refs = {n.name: n.get(REF_KEY) for n in tree.nodes}
+        self.shown = {n.name: (n.label, [s.hide for s in n.inputs]) for n in tree.nodes if n.type == "GROUP"}
 
     def restore(self):
         t = self.tree
@@ -45,6 +46,12 @@ class Snapshot:
                     del n[REF_KEY]
                 else:
                     n[REF_KEY] = ref
+        for name, (label, hidden) in self.shown.items():
+            n = t.nodes.get(name)
+            if n is not None and len(n.inputs) == len(hidden):
+                n.label = label
+                for s, h in zip(n.inputs, hidden):
+                    s.hide = h and not s.is_linked
         for g in [g for g in bpy.data.node_groups if g.name not in self.groups and g.users == 0]:
             bpy.data.node_groups.remove(g)
 

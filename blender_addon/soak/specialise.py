@@ -107,7 +107,57 @@ def specialise_stale(tree):
                               quality=info.get("quality", "BALANCED"), constant=constant, varying=varying)
         replaced.append(gn.node_tree)
         swap_group(tree, gn, ng)
+    for gn in group_nodes(tree):
+        show_baked(gn)
     return replaced
+
+
+def unused_inputs(gn):
+    """{name: value} of the group node's inputs its group does not read: the
+    liquid's inputs folded into numbers (a constant liquid: all of them; a
+    varying one: those only their values set), the Spill Edge where no bump
+    is built (Quality Draft, a constant liquid) and the Metallic where no
+    conductor's function is mixed in."""
+    info = group_info(gn)
+    folded = dict(info.get("constant") or (info.get("varying") or {}).get("fixed") or {})
+    if info.get("constant") is not None or info.get("quality") == "DRAFT":
+        folded["Spill Edge"] = None
+    if info.get("metal") is None:
+        folded["Metallic"] = None
+    return folded
+
+
+def baked_label(folded):
+    """The group node's label: what its group was built for, so that in a
+    Blender without the add-on the node says which values are baked in
+    (the Wetness always, the other liquid inputs where they differ from
+    their defaults; Blender keeps 63 characters of a label)."""
+    defaults = {name: default for name, _, default, *_ in wet_group.INPUTS}
+    items = [(k, v) for k, v in folded.items()
+             if k in LIQUID_INPUTS and (k == "Wetness" or abs(v - defaults[k]) > 1e-6)]
+    if not items:
+        return "Soak Wet"
+    if folded.get("Schedule") == 0.0:     # the schedule off: its times do nothing
+        items = [(k, v) for k, v in items if k not in ("Drying", "Time", "Start Time", "Fill Time")]
+    words = [f"{k} {'on' if v else 'off'}" if k in ("Schedule", "Drying") else f"{k} {v:.3g}" for k, v in items]
+    label = "Soak Wet (baked: " + ", ".join(words) + ")"
+    return label if len(label) <= 63 else label[:59] + "...)"
+
+
+def show_baked(gn):
+    """Hides the group node's unlinked inputs its group does not read (they
+    would do nothing in a Blender without the add-on, where nothing rebuilds
+    the group) and labels the node with the baked values; the add-on's
+    panel still sets them (the group is rebuilt, and they show again when it
+    reads them)."""
+    folded = unused_inputs(gn)
+    for s in gn.inputs:
+        hide = s.name in folded and not s.is_linked
+        if s.hide != hide:
+            s.hide = hide
+    label = baked_label(folded)
+    if gn.label != label:
+        gn.label = label
 
 
 def drop_unused(groups):
