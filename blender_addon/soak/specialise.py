@@ -39,14 +39,30 @@ def specialisation(tree, gn):
     keyed or driven (else None); varying, for a liquid that can vary:
     {"fixed": {name: value} of the inputs only the node's value sets,
     "film": False when the liquid provably stays below the table's
-    saturation, where the film starts (wet_bounds)}."""
-    bounds, fixed = wet_bounds.input_bounds(gn, _fcurve_of(tree, gn))
+    saturation, where the film starts (wet_bounds), "bump": False when the
+    Spill Edge is 0 and cannot change (no spill-edge bump built)}."""
+    fcurve_of = _fcurve_of(tree, gn)
+    bounds, fixed = wet_bounds.input_bounds(gn, fcurve_of)
     if len(fixed) == len(LIQUID_INPUTS):
         return {name: bounds[name][0] for name in LIQUID_INPUTS}, None
     info = group_info(gn)
     varying = {"fixed": {name: bounds[name][0] for name in LIQUID_INPUTS if name in fixed},
                "film": not wet_bounds.film_free(data.table(info["preset"], info["liquid"]), bounds)}
-    return None, (varying if varying["fixed"] or not varying["film"] else None)   # None: the full group
+    if _no_spill_edge(gn, fcurve_of):
+        varying["bump"] = False
+    if varying["fixed"] or not varying["film"] or "bump" in varying:
+        return None, varying
+    return None, None       # the full group
+
+
+def _no_spill_edge(gn, fcurve_of):
+    """True when the Spill Edge is 0 and only its value sets it. Cycles
+    evaluates a Bump node's height three times (its own finite
+    differences) even at strength 0 (BumpNode::constant_fold folds only an
+    unlinked height): the Wet Map's whole texture would run three times
+    for a bump that does nothing."""
+    s = gn.inputs.get("Spill Edge")
+    return s is not None and not s.is_linked and fcurve_of("Spill Edge") is None and s.default_value == 0.0
 
 
 def constant_inputs(tree, gn):
@@ -120,7 +136,8 @@ def unused_inputs(gn):
     conductor's function is mixed in."""
     info = group_info(gn)
     folded = dict(info.get("constant") or (info.get("varying") or {}).get("fixed") or {})
-    if info.get("constant") is not None or info.get("quality") == "DRAFT":
+    if (info.get("constant") is not None or info.get("quality") == "DRAFT"
+            or (info.get("varying") or {}).get("bump") is False):
         folded["Spill Edge"] = None
     if info.get("metal") is None:
         folded["Metallic"] = None

@@ -380,7 +380,8 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
     bump, which needs a varying wet map, is left out). varying: for a
     liquid that can vary, {"fixed": {name: value} of those inputs the
     node's value alone sets (folded into numbers), "film": False where the
-    liquid never exceeds the table's saturation} (wet_bounds). Sockets that
+    liquid never exceeds the table's saturation, "bump": False where the
+    Spill Edge is 0 and cannot change} (wet_bounds). Sockets that
     already match INPUTS/OUTPUTS are kept (the node's links and values too)."""
     terms = QUALITY[quality]
     m = data.material(preset)
@@ -409,7 +410,7 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
     fixed, film = (varying or {}).get("fixed"), (varying or {}).get("film", True)
     L = _liquid_schedule(b, gin, fixed) if Lc is None else wet_constant.value(b, Lc)
     b.stage = STAGES[1]
-    normal = _bump(b, gin, terms["bump"] and Lc is None)
+    normal = _bump(b, gin, terms["bump"] and Lc is None and (varying or {}).get("bump", True))
     view = terms["view_factor"]
     curves = Lc is not None and not exact_asked
     if not curves:
