@@ -3,7 +3,7 @@ property split, sub-panels, greyed buttons with their reason (poll
 messages), and the render settings the wet look needs."""
 import bpy
 
-from . import compat, material_tree, specialise
+from . import compat, data, material_tree, price, specialise
 from .predicates import key_icon, osl_available
 from .properties import CONTROLS
 
@@ -25,6 +25,19 @@ def _engine_hints(layout, context, s):
         box.prop(switch[0], switch[1])
     if compat.is_eevee(engine) and not s.exact_lookups and not compat.exact_lookups_required():
         layout.label(text="EEVEE: turn on Exact lookups for the core's values", icon="INFO")
+
+
+def _price(layout, mat):
+    """Beside Quality: what it costs for this material as wired (price.py)."""
+    try:
+        text = price.lines(mat)
+    except (data.SoakDataError, KeyError) as e:
+        layout.label(text=f"No price: {e}", icon="ERROR")
+        return
+    box = layout.box().column(align=True)
+    box.scale_y = 0.8
+    box.label(text=text[0], icon="TIME")
+    box.label(text=text[1], icon="BLANK1")
 
 
 class _MaterialPanel:
@@ -55,6 +68,7 @@ class SOAK_PT_wetness(_MaterialPanel, bpy.types.Panel):
         col.prop(s, "preset")
         col.prop(s, "liquid")
         col.prop(s, "quality")
+        _price(col, mat)
         if compat.exact_lookups_required():
             # 4.2-4.x always build the exact path (compat.exact_lookups_required):
             # the setting cannot change anything there, so say so.
