@@ -5,17 +5,27 @@ few node-building primitives the wet group is made of. It derives no
 formula: it runs what the core exported."""
 
 
+# Positions t in [0, 1] are mapped just below 1 onto a table's cells (t = 1
+# lies in the last cell, at its far edge).
+EDGE = 1.0 - 1e-6
+
+
 class Builder:
     """Adds nodes to a tree. Each node joins the current stage (a name the
-    group's layout gives a labelled frame and a column of its own)."""
+    group's layout gives a labelled frame and a column of its own) and is
+    labelled with the current role (what it computes, shown in its header
+    instead of its operation's name; a label given to node() wins)."""
 
     def __init__(self, tree):
         self.tree = tree
         self.stage = None
+        self.role = None
         self.stages = {}        # node name -> stage
 
     def node(self, kind, **props):
         n = self.tree.nodes.new(kind)
+        if self.role and "label" not in props:
+            n.label = self.role
         for k, v in props.items():
             setattr(n, k, v)
         self.stages[n.name] = self.stage

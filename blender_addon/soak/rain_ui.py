@@ -1,36 +1,10 @@
-"""The Rain sub-panel of the Wetness panel and its settings (Scene.soak_rain):
-the rain of the scene (rate, when it falls), the drops map of the selected
-object (scale, size, seed) and the Bake Rain operator."""
+"""The Rain sub-panel of the Wetness panel: the scene's rain settings
+(Scene.soak_rain, properties.SoakRainSettings: rate, when it falls), the
+drops map of the selected object (scale, size, seed) and the Bake Rain
+operator."""
 import bpy
-from bpy.props import BoolProperty, FloatProperty, IntProperty, PointerProperty
 
-from . import nodes
-
-
-class SoakRainSettings(bpy.types.PropertyGroup):
-    rate: FloatProperty(name="Rate (mm/h)", default=10.0, min=0.01, max=500.0, soft_max=100.0,
-                        description="Rain rate in mm/h (drizzle 1, moderate 5, heavy 10-50): drop sizes after "
-                                    "Marshall & Palmer (1948), fall speeds after Atlas et al. (1973)")
-    start_frame: IntProperty(name="Start Frame", default=1, min=0,
-                             description="Scene frame where the rain starts (the surface is dry before it)")
-    end_frame: IntProperty(name="End Frame", default=120, min=1,
-                           description="Scene frame where the rain stops; the surface then dries over Dry Time")
-    dry_time: FloatProperty(name="Dry Time (s)", default=20.0, min=1e-3, soft_max=3600.0,
-                            description="Seconds the surface takes to dry after the rain (the drying bake's "
-                                        "pore schedule)")
-    map_size: FloatProperty(name="Scale (m)", default=0.0, min=0.0, soft_max=100.0, subtype="DISTANCE",
-                            description="Metres across the UV square, for the drops' physical size (0: the "
-                                        "object's largest horizontal dimension, right for a plane)")
-    size: IntProperty(name="Map Size", default=256, min=8, max=4096,
-                      description="Width and height of the drops maps, pixels (a texel should be about 1-4 mm "
-                                  "for single drops to show)")
-    seed: IntProperty(name="Seed", default=0, min=0,
-                      description="Random seed of the impacts: same seed, same frames")
-    shelter: BoolProperty(name="Shelter by Scene", default=True,
-                          description="The visible scene blocks the rain (the drops fall only where the sky "
-                                      "reaches, as Bake Wet Map computes it); off: the object is open to the sky")
-    rays: IntProperty(name="Rays", default=32, min=1, max=4096,
-                      description="Rays per texel for the sky exposure (Shelter by Scene)")
+from . import material_tree
 
 
 class SOAK_PT_wetness_rain(bpy.types.Panel):
@@ -65,20 +39,18 @@ class SOAK_PT_wetness_rain(bpy.types.Panel):
             col.prop(s, "rays")
         mat = ob.active_material if ob is not None else None
         if mat is not None and mat.node_tree is not None and any(
-                n.get(nodes.ROLE_KEY) == "rain" for n in mat.node_tree.nodes):
+                n.get(material_tree.ROLE_KEY) == "rain" for n in mat.node_tree.nodes):
             col.label(text="Ripples show where the drops reach Puddle Level", icon="INFO")
         layout.operator("soak.bake_rain", icon="OUTLINER_OB_FORCE_FIELD")
 
 
-classes = (SoakRainSettings, SOAK_PT_wetness_rain)
+classes = (SOAK_PT_wetness_rain,)
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)
 
 
 def register():
     _register_classes()
-    bpy.types.Scene.soak_rain = PointerProperty(type=SoakRainSettings)
 
 
 def unregister():
-    del bpy.types.Scene.soak_rain
     _unregister_classes()

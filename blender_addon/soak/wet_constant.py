@@ -8,7 +8,7 @@ core's table at L. Then:
            through the row's columns (dry albedo a_j, wet albedo), the row
            interpolated linearly at L as the bilinear lookup does;
   view   = one RGB Curves node on Layer Weight's Facing: the view-factor
-           row at L over the view's cosine;
+           row at L over the view's cosine (view_factor.curve);
   params = numbers (Value nodes, which Cycles folds).
 Image lookups cost Cycles as much at a constant coordinate as at any other;
 the curves are a short table in the shader itself. Only interpolation of
@@ -142,17 +142,3 @@ def wet_colour(b, colour, t, row):
 def param(t, row, pixel):
     """Parameter pixel `pixel` at L: (x, y, z) numbers."""
     return tuple(row.mix(t["params"], 3 * pixel + c) for c in range(3))
-
-
-def view_factor(b, t, row, normal):
-    """The view factor at L and the view's cosine: Layer Weight's Facing
-    (1 - |cos|) into an RGB Curves node; None where it is 1 throughout."""
-    if all(v == 1.0 for r in t["view_factor"] for v in r):
-        return None
-    n = data.load()["view_columns"]
-    lw = b.node("ShaderNodeLayerWeight")
-    lw.inputs["Blend"].default_value = 0.5
-    b.link(normal, lw.inputs["Normal"])
-    xs = [1.0 - i / (n - 1) for i in range(n)]
-    ys = [[row.mix(t["view_factor"], 3 * i + c) for i in range(n)] for c in range(3)]
-    return curves(b, lw.outputs["Facing"], xs, ys)

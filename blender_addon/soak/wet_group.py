@@ -28,8 +28,8 @@ Curves nodes and numbers, and no image is read."""
 
 import json
 
-from . import compat, data, group_layout, wet_bounds, wet_constant
-from .node_program import (Builder, affine_program, combine, lerp, lookup, run_program,
+from . import compat, data, group_layout, view_factor, wet_bounds, wet_constant
+from .node_program import (EDGE, Builder, affine_program, combine, lerp, lookup, run_program,
                            run_program_vector, separate, vec, vec_num)
 
 GROUP_TAG = "soak_group"
@@ -118,13 +118,11 @@ def _liquid_schedule(b, gin, fixed=None):
     fixed = fixed or {}
     env = {v: ((fixed[k], fixed[k]) if k in fixed else wet_bounds.UNKNOWN) for k, v in wet_bounds.NAMES.items()}
     ops = wet_bounds.fold_program(wet_bounds.liquid_program(), env)
+    b.role = "Liquid L: Wetness x Wet Map x schedule"
     return run_program(b, ops, {v: gin.outputs[k] for k, v in wet_bounds.NAMES.items()})
 
 
 
-# Positions t in [0, 1] are mapped just below 1 onto cells (t = 1 lies in the
-# last cell, at its far edge).
-_EDGE = 1.0 - 1e-6
 
 
 class _Rows:
@@ -136,10 +134,11 @@ class _Rows:
         rows = t["rows_below"] + t["rows_above"] + 1
         self.exact, self.rows = exact, rows
         program = wet_bounds.row_program(t, film)
+        b.role = "Row of L in the tables"
         if not exact:
             self.v = run_program(b, affine_program(program, (rows - 1) / rows, 0.5 / rows), {"x": L})
             return
-        y = b.math("MULTIPLY", run_program(b, program, {"x": L}), (rows - 1) * _EDGE)
+        y = b.math("MULTIPLY", run_program(b, program, {"x": L}), (rows - 1) * EDGE)
         r0 = b.math("FLOOR", y)
         self.fy = b.math("SUBTRACT", y, r0)
         self.gy = b.math("SUBTRACT", 1.0, self.fy)
@@ -151,6 +150,8 @@ class _Rows:
 def _param(b, par_img, t, rows, pixel):
     """Pixel `pixel` of the per-row parameter image as a vector socket."""
     u = (pixel + 0.5) / (len(t["params"][0]) // 3)
+    b.role = ("Film/pore parameters at L", "Thin sheet's transmittance at L",
+              "Specular left, mirror area, roughness ratio")[min(max(pixel - 1, 0), 2)]
     if not rows.exact:
         return lookup(b, par_img, u, rows.v, "Linear").outputs["Color"]
     a = lookup(b, par_img, u, rows.v0, "Closest").outputs["Color"]
@@ -169,14 +170,16 @@ def _wet_colour(b, colour, t, images, rows):
     (one node for three channels); only the lookups and their weights are
     per channel (c_core/bench/results/2026-11-27-blender-ablation.md)."""
     na = t["columns"]
+    b.role = "Column of each dry channel in the tables"
     if not rows.exact:
         us = separate(b, run_program_vector(b, affine_program(t["column_program"], (na - 1) / na, 0.5 / na), colour))
         out = None
         for c in range(3):   # image c holds channel c's function in channel c, zeros elsewhere
+            b.role = f"Wet {'red green blue'.split()[c]}: the core's table"
             tc = lookup(b, images.linear[c], us[c], rows.v, "Linear").outputs["Color"]
             out = tc if out is None else vec(b, "ADD", out, tc)
         return out
-    top = (na - 1) * _EDGE
+    top = (na - 1) * EDGE
     x = run_program_vector(b, affine_program(t["column_program"], top, 0.0), colour)
     x = vec_num(b, "MINIMUM", vec_num(b, "MAXIMUM", x, 0.0), top)
     j = vec_num(b, "FLOOR", x, 0.0)
@@ -193,6 +196,7 @@ def _wet_colour(b, colour, t, images, rows):
     neg_gy = b.math("MULTIPLY", rows.gy, -1.0)
     values = []
     for c in range(3):
+        b.role = f"Wet {'red green blue'.split()[c]}: the table cell's bilinear blend"
         tex = lookup(b, images.cells[c], us[c], rows.cell, "Closest")
         w = b.node("ShaderNodeVectorMath", operation="MULTIPLY_ADD")
         b.link(fxs[c], w.inputs[0])
@@ -204,37 +208,6 @@ def _wet_colour(b, colour, t, images, rows):
         values.append(b.math("MULTIPLY_ADD", tex.outputs["Alpha"], w00, dot_value))
     return combine(b, *values)
 
-
-
-def _view_factor(b, t, images, rows, normal):
-    """The preset's view factor (the export's view_factor image) at the
-    view's cosine to the shading normal, None where it is 1 throughout (dry
-    tables, conductors). A base colour cannot follow the light's angle
-    through the liquid interface, but it can follow the viewer's. Layer
-    Weight's Facing at blend 0.5 is 1 - |cos| (both engines; backfaces
-    included); one Linear lookup, or for exact lookups four Closest reads of
-    the cell's corners and their bilinear mix (EEVEE Next's Linear lookup
-    fails where a coordinate is constant over the screen)."""
-    if all(v == 1.0 for row in t["view_factor"] for v in row):
-        return None
-    n = data.load()["view_columns"]
-    lw = b.node("ShaderNodeLayerWeight")
-    lw.inputs["Blend"].default_value = 0.5
-    b.link(normal, lw.inputs["Normal"])
-    facing = lw.outputs["Facing"]
-    if not rows.exact:
-        u = b.math("MULTIPLY_ADD", facing, -(n - 1) / n, (n - 0.5) / n)
-        return lookup(b, images.view, u, rows.v, "Linear").outputs["Color"]
-    x = b.math("MULTIPLY_ADD", facing, -(n - 1) * _EDGE, (n - 1) * _EDGE)
-    i0 = b.math("FLOOR", x)
-    fx = b.math("SUBTRACT", x, i0)
-    u0 = b.math("MULTIPLY_ADD", i0, 1.0 / n, 0.5 / n)
-    u1 = b.math("ADD", u0, 1.0 / n)
-
-    def row(v):
-        a = lookup(b, images.view, u0, v, "Closest").outputs["Color"]
-        return lerp(b, a, lookup(b, images.view, u1, v, "Closest").outputs["Color"], fx)
-    return lerp(b, row(rows.v0), row(rows.v1), rows.fy)
 
 
 def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view=True, constant_L=None, film=True):
@@ -251,6 +224,7 @@ def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view
     b.stage = STAGES[stages[0]]
     rows = _Rows(b, L, t, exact, film)
     colour = _wet_colour(b, gin.outputs["Base Color"], t, images, rows)
+    b.role = "Specular left, mirror area, roughness ratio"
     if constant_L is None:
         spec = b.node("ShaderNodeSeparateXYZ")   # (base specular factor, interface area, roughness ratio)
         b.link(_param(b, images.params, t, rows, 3), spec.inputs[0])
@@ -258,15 +232,19 @@ def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view
     else:
         row = wet_constant.Row(t, constant_L)
         factor, area, ratio = (wet_constant.value(b, x) for x in wet_constant.param(t, row, 3))
+    b.role = "Wet roughness: Roughness x the liquid's ratio"
     rough = b.math("MULTIPLY", gin.outputs["Roughness"], ratio, clamp=True)
     b.stage = STAGES[stages[1]]
-    view = _view_factor(b, t, images, rows, normal) if view else None
+    b.role = "View factor at the view's cosine"
+    view = view_factor.lookup(b, t, images.view, rows, normal) if view else None
     if view is not None:
+        b.role = "Wet colour x view factor"
         colour = vec(b, "MULTIPLY", colour, view)
 
     def param(pixel):
         b.stage = STAGES[stages[0]]
         if constant_L is not None:
+            b.role = "Thin sheet's transmittance at L"
             return wet_constant.colour_value(b, wet_constant.param(t, row, pixel))
         return _param(b, images.params, t, rows, pixel)
     return colour, rough, area, factor, param
@@ -278,19 +256,27 @@ def _wet_path_constant(b, gin, L, preset, liquid_name, normal, stages=(2, 3), vi
     t = data.table(preset, liquid_name)
     row = wet_constant.Row(t, L)
     b.stage = STAGES[stages[0]]
+    b.role = "Wet colour: the core's table at this L"
     colour = wet_constant.wet_colour(b, gin.outputs["Base Color"], t, row)
     factor, area, ratio = wet_constant.param(t, row, 3)
+    b.role = "Wet roughness: Roughness x the liquid's ratio"
     rough = b.math("MULTIPLY", gin.outputs["Roughness"], ratio, clamp=True)
     b.stage = STAGES[stages[1]]
-    vf = wet_constant.view_factor(b, t, row, normal) if view else None
+    b.role = "View factor at the view's cosine"
+    vf = view_factor.curve(b, t, row, normal, wet_constant.curves) if view else None
     if vf is not None:
+        b.role = "Wet colour x view factor"
         colour = vec(b, "MULTIPLY", colour, vf)
 
     def param(pixel):
         b.stage = STAGES[stages[0]]
+        b.role = "Thin sheet's transmittance at L"
         return wet_constant.colour_value(b, wet_constant.param(t, row, pixel))
     b.stage = STAGES[stages[0]]
-    return colour, rough, wet_constant.value(b, area), wet_constant.value(b, factor), param
+    b.role = "Liquid's mirror area at L"
+    area = wet_constant.value(b, area)
+    b.role = "Specular left under the liquid at L"
+    return colour, rough, area, wet_constant.value(b, factor), param
 
 
 def _sockets_match(tree):
@@ -355,7 +341,7 @@ def _bump(b, gin, spill_edges):
     the shading normal (a group input passed straight through gives
     (0, 0, 0) in Cycles and EEVEE, 5.2 measured), which Cycles folds away
     (BumpNode::constant_fold)."""
-    bump = b.node("ShaderNodeBump")
+    bump = b.node("ShaderNodeBump", label="Spill-edge bump from the Wet Map" if spill_edges else "Shading normal")
     if spill_edges:
         b.link(gin.outputs["Spill Edge"], bump.inputs["Strength"])
         b.link(gin.outputs["Wet Map"], bump.inputs["Height"])
@@ -373,6 +359,7 @@ def _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat
     else:
         mc, mr, mcoat, _, _ = _wet_path_constant(b, gin, constant_L, metal, liquid_name, normal, (4, 4), view)
     b.stage = STAGES[5]
+    b.role = "Metal mix by Metallic"
     f = b.math("MINIMUM", b.math("MAXIMUM", gin.outputs["Metallic"], 0.0), 1.0)
     colour = lerp(b, colour, mc, f)
     rough = b.math("MULTIPLY_ADD", b.math("SUBTRACT", mr, rough), f, rough)
@@ -393,7 +380,8 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
     bump, which needs a varying wet map, is left out). varying: for a
     liquid that can vary, {"fixed": {name: value} of those inputs the
     node's value alone sets (folded into numbers), "film": False where the
-    liquid never exceeds the table's saturation} (wet_bounds). Sockets that
+    liquid never exceeds the table's saturation, "bump": False where the
+    Spill Edge is 0 and cannot change} (wet_bounds). Sockets that
     already match INPUTS/OUTPUTS are kept (the node's links and values too)."""
     terms = QUALITY[quality]
     m = data.material(preset)
@@ -417,11 +405,12 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
     b = Builder(tree)
     gin = _Inputs(b)
     b.stage = STAGES[0]
+    b.role = "Liquid L (constant)"
     Lc = wet_constant.liquid(constant) if constant is not None else None
     fixed, film = (varying or {}).get("fixed"), (varying or {}).get("film", True)
     L = _liquid_schedule(b, gin, fixed) if Lc is None else wet_constant.value(b, Lc)
     b.stage = STAGES[1]
-    normal = _bump(b, gin, terms["bump"] and Lc is None)
+    normal = _bump(b, gin, terms["bump"] and Lc is None and (varying or {}).get("bump", True))
     view = terms["view_factor"]
     curves = Lc is not None and not exact_asked
     if not curves:
@@ -433,7 +422,9 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
         colour, rough, coat = _metal_mix(b, gin, L, metal, liquid_name, exact, normal, colour, rough, coat, view,
                                          constant_L=Lc, curves=curves)
     b.stage = STAGES[6]
+    b.role = "Specular left under the liquid"
     spec = b.math("MULTIPLY", gin.outputs["Specular"], factor)
+    b.role = "Undo the engine's coat dimming (4.x)"
     # Blender's own coat dims what lies under it (4.x); the core's values
     # already hold the film's transmission: undo the engine's share.
     keep = compat.coat_base_compensation(b, coat, data.liquid(liquid_name)["ior"], normal)
@@ -444,7 +435,7 @@ def build_group(tree, preset, liquid_name, exact=False, metal=None, quality="BAL
         colour = sc.outputs[0]
         spec = b.math("MULTIPLY", spec, keep)
     translucency = param(2) if m["kind"] == "thin_sheet" else None
-    b.stage = None
+    b.stage = b.role = None
     gout = b.node("NodeGroupOutput")
     for name, sock in (("Base Color", colour), ("Roughness", rough), ("Coat Weight", coat), ("Specular", spec),
                        ("Liquid", L), ("Translucency", translucency), ("Normal", normal)):

@@ -8,6 +8,10 @@ render thread):
            render of it), no group: what any wet look costs in Cycles;
   wet      after Make Wet (default or --exact 1 lookups), once per
            quality of --qualities (the panel's Quality; default BALANCED);
+  coat noise  (--varying 1) the coat state with the wetness source's Noise
+           texture evaluated too (its Fac x 1e-6 added to the coat weight,
+           which Cycles cannot fold): what a texture-driven wet look costs
+           before any of the group's work;
   wet DRAFT fold  (--fold 1) an experiment, not an add-on setting: Draft
            with the coat lobe dropped and the liquid's mirror folded into the
            base's own specular lobe (Coat Weight unlinked, Specular + coat
@@ -19,8 +23,12 @@ wet/dry is what an artist pays; wet/coat is the group's own cost (its
 lookups and math). Prints each run, then min and median per state, and
 the group's node count per quality. Not a test: nothing here asserts a time.
 
+--varying 1: the wetness varies (the panel's Noise wetness source, a Noise
+texture into the group's Wet Map: issue 46/50's "varying wetness"), so the
+group reads its tables at every shading point.
+
 blender -b --factory-startup --python bench_blender_overhead.py -- --addon ZIP [--repeat 3] [--exact 0|1]
-    [--qualities DRAFT,BALANCED,EXACT] [--fold 0|1]
+    [--qualities DRAFT,BALANCED,EXACT] [--fold 0|1] [--varying 0|1]
 (c_core/bench/bench_blender_overhead.sh runs it in Blender 3.4, 4.3 and 5.2)"""
 import os
 import statistics
@@ -37,8 +45,11 @@ repeat = int(opts.get("--repeat", "3"))
 exact = bool(int(opts.get("--exact", "0")))
 qualities = opts.get("--qualities", "BALANCED").split(",")
 fold = bool(int(opts.get("--fold", "0")))
+varying = bool(int(opts.get("--varying", "0")))
 COAT = ("Clearcoat", "Coat Weight")[bpy.app.version >= (4, 0, 0)]
 mat, tree, bsdf = blender_bench_plane.textured_plane(opts["--addon"], exact)
+if varying:
+    mat.soak.wetness_source = "NOISE"
 
 
 def coat_weight_of_wet_state():
@@ -96,6 +107,26 @@ def fold_coat_into_specular():
     tree.links.new(m.outputs[0], spec_in)
 
 
+def add_noise(coat):
+    """The coat state plus the Noise source's evaluation (see above)."""
+    noise = tree.nodes.new("ShaderNodeTexNoise")
+    noise.name = "bench noise"
+    noise.inputs["Scale"].default_value = mat.soak.noise_scale
+    m = tree.nodes.new("ShaderNodeMath")
+    m.operation = "MULTIPLY_ADD"
+    m.name = "bench noise add"
+    tree.links.new(noise.outputs["Fac"], m.inputs[0])
+    m.inputs[1].default_value = 1e-6
+    m.inputs[2].default_value = coat
+    tree.links.new(m.outputs[0], bsdf.inputs[COAT])
+
+
+def undo_noise():
+    for name in ("bench noise", "bench noise add"):
+        if tree.nodes.get(name) is not None:
+            tree.nodes.remove(tree.nodes[name])
+
+
 def undo_fold():
     m = tree.nodes.get("bench fold")
     if m is not None:
@@ -103,13 +134,16 @@ def undo_fold():
 
 
 coat = coat_weight_of_wet_state()
-states = ["dry", "coat"] + [f"wet {q}" for q in qualities] + (["wet DRAFT fold"] if fold else [])
+states = (["dry", "coat"] + (["coat noise"] if varying else []) + [f"wet {q}" for q in qualities]
+          + (["wet DRAFT fold"] if fold else []))
 times = {s: [] for s in states}
 count = {}
 for r in range(repeat):
     for state in states:
         if state == "coat":
             bsdf.inputs[COAT].default_value = coat
+        if state == "coat noise":
+            add_noise(coat)
         if state.startswith("wet"):
             bsdf.inputs[COAT].default_value = 0.0
             mat.soak.quality = state.split()[1]
@@ -118,6 +152,7 @@ for r in range(repeat):
             if state.endswith("fold"):
                 fold_coat_into_specular()
         times[state].append(render_cpu())
+        undo_noise()
         if state.startswith("wet"):
             undo_fold()
             bpy.ops.soak.make_dry()
@@ -126,11 +161,11 @@ for r in range(repeat):
 bsdf.inputs[COAT].default_value = 0.0
 mins = {k: min(v) for k, v in times.items()}
 meds = {k: statistics.median(v) for k, v in times.items()}
-print(f"Blender {bpy.app.version_string}, exact lookups {int(exact)}, coat weight {coat:.3f}, "
+print(f"Blender {bpy.app.version_string}, exact lookups {int(exact)}, varying {int(varying)}, coat weight {coat:.3f}, "
       f"load average {os.getloadavg()[0]:.1f}")
 for k in states:
     print(f"{k}: min {mins[k]:.3f} s, median {meds[k]:.3f} s CPU")
-for k in states[2:]:
+for k in [s for s in states if s.startswith("wet")]:
     print(f"ratio {k}/dry: min {mins[k] / mins['dry']:.3f}, median {meds[k] / meds['dry']:.3f}; "
           f"{k}/coat (the group's own cost): min {mins[k] / mins['coat']:.3f}, "
           f"median {meds[k] / meds['coat']:.3f}; {count[k]} nodes")

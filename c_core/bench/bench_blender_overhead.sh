@@ -2,7 +2,8 @@
 # The Soak Wet group's Cycles CPU cost on a close-up textured plane, in
 # Blender 3.4, 4.3 and 5.2, each Quality (bench_blender_overhead.py:
 # dry / dry+coat / wet Draft / Balanced / Exact interleaved, min and median
-# of REPEAT). VERSIONS (default "3.4 4.3 5.2"), FOLD=1 (also Draft with the
+# of REPEAT). VERSIONS (default "3.4 4.3 5.2"), VARYING=1 (a Noise texture
+# into the wetness: the tables read at every point), FOLD=1 (also Draft with the
 # coat folded into the base's specular: an experiment) and RUN_BLENDER (default
 # tests/blender/run_blender.sh) from the environment.
 # usage: c_core/bench/bench_blender_overhead.sh [BUILD_DIR] [REPEAT] [BEFORE_REF]
@@ -32,7 +33,7 @@ for ver in ${VERSIONS:-3.4 4.3 5.2}; do
     [ "$z" = soak ] || qualities=BALANCED     # an add-on from before the Quality setting
     SOAK_BLENDER=$ver SOAK_BLENDER43_ROOT="${SOAK_BLENDER43_ROOT:-$BUILD/trixie-root}" BLENDER_USER_SCRIPTS="$TMP/user_${ver}_$z" \
       bash "$RUN" "$ROOT/c_core/bench/bench_blender_overhead.py" \
-      --addon "$TMP/$z.zip" --repeat "$REPEAT" --qualities "$qualities" --fold "${FOLD:-0}" 2>&1 |
-      grep -E '^(run |Blender [0-9]|dry:|coat:|wet|ratio)'
+      --addon "$TMP/$z.zip" --repeat "$REPEAT" --qualities "$qualities" --fold "${FOLD:-0}" --varying "${VARYING:-0}" 2>&1 |
+      grep -E '^(run |Blender [0-9]|dry:|coat:|coat noise:|wet|ratio)'
   done
 done

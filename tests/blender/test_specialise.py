@@ -136,8 +136,8 @@ def wet(plane, preset, liquid, quality, settings, specialised):
             setattr(s, k, v)
     if s.status:
         common.fail(f"{mat.name}: {s.status}")
-    if not specialised:   # every input that sets the liquid fed by a node: nothing bounds them (the full group)
-        for name in LIQUID_INPUTS:
+    if not specialised:   # every input that sets the liquid (and the Spill Edge) fed by a node: the full group
+        for name in LIQUID_INPUTS + ("Spill Edge",):
             val = tree.nodes.new("ShaderNodeValue")
             val.outputs[0].default_value = gn.inputs[name].default_value
             tree.links.new(val.outputs[0], gn.inputs[name])
@@ -174,7 +174,7 @@ def wet_varying(plane, preset, liquid, wetness, keyed, reference=None):
     """A wet material whose Wet Map is an image (the wetness varies): its
     group specialised to what does not vary (wet_bounds), or for the
     reference every input that sets the liquid fed by a node, which nothing
-    can bound (the full group). keyed: Wetness keyed from 0.1 at frame 1 to
+    can bound (the full group; its Spill Edge too, so it keeps the bump). keyed: Wetness keyed from 0.1 at frame 1 to
     `wetness` at frame 10 (Bezier), seen at frame 5. reference: the
     Wetness the reference gets (the keyed one's value at frame 5), None for
     the specialised group."""
@@ -203,7 +203,7 @@ def wet_varying(plane, preset, liquid, wetness, keyed, reference=None):
     sc.frame_set(5 if keyed else 1)
     if reference is not None:
         w.default_value = reference
-        for name in LIQUID_INPUTS[:1] + LIQUID_INPUTS[2:]:
+        for name in LIQUID_INPUTS[:1] + LIQUID_INPUTS[2:] + ("Spill Edge",):
             val = tree.nodes.new("ShaderNodeValue")
             val.outputs[0].default_value = gn.inputs[name].default_value
             tree.links.new(val.outputs[0], gn.inputs[name])
@@ -241,6 +241,8 @@ def varying_cases(sc, planes, tables):
             vs = info_s.get("varying")
             if vs is None or vs["film"] != film:
                 common.fail(f"{preset} keyed {keyed}: group built for {vs}, expected film {film}")
+            if vs.get("bump") is not False:   # Spill Edge 0, unkeyed: no bump (its height would run 3 times)
+                common.fail(f"{preset} keyed {keyed}: Spill Edge 0 but the group is built with a bump: {vs}")
             ns, nr = len(gs.node_tree.nodes), len(gr.node_tree.nodes)
             if m["kind"] == "conductor" and any(n.bl_idname == "ShaderNodeLayerWeight" for n in gr.node_tree.nodes):
                 common.fail(f"{preset}: a metal has no pores, yet its group models their view factor")
