@@ -108,6 +108,11 @@ static int expand(const bake_opts *o, const char *path, long frame, char *out, s
         snprintf(out, outlen, "%s", path);
         return 1;
     }
+    if (kind > 0 && strlen(path) + 16 >= outlen) {
+        cli_error(o->cmd, "'%.64s...': a path of %zu bytes is longer than the %zu a frame's path may have", path,
+                  strlen(path), outlen - 1);
+        return 0;
+    }
     if (kind < 0 || soak_bake_frame_path(path, (int)frame, out, outlen) != SOAK_OK) {
         cli_error(o->cmd, "'%s': bad frame pattern (use one %%d, %%4d or %%04d)", path);
         return 0;
@@ -155,7 +160,10 @@ int bake_opts_check(const bake_opts *o, const char *const *inputs, int n_inputs)
             return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
         }
     }
-    return 0;
+    bake_output outs[1] = {{o->output_option ? o->output_option : "-o", o->output}}, ins[BAKE_MAX_INPUTS];
+    int n = n_inputs < BAKE_MAX_INPUTS ? n_inputs : BAKE_MAX_INPUTS;
+    for (int k = 0; k < n; ++k) ins[k] = (bake_output){"input", inputs[k]};
+    return bake_plan_check(o, outs, 1, ins, n);
 }
 
 int bake_fail(const char *cmd, soak_status st, const char *err)
@@ -173,6 +181,28 @@ double bake_frame_time(const bake_opts *o, long f)
      * farm job types rely on this exact double for every chunk. */
     double offset = (double)(f - origin) * o->frame_time;
     return o->time + offset;
+}
+
+const char *bake_frame_label(long f, char *buf, size_t n)
+{
+    if (f < 0) snprintf(buf, n, "the map");
+    else snprintf(buf, n, "frame %ld", f);
+    return buf;
+}
+
+int bake_check_times(const bake_opts *o, double lo, double hi)
+{
+    long ends[2] = {o->have_frames ? o->first : -1, o->have_frames ? o->last : -1};
+    for (int k = 0; k < 2; ++k) {
+        double t = bake_frame_time(o, ends[k]);
+        if (t >= lo && t <= hi) continue;
+        char label[32];
+        cli_error(o->cmd, "%s is at time %g s, outside %g..%g s (set by %s); nothing was written",
+                  bake_frame_label(ends[k], label, sizeof label), t, lo, hi,
+                  o->have_frames ? "--frames, --time, --frame-time or --fps, --frame-origin" : "--time");
+        return SOAK_EXIT_USAGE;
+    }
+    return 0;
 }
 
 typedef struct progress_state {

@@ -217,6 +217,11 @@ static int parse_args(int argc, char **argv, rain_args *a, bake_opts *o)
     if (!a->have_dir) a->p.rain_dir = a->p.up;
     a->p.seed = o->seed;
     a->p.film = !a->no_film;
+    if (!(soak_v3_len(a->p.rain_dir) > 1e-12 && soak_v3_len(a->p.rain_dir) < 1e300)) {
+        cli_error(CMD, "--rain-dir: a direction of length %g cannot be normalised (give e.g. 0,1,0)",
+                  soak_v3_len(a->p.rain_dir));
+        return SOAK_EXIT_USAGE;
+    }
     if (soak_v3_dot(a->p.rain_dir, a->p.up) <= 1e-6 * soak_v3_len(a->p.rain_dir)) {
         cli_error(CMD, "--rain-dir: the rain must come from above (positive component along --up)");
         return SOAK_EXIT_USAGE;
@@ -230,15 +235,9 @@ static int check_pattern(const bake_opts *o, const char *name, const char *patte
 {
     bake_opts other = *o;
     other.output = pattern;
+    other.output_option = name;
     if (soak_bake_pattern_kind(pattern) != 1) {
         cli_error(CMD, "%s '%s': with --frames give a frame pattern such as film.%%04d.exr", name, pattern);
-        return SOAK_EXIT_USAGE;
-    }
-    char mine[4096], theirs[4096];
-    if (soak_bake_frame_path(pattern, (int)o->first, mine, sizeof mine) == SOAK_OK &&
-        soak_bake_frame_path(o->output, (int)o->first, theirs, sizeof theirs) == SOAK_OK &&
-        (soak_path_same(mine, theirs) || strcmp(mine, theirs) == 0)) {
-        cli_error(CMD, "%s: same files as -o", name);
         return SOAK_EXIT_USAGE;
     }
     return bake_opts_check(&other, inputs, 1);
@@ -264,14 +263,10 @@ static int check_outputs(const rain_args *a, const bake_opts *o)
             cli_error(CMD, "%s: %s", names[k], err);
             return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
         }
-        int same = soak_path_same(extra[k], o->output);
-        for (int e = 0; e < k; ++e) same = same || (extra[e] && soak_path_same(extra[k], extra[e]));
-        if (same) {
-            cli_error(CMD, "%s: same file as another output", names[k]);
-            return SOAK_EXIT_USAGE;
-        }
     }
-    return rc;
+    const bake_output outs[4] = {{"-o", o->output}, {names[0], extra[0]}, {names[1], extra[1]}, {names[2], extra[2]}};
+    const bake_output mesh[1] = {{"MESH", a->mesh_path}};
+    return rc ? rc : bake_plan_check(o, outs, 4, mesh, 1);
 }
 
 /* Loads the mesh and bakes it into res. */

@@ -83,7 +83,9 @@ static soak_status frame(void *vctx, int f, double time, const soak_bake_exec *e
         if (st == SOAK_OK) st = soak_bake_write(path, &far, 0, err, errlen);
     }
     soak_image_free(&far);
-    if (st != SOAK_OK && !err[0]) snprintf(err, errlen, "frame %d: %s", f, soak_status_str(st));
+    char label[32];
+    if (st != SOAK_OK && !err[0])
+        snprintf(err, errlen, "%s: %s", bake_frame_label(f, label, sizeof label), soak_status_str(st));
     return st;
 }
 
@@ -93,8 +95,10 @@ static int check_far(const ripples_job *j, const bake_opts *o)
     if (!j->far_path) return 0;
     bake_opts far = *o;
     far.output = j->far_path;
-    const char *inputs[1] = {o->output};
-    return bake_opts_check(&far, inputs, 1);
+    far.output_option = "--far";
+    int rc = bake_opts_check(&far, NULL, 0);
+    const bake_output outs[2] = {{"-o", o->output}, {"--far", j->far_path}};
+    return rc ? rc : bake_plan_check(o, outs, 2, NULL, 0);
 }
 
 int soak_bake_ripples_main(int argc, char **argv)
@@ -113,6 +117,12 @@ int soak_bake_ripples_main(int argc, char **argv)
     int rc = cli_opts_parse(&spec, tables, sizeof tables / sizeof tables[0], argc, argv);
     if (rc >= 0) return rc;
     if (!ring_width_given) j.p.width_m = 0.5 * j.p.wavelength_m;
+    if (!ring_width_given && !(j.p.width_m >= 1e-6)) {
+        cli_error(CMD, "--wavelength %g m: the ring width it implies (half a wavelength, %g m) is under the floor "
+                       "1e-6 m; give --ring-width or a wavelength of at least 2e-6 m",
+                  j.p.wavelength_m, j.p.width_m);
+        return SOAK_EXIT_USAGE;
+    }
     if ((o.have_height && o.height != o.width) || o.time != 0 || o.frame_time != 0 || o.have_origin) {
         cli_error(CMD, "%s", o.have_height && o.height != o.width
                                  ? "the tile is square: give --width only"
