@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_budget.h"
 #include "bake_cli.h"
 #include "cli.h"
 #include "soak/bake_drops.h"
@@ -209,7 +210,10 @@ int soak_bake_drops_main(int argc, char **argv)
         return rc;
     if (j.mesh_path) rc = mesh_exposure(&j, &o);
     else if (j.exposure_path) rc = read_exposure(&j, &o);
-    if (rc == 0 && (rc = settle(&j, &o)) == 0) {
+    double last_time = fmax(bake_frame_time(&o, o.have_frames ? o.first : -1), bake_frame_time(&o, o.last));
+    if (rc == 0 && (rc = settle(&j, &o)) == 0 &&
+        (rc = bake_drops_budget(CMD, &j.p, o.width, o.height, o.have_frames ? o.last - o.first + 1 : 1,
+                                o.have_frames ? last_time : o.time)) == 0) {
         soak_status st = soak_drops_create(&j.p, j.exposure.pixels ? &j.exposure : NULL, (int)o.width, (int)o.height,
                                            &j.state);
         rc = st == SOAK_OK ? bake_run(&o, frame, &j) : bake_fail(CMD, st, "invalid drops settings");

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_budget.h"
 #include "bake_cli.h"
 #include "cli.h"
 #include "soak/bake_ripples.h"
@@ -133,6 +134,7 @@ int soak_bake_ripples_main(int argc, char **argv)
     j.p.size = (int)o.width;
     j.p.seed = o.seed;
     if ((rc = bake_opts_check(&o, NULL, 0)) != 0 || (rc = check_far(&j, &o)) != 0) return rc;
+    if ((rc = bake_ripples_budget(CMD, &j.p, o.have_frames ? o.last - o.first + 1 : 1)) != 0) return rc;
     soak_status st = soak_ripples_impacts(&j.p, &j.impacts, &j.count);
     if (st != SOAK_OK) return bake_fail(CMD, st, "invalid ripple settings (too many impacts per loop?)");
     rc = bake_run(&o, frame, &j);
