@@ -116,6 +116,15 @@ int bake_check_times(const bake_opts *o, double lo, double hi);
  * the exit code. */
 int bake_run(const bake_opts *o, bake_frame_fn fn, void *ctx);
 
+/* The same for kinds with more outputs per frame (--film, --water, --far):
+ * the frame function stages them into extra (soak_bake_stage), and each
+ * frame's outputs, -o's included, are replaced together or not at all
+ * (issue 51 item 4: a full disk leaves every frame from one run). */
+struct soak_staged;
+typedef soak_status (*bake_frame_staged_fn)(void *ctx, int frame, double time, const soak_bake_exec *exec,
+                                            soak_image *out, struct soak_staged *extra, char *err, size_t errlen);
+int bake_run_staged(const bake_opts *o, bake_frame_staged_fn fn, void *ctx);
+
 /* Exit code and message for a library status (SOAK_ERR_ARG -> 2, else 1). */
 int bake_fail(const char *cmd, soak_status st, const char *err);
 

@@ -8,6 +8,7 @@
 
 #include "bake_cli.h"
 #include "cli.h"
+#include "soak/staged.h"
 
 #define MAX_FRAMES 100000
 #define MAX_FRAME_NUMBER 9999999
@@ -216,7 +217,7 @@ static void on_progress(void *user, double fraction)
     cli_progress_update(&p->bar, p->base + fraction);
 }
 
-int bake_run(const bake_opts *o, bake_frame_fn fn, void *ctx)
+int bake_run_staged(const bake_opts *o, bake_frame_staged_fn fn, void *ctx)
 {
     long first = o->have_frames ? o->first : -1, last = o->have_frames ? o->last : -1;
     progress_state prog;
@@ -228,8 +229,12 @@ int bake_run(const bake_opts *o, bake_frame_fn fn, void *ctx)
         prog.base = (double)(f - first);
         double time = bake_frame_time(o, f);
         soak_image img = {0, 0, 0, NULL};
-        soak_status st = fn(ctx, (int)f, time, &exec, &img, err, sizeof err);
-        if (st == SOAK_OK) st = soak_bake_write(path, &img, o->float_exr, err, sizeof err);
+        soak_staged stage;
+        soak_staged_init(&stage);
+        soak_status st = fn(ctx, (int)f, time, &exec, &img, &stage, err, sizeof err);
+        if (st == SOAK_OK) st = soak_bake_stage(&stage, path, &img, o->float_exr, err, sizeof err);
+        if (st == SOAK_OK) st = soak_staged_commit(&stage, err, sizeof err);
+        else soak_staged_abort(&stage);
         soak_image_free(&img);
         if (st != SOAK_OK) {
             if (prog.bar.enabled) fputc('\n', stderr);
@@ -238,4 +243,23 @@ int bake_run(const bake_opts *o, bake_frame_fn fn, void *ctx)
     }
     cli_progress_finish(&prog.bar);
     return SOAK_EXIT_OK;
+}
+
+typedef struct plain_frame {
+    bake_frame_fn fn;
+    void *ctx;
+} plain_frame;
+
+static soak_status plain(void *ctx, int frame, double time, const soak_bake_exec *exec, soak_image *out,
+                         struct soak_staged *extra, char *err, size_t errlen)
+{
+    (void)extra;
+    const plain_frame *p = ctx;
+    return p->fn(p->ctx, frame, time, exec, out, err, errlen);
+}
+
+int bake_run(const bake_opts *o, bake_frame_fn fn, void *ctx)
+{
+    plain_frame p = {fn, ctx};
+    return bake_run_staged(o, plain, &p);
 }

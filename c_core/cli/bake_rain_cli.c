@@ -292,7 +292,7 @@ static soak_status bake(const rain_args *a, const bake_opts *o, soak_rain_result
 /* One frame of --frames: -o's wetness into out, --film and --water
  * written here. */
 static soak_status rain_frame(void *ctx, int frame, double time, const soak_bake_exec *exec, soak_image *out,
-                              char *err, size_t errlen)
+                              struct soak_staged *extra, char *err, size_t errlen)
 {
     rain_args *a = ctx;
     soak_rain_frame fr;
@@ -309,7 +309,7 @@ static soak_status rain_frame(void *ctx, int frame, double time, const soak_bake
         char path[4096];
         if (!patterns[k]) continue;
         st = soak_bake_frame_path(patterns[k], frame, path, sizeof path);
-        if (st == SOAK_OK) st = soak_bake_write(path, imgs[k], a->float_exr, err, errlen);
+        if (st == SOAK_OK) st = soak_bake_stage(extra, path, imgs[k], a->float_exr, err, errlen);
     }
     a->last.balance = fr.balance;
     *out = fr.wetness;
@@ -336,7 +336,7 @@ static int run_frames(rain_args *a, const bake_opts *o)
         return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
     }
     a->float_exr = o->float_exr;
-    int rc = bake_run(o, rain_frame, a);
+    int rc = bake_run_staged(o, rain_frame, a);
     if (rc == SOAK_EXIT_OK && a->exposure_path) {
         const char *paths[1] = {a->exposure_path};
         const soak_image *imgs[1] = {soak_rain_frames_exposure(a->frames)};

@@ -68,8 +68,8 @@ static void usage(FILE *out)
                  "  soak bake ripples --rate 10 --width 512 --frames 0-63 -o ripples.%%04d.exr --far far.%%04d.exr\n");
 }
 
-static soak_status frame(void *vctx, int f, double time, const soak_bake_exec *exec, soak_image *out, char *err,
-                         size_t errlen)
+static soak_status frame(void *vctx, int f, double time, const soak_bake_exec *exec, soak_image *out,
+                         struct soak_staged *extra, char *err, size_t errlen)
 {
     (void)time;
     ripples_job *j = vctx;
@@ -81,7 +81,7 @@ static soak_status frame(void *vctx, int f, double time, const soak_bake_exec *e
         char path[4096];
         st = f < 0 ? (snprintf(path, sizeof path, "%s", j->far_path), SOAK_OK)
                    : soak_bake_frame_path(j->far_path, f, path, sizeof path);
-        if (st == SOAK_OK) st = soak_bake_write(path, &far, 0, err, errlen);
+        if (st == SOAK_OK) st = soak_bake_stage(extra, path, &far, 0, err, errlen);
     }
     soak_image_free(&far);
     char label[32];
@@ -137,7 +137,7 @@ int soak_bake_ripples_main(int argc, char **argv)
     if ((rc = bake_ripples_budget(CMD, &j.p, o.have_frames ? o.last - o.first + 1 : 1)) != 0) return rc;
     soak_status st = soak_ripples_impacts(&j.p, &j.impacts, &j.count);
     if (st != SOAK_OK) return bake_fail(CMD, st, "invalid ripple settings (too many impacts per loop?)");
-    rc = bake_run(&o, frame, &j);
+    rc = bake_run_staged(&o, frame, &j);
     free(j.impacts);
     return rc;
 }

@@ -9,7 +9,10 @@
  * links and ".." resolved) plus its name. Entries are sorted by identity
  * and neighbours compared, so 100 000 frames of four outputs cost one sort. */
 #define _DEFAULT_SOURCE
+#include <dirent.h>
+#include <errno.h>
 #include <limits.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,6 +34,7 @@ typedef struct plan {
     plan_entry *e;
     size_t n, cap;
     char last_dir[PATH_MAX], last_real[PATH_MAX]; /* consecutive frames share a folder */
+    const char *cmd;
 } plan;
 
 /* "i:<dev>:<ino>" for an existing file, else "p:<canonical folder>/<name>"
@@ -154,6 +158,68 @@ static int report_clash(const plan *p, const bake_opts *o, const bake_output *ou
     return 0;
 }
 
+/* A temporary of ours, ".<name>.tmp<pid>.<n>" (soak/staged.h): *name_len
+ * gets the length of <name> and *pid the writer's process id. */
+static int our_temporary(const char *entry, size_t *name_len, long *pid)
+{
+    const char *tmp = strstr(entry, ".tmp"), *next;
+    if (entry[0] != '.' || !tmp || tmp == entry + 1) return 0;
+    for (next = strstr(tmp + 1, ".tmp"); next; next = strstr(next + 1, ".tmp")) tmp = next;
+    char *end = NULL;
+    *pid = strtol(tmp + 4, &end, 10);
+    if (end == tmp + 4 || *end != '.' || *pid <= 0) return 0;
+    const char *index = end + 1;
+    strtol(index, &end, 10);
+    if (end == index || *end) return 0;
+    *name_len = (size_t)(tmp - entry - 1);
+    return 1;
+}
+
+static int planned_output(plan *p, const char *path)
+{
+    char *id = identity(p, path);
+    if (!id) return 0;
+    plan_entry key = {id, NULL, 0, 0, 0};
+    size_t lo = 0, hi = p->n;
+    while (lo < hi) {
+        size_t mid = (lo + hi) / 2;
+        if (strcmp(p->e[mid].id, key.id) < 0) lo = mid + 1;
+        else hi = mid;
+    }
+    int hit = 0;
+    for (size_t i = lo; i < p->n && !strcmp(p->e[i].id, id) && !hit; ++i) hit = !p->e[i].input;
+    free(id);
+    return hit;
+}
+
+/* Removes the temporaries a killed earlier run of these outputs left
+ * (issue 51 item 4: a signal between naming and renaming a finished file,
+ * or SIGKILL): ours by name, for a planned output, of a process that is
+ * gone. One pass over each output folder. */
+static void sweep_stale(plan *p, const bake_output *outs, int n_outs)
+{
+    for (int k = 0; k < n_outs; ++k) {
+        if (!outs[k].path || !outs[k].path[0]) continue;
+        const char *slash = strrchr(outs[k].path, '/');
+        char dir[PATH_MAX];
+        snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - outs[k].path) + 1 : 1, slash ? outs[k].path : ".");
+        DIR *d = opendir(dir);
+        for (struct dirent *e = d ? readdir(d) : NULL; e; e = readdir(d)) {
+            size_t name_len;
+            long pid;
+            char final[PATH_MAX + NAME_MAX + 2], stale[PATH_MAX + NAME_MAX + 2];
+            if (!our_temporary(e->d_name, &name_len, &pid) || pid == getpid() || kill((pid_t)pid, 0) == 0 ||
+                errno != ESRCH)
+                continue;
+            snprintf(final, sizeof final, "%s%s%.*s", slash ? dir : "", "", (int)name_len, e->d_name + 1);
+            snprintf(stale, sizeof stale, "%s%s", slash ? dir : "", e->d_name);
+            if (planned_output(p, final) && unlink(stale) == 0)
+                fprintf(stderr, "soak %s: removed %s, left by an interrupted run\n", p->cmd, stale);
+        }
+        if (d) closedir(d);
+    }
+}
+
 int bake_plan_check(const bake_opts *o, const bake_output *outs, int n_outs, const bake_output *ins, int n_ins)
 {
     if (n_ins > BAKE_MAX_INPUTS) n_ins = BAKE_MAX_INPUTS;
@@ -170,6 +236,8 @@ int bake_plan_check(const bake_opts *o, const bake_output *outs, int n_outs, con
     } else {
         qsort(p->e, p->n, sizeof *p->e, by_identity);
         rc = report_clash(p, o, outs, ins);
+        p->cmd = o->cmd;
+        if (rc == 0) sweep_stale(p, outs, n_outs);
     }
     for (size_t i = 0; p && i < p->n; ++i) free(p->e[i].id);
     if (p) free(p->e);
