@@ -105,14 +105,15 @@ const size_t bake_noise_opts_n = sizeof bake_noise_opts / sizeof bake_noise_opts
 static int expand(const bake_opts *o, const char *path, long frame, char *out, size_t outlen)
 {
     int kind = soak_bake_pattern_kind(path);
+    if (strlen(path) + 16 >= outlen) {
+        cli_error(o->cmd, "'%.64s...': a path of %zu bytes is longer than the %zu a path may have (with 16 for the "
+                          "frame number or the temporary's suffix)",
+                  path, strlen(path), outlen - 17);
+        return 0;
+    }
     if (kind == 0 || frame < 0) {
         snprintf(out, outlen, "%s", path);
         return 1;
-    }
-    if (kind > 0 && strlen(path) + 16 >= outlen) {
-        cli_error(o->cmd, "'%.64s...': a path of %zu bytes is longer than the %zu a frame's path may have", path,
-                  strlen(path), outlen - 1);
-        return 0;
     }
     if (kind < 0 || soak_bake_frame_path(path, (int)frame, out, outlen) != SOAK_OK) {
         cli_error(o->cmd, "'%s': bad frame pattern (use one %%d, %%4d or %%04d)", path);

@@ -33,7 +33,9 @@ refused "temporary's 16-byte suffix" -- "$SOAK" bake turbulence --width 8 --heig
 refused "--water frame 0: the name" -- "$SOAK" bake rain nosuch.obj --width 8 --height 8 --frames 0-1 -o 'w%d.exr' \
   --water "$name%d.exr"
 deep=$(printf 'd/%.0s' $(seq 2100))
-refused "is longer than the 4095" -- "$SOAK" bake turbulence --width 8 --height 8 --frames 0-1 -o "${deep}x%d.exr"
+refused "is longer than the 4079 a path may have" -- "$SOAK" bake turbulence --width 8 --height 8 --frames 0-1 \
+  -o "${deep}x%d.exr"
+refused "is longer than the 4079 a path may have" -- "$SOAK" bake turbulence --width 8 --height 8 -o "${deep}x.exr"
 refused "--wavelength 1.9e-06 m: the ring width" -- "$SOAK" bake ripples --width 16 --wavelength 1.9e-6 -o r.exr
 refused "--rain-dir" -- "$SOAK" bake rain nosuch.obj --width 8 --height 8 --rain-dir 1e-300,1e-300,1e-300 -o w.exr
 
