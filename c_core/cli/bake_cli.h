@@ -39,6 +39,7 @@ int soak_bake_combine_main(int argc, char **argv);
 typedef struct bake_opts {
     const char *cmd; /* "bake <kind>", for messages */
     const char *output;
+    const char *output_option; /* the option naming output in messages (NULL: "-o") */
     long width, height;
     int have_width, have_height;
     uint64_t seed;
@@ -94,6 +95,18 @@ extern const size_t bake_noise_opts_n;
  * folder. Returns 0 or the exit code after printing the error. */
 int bake_opts_check(const bake_opts *o, const char *const *inputs, int n_inputs);
 
+/* One output plan (output_plan.c, issue 51 item 1): every frame's path of
+ * every output (a pattern expands over --frames, a plain path is one file)
+ * and of every input, resolved (symbolic links, "..", hard links) before
+ * any work; two outputs, or an output and an input, that are one file are
+ * refused naming both options and the frame. Returns 0 or the exit code
+ * after printing the error. */
+typedef struct bake_output {
+    const char *option; /* "-o", "--far", "mesh", ... */
+    const char *path;   /* NULL or "": none */
+} bake_output;
+int bake_plan_check(const bake_opts *o, const bake_output *outs, int n_outs, const bake_output *ins, int n_ins);
+
 /* Produces frame `frame` (the frame number, or -1 for a single image) at
  * `time` into out; err gets a message on failure. */
 typedef soak_status (*bake_frame_fn)(void *ctx, int frame, double time, const soak_bake_exec *exec, soak_image *out,
@@ -104,9 +117,26 @@ typedef soak_status (*bake_frame_fn)(void *ctx, int frame, double time, const so
  * three options, never on the --frames range when the origin is given. */
 double bake_frame_time(const bake_opts *o, long f);
 
+/* "frame F", or "the map" for a single image (f < 0): never "frame -1". */
+const char *bake_frame_label(long f, char *buf, size_t n);
+
+/* Every frame's time within [lo, hi], checked before any work (times are
+ * linear in f: the first and last frames bound the rest). Returns 0 or the
+ * exit code after naming the frame, its time and the options that set it. */
+int bake_check_times(const bake_opts *o, double lo, double hi);
+
 /* Runs the frames with a progress bar, writing each atomically; returns
  * the exit code. */
 int bake_run(const bake_opts *o, bake_frame_fn fn, void *ctx);
+
+/* The same for kinds with more outputs per frame (--film, --water, --far):
+ * the frame function stages them into extra (soak_bake_stage), and each
+ * frame's outputs, -o's included, are replaced together or not at all
+ * (issue 51 item 4: a full disk leaves every frame from one run). */
+struct soak_staged;
+typedef soak_status (*bake_frame_staged_fn)(void *ctx, int frame, double time, const soak_bake_exec *exec,
+                                            soak_image *out, struct soak_staged *extra, char *err, size_t errlen);
+int bake_run_staged(const bake_opts *o, bake_frame_staged_fn fn, void *ctx);
 
 /* Exit code and message for a library status (SOAK_ERR_ARG -> 2, else 1). */
 int bake_fail(const char *cmd, soak_status st, const char *err);

@@ -8,6 +8,7 @@
 
 #include "bake_cli.h"
 #include "cli.h"
+#include "soak/staged.h"
 
 #define MAX_FRAMES 100000
 #define MAX_FRAME_NUMBER 9999999
@@ -114,6 +115,12 @@ const size_t bake_noise_opts_n = sizeof bake_noise_opts / sizeof bake_noise_opts
 static int expand(const bake_opts *o, const char *path, long frame, char *out, size_t outlen)
 {
     int kind = soak_bake_pattern_kind(path);
+    if (strlen(path) + 16 >= outlen) {
+        cli_error(o->cmd, "'%.64s...': a path of %zu bytes is longer than the %zu a path may have (with 16 for the "
+                          "frame number or the temporary's suffix)",
+                  path, strlen(path), outlen - 17);
+        return 0;
+    }
     if (kind == 0 || frame < 0) {
         snprintf(out, outlen, "%s", path);
         return 1;
@@ -165,7 +172,10 @@ int bake_opts_check(const bake_opts *o, const char *const *inputs, int n_inputs)
             return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
         }
     }
-    return 0;
+    bake_output outs[1] = {{o->output_option ? o->output_option : "-o", o->output}}, ins[BAKE_MAX_INPUTS];
+    int n = n_inputs < BAKE_MAX_INPUTS ? n_inputs : BAKE_MAX_INPUTS;
+    for (int k = 0; k < n; ++k) ins[k] = (bake_output){"input", inputs[k]};
+    return bake_plan_check(o, outs, 1, ins, n);
 }
 
 int bake_fail(const char *cmd, soak_status st, const char *err)
@@ -185,6 +195,28 @@ double bake_frame_time(const bake_opts *o, long f)
     return o->time + offset;
 }
 
+const char *bake_frame_label(long f, char *buf, size_t n)
+{
+    if (f < 0) snprintf(buf, n, "the map");
+    else snprintf(buf, n, "frame %ld", f);
+    return buf;
+}
+
+int bake_check_times(const bake_opts *o, double lo, double hi)
+{
+    long ends[2] = {o->have_frames ? o->first : -1, o->have_frames ? o->last : -1};
+    for (int k = 0; k < 2; ++k) {
+        double t = bake_frame_time(o, ends[k]);
+        if (t >= lo && t <= hi) continue;
+        char label[32];
+        cli_error(o->cmd, "%s is at time %g s, outside %g..%g s (set by %s); nothing was written",
+                  bake_frame_label(ends[k], label, sizeof label), t, lo, hi,
+                  o->have_frames ? "--frames, --time, --frame-time or --fps, --frame-origin" : "--time");
+        return SOAK_EXIT_USAGE;
+    }
+    return 0;
+}
+
 typedef struct progress_state {
     cli_progress bar;
     double base; /* frames already done */
@@ -196,7 +228,7 @@ static void on_progress(void *user, double fraction)
     cli_progress_update(&p->bar, p->base + fraction);
 }
 
-int bake_run(const bake_opts *o, bake_frame_fn fn, void *ctx)
+int bake_run_staged(const bake_opts *o, bake_frame_staged_fn fn, void *ctx)
 {
     long first = o->have_frames ? o->first : -1, last = o->have_frames ? o->last : -1;
     progress_state prog;
@@ -208,8 +240,12 @@ int bake_run(const bake_opts *o, bake_frame_fn fn, void *ctx)
         prog.base = (double)(f - first);
         double time = bake_frame_time(o, f);
         soak_image img = {0, 0, 0, NULL};
-        soak_status st = fn(ctx, (int)f, time, &exec, &img, err, sizeof err);
-        if (st == SOAK_OK) st = soak_bake_write(path, &img, o->float_exr, err, sizeof err);
+        soak_staged stage;
+        soak_staged_init(&stage);
+        soak_status st = fn(ctx, (int)f, time, &exec, &img, &stage, err, sizeof err);
+        if (st == SOAK_OK) st = soak_bake_stage(&stage, path, &img, o->float_exr, err, sizeof err);
+        if (st == SOAK_OK) st = soak_staged_commit(&stage, err, sizeof err);
+        else soak_staged_abort(&stage);
         soak_image_free(&img);
         if (st != SOAK_OK) {
             if (prog.bar.enabled) fputc('\n', stderr);
@@ -218,4 +254,23 @@ int bake_run(const bake_opts *o, bake_frame_fn fn, void *ctx)
     }
     cli_progress_finish(&prog.bar);
     return SOAK_EXIT_OK;
+}
+
+typedef struct plain_frame {
+    bake_frame_fn fn;
+    void *ctx;
+} plain_frame;
+
+static soak_status plain(void *ctx, int frame, double time, const soak_bake_exec *exec, soak_image *out,
+                         struct soak_staged *extra, char *err, size_t errlen)
+{
+    (void)extra;
+    const plain_frame *p = ctx;
+    return p->fn(p->ctx, frame, time, exec, out, err, errlen);
+}
+
+int bake_run(const bake_opts *o, bake_frame_fn fn, void *ctx)
+{
+    plain_frame p = {fn, ctx};
+    return bake_run_staged(o, plain, &p);
 }

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_budget.h"
 #include "bake_cli.h"
 #include "cli.h"
 #include "soak/bake_drops.h"
@@ -160,12 +161,10 @@ static soak_status frame(void *vctx, int f, double time, const soak_bake_exec *e
                          size_t errlen)
 {
     drops_job *j = vctx;
-    if (!(time >= 0 && time <= SOAK_DROPS_MAX_TIME)) {
-        snprintf(err, errlen, "frame %d is at time %g s (expected 0..%g)", f, time, SOAK_DROPS_MAX_TIME);
-        return SOAK_ERR_ARG;
-    }
+    char label[32];
     soak_status st = soak_drops_frame(j->state, time, exec, out);
-    if (st != SOAK_OK) snprintf(err, errlen, "frame %d at %g s: %s", f, time, soak_status_str(st));
+    if (st != SOAK_OK)
+        snprintf(err, errlen, "%s at %g s: %s", bake_frame_label(f, label, sizeof label), time, soak_status_str(st));
     return st;
 }
 
@@ -208,10 +207,15 @@ int soak_bake_drops_main(int argc, char **argv)
     if (rc >= 0) return rc;
     if ((rc = settle(&j, &o)) != 0) return rc;
     const char *inputs[2] = {j.mesh_path ? j.mesh_path : j.exposure_path, j.exposure_path};
-    if ((rc = bake_opts_check(&o, inputs, inputs[0] ? 1 : 0)) != 0) return rc;
+    if ((rc = bake_opts_check(&o, inputs, inputs[0] ? 1 : 0)) != 0 ||
+        (rc = bake_check_times(&o, 0, SOAK_DROPS_MAX_TIME)) != 0)
+        return rc;
     if (j.mesh_path) rc = mesh_exposure(&j, &o);
     else if (j.exposure_path) rc = read_exposure(&j, &o);
-    if (rc == 0 && (rc = settle(&j, &o)) == 0) {
+    double last_time = fmax(bake_frame_time(&o, o.have_frames ? o.first : -1), bake_frame_time(&o, o.last));
+    if (rc == 0 && (rc = settle(&j, &o)) == 0 &&
+        (rc = bake_drops_budget(CMD, &j.p, o.width, o.height, o.have_frames ? o.last - o.first + 1 : 1,
+                                o.have_frames ? last_time : o.time)) == 0) {
         soak_status st = soak_drops_create(&j.p, j.exposure.pixels ? &j.exposure : NULL, (int)o.width, (int)o.height,
                                            &j.state);
         rc = st == SOAK_OK ? bake_run(&o, frame, &j) : bake_fail(CMD, st, "invalid drops settings");

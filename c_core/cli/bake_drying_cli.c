@@ -162,7 +162,8 @@ int soak_bake_drying_main(int argc, char **argv)
     j.p.seed = o.seed;
     j.width = (int)o.width;
     j.height = (int)o.height;
-    if ((rc = bake_opts_check(&o, &j.mask_path, j.mask_path ? 1 : 0)) != 0) return rc;
+    if ((rc = bake_opts_check(&o, &j.mask_path, j.mask_path ? 1 : 0)) != 0 || (rc = bake_check_times(&o, 0, HUGE_VAL)))
+        return rc;
     if (!j.mask_path || (rc = read_mask(&j, &o)) == 0) rc = bake_run(&o, frame, &j);
     soak_image_free(&j.mask);
     return rc;

@@ -224,6 +224,11 @@ static int parse_args(int argc, char **argv, rain_args *a, bake_opts *o)
     if (!a->have_dir) a->p.rain_dir = a->p.up;
     a->p.seed = o->seed;
     a->p.film = !a->no_film;
+    if (!(soak_v3_len(a->p.rain_dir) > 1e-12 && soak_v3_len(a->p.rain_dir) < 1e300)) {
+        cli_error(CMD, "--rain-dir: a direction of length %g cannot be normalised (give e.g. 0,1,0)",
+                  soak_v3_len(a->p.rain_dir));
+        return SOAK_EXIT_USAGE;
+    }
     if (soak_v3_dot(a->p.rain_dir, a->p.up) <= 1e-6 * soak_v3_len(a->p.rain_dir)) {
         cli_error(CMD, "--rain-dir: the rain must come from above (positive component along --up)");
         return SOAK_EXIT_USAGE;
@@ -237,15 +242,9 @@ static int check_pattern(const bake_opts *o, const char *name, const char *patte
 {
     bake_opts other = *o;
     other.output = pattern;
+    other.output_option = name;
     if (soak_bake_pattern_kind(pattern) != 1) {
         cli_error(CMD, "%s '%s': with --frames give a frame pattern such as film.%%04d.exr", name, pattern);
-        return SOAK_EXIT_USAGE;
-    }
-    char mine[4096], theirs[4096];
-    if (soak_bake_frame_path(pattern, (int)o->first, mine, sizeof mine) == SOAK_OK &&
-        soak_bake_frame_path(o->output, (int)o->first, theirs, sizeof theirs) == SOAK_OK &&
-        (soak_path_same(mine, theirs) || strcmp(mine, theirs) == 0)) {
-        cli_error(CMD, "%s: same files as -o", name);
         return SOAK_EXIT_USAGE;
     }
     return bake_opts_check(&other, inputs, 1);
@@ -271,14 +270,10 @@ static int check_outputs(const rain_args *a, const bake_opts *o)
             cli_error(CMD, "%s: %s", names[k], err);
             return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
         }
-        int same = soak_path_same(extra[k], o->output);
-        for (int e = 0; e < k; ++e) same = same || (extra[e] && soak_path_same(extra[k], extra[e]));
-        if (same) {
-            cli_error(CMD, "%s: same file as another output", names[k]);
-            return SOAK_EXIT_USAGE;
-        }
     }
-    return rc;
+    const bake_output outs[4] = {{"-o", o->output}, {names[0], extra[0]}, {names[1], extra[1]}, {names[2], extra[2]}};
+    const bake_output mesh[1] = {{"MESH", a->mesh_path}};
+    return rc ? rc : bake_plan_check(o, outs, 4, mesh, 1);
 }
 
 /* Loads the mesh and bakes it into res. */
@@ -304,7 +299,7 @@ static soak_status bake(const rain_args *a, const bake_opts *o, soak_rain_result
 /* One frame of --frames: -o's wetness into out, --film and --water
  * written here. */
 static soak_status rain_frame(void *ctx, int frame, double time, const soak_bake_exec *exec, soak_image *out,
-                              char *err, size_t errlen)
+                              struct soak_staged *extra, char *err, size_t errlen)
 {
     rain_args *a = ctx;
     soak_rain_frame fr;
@@ -321,7 +316,7 @@ static soak_status rain_frame(void *ctx, int frame, double time, const soak_bake
         char path[4096];
         if (!patterns[k]) continue;
         st = soak_bake_frame_path(patterns[k], frame, path, sizeof path);
-        if (st == SOAK_OK) st = soak_bake_write(path, imgs[k], a->float_exr, err, errlen);
+        if (st == SOAK_OK) st = soak_bake_stage(extra, path, imgs[k], a->float_exr, err, errlen);
     }
     a->last.balance = fr.balance;
     *out = fr.wetness;
@@ -348,7 +343,7 @@ static int run_frames(rain_args *a, const bake_opts *o)
         return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
     }
     a->float_exr = o->float_exr;
-    int rc = bake_run(o, rain_frame, a);
+    int rc = bake_run_staged(o, rain_frame, a);
     if (rc == SOAK_EXIT_OK && a->exposure_path) {
         const char *paths[1] = {a->exposure_path};
         const soak_image *imgs[1] = {soak_rain_frames_exposure(a->frames)};

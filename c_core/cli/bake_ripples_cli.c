@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_budget.h"
 #include "bake_cli.h"
 #include "cli.h"
 #include "soak/bake_ripples.h"
@@ -70,8 +71,8 @@ static void usage(FILE *out)
                  "  soak bake ripples --rate 10 --width 512 --frames 0-63 -o ripples.%%04d.exr --far far.%%04d.exr\n");
 }
 
-static soak_status frame(void *vctx, int f, double time, const soak_bake_exec *exec, soak_image *out, char *err,
-                         size_t errlen)
+static soak_status frame(void *vctx, int f, double time, const soak_bake_exec *exec, soak_image *out,
+                         struct soak_staged *extra, char *err, size_t errlen)
 {
     (void)time;
     ripples_job *j = vctx;
@@ -83,10 +84,12 @@ static soak_status frame(void *vctx, int f, double time, const soak_bake_exec *e
         char path[4096];
         st = f < 0 ? (snprintf(path, sizeof path, "%s", j->far_path), SOAK_OK)
                    : soak_bake_frame_path(j->far_path, f, path, sizeof path);
-        if (st == SOAK_OK) st = soak_bake_write(path, &far, 0, err, errlen);
+        if (st == SOAK_OK) st = soak_bake_stage(extra, path, &far, 0, err, errlen);
     }
     soak_image_free(&far);
-    if (st != SOAK_OK && !err[0]) snprintf(err, errlen, "frame %d: %s", f, soak_status_str(st));
+    char label[32];
+    if (st != SOAK_OK && !err[0])
+        snprintf(err, errlen, "%s: %s", bake_frame_label(f, label, sizeof label), soak_status_str(st));
     return st;
 }
 
@@ -96,8 +99,10 @@ static int check_far(const ripples_job *j, const bake_opts *o)
     if (!j->far_path) return 0;
     bake_opts far = *o;
     far.output = j->far_path;
-    const char *inputs[1] = {o->output};
-    return bake_opts_check(&far, inputs, 1);
+    far.output_option = "--far";
+    int rc = bake_opts_check(&far, NULL, 0);
+    const bake_output outs[2] = {{"-o", o->output}, {"--far", j->far_path}};
+    return rc ? rc : bake_plan_check(o, outs, 2, NULL, 0);
 }
 
 int soak_bake_ripples_main(int argc, char **argv)
@@ -116,6 +121,12 @@ int soak_bake_ripples_main(int argc, char **argv)
     int rc = cli_opts_parse(&spec, tables, sizeof tables / sizeof tables[0], argc, argv);
     if (rc >= 0) return rc;
     if (!ring_width_given) j.p.width_m = 0.5 * j.p.wavelength_m;
+    if (!ring_width_given && !(j.p.width_m >= 1e-6)) {
+        cli_error(CMD, "--wavelength %g m: the ring width it implies (half a wavelength, %g m) is under the floor "
+                       "1e-6 m; give --ring-width or a wavelength of at least 2e-6 m",
+                  j.p.wavelength_m, j.p.width_m);
+        return SOAK_EXIT_USAGE;
+    }
     if ((o.have_height && o.height != o.width) || o.time != 0 || o.frame_time != 0 || o.have_origin) {
         cli_error(CMD, "%s", o.have_height && o.height != o.width
                                  ? "the tile is square: give --width only"
@@ -126,9 +137,10 @@ int soak_bake_ripples_main(int argc, char **argv)
     j.p.size = (int)o.width;
     j.p.seed = o.seed;
     if ((rc = bake_opts_check(&o, NULL, 0)) != 0 || (rc = check_far(&j, &o)) != 0) return rc;
+    if ((rc = bake_ripples_budget(CMD, &j.p, o.have_frames ? o.last - o.first + 1 : 1)) != 0) return rc;
     soak_status st = soak_ripples_impacts(&j.p, &j.impacts, &j.count);
     if (st != SOAK_OK) return bake_fail(CMD, st, "invalid ripple settings (too many impacts per loop?)");
-    rc = bake_run(&o, frame, &j);
+    rc = bake_run_staged(&o, frame, &j);
     free(j.impacts);
     return rc;
 }

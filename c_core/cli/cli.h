@@ -184,4 +184,10 @@ void cli_progress_update(cli_progress *p, double done);
 void cli_progress_finish(cli_progress *p);
 double cli_now(void);
 
+/* Every environment variable soak reads, parsed like an option (env_check.c):
+ * 0, or SOAK_EXIT_USAGE after naming the variable and its valid range. */
+int cli_check_environment(void);
+/* The variables, their ranges and meaning, for --help. */
+void cli_environment_help(FILE *out);
+
 #endif

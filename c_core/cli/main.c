@@ -53,14 +53,9 @@ static void usage(FILE *out)
             "  1. $SOAK_DATA_DIR, when set (only it is searched)\n"
             "  2. share/soak beside the folder of the soak executable\n"
             "     (PREFIX/bin/soak reads PREFIX/share/soak, wherever PREFIX is)\n"
-            "  3. the source tree, for a soak that runs from its build tree\n"
-            "\nenvironment:\n"
-            "  SOAK_DATA_DIR    the data folder (above)\n"
-            "  SOAK_MATERIALS   the presets file (default: materials.json of the data folder)\n"
-            "  SOAK_PLUGIN_DIR  the folder of the I/O modules (default: beside soak, or\n"
-            "                   PREFIX/lib/soak for an installed soak)\n"
-            "  SOAK_PROGRESS=1  progress bars even when stderr is not a terminal\n"
-            "\nexample:\n  soak albedo --material sand --wetness 1\n");
+            "  3. the source tree, for a soak that runs from its build tree\n");
+    cli_environment_help(out);
+    fprintf(out, "\nexample:\n  soak albedo --material sand --wetness 1\n");
 }
 
 /* `soak --man`: the manual page, from --help's texts and the option tables. */
@@ -99,6 +94,7 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "--man") == 0) return check_stdout(NULL, print_man());
     const soak_cli_command *cmd = cli_find(commands, n_commands, argv[1]);
+    if (cmd && (rc = cli_check_environment()) != 0) return rc;
     if (cmd) return check_stdout(cmd->name, cmd->run(argc - 1, argv + 1));
     fprintf(stderr, "soak: unknown command '%s' (see 'soak --help')\n", argv[1]);
     return SOAK_EXIT_USAGE;

@@ -161,6 +161,35 @@ expect_stderr "nosuch.json" "message names the preset file"
 expect_exit 1 "unwritable folder" -- "$SOAK" export --target json -o "$SOAK_TMP/no/such/dir/x.json"
 ls -a "$SOAK_TMP" | grep -q '\.tmp' && bad "temporary left behind" || ok "no temporary left behind"
 
+# Code through a file name (issue 51 item 2): the preset file's name reaches
+# the generated POV-Ray include and OSL source only as an escaped literal.
+# POV-Ray itself is the reference: it renders a scene including the export
+# without running the directive text, and reads back the name unchanged.
+names="$SOAK_TMP/names"; mkdir -p "$names"
+small="$ROOT/tests/fuzz/data/export_names_presets.json"
+evil='x";#fopen P "pwned.txt" write #write(P,"y") #fclose P #declare Z="y.json'
+cp "$small" "$names/$evil"
+expect_exit 0 "povray export of a preset file named with directive text" -- \
+  "$SOAK" export --target povray --materials "$names/$evil" -o "$names/evil.inc"
+if command -v povray >/dev/null; then
+  printf '#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n#include "evil.inc"\n#fopen N "name.txt" write\n#write (N, Soak_Data_Materials_File)\n#fclose N\ncamera { location <0,0,-3> look_at 0 }\nsphere { 0, 1 pigment { rgb 1 } }\n' > "$names/s.pov"
+  (cd "$names" && povray +Is.pov -D +W8 +H8 -GA +O/dev/null >/dev/null 2>&1)
+  [ -e "$names/pwned.txt" ] && bad "rendering the include ran the name's #fopen/#write" \
+    || ok "rendering the include wrote no pwned.txt"
+  [ "$(cat "$names/name.txt" 2>/dev/null)" = "$evil" ] && ok "POV-Ray reads the file name back unchanged" \
+    || bad "POV-Ray read the file name as '$(cat "$names/name.txt" 2>/dev/null)'"
+else
+  skip "the include rendered by POV-Ray" "povray not on PATH"
+fi
+nl_name=$'m.json\n#define Wetness 0\n'
+cp "$small" "$names/$nl_name"
+for t in osl osl-wetmap povray; do
+  expect_exit 0 "$t export of a preset file named with a newline" -- \
+    "$SOAK" export --target "$t" --materials "$names/$nl_name" -o "$names/nl.$t"
+  grep -q '^#define Wetness' "$names/nl.$t" && bad "--target $t: the name put a raw line into the source" \
+    || ok "--target $t: no raw line from the file name"
+done
+
 expect_exit 2 "missing --target" -- "$SOAK" export
 expect_stderr "--target" "message names --target"
 expect_exit 2 "unknown target" -- "$SOAK" export --target nosuch

@@ -74,6 +74,15 @@ soak_status soak_export_header_make(const soak_preset_db *db, soak_export_header
     return SOAK_OK;
 }
 
+soak_status soak_export_begin(const soak_preset_db *db, FILE *out, char *err, size_t errlen,
+                              soak_export_header *h)
+{
+    if (!db || !out || !err || !errlen || !h) return SOAK_ERR_NULL;
+    soak_status st = soak_export_header_make(db, h);
+    if (st != SOAK_OK) snprintf(err, errlen, "%s: cannot read the preset file to hash it", soak_presets_path(db));
+    return st;
+}
+
 static soak_status write_all(const char *text, size_t len, FILE *f)
 {
     if (len && fwrite(text, 1, len, f) != len) return SOAK_ERR_IO;

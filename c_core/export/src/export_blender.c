@@ -470,13 +470,9 @@ static void add_header(soak_json *j, cJSON *root, const soak_export_header *h)
 
 soak_status soak_export_write_blender(const soak_preset_db *db, FILE *out, char *err, size_t errlen)
 {
-    if (!db || !out || !err) return SOAK_ERR_NULL;
     soak_export_header h;
-    soak_status st = soak_export_header_make(db, &h);
-    if (st != SOAK_OK) {
-        snprintf(err, errlen, "%s: cannot read the preset file to hash it", soak_presets_path(db));
-        return st;
-    }
+    soak_status st = soak_export_begin(db, out, err, errlen, &h);
+    if (st != SOAK_OK) return st;
     cJSON *root = cJSON_CreateObject();
     if (!root) return SOAK_ERR_NOMEM;
     soak_json j = soak_json_writer(BL_DIGITS, BL_ZERO);

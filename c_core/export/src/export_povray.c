@@ -50,6 +50,7 @@
 #include <string.h>
 
 #include "soak/export.h"
+#include "soak/export_escape.h"
 #include "soak/fresnel.h"
 #include "soak/povray_subsurface.h"
 #include "soak/sheet.h"
@@ -222,6 +223,14 @@ static soak_status fill_table(const soak_preset *p, const soak_liquid *l, pov_ta
 
 static void num(pov_out *o, double x) { out(o, "%.7g", x == 0.0 ? 0.0 : x); }
 
+/* A string from outside (file or preset name), escaped: never raw text. */
+static void text(pov_out *o, const char *s)
+{
+    char buf[SOAK_ESCAPE_SIZE(sizeof ((soak_export_header *)0)->materials_file)];
+    if (soak_escape_povray(s, buf, sizeof buf) != SOAK_OK) o->bad = 1;
+    else out(o, "%s", buf);
+}
+
 static void vec(pov_out *o, soak_rgb c)
 {
     out(o, "<");
@@ -246,7 +255,9 @@ static void write_header(pov_out *o, const soak_export_header *h)
     out(o, "// tests/povray checks that this copy matches the preset file.\n");
     out(o, "// generator: %s; format: %s %d, povray layout %d\n", h->generator, SOAK_EXPORT_FORMAT, h->format_version,
         POV_FORMAT_VERSION);
-    out(o, "// materials: %s, FNV-1a 64 %s\n", h->materials_file, h->materials_hash);
+    out(o, "// materials: ");
+    text(o, h->materials_file);
+    out(o, ", FNV-1a 64 %s\n", h->materials_hash);
     out(o, "// Physics: c_core/materials/include/soak/wetness.h; export contract:\n");
     out(o, "// c_core/export/include/soak/export.h; the mapping to POV-Ray's finish:\n");
     out(o, "// c_core/export/src/export_povray.c.\n");
@@ -254,7 +265,9 @@ static void write_header(pov_out *o, const soak_export_header *h)
     out(o, "#ifdef(View_POV_Include_Stack)\n  #debug \"including soak_materials.inc\\n\"\n#end\n\n");
     out(o, "#declare Soak_Data_Generator = \"%s\";\n", h->generator);
     out(o, "#declare Soak_Data_Format_Version = %d;\n", POV_FORMAT_VERSION);
-    out(o, "#declare Soak_Data_Materials_File = \"%s\";\n", h->materials_file);
+    out(o, "#declare Soak_Data_Materials_File = \"");
+    text(o, h->materials_file);
+    out(o, "\";\n");
     out(o, "#declare Soak_Data_Materials_Hash = \"%s\";\n", h->materials_hash);
     out(o, "#declare Soak_Data_Knot_Tolerance = ");
     num(o, SOAK_EXPORT_KNOT_TOL);
@@ -283,7 +296,9 @@ static void write_presets(pov_out *o, const soak_preset_db *db)
     out(o, "// kinds: 0 porous dielectric, 1 non-porous dielectric, 2 conductor, 3 thin sheet\n");
     out(o, "#declare Soak_Preset_Names = array[%d] {\n  ", np);
     for (int i = 0; i < np; ++i) {
-        out(o, "\"%s\"", soak_presets_at(db, i)->name);
+        out(o, "\"");
+        text(o, soak_presets_at(db, i)->name);
+        out(o, "\"");
         sep(o, i, np, 6);
     }
     out(o, "\n}\n");
@@ -299,7 +314,11 @@ static void write_presets(pov_out *o, const soak_preset_db *db)
         out(o, "}\n");
     }
     out(o, "#declare Soak_Liquid_Names = array[%d] {", nl);
-    for (int i = 0; i < nl; ++i) out(o, "\"%s\"%s", soak_presets_liquid_at(db, i)->name, i + 1 < nl ? ", " : "");
+    for (int i = 0; i < nl; ++i) {
+        out(o, "\"");
+        text(o, soak_presets_liquid_at(db, i)->name);
+        out(o, "\"%s", i + 1 < nl ? ", " : "");
+    }
     out(o, "}\n#declare Soak_Liquid_Ior = array[%d] {", nl);
     for (int i = 0; i < nl; ++i) {
         num(o, soak_presets_liquid_at(db, i)->ior);
@@ -438,13 +457,9 @@ static void write_tables(pov_out *o, pov_table *tabs, int nt)
 
 soak_status soak_export_write_povray(const soak_preset_db *db, FILE *f, char *err, size_t errlen)
 {
-    if (!db || !f || !err) return SOAK_ERR_NULL;
     soak_export_header h;
-    soak_status st = soak_export_header_make(db, &h);
-    if (st != SOAK_OK) {
-        snprintf(err, errlen, "%s: cannot read the preset file to hash it", soak_presets_path(db));
-        return st;
-    }
+    soak_status st = soak_export_begin(db, f, err, errlen, &h);
+    if (st != SOAK_OK) return st;
     int np = soak_presets_count(db), nl = soak_presets_liquid_count(db), nt = np * nl;
     pov_table *tabs = calloc((size_t)(nt > 0 ? nt : 1), sizeof *tabs);
     if (!tabs) return SOAK_ERR_NOMEM;

@@ -79,6 +79,11 @@ typedef struct soak_export_header {
 
 soak_status soak_export_header_make(const soak_preset_db *db, soak_export_header *h);
 
+/* What every target writer does first: checks its arguments and makes the
+ * header, err naming the preset file when it cannot be read. */
+soak_status soak_export_begin(const soak_preset_db *db, FILE *out, char *err, size_t errlen,
+                              soak_export_header *h);
+
 /* One target writer. It writes the whole export to out (a memory stream:
  * the command stages it and renames it into place). err names the cause on
  * failure. */
