@@ -9,15 +9,23 @@ from . import nodes
 
 class SoakRainSettings(bpy.types.PropertyGroup):
     rate: FloatProperty(name="Rate (mm/h)", default=10.0, min=0.01, max=500.0, soft_max=100.0,
-                        description="Rain rate in mm/h (drizzle 1, moderate 5, heavy 10-50): drop sizes after "
-                                    "Marshall & Palmer (1948), fall speeds after Atlas et al. (1973)")
+                        description="How hard it rains, millimetres of water per hour (drizzle 1, moderate 5, "
+                                    "heavy 10-50). Drop sizes after Marshall & Palmer (1948), fall speeds after "
+                                    "Atlas et al. (1973)")
     start_frame: IntProperty(name="Start Frame", default=1, min=0,
                              description="Scene frame where the rain starts (the surface is dry before it)")
-    end_frame: IntProperty(name="End Frame", default=120, min=1,
-                           description="Scene frame where the rain stops; the surface then dries over Dry Time")
-    dry_time: FloatProperty(name="Dry Time (s)", default=20.0, min=1e-3, soft_max=3600.0,
-                            description="Seconds the surface takes to dry after the rain (the drying bake's "
-                                        "pore schedule)")
+    end_frame: IntProperty(name="End Frame", default=200, min=1,
+                           description="Scene frame where the rain stops; after it the surface dries over "
+                                       "Drying Time")
+    seconds_per_frame: FloatProperty(
+        name="Time Scale (s/frame)", default=0.5, min=1e-3, max=3600.0, soft_max=10.0,
+        description="Simulated seconds of rain per scene frame (a time-lapse). Rain takes minutes to wet a "
+                    "surface: 10 mm/h fills the 0.2 mm a flat surface holds in about 76 s. The default, 0.5 s "
+                    "a frame, shows 100 s of rain over frames 1-200, enough to wet open ground; 1 / frame rate "
+                    "(0.042 at 24 fps) is real time")
+    dry_time: FloatProperty(name="Drying Time (s)", default=60.0, min=1e-3, soft_max=3600.0,
+                            description="Simulated seconds the surface takes to dry after the rain stops (at the "
+                                        "Time Scale: 60 s are 120 frames at 0.5 s a frame)")
     map_size: FloatProperty(name="Scale (m)", default=0.0, min=0.0, soft_max=100.0, subtype="DISTANCE",
                             description="Metres across the UV square, for the drops' physical size (0: the "
                                         "object's largest horizontal dimension, right for a plane)")
@@ -51,6 +59,10 @@ class SOAK_PT_wetness_rain(bpy.types.Panel):
         sub = col.column(align=True)
         sub.prop(s, "start_frame", text="Frame Start")
         sub.prop(s, "end_frame", text="End")
+        col.prop(s, "seconds_per_frame")
+        rain_s = (s.end_frame - s.start_frame) * s.seconds_per_frame
+        col.label(text=f"{rain_s:.4g} s of rain (simulated) over {max(0, s.end_frame - s.start_frame)} frames",
+                  icon="TIME")
         col.prop(s, "dry_time")
         col.separator()
         col.prop(s, "map_size")
