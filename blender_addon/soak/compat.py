@@ -108,7 +108,7 @@ def coat_darkens_base(version=None):
 def coat_base_compensation(b, coat_weight, coat_ior, normal):
     """A socket with 1 / (1 - coat weight * F(view)) where the engine's coat
     dims the base (F: Fresnel of the smooth coat, the coat's albedo in Cycles
-    and EEVEE Next), None where it does not. b: nodes._Builder."""
+    and EEVEE Next), None where it does not. b: node_program.Builder."""
     if not coat_darkens_base():
         return None
     fr = b.node("ShaderNodeFresnel")

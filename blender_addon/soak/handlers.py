@@ -2,7 +2,7 @@
 after any change Blender evaluates (a link drawn into Wetness, a value typed
 on the node, a key added in the node editor, a wet map saved, an undo), a
 group built for a liquid amount, or for bounds of it, that its inputs no
-longer give is rebuilt (nodes.specialise, all or nothing; a failure is
+longer give is rebuilt (specialise.specialise, all or nothing; a failure is
 printed and the material left as it was). The panel,
 its key buttons and the operators rebuild at once; this catches edits made
 elsewhere."""
@@ -10,7 +10,7 @@ elsewhere."""
 import bpy
 from bpy.app.handlers import persistent
 
-from . import data, nodes
+from . import data, material_tree, specialise
 
 _busy = []
 
@@ -18,7 +18,7 @@ _busy = []
 def _soak_materials():
     for mat in bpy.data.materials:
         if (mat.library is None and getattr(mat, "override_library", None) is None and mat.node_tree is not None
-                and nodes.find_group_node(mat.node_tree) is not None):
+                and material_tree.find_group_node(mat.node_tree) is not None):
             yield mat
 
 
@@ -30,7 +30,7 @@ def respecialise(_scene=None, _depsgraph=None):
     try:
         for mat in _soak_materials():
             try:
-                nodes.specialise(mat)
+                specialise.specialise(mat)
             except (RuntimeError, data.SoakDataError) as e:
                 print(f"soak: {mat.name}: the Soak Wet group was not rebuilt: {e}")
     finally:

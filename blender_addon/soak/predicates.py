@@ -2,7 +2,7 @@
 the active material (and why not, through poll_message_set), is OSL
 available, is a group input keyed on this frame."""
 
-from . import compat, nodes
+from . import compat, material_tree
 
 
 def osl_available(context):
@@ -37,7 +37,7 @@ def poll_editable(cls, context):
 def wet_poll(cls, context):
     if not poll_editable(cls, context):
         return False
-    if nodes.find_group_node(context.object.active_material.node_tree) is None:
+    if material_tree.find_group_node(context.object.active_material.node_tree) is None:
         return poll_message(cls, "Make the material wet first")
     return True
 

@@ -1,4 +1,5 @@
-"""Per-material settings (Material.soak).
+"""The add-on's settings: per material (Material.soak) and the scene's rain
+(Scene.soak_rain).
 
 Two kinds of property:
 - settings stored on the material (preset, liquid, wetness source, ...);
@@ -15,9 +16,9 @@ Two kinds of property:
 import json
 
 import bpy
-from bpy.props import BoolProperty, EnumProperty, FloatProperty, PointerProperty, StringProperty
+from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, PointerProperty, StringProperty
 
-from . import data, nodes, rain
+from . import data, insertion, material_tree, rain, rebuild, sources, specialise, wet_group
 
 
 _reverting = set()     # settings being put back after a refused change (no update then)
@@ -27,7 +28,7 @@ def _apply(self, fn):
     """Runs a rebuild/re-wire for a changed setting; True when done or not
     needed. On failure the material is unchanged and the reason is shown."""
     mat = self.id_data
-    if mat is None or mat.node_tree is None or nodes.find_group_node(mat.node_tree) is None:
+    if mat is None or mat.node_tree is None or material_tree.find_group_node(mat.node_tree) is None:
         return True
     if self.as_pointer() in _reverting:
         return True
@@ -55,41 +56,41 @@ def _revert(self, values):
 
 
 def _rebuild(self, context):
-    if not _apply(self, nodes.rebuild):
-        gn = nodes.find_group_node(self.id_data.node_tree)
-        info = json.loads(gn.node_tree.get(nodes.GROUP_TAG, "{}")) if gn.node_tree is not None else {}
+    if not _apply(self, rebuild.rebuild):
+        gn = material_tree.find_group_node(self.id_data.node_tree)
+        info = json.loads(gn.node_tree.get(wet_group.GROUP_TAG, "{}")) if gn.node_tree is not None else {}
         _revert(self, {"preset": info.get("preset"), "liquid": info.get("liquid"),
                        "exact_lookups": info.get("exact"), "quality": info.get("quality", "BALANCED")})
 
 
 def _source(self, context):
-    if not _apply(self, nodes.set_source):
-        _revert(self, nodes.current_source(self.id_data.node_tree))
+    if not _apply(self, sources.set_source):
+        _revert(self, sources.current_source(self.id_data.node_tree))
 
 
 def _group_inputs(self, name):
     mat = self.id_data
     if mat is None or mat.node_tree is None:
         return []
-    return [g.inputs[name] for g in nodes.group_nodes(mat.node_tree) if name in g.inputs]
+    return [g.inputs[name] for g in material_tree.group_nodes(mat.node_tree) if name in g.inputs]
 
 
 def _group_input(self, name):
     mat = self.id_data
-    gn = nodes.find_group_node(mat.node_tree) if mat is not None and mat.node_tree is not None else None
+    gn = material_tree.find_group_node(mat.node_tree) if mat is not None and mat.node_tree is not None else None
     return gn.inputs.get(name) if gn is not None else None
 
 
-PENDING = nodes.PENDING
+PENDING = insertion.PENDING
 
 
 def _set_inputs(self, socks, value):
     """Sets the group nodes' input and rebuilds a group specialised to the
-    old value (nodes.specialise); on failure the old values come back."""
+    old value (specialise.specialise); on failure the old values come back."""
     old = [s.default_value for s in socks]
     for s in socks:                 # every wetted BSDF's group node
         s.default_value = value
-    if socks and not _apply(self, lambda mat, _s: nodes.specialise(mat)):
+    if socks and not _apply(self, lambda mat, _s: specialise.specialise(mat)):
         for s, v in zip(socks, old):
             s.default_value = v
 
@@ -220,7 +221,41 @@ class SoakMaterialSettings(bpy.types.PropertyGroup):
                              "(liquid standing at a spill's edge); 0 = off", 0.0, 0.0, 10.0)
 
 
-classes = (SoakMaterialSettings,)
+class SoakRainSettings(bpy.types.PropertyGroup):
+    rate: FloatProperty(name="Rate (mm/h)", default=10.0, min=0.01, max=500.0, soft_max=100.0,
+                        description="How hard it rains, millimetres of water per hour (drizzle 1, moderate 5, "
+                                    "heavy 10-50). Drop sizes after Marshall & Palmer (1948), fall speeds after "
+                                    "Atlas et al. (1973)")
+    start_frame: IntProperty(name="Start Frame", default=1, min=0,
+                             description="Scene frame where the rain starts (the surface is dry before it)")
+    end_frame: IntProperty(name="End Frame", default=200, min=1,
+                           description="Scene frame where the rain stops; after it the surface dries over "
+                                       "Drying Time")
+    seconds_per_frame: FloatProperty(
+        name="Time Scale (s/frame)", default=0.5, min=1e-3, max=3600.0, soft_max=10.0,
+        description="Simulated seconds of rain per scene frame (a time-lapse). Rain takes minutes to wet a "
+                    "surface: 10 mm/h fills the 0.2 mm a flat surface holds in about 76 s. The default, 0.5 s "
+                    "a frame, shows 100 s of rain over frames 1-200, enough to wet open ground; 1 / frame rate "
+                    "(0.042 at 24 fps) is real time")
+    dry_time: FloatProperty(name="Drying Time (s)", default=60.0, min=1e-3, soft_max=3600.0,
+                            description="Simulated seconds the surface takes to dry after the rain stops (at the "
+                                        "Time Scale: 60 s are 120 frames at 0.5 s a frame)")
+    map_size: FloatProperty(name="Scale (m)", default=0.0, min=0.0, soft_max=100.0, subtype="DISTANCE",
+                            description="Metres across the UV square, for the drops' physical size (0: the "
+                                        "object's largest horizontal dimension, right for a plane)")
+    size: IntProperty(name="Map Size", default=256, min=8, max=4096,
+                      description="Width and height of the drops maps, pixels (a texel should be about 1-4 mm "
+                                  "for single drops to show)")
+    seed: IntProperty(name="Seed", default=0, min=0,
+                      description="Random seed of the impacts: same seed, same frames")
+    shelter: BoolProperty(name="Shelter by Scene", default=True,
+                          description="The visible scene blocks the rain (the drops fall only where the sky "
+                                      "reaches, as Bake Wet Map computes it); off: the object is open to the sky")
+    rays: IntProperty(name="Rays", default=32, min=1, max=4096,
+                      description="Rays per texel for the sky exposure (Shelter by Scene)")
+
+
+classes = (SoakMaterialSettings, SoakRainSettings)
 
 
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)
@@ -229,8 +264,10 @@ _register_classes, _unregister_classes = bpy.utils.register_classes_factory(clas
 def register():
     _register_classes()
     bpy.types.Material.soak = PointerProperty(type=SoakMaterialSettings)
+    bpy.types.Scene.soak_rain = PointerProperty(type=SoakRainSettings)
 
 
 def unregister():
+    del bpy.types.Scene.soak_rain
     del bpy.types.Material.soak
     _unregister_classes()

@@ -3,7 +3,7 @@ sequence as the wetness source, the wetter of it and the rain bake's frame
 (the film on steep faces) into the Wet Map, the ripple flipbook as a normal
 mixed in where the drops reach the puddle level.
 
-Kept apart from wet_group.py and nodes.py: it only adds nodes around the
+Kept apart from wet_group.py and the material surgery (insertion.py, sources.py, ...): it only adds nodes around the
 Soak Wet group node (tagged like the other nodes Make Wet adds, so Make Dry
 removes them) and never changes the group itself.
 
@@ -48,7 +48,7 @@ import math
 import bpy
 import mathutils
 
-from . import nodes
+from . import checks, material_tree, snapshot, sources
 
 RAIN_ROLE = "rain"
 BASE_KEY = "soak_rain_base"      # on the node whose input 0 takes the base normal
@@ -80,15 +80,15 @@ def ripples_user(iu, frames, scene_start):
 
 def _node(tree, kind, x, y, label):
     n = tree.nodes.new(kind)
-    n[nodes.NODE_TAG] = True
-    n[nodes.ROLE_KEY] = RAIN_ROLE
+    n[material_tree.NODE_TAG] = True
+    n[material_tree.ROLE_KEY] = RAIN_ROLE
     n.label = label
     n.location = (x, y)
     return n
 
 
 def rain_nodes(tree):
-    return [n for n in tree.nodes if n.get(nodes.NODE_TAG) and n.get(nodes.ROLE_KEY) == RAIN_ROLE]
+    return [n for n in tree.nodes if n.get(material_tree.NODE_TAG) and n.get(material_tree.ROLE_KEY) == RAIN_ROLE]
 
 
 def _base_normal(tree, gn):
@@ -98,18 +98,18 @@ def _base_normal(tree, gn):
     if not links:
         return None
     src = links[0].from_socket
-    if src.node.get(nodes.ROLE_KEY) != RAIN_ROLE:
+    if src.node.get(material_tree.ROLE_KEY) != RAIN_ROLE:
         return src
     base = next((n for n in rain_nodes(tree) if n.get(BASE_KEY)), None)
     if base is None or not base.inputs[0].links:
         return None
     src = base.inputs[0].links[0].from_socket
-    return None if src.node.get(nodes.ROLE_KEY) == RAIN_ROLE else src
+    return None if src.node.get(material_tree.ROLE_KEY) == RAIN_ROLE else src
 
 
 def _drops_node(tree, gn, drops, first, last):
     n = _node(tree, "ShaderNodeTexImage", gn.location.x - 700, gn.location.y - 200, "Soak Rain: drops")
-    n[nodes.ROLE_KEY] = "source"                 # the wetness source: the panel's Source, Make Dry
+    n[material_tree.ROLE_KEY] = "source"                 # the wetness source: the panel's Source, Make Dry
     n.image = drops
     n.extension = "EXTEND"
     n.interpolation = "Linear"
@@ -307,7 +307,7 @@ def sync_level(mat):
     Puddle Level (the panel's Puddle Level calls it, and wiring). Not a
     driver: a driver reading the tree it drives is a dependency cycle."""
     tree = mat.node_tree if mat is not None else None
-    gns = nodes.group_nodes(tree) if tree is not None else []
+    gns = material_tree.group_nodes(tree) if tree is not None else []
     if not gns:
         return
     level = gns[0].inputs["Puddle Level"].default_value
@@ -335,7 +335,7 @@ def _film_max(tree, gn, drops_wet, film, first, last):
 def _wire(mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv_map, far, distances, film):
     tree = mat.node_tree
     gn = gns[0]
-    old = rain_nodes(tree) + nodes._source_nodes(tree)
+    old = rain_nodes(tree) + sources.source_nodes(tree)
     base = _base_normal(tree, gn)
     src = _drops_node(tree, gn, drops, first, last)
     wet = src.outputs["Color"]
@@ -350,9 +350,9 @@ def _wire(mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv
     for n in old:
         tree.nodes.remove(n)
     for g in gns:
-        restore = json.loads(g[nodes.RESTORE_KEY])
-        restore["nodes"] = [n.name for n in tree.nodes if n.get(nodes.NODE_TAG) and n.type != "GROUP"]
-        g[nodes.RESTORE_KEY] = json.dumps(restore)
+        restore = json.loads(g[material_tree.RESTORE_KEY])
+        restore["nodes"] = [n.name for n in tree.nodes if n.get(material_tree.NODE_TAG) and n.type != "GROUP"]
+        g[material_tree.RESTORE_KEY] = json.dumps(restore)
     return src
 
 
@@ -367,14 +367,14 @@ def wire(mat, drops, first, last, ripples, frames, scene_start, repeat, uv_map, 
     RippleView wires only the flipbooks its reach names (ripple_reach).
     All or nothing: on failure the tree is as before."""
     tree = mat.node_tree
-    gns = nodes.group_nodes(tree) if tree is not None else []
+    gns = material_tree.group_nodes(tree) if tree is not None else []
     if not gns:
         raise RuntimeError(f"material '{mat.name}' is not wet: Make Wet first, then bake the rain")
-    nodes.check_editable(mat)
-    if any(nodes.RESTORE_KEY not in g for g in gns):
+    checks.check_editable(mat)
+    if any(material_tree.RESTORE_KEY not in g for g in gns):
         raise RuntimeError(f"material '{mat.name}': a Soak Wet node has no restore record (Make Dry, then Make Wet)")
-    return nodes._atomic(tree, _wire, mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv_map,
-                         far, distances, film)
+    return snapshot.atomic(tree, _wire, mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv_map,
+                           far, distances, film)
 
 
 TAG = "soak_rain_for"            # on the images a rain bake loaded: the object's name

@@ -3,7 +3,7 @@ property split, sub-panels, greyed buttons with their reason (poll
 messages), and the render settings the wet look needs."""
 import bpy
 
-from . import compat, nodes
+from . import compat, material_tree, specialise
 from .predicates import key_icon, osl_available
 from .properties import CONTROLS
 
@@ -48,7 +48,7 @@ class SOAK_PT_wetness(_MaterialPanel, bpy.types.Panel):
         layout.use_property_decorate = False
         mat = _material(context)
         s = mat.soak
-        gn = nodes.find_group_node(mat.node_tree) if mat.node_tree else None
+        gn = material_tree.find_group_node(mat.node_tree) if mat.node_tree else None
         if mat.library is not None:
             layout.label(text="Linked from a library: make it local to wet it", icon="LIBRARY_DATA_DIRECT")
         col = layout.column()
@@ -111,7 +111,7 @@ class SOAK_PT_wetness_controls(_MaterialPanel, bpy.types.Panel):
     @classmethod
     def poll(cls, context):
         mat = _material(context)
-        return mat is not None and mat.node_tree is not None and nodes.find_group_node(mat.node_tree) is not None
+        return mat is not None and mat.node_tree is not None and material_tree.find_group_node(mat.node_tree) is not None
 
     def draw(self, context):
         layout = self.layout
@@ -119,7 +119,7 @@ class SOAK_PT_wetness_controls(_MaterialPanel, bpy.types.Panel):
         layout.use_property_decorate = False
         mat = _material(context)
         s = mat.soak
-        gn = nodes.find_group_node(mat.node_tree)
+        gn = material_tree.find_group_node(mat.node_tree)
         col = layout.column()
         for name, prop in CONTROLS:
             sock = gn.inputs.get(name)
@@ -137,9 +137,9 @@ class SOAK_PT_wetness_controls(_MaterialPanel, bpy.types.Panel):
                 col.separator()
         if s.schedule:
             col.label(text="Time runs from Start Time to Start + Fill Time", icon="TIME")
-        if nodes.is_specialised(gn):
+        if specialise.is_specialised(gn):
             col.label(text="Constant wetness: the group is built for it (faster)", icon="INFO")
-        elif nodes.is_film_free(gn):
+        elif specialise.is_film_free(gn):
             col.label(text="Wetness stays below the film: the group leaves it out", icon="INFO")
 
 

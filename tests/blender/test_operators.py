@@ -108,16 +108,16 @@ def test_failures(ob):
     # an error half-way through the insertion (after the group and the source
     # nodes exist): rolled back, for our own errors and for bugs
     mat.soak.wetness_source = "NOISE"
-    real = soak.nodes._wire_source
+    real = soak.sources.wire_source
     for exc in (RuntimeError("provoked failure"), TypeError("provoked bug")):
         def boom(tree, gn, settings, _exc=exc):
             real(tree, gn, settings)
             raise _exc
-        soak.nodes._wire_source = boom
+        soak.sources.wire_source = boom
         try:
             msg = op_error(bpy.ops.soak.make_wet)
         finally:
-            soak.nodes._wire_source = real
+            soak.sources.wire_source = real
         print(f"{type(exc).__name__} half-way:", msg.strip())
         check("provoked" in msg, f"half-way failure not reported: {msg}")
         check(common.tree_state(mat.node_tree) == before and groups() == g0,
@@ -130,16 +130,16 @@ def test_failures(ob):
     # a failing rebuild (Preset change) leaves the wet material as it was
     bpy.ops.soak.make_wet()
     wet, gw = common.tree_state(mat.node_tree), groups()
-    real_build = soak.nodes.build_group
+    real_build = soak.wet_group.build_group
 
     def bad_build(tree, *a, **k):
         real_build(tree, *a, **k)
         raise RuntimeError("provoked rebuild failure")
-    soak.nodes.build_group = bad_build
+    soak.wet_group.build_group = bad_build
     try:
         mat.soak.preset = "concrete"
     finally:
-        soak.nodes.build_group = real_build
+        soak.wet_group.build_group = real_build
     print("failing rebuild: status =", repr(mat.soak.status))
     check("provoked rebuild failure" in mat.soak.status, "a failed rebuild is not shown in the panel's status")
     check(mat.soak.preset == "sand", f"the refused preset stays selected: {mat.soak.preset}")
@@ -148,16 +148,16 @@ def test_failures(ob):
           "a failed rebuild lost the group's links")
 
     # a rebuild failing after the new group is swapped in: the old group is back
-    real_connect = soak.nodes.connect_outputs
+    real_connect = soak.insertion.connect_outputs
 
     def bad_connect(*a, **k):
         real_connect(*a, **k)
         raise RuntimeError("provoked failure after the swap")
-    soak.nodes.connect_outputs = bad_connect
+    soak.insertion.connect_outputs = bad_connect
     try:
         mat.soak.liquid = "coffee"
     finally:
-        soak.nodes.connect_outputs = real_connect
+        soak.insertion.connect_outputs = real_connect
     gn = mat.node_tree.nodes["Soak Wet"]
     check("after the swap" in mat.soak.status and common.tree_state(mat.node_tree) == wet and groups() == gw
           and __import__("json").loads(gn.node_tree["soak_group"])["liquid"] == "water",
@@ -165,16 +165,16 @@ def test_failures(ob):
 
     check(mat.soak.liquid == "water", f"the refused liquid stays selected: {mat.soak.liquid}")
     # a source change failing half-way: the old source nodes are still there
-    real = soak.nodes._wire_source
+    real = soak.sources.wire_source
 
     def bad_source(tree, gn, settings):
         real(tree, gn, settings)
         raise RuntimeError("provoked source failure")
-    soak.nodes._wire_source = bad_source
+    soak.sources.wire_source = bad_source
     try:
         mat.soak.wetness_source = "ATTRIBUTE"
     finally:
-        soak.nodes._wire_source = real
+        soak.sources.wire_source = real
     check("provoked source failure" in mat.soak.status and common.tree_state(mat.node_tree) == wet,
           "a source change failing half-way changed the material")
     check(mat.soak.wetness_source == "NOISE", f"the refused source stays selected: {mat.soak.wetness_source}")
@@ -207,8 +207,8 @@ def test_linked(ob):
     print("linked material:", msg.strip())
     check("linked from a library" in msg or "library" in msg, f"linked material not refused clearly: {msg}")
     try:
-        sys.modules["soak"].nodes.make_wet(mat, mat.soak)
-        common.fail("nodes.make_wet accepted a linked material")
+        sys.modules["soak"].insertion.make_wet(mat, mat.soak)
+        common.fail("insertion.make_wet accepted a linked material")
     except RuntimeError as e:
         check("make it local" in str(e), f"linked refusal does not say what to do: {e}")
     check(common.tree_state(mat.node_tree) == before, "a linked material was changed")
@@ -339,7 +339,7 @@ def test_dry_after_edits(ob):
     bpy.ops.soak.make_wet()
     t.nodes["Checker"].name = "Renamed Checker"
     t.nodes["Principled BSDF"].name = "Renamed BSDF"
-    problems = soak.nodes.make_dry(mat)
+    problems = soak.removal.make_dry(mat)
     check(problems == [], f"renamed nodes: problems {problems}")
     t.nodes["Renamed Checker"].name = "Checker"
     t.nodes["Renamed BSDF"].name = "Principled BSDF"
@@ -351,7 +351,7 @@ def test_dry_after_edits(ob):
     dup = t.nodes.new("ShaderNodeTexImage")
     for k in t.nodes["Checker"].keys():
         dup[k] = t.nodes["Checker"][k]
-    problems = soak.nodes.make_dry(mat)
+    problems = soak.removal.make_dry(mat)
     b = t.nodes["Principled BSDF"]
     check(problems == [] and b.inputs["Base Color"].links[0].from_node.name == "Checker",
           f"duplicate of a recorded node: {problems}")
@@ -376,14 +376,14 @@ def test_dry_after_edits(ob):
     use(ob, mat2)
     bpy.ops.soak.make_wet()
     mat2.node_tree.nodes.remove(mat2.node_tree.nodes["Checker"])
-    problems = soak.nodes.make_dry(mat2)
+    problems = soak.removal.make_dry(mat2)
     print("deleted texture:", problems)
     check(len(problems) == 1 and "'Checker'" in problems[0], f"the deleted texture is not named: {problems}")
 
     # deleted BSDF: the Soak nodes go, the BSDF is reported
     bpy.ops.soak.make_wet()
     mat2.node_tree.nodes.remove(mat2.node_tree.nodes["Principled BSDF"])
-    problems = soak.nodes.make_dry(mat2)
+    problems = soak.removal.make_dry(mat2)
     print("deleted BSDF:", problems)
     check(any("Principled BSDF" in p for p in problems) and not any(
         n.get("soak_node") for n in mat2.node_tree.nodes), f"deleted BSDF: {problems}")
@@ -421,11 +421,11 @@ def test_two_principled(ob):
     use(ob, mat)
     before = common.tree_state(t)
     g0 = groups()
-    bsdfs = soak.nodes.check_wettable(mat, mat.soak)
+    bsdfs = soak.checks.check_wettable(mat, mat.soak)
     check([n.name for n in bsdfs] == ["Principled BSDF", "Second BSDF"], f"BSDFs to wet: {[n.name for n in bsdfs]}")
     mat.soak.wetness_source = "NOISE"
     check(bpy.ops.soak.make_wet() == {"FINISHED"}, "make_wet two BSDFs")
-    gns = soak.nodes.group_nodes(t)
+    gns = soak.material_tree.group_nodes(t)
     check(len(gns) == 2 and all(bsdf_fed_by_group(mat, n).values() for n in ("Principled BSDF", "Second BSDF")),
           f"not every BSDF is wet: {len(gns)} group nodes")
     fed = {n.name: n.inputs["Base Color"].links[0].from_node for n in (a, b)}
@@ -446,7 +446,7 @@ def test_two_principled(ob):
         ad.action = None
     mat.soak.preset = "concrete"
     check(mat.soak.status == "" and all(__import__("json").loads(g.node_tree["soak_group"])["preset"] == "concrete"
-                                        for g in soak.nodes.group_nodes(t)), "rebuild of two groups")
+                                        for g in soak.material_tree.group_nodes(t)), "rebuild of two groups")
     bpy.ops.soak.make_dry()
     mat.soak.preset, mat.soak.wetness_source = "sand", "CONSTANT"
     after = common.tree_state(t)

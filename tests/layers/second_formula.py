@@ -54,14 +54,14 @@ PLANTS = [
     ("povray/soak.inc", "#local Soak__X = min(max((Time - T0) * Soak__L_Inv, 0), 1);", 1),
     ("povray/soak.inc", "#local Soak__Y = function { min(max(Time - T0_Fn(x, y, z), 0) / T_Fill, 1) }", 0),
     ("povray/soak.inc", "#local Soak__Z = function { select(Time - T0_Fn(x, y, z), 0, 1) }", 2),
-    ("blender_addon/soak/nodes.py", "p = b.math(\"DIVIDE\", elapsed, gin.outputs[\"Fill Time\"])", 3),
+    ("blender_addon/soak/wet_group.py", "p = b.math(\"DIVIDE\", elapsed, gin.outputs[\"Fill Time\"])", 3),
     ("povray/soak.inc", "#local Soak__F = function(C) { F0 + (1 - F0) * pow(1 - C, 5) }", 4),
-    ("blender_addon/soak/nodes.py", "f = f0 + (1.0 - f0) * (1.0 - cos_t) ** 5", 5),
-    ("blender_addon/soak/nodes.py", "f = b.math(\"POWER\", b.math(\"SUBTRACT\", 1.0, cos_t), 5.0)", 6),
+    ("blender_addon/soak/wet_group.py", "f = f0 + (1.0 - f0) * (1.0 - cos_t) ** 5", 5),
+    ("blender_addon/soak/wet_group.py", "f = b.math(\"POWER\", b.math(\"SUBTRACT\", 1.0, cos_t), 5.0)", 6),
     (CUSTOM_OSL, "float rs = (c - eta * ct) / (c + eta * ct);", 7),
     ("povray/soak.inc", "#local Soak__R0 = pow((N - 1) / (N + 1), 2);", 7),
     (CUSTOM_OSL, "float f = 0.5 * (rs * rs + rp * rp);", 8),
-    ("blender_addon/soak/nodes.py", "p = min(max((t - t0) / t_fill, 0.0), 1.0)", 1),
+    ("blender_addon/soak/wet_group.py", "p = min(max((t - t0) / t_fill, 0.0), 1.0)", 1),
 ]
 
 

@@ -28,7 +28,7 @@ import tempfile
 
 import bpy
 
-from .. import nodes, properties, rain
+from .. import material_tree, properties, rain
 from ..predicates import poll_message
 from ..preferences import find_soak
 from .bake import export_scene_obj
@@ -203,7 +203,7 @@ def check(context, s):
     if context.scene.frame_end < s.start_frame:
         return f"the scene ends (frame {context.scene.frame_end}) before the rain starts (frame {s.start_frame})"
     mat = ob.active_material
-    if mat.node_tree is None or not nodes.group_nodes(mat.node_tree):
+    if mat.node_tree is None or not material_tree.group_nodes(mat.node_tree):
         return f"material '{mat.name}' is not wet: Make Wet first, then bake the rain"
     return None
 
@@ -224,7 +224,7 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
             return poll_message(cls, f"'{ob.name}' has no material: add one and Make Wet")
         if mat.library is not None:
             return poll_message(cls, "The material is linked from a library: make it local first")
-        if mat.node_tree is None or not nodes.group_nodes(mat.node_tree):
+        if mat.node_tree is None or not material_tree.group_nodes(mat.node_tree):
             return poll_message(cls, f"Material '{mat.name}' is not wet: Make Wet first")
         return True
 

@@ -1,11 +1,11 @@
 """Make Wet, Make Dry, Key Drying. Each is all or nothing: on an error the
-material is as before (nodes.make_wet/set_source/rebuild roll back) and the
+material is as before (insertion.make_wet/set_source/rebuild roll back) and the
 message says why."""
 import json
 
 import bpy
 
-from .. import compat, nodes, osl_nodes
+from .. import compat, insertion, material_tree, osl_nodes, removal, specialise
 from ..data import SoakDataError
 from ..predicates import key_icon, osl_available, poll_editable, poll_message, wet_poll
 
@@ -21,9 +21,9 @@ def internal_error(op, what, e):
 
 
 def _specialise(op, mat):
-    """A keyed (or unkeyed) input: the group follows (nodes.specialise)."""
+    """A keyed (or unkeyed) input: the group follows (specialise.specialise)."""
     try:
-        nodes.specialise(mat)
+        specialise.specialise(mat)
         return True
     except (RuntimeError, SoakDataError) as e:
         op.report({"ERROR"}, str(e))
@@ -42,7 +42,7 @@ class SOAK_OT_make_wet(bpy.types.Operator):
     def poll(cls, context):
         if not poll_editable(cls, context):
             return False
-        if nodes.find_group_node(context.object.active_material.node_tree) is not None:
+        if material_tree.find_group_node(context.object.active_material.node_tree) is not None:
             return poll_message(cls, "The material is already wet (Make Dry first)")
         return True
 
@@ -50,7 +50,7 @@ class SOAK_OT_make_wet(bpy.types.Operator):
         mat = _material(context)
         settings = mat.soak
         try:
-            nodes.make_wet(mat, settings)
+            insertion.make_wet(mat, settings)
         except (RuntimeError, SoakDataError) as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
@@ -58,9 +58,9 @@ class SOAK_OT_make_wet(bpy.types.Operator):
             return internal_error(self, "Make Wet", e)
         if settings.use_osl:
             self._osl(context, mat, settings)
-        gns = nodes.group_nodes(mat.node_tree)
+        gns = material_tree.group_nodes(mat.node_tree)
         if len(gns) > 1:
-            names = ", ".join(f"'{json.loads(g[nodes.RESTORE_KEY])['bsdf']}'" for g in gns)
+            names = ", ".join(f"'{json.loads(g[material_tree.RESTORE_KEY])['bsdf']}'" for g in gns)
             self.report({"INFO"}, f"{mat.name}: wet ({settings.preset}, {settings.liquid}): {len(gns)} Principled "
                                   f"BSDFs ({names}), one set of controls")
         else:
@@ -86,14 +86,14 @@ class SOAK_OT_make_dry(bpy.types.Operator):
         if not poll_editable(cls, context):
             return False
         tree = context.object.active_material.node_tree
-        if not any(n.get(nodes.NODE_TAG) for n in tree.nodes):
+        if not any(n.get(material_tree.NODE_TAG) for n in tree.nodes):
             return poll_message(cls, "The material is not wet")
         return True
 
     def execute(self, context):
         mat = _material(context)
         try:
-            problems = nodes.make_dry(mat)
+            problems = removal.make_dry(mat)
         except RuntimeError as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
@@ -140,13 +140,13 @@ class SOAK_OT_key_drying(bpy.types.Operator):
             return {"CANCELLED"}
         mat = _material(context)
         tree = mat.node_tree
-        gn = nodes.find_group_node(tree)
+        gn = material_tree.find_group_node(tree)
         start = gn.inputs["Start Time"].default_value
         fill = gn.inputs["Fill Time"].default_value
         if not fill > 0.0:
             self.report({"ERROR"}, f"Fill Time is {fill:g} s: set a positive drying time first")
             return {"CANCELLED"}
-        for g in nodes.group_nodes(tree):   # every wetted BSDF dries together
+        for g in material_tree.group_nodes(tree):   # every wetted BSDF dries together
             self._key(context, tree, g, start, fill)
         if not _specialise(self, mat):
             return {"CANCELLED"}
@@ -192,13 +192,13 @@ class SOAK_OT_key_control(bpy.types.Operator):
 
     def execute(self, context):
         tree = _material(context).node_tree
-        gn = nodes.find_group_node(tree)
+        gn = material_tree.find_group_node(tree)
         if gn.inputs.get(self.name) is None:
             self.report({"ERROR"}, f"the Soak Wet group has no input '{self.name}'")
             return {"CANCELLED"}
         f = context.scene.frame_current
         delete = key_icon(context, tree, gn, self.name) == "DECORATE_KEYFRAME"
-        for g in nodes.group_nodes(tree):   # one set of controls for every wetted BSDF
+        for g in material_tree.group_nodes(tree):   # one set of controls for every wetted BSDF
             sock = g.inputs[self.name]
             if delete:
                 try:
