@@ -185,9 +185,9 @@ class SoakMaterialSettings(bpy.types.PropertyGroup):
         description="Scale of the procedural wet patches (patches per object-space unit)")
     exact_lookups: BoolProperty(
         name="Exact lookups (EEVEE)", default=False, update=_rebuild,
-        description="Read the core's tables exactly: one Closest read per colour channel of the table cell "
-                    "and an explicit bilinear blend (EEVEE's image filter is not plain bilinear); slower, same "
-                    "result in Cycles; always on in Blender 4.2-4.5 (EEVEE Next needs it)")
+        description="Read the core's colour tables without the render engine's texture smoothing, so EEVEE "
+                    "gives the same colours as Cycles (EEVEE smooths textures differently); a little slower, "
+                    "no change in Cycles. Always on in Blender 4.2-4.5 (EEVEE needs it there)")
     quality: EnumProperty(
         name="Quality", update=_rebuild, default="BALANCED",
         description="What the group models, fastest first (the add-on's README gives each one's render cost "
@@ -211,12 +211,14 @@ class SoakMaterialSettings(bpy.types.PropertyGroup):
                           "(off: the steady state, fully filled)")
     drying: _bool_proxy("Drying", "Drying", "Run the schedule backwards: wet at Start Time, dry after "
                         "Fill Time")
-    time: _float_proxy("Time", "Time (s)", "Time of the schedule in seconds (key it, or use Key Drying)",
+    time: _float_proxy("Time", "Schedule Time (s)", "The wetting schedule's clock, in seconds of the "
+                       "liquid's time (not frames): key it, or let Key Drying map it onto the frame range",
                        1.0, -1e9, 1e9)
-    start_time: _float_proxy("Start Time", "Start Time (s)", "When the liquid arrives (or drying starts), "
-                             "in seconds", 0.0, -1e9, 1e9)
-    fill_time: _float_proxy("Fill Time", "Fill Time (s)", "Seconds the pores take to fill (or dry); "
-                            "defaults to the preset's fill time", 1.0, 0.0, 1e9)
+    start_time: _float_proxy("Start Time", "Liquid Arrives At (s)", "Schedule Time at which the liquid arrives "
+                             "(with Drying: at which drying starts), in seconds", 0.0, -1e9, 1e9)
+    fill_time: _float_proxy("Fill Time", "Pores Fill In (s)", "Seconds of Schedule Time the liquid takes to "
+                            "soak into the pores (with Drying: to leave them), from Liquid Arrives At; the "
+                            "preset's value by default", 1.0, 0.0, 1e9)
     spill_edge: _float_proxy("Spill Edge", "Spill Edge", "Strength of the bump where the wet map changes "
                              "(liquid standing at a spill's edge); 0 = off", 0.0, 0.0, 10.0)
 
