@@ -399,7 +399,8 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         self._timer = wm.event_timer_add(0.2, window=context.window)
         wm.progress_begin(0, 100)
         self._fraction = 0.0
-        context.workspace.status_text_set(self._status_bar)
+        self._draw_status = self._status_bar()
+        context.workspace.status_text_set(self._draw_status)
         wm.modal_handler_add(self)
         return {"RUNNING_MODAL"}
 
@@ -410,17 +411,25 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         done = sum(1 for n in names if n.endswith(".exr") and not n.startswith("."))
         return done, 2 * (self._last - self._first + 1) + 2 * RIPPLE_FRAMES    # drops, film; sharp and far ripples
 
-    def _status_bar(self, header, context):
-        """The status bar while baking: a progress bar (4.0+: UILayout.progress;
-        3.x: the share as text) and how to cancel."""
-        layout = header.layout
-        done = int(100 * self._fraction)
-        text = f"Soak: Bake Rain {done} %"
-        if hasattr(layout, "progress"):
-            layout.progress(factor=self._fraction, type="BAR", text=text)
-        else:
-            layout.label(text=text + "  " + "\u2588" * (done // 5) + "\u2591" * (20 - done // 5))
-        layout.label(text="Esc cancels", icon="EVENT_ESC")
+    def _status_bar(self):
+        """The status bar's draw function while baking: a progress bar (4.0+:
+        UILayout.progress; 3.x: the share as text) and how to cancel. A plain
+        function (Blender calls it as the status bar header's draw and
+        refuses a bound method)."""
+        op = self
+
+        def draw(header, _context):
+            layout = header.layout
+            done = int(100 * op._fraction)
+            text = f"Soak: Bake Rain {done} %"
+            if hasattr(layout, "progress"):
+                row = layout.row()
+                row.ui_units_x = 12          # a header sizes a bar to almost nothing otherwise
+                row.progress(factor=op._fraction, type="BAR", text=text)
+            else:
+                layout.label(text=text + "  " + "\u2588" * (done // 5) + "\u2591" * (20 - done // 5))
+            layout.label(text="Esc cancels", icon="EVENT_ESC")
+        return draw
 
     def _stop(self, context):
         wm = context.window_manager
@@ -440,7 +449,7 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         done, total = self._progress()
         self._fraction = min(0.99, done / total)
         context.window_manager.progress_update(int(100 * self._fraction))
-        context.workspace.status_text_set(self._status_bar)     # redraws the status bar
+        context.workspace.status_text_set(self._draw_status)     # redraws the status bar
         running = [proc.poll() is None for proc, _what, _log in self._procs]
         failed = any(proc.returncode not in (None, 0) for proc, _what, _log in self._procs)
         if any(running) and not failed:
