@@ -156,7 +156,7 @@ class _Controls:
             if name == "Drying":
                 col.separator()
         if s.schedule:
-            col.label(text="Time runs from Start Time to Start + Fill Time", icon="TIME")
+            col.label(text="Pores fill (Drying: empty) from Liquid Arrives At over Pores Fill In", icon="TIME")
         if specialise.is_specialised(gn):
             col.label(text="Constant wetness: the group is built for it (faster)", icon="INFO")
         elif specialise.is_film_free(gn):
