@@ -9,7 +9,7 @@ bl_info = {
     "author": "Soak project",
     "version": (1, 0, 0),
     "blender": (3, 4, 0),
-    "location": "Properties > Material > Wetness",
+    "location": "Properties > Material > Soak; Shader Editor > Sidebar > Soak; Add > Soak",
     "description": "Make any Principled BSDF material wet (presets from the Soak core), bake wet maps",
     "category": "Material",
 }

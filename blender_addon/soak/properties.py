@@ -185,9 +185,9 @@ class SoakMaterialSettings(bpy.types.PropertyGroup):
         description="Scale of the procedural wet patches (patches per object-space unit)")
     exact_lookups: BoolProperty(
         name="Exact lookups (EEVEE)", default=False, update=_rebuild,
-        description="Read the core's tables exactly: one Closest read per colour channel of the table cell "
-                    "and an explicit bilinear blend (EEVEE's image filter is not plain bilinear); slower, same "
-                    "result in Cycles; always on in Blender 4.2-4.5 (EEVEE Next needs it)")
+        description="Read the core's colour tables without the render engine's texture smoothing, so EEVEE "
+                    "gives the same colours as Cycles (EEVEE smooths textures differently); a little slower, "
+                    "no change in Cycles. Always on in Blender 4.2-4.5 (EEVEE needs it there)")
     quality: EnumProperty(
         name="Quality", update=_rebuild, default="BALANCED",
         description="What the group models, fastest first (the add-on's README gives each one's render cost "
@@ -211,27 +211,37 @@ class SoakMaterialSettings(bpy.types.PropertyGroup):
                           "(off: the steady state, fully filled)")
     drying: _bool_proxy("Drying", "Drying", "Run the schedule backwards: wet at Start Time, dry after "
                         "Fill Time")
-    time: _float_proxy("Time", "Time (s)", "Time of the schedule in seconds (key it, or use Key Drying)",
+    time: _float_proxy("Time", "Schedule Time (s)", "The wetting schedule's clock, in seconds of the "
+                       "liquid's time (not frames): key it, or let Key Drying map it onto the frame range",
                        1.0, -1e9, 1e9)
-    start_time: _float_proxy("Start Time", "Start Time (s)", "When the liquid arrives (or drying starts), "
-                             "in seconds", 0.0, -1e9, 1e9)
-    fill_time: _float_proxy("Fill Time", "Fill Time (s)", "Seconds the pores take to fill (or dry); "
-                            "defaults to the preset's fill time", 1.0, 0.0, 1e9)
+    start_time: _float_proxy("Start Time", "Liquid Arrives At (s)", "Schedule Time at which the liquid arrives "
+                             "(with Drying: at which drying starts), in seconds", 0.0, -1e9, 1e9)
+    fill_time: _float_proxy("Fill Time", "Pores Fill In (s)", "Seconds of Schedule Time the liquid takes to "
+                            "soak into the pores (with Drying: to leave them), from Liquid Arrives At; the "
+                            "preset's value by default", 1.0, 0.0, 1e9)
     spill_edge: _float_proxy("Spill Edge", "Spill Edge", "Strength of the bump where the wet map changes "
                              "(liquid standing at a spill's edge); 0 = off", 0.0, 0.0, 10.0)
 
 
 class SoakRainSettings(bpy.types.PropertyGroup):
     rate: FloatProperty(name="Rate (mm/h)", default=10.0, min=0.01, max=500.0, soft_max=100.0,
-                        description="Rain rate in mm/h (drizzle 1, moderate 5, heavy 10-50): drop sizes after "
-                                    "Marshall & Palmer (1948), fall speeds after Atlas et al. (1973)")
+                        description="How hard it rains, millimetres of water per hour (drizzle 1, moderate 5, "
+                                    "heavy 10-50). Drop sizes after Marshall & Palmer (1948), fall speeds after "
+                                    "Atlas et al. (1973)")
     start_frame: IntProperty(name="Start Frame", default=1, min=0,
                              description="Scene frame where the rain starts (the surface is dry before it)")
-    end_frame: IntProperty(name="End Frame", default=120, min=1,
-                           description="Scene frame where the rain stops; the surface then dries over Dry Time")
-    dry_time: FloatProperty(name="Dry Time (s)", default=20.0, min=1e-3, soft_max=3600.0,
-                            description="Seconds the surface takes to dry after the rain (the drying bake's "
-                                        "pore schedule)")
+    end_frame: IntProperty(name="End Frame", default=200, min=1,
+                           description="Scene frame where the rain stops; after it the surface dries over "
+                                       "Drying Time")
+    seconds_per_frame: FloatProperty(
+        name="Time Scale (s/frame)", default=0.5, min=1e-3, max=3600.0, soft_max=10.0,
+        description="Simulated seconds of rain per scene frame (a time-lapse). Rain takes minutes to wet a "
+                    "surface: 10 mm/h fills the 0.2 mm a flat surface holds in about 76 s. The default, 0.5 s "
+                    "a frame, shows 100 s of rain over frames 1-200, enough to wet open ground; 1 / frame rate "
+                    "(0.042 at 24 fps) is real time")
+    dry_time: FloatProperty(name="Drying Time (s)", default=60.0, min=1e-3, soft_max=3600.0,
+                            description="Simulated seconds the surface takes to dry after the rain stops (at the "
+                                        "Time Scale: 60 s are 120 frames at 0.5 s a frame)")
     map_size: FloatProperty(name="Scale (m)", default=0.0, min=0.0, soft_max=100.0, subtype="DISTANCE",
                             description="Metres across the UV square, for the drops' physical size (0: the "
                                         "object's largest horizontal dimension, right for a plane)")

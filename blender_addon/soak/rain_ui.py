@@ -1,19 +1,14 @@
-"""The Rain sub-panel of the Wetness panel: the scene's rain settings
+"""The Rain sub-panel of the Soak panel: the scene's rain settings
 (Scene.soak_rain, properties.SoakRainSettings: rate, when it falls), the
 drops map of the selected object (scale, size, seed) and the Bake Rain
 operator."""
 import bpy
 
-from . import material_tree
+from . import material_tree, ui
 
 
-class SOAK_PT_wetness_rain(bpy.types.Panel):
+class _Rain:
     bl_label = "Rain"
-    bl_idname = "SOAK_PT_wetness_rain"
-    bl_parent_id = "SOAK_PT_wetness"
-    bl_space_type = "PROPERTIES"
-    bl_region_type = "WINDOW"
-    bl_context = "material"
 
     def draw(self, context):
         layout = self.layout
@@ -25,6 +20,10 @@ class SOAK_PT_wetness_rain(bpy.types.Panel):
         sub = col.column(align=True)
         sub.prop(s, "start_frame", text="Frame Start")
         sub.prop(s, "end_frame", text="End")
+        col.prop(s, "seconds_per_frame")
+        rain_s = (s.end_frame - s.start_frame) * s.seconds_per_frame
+        col.label(text=f"{rain_s:.4g} s of rain (simulated) over {max(0, s.end_frame - s.start_frame)} frames",
+                  icon="TIME")
         col.prop(s, "dry_time")
         col.separator()
         col.prop(s, "map_size")
@@ -44,7 +43,8 @@ class SOAK_PT_wetness_rain(bpy.types.Panel):
         layout.operator("soak.bake_rain", icon="OUTLINER_OB_FORCE_FIELD")
 
 
-classes = (SOAK_PT_wetness_rain,)
+# SOAK_PT_wetness_rain under the Soak panel, SOAK_PT_node_wetness_rain in the Shader Editor's sidebar
+classes = ui.both_editors(_Rain, "wetness_rain", "wetness")
 _register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)
 
 

@@ -1,6 +1,14 @@
-"""The Wetness panel (Properties > Material), laid out like Blender's own:
-property split, sub-panels, greyed buttons with their reason (poll
-messages), and the render settings the wet look needs."""
+"""The Soak panel, laid out like Blender's own: property split, sub-panels,
+greyed buttons with their reason (poll messages), and the render settings
+the wet look needs.
+
+Where an artist finds it (issue 46): a Soak row under the material slots
+at the top of Properties > Material (the Surface panel is taller than a
+default window and pushes an add-on panel off-screen, and a panel's
+bl_order does not move it above panels the startup file already placed),
+the Soak panel itself (bl_order -1), a Soak tab in the Shader Editor's
+sidebar (N), and Add > Soak > Make Wet in the Shader Editor. The same panel classes are made for both editors
+(both_editors)."""
 import bpy
 
 from . import compat, data, material_tree, price, specialise
@@ -41,15 +49,31 @@ def _price(layout, mat):
 
 
 class _MaterialPanel:
-    """Where the Wetness panels live: Properties editor, Material tab."""
+    """Where the Soak panels live: Properties editor, Material tab, first."""
     bl_space_type = "PROPERTIES"
     bl_region_type = "WINDOW"
     bl_context = "material"
 
 
-class SOAK_PT_wetness(_MaterialPanel, bpy.types.Panel):
-    bl_label = "Wetness"
-    bl_idname = "SOAK_PT_wetness"
+class _ShaderSidebar:
+    """The same panels in the Shader Editor's sidebar, tab Soak."""
+    bl_space_type = "NODE_EDITOR"
+    bl_region_type = "UI"
+    bl_category = "Soak"
+
+    @classmethod
+    def poll(cls, context):
+        space = context.space_data
+        if not (getattr(space, "tree_type", "") == "ShaderNodeTree" and getattr(space, "shader_type", "") == "OBJECT"
+                and _material(context) is not None):
+            return False
+        base_poll = getattr(cls._base, "poll", None)      # the body's own (a classmethod of the body)
+        return base_poll is None or base_poll(context)
+
+
+class _Main:
+    bl_label = "Soak"
+    bl_order = -1
 
     @classmethod
     def poll(cls, context):
@@ -96,10 +120,8 @@ class SOAK_PT_wetness(_MaterialPanel, bpy.types.Panel):
         row.operator("soak.import_volume", icon="VOLUME_DATA")
 
 
-class SOAK_PT_wetness_source(_MaterialPanel, bpy.types.Panel):
+class _Source:
     bl_label = "Source"
-    bl_idname = "SOAK_PT_wetness_source"
-    bl_parent_id = "SOAK_PT_wetness"
 
     def draw(self, context):
         layout = self.layout
@@ -117,10 +139,8 @@ class SOAK_PT_wetness_source(_MaterialPanel, bpy.types.Panel):
             layout.prop(s, "noise_scale")
 
 
-class SOAK_PT_wetness_controls(_MaterialPanel, bpy.types.Panel):
+class _Controls:
     bl_label = "Controls"
-    bl_idname = "SOAK_PT_wetness_controls"
-    bl_parent_id = "SOAK_PT_wetness"
 
     @classmethod
     def poll(cls, context):
@@ -150,14 +170,86 @@ class SOAK_PT_wetness_controls(_MaterialPanel, bpy.types.Panel):
             if name == "Drying":
                 col.separator()
         if s.schedule:
-            col.label(text="Time runs from Start Time to Start + Fill Time", icon="TIME")
+            col.label(text="Pores fill (Drying: empty) from Liquid Arrives At over Pores Fill In", icon="TIME")
         if specialise.is_specialised(gn):
             col.label(text="Constant wetness: the group is built for it (faster)", icon="INFO")
         elif specialise.is_film_free(gn):
             col.label(text="Wetness stays below the film: the group leaves it out", icon="INFO")
 
 
-classes = (SOAK_PT_wetness, SOAK_PT_wetness_source, SOAK_PT_wetness_controls)
+def panel(where, body, idname, parent=""):
+    """A panel class: the body (label, poll, draw) in one editor (where:
+    _MaterialPanel or _ShaderSidebar). The sidebar's poll asks the body's."""
+    attrs = {"bl_idname": idname, "_base": body}
+    if parent:
+        attrs["bl_parent_id"] = parent
+    return type(idname, (where, body, bpy.types.Panel), attrs)
 
 
-register, unregister = bpy.utils.register_classes_factory(classes)
+def both_editors(body, name, parent=""):
+    """(Properties > Material panel, Shader Editor sidebar panel) of a body:
+    SOAK_PT_<name> and SOAK_PT_node_<name>."""
+    return (panel(_MaterialPanel, body, "SOAK_PT_" + name, parent and "SOAK_PT_" + parent),
+            panel(_ShaderSidebar, body, "SOAK_PT_node_" + name, parent and "SOAK_PT_node_" + parent))
+
+
+class NODE_MT_soak_add(bpy.types.Menu):
+    """Add > Soak in the Shader Editor"""
+    bl_idname = "NODE_MT_soak_add"
+    bl_label = "Soak"
+
+    def draw(self, context):
+        layout = self.layout
+        layout.operator("soak.make_wet", text="Make Wet (Soak Wet group)", icon="MOD_FLUIDSIM")
+        layout.operator("soak.make_dry", text="Make Dry", icon="CANCEL")
+
+
+def _slot_header(self, context):
+    """A Soak row under the material slots (the top of the Material tab,
+    on screen whatever the Surface panel's height): the preset and Make
+    Wet, or the wet material's preset and Make Dry; its settings are in
+    the Soak panel."""
+    mat = _material(context)
+    if mat is None or mat.library is not None:
+        return
+    gn = material_tree.find_group_node(mat.node_tree) if mat.node_tree is not None else None
+    row = self.layout.row(align=True)
+    if gn is None:
+        row.prop(mat.soak, "preset", text="Soak", icon="MOD_FLUIDSIM")
+        row.operator("soak.make_wet", text="Make Wet")
+    else:
+        row.label(text=f"Soak: wet ({mat.soak.preset}), settings in the Soak panel", icon="MOD_FLUIDSIM")
+        row.operator("soak.make_dry", text="", icon="CANCEL")
+
+
+def _slot_panels():
+    """The engines' material-slot panels (EEVEE_MATERIAL_PT_context_material,
+    CYCLES_PT_context_material, ...: the names differ between versions)."""
+    return [getattr(bpy.types, n) for n in dir(bpy.types) if n.endswith("_PT_context_material")]
+
+
+def _add_menu(self, context):
+    if getattr(context.space_data, "tree_type", "") == "ShaderNodeTree":
+        self.layout.separator()
+        self.layout.menu(NODE_MT_soak_add.bl_idname, icon="MOD_FLUIDSIM")
+
+
+classes = (both_editors(_Main, "wetness") + both_editors(_Source, "wetness_source", "wetness")
+           + both_editors(_Controls, "wetness_controls", "wetness") + (NODE_MT_soak_add,))
+
+
+_register_classes, _unregister_classes = bpy.utils.register_classes_factory(classes)
+
+
+def register():
+    _register_classes()
+    bpy.types.NODE_MT_add.append(_add_menu)
+    for pt in _slot_panels():
+        pt.append(_slot_header)
+
+
+def unregister():
+    for pt in _slot_panels():
+        pt.remove(_slot_header)
+    bpy.types.NODE_MT_add.remove(_add_menu)
+    _unregister_classes()

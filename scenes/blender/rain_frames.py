@@ -89,6 +89,7 @@ def bake(sc, ground, mat):
     assert bpy.ops.soak.make_wet() == {"FINISHED"}
     s = sc.soak_rain
     s.rate, s.start_frame, s.end_frame, s.size, s.dry_time, s.rays = 30.0, 1, 120, 256, 20.0, 16
+    s.seconds_per_frame = 1.0 / sc.render.fps       # real time: 30 s of rain over frames 1-120 at 4 fps
     assert bpy.ops.soak.bake_rain() == {"FINISHED"}
     mat.soak.puddle_level = 0.9
 

@@ -468,6 +468,7 @@ def main():
     s = sc.soak_rain
     s.rate, s.start_frame, s.end_frame, s.size, s.seed, s.rays = 50.0, START, END, N, 7, 16
     s.map_size, s.dry_time = 0.0, 20.0
+    s.seconds_per_frame = 1.0 / FPS      # real time: the checks below put frame f at (f - START) / FPS s
     check(bpy.ops.soak.bake_rain() == {"FINISHED"}, "Bake Rain")
     board.hide_render = True          # the probe camera looks through it
     check(mat.soak.wetness_source == "IMAGE" and mat.soak.wet_map is not None

@@ -19,6 +19,12 @@ from ..preferences import find_soak
 from ..predicates import poll_message
 
 OCCLUDER_UV = (4.5, 4.5)
+# Bake Wet Map's default rain, seconds at 10 mm/h: open flat ground reaches
+# 1 - exp(-(10 - 0.5) mm/h * 60 s / 0.2 mm) = 0.55 while sheltered ground is
+# still dry; past ~76 s the film overflows and flows under the shelters
+# (soak bake rain's routing), and by 600 s (the CLI's default) the map is
+# almost uniform (issue 46: 0.1137 vs 0.1136 rendered).
+DEFAULT_RAIN_S = 60.0
 OCCLUDER_TYPES = {"MESH", "CURVE", "SURFACE", "META", "FONT"}
 
 
@@ -135,11 +141,12 @@ class SOAK_OT_bake_wetmap(bpy.types.Operator):
     rays: bpy.props.IntProperty(name="Rays", default=32, min=1, max=4096,
                                 description="Rays per texel for the sky exposure (more: less noise, slower)")
     duration: bpy.props.FloatProperty(
-        name="Rain (s)", default=600.0, min=0.0, soft_max=86400.0,
-        description="Seconds of rain (10 mm/h). A shelter's dry shadow lasts about 76 s: then the surface holds "
-                    "more than its 0.2 mm film and the water runs downhill and spreads over flat ground, under "
-                    "shelters too (a flat floor is wet almost everywhere after 10 minutes). 0 bakes the sky "
-                    "exposure instead (1 open to the rain, 0 sheltered)")
+        name="Rain Duration (s)", default=DEFAULT_RAIN_S, min=0.0, soft_max=86400.0,
+        description="How long it rains before the map is taken, in seconds (10 mm/h). The default, one "
+                    "minute, leaves open ground about half wet and sheltered ground dry: the rain shadow shows. "
+                    "After about 76 s open flat ground holds its full 0.2 mm film and the extra water runs "
+                    "downhill and spreads, under shelters too: after 10 minutes a flat floor is wet almost "
+                    "everywhere. 0 bakes the sky exposure instead (1 open to the rain, 0 sheltered)")
     occluders: bpy.props.EnumProperty(
         name="Shelter", default="SCENE",
         description="What blocks the rain besides the mesh itself",

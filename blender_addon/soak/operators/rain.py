@@ -1,9 +1,18 @@
 """Bake Rain: runs `soak bake drops` (the selected mesh's UVs, sheltered by
 the rest of the visible scene, as Bake Wet Map does), `soak bake ripples`
 and `soak bake rain --frames` (the same mesh and frames: the film running
-down steep faces, the water on the flat) in subprocesses (modal,
-cancellable with Esc), then loads the frame sequences and wires them into
-the wet material (rain.wire): all or nothing.
+down steep faces, the water on the flat), the three at once in
+subprocesses (modal, cancellable with Esc, a progress bar in the status
+bar), then loads the frame sequences and wires them into the wet material
+(rain.wire): all or nothing.
+
+Time: the drops and the film are simulated at the panel's Time Scale
+(simulated seconds per frame; frame f is at t = (f - Start Frame) x scale),
+so a normal shot covers the minutes rain takes to wet a surface (about 76 s
+of 10 mm/h fill the 0.2 mm film a flat surface holds). The ripples are a
+splash pattern seen in real time: their flipbook runs at the scene's frame
+rate and depends only on the rate and seed, so it is kept in a cache folder
+beside the bakes and reused by the next bake with the same rate and seed.
 
 The frames go to a folder next to the .blend (`//soak_rain/OBJECT/`; a
 temporary folder while the file is unsaved): Blender cannot pack image
@@ -11,6 +20,7 @@ sequences. A bake is written into a staging folder, renamed to a folder of
 its own (OBJECT.NNN) when both bakes succeeded, and removed when wiring
 fails; earlier bakes' folders are kept (undo brings their images back)."""
 
+import hashlib
 import os
 import shutil
 import subprocess
@@ -40,26 +50,38 @@ def map_size(ob, settings):
     return max(ob.dimensions.x, ob.dimensions.y, 1e-3)
 
 
-def drops_command(exe, mesh, out, s, fps, first, last, width, size_m, shelter):
-    dur = (s.end_frame - s.start_frame) / fps
-    cmd = [exe, "bake", "drops", "--rate", f"{s.rate:.9g}", "--duration", f"{dur:.9g}", "--fps", f"{fps:.9g}",
-           "--map-size", f"{size_m:.9g}", "--width", str(width), "--height", str(width), "--seed", str(s.seed),
-           "--dry-time", f"{s.dry_time:.9g}", "--frames", f"{first}-{last}", "--frame-origin", str(first),
-           "-o", out]
+def seconds_per_frame(settings):
+    """Simulated seconds per scene frame (the panel's Time Scale)."""
+    return settings.seconds_per_frame
+
+
+def rain_seconds(settings):
+    """Simulated seconds of rain: Start Frame to End Frame at the Time Scale."""
+    return (settings.end_frame - settings.start_frame) * seconds_per_frame(settings)
+
+
+def drops_command(exe, mesh, out, s, first, last, width, size_m, shelter):
+    """`soak bake drops`: file f at t = (f - first) x Time Scale."""
+    sim_fps = 1.0 / seconds_per_frame(s)
+    cmd = [exe, "bake", "drops", "--rate", f"{s.rate:.9g}", "--duration", f"{rain_seconds(s):.9g}",
+           "--fps", f"{sim_fps:.9g}", "--map-size", f"{size_m:.9g}", "--width", str(width), "--height", str(width),
+           "--seed", str(s.seed), "--dry-time", f"{s.dry_time:.9g}", "--frames", f"{first}-{last}",
+           "--frame-origin", str(first), "-o", out]
     if shelter:
         cmd[3:3] = [mesh]
         cmd += ["--up", "z", "--rays", str(s.rays)]
     return cmd
 
 
-def film_command(exe, mesh, out, s, fps, first, last, width):
-    """`soak bake rain --frames` over the drops' frames: file f at t = (f -
-    first) / fps, the rain (the drops' rate, mm/h) falling from the first
-    frame to the panel's end frame."""
-    dur = (s.end_frame - s.start_frame) / fps
-    return [exe, "bake", "rain", mesh, "--up", "z", "--rainfall", f"{s.rate:.9g}", "--duration", f"{dur:.9g}",
-            "--fps", f"{fps:.9g}", "--width", str(width), "--height", str(width), "--rays", str(s.rays),
-            "--seed", str(s.seed), "--frames", f"{first}-{last}", "--frame-origin", str(first), "-o", out]
+def film_command(exe, mesh, out, s, first, last, width):
+    """`soak bake rain --frames` over the drops' frames and times: the
+    rain (the drops' rate, mm/h) falling from the first frame to the
+    panel's end frame."""
+    sim_fps = 1.0 / seconds_per_frame(s)
+    return [exe, "bake", "rain", mesh, "--up", "z", "--rainfall", f"{s.rate:.9g}",
+            "--duration", f"{rain_seconds(s):.9g}", "--fps", f"{sim_fps:.9g}", "--width", str(width),
+            "--height", str(width), "--rays", str(s.rays), "--seed", str(s.seed), "--frames", f"{first}-{last}",
+            "--frame-origin", str(first), "-o", out]
 
 
 def ripples_command(exe, out, s, fps):
@@ -67,6 +89,66 @@ def ripples_command(exe, out, s, fps):
             "--width", str(RIPPLE_SIZE), "--height", str(RIPPLE_SIZE), "--loop-frames", str(RIPPLE_FRAMES),
             "--period", f"{RIPPLE_FRAMES / fps:.9g}", "--seed", str(s.seed),
             "--frames", f"0-{RIPPLE_FRAMES - 1}", "-o", out, "--far", far_path(out)]
+
+
+RIPPLE_NAMES = ("ripples", "ripples_far")
+
+
+def ripple_cache(parent, exe, s, fps):
+    """The folder holding the ripple flipbooks of these settings (a key of
+    everything the ripples bake reads, and the soak binary's size and
+    time: a rebuilt soak bakes again)."""
+    try:
+        st = os.stat(exe)
+        tool = f"{st.st_size}-{int(st.st_mtime)}"
+    except OSError:
+        tool = "unknown"
+    key = f"{s.rate:.9g}|{s.seed}|{fps:.9g}|{RIPPLE_SIZE}|{RIPPLE_FRAMES}|{RIPPLE_TILE:.9g}|{tool}"
+    digest = hashlib.sha1(key.encode()).hexdigest()[:16]
+    return os.path.join(parent, ".ripple-cache", digest)
+
+
+def _ripple_files(folder):
+    return [os.path.join(folder, f"{n}.{k:04d}.exr") for n in RIPPLE_NAMES for k in range(RIPPLE_FRAMES)]
+
+
+def ripples_cached(cache):
+    return all(os.path.isfile(f) for f in _ripple_files(cache))
+
+
+def _link_or_copy(src, dst):
+    try:
+        os.link(src, dst)
+    except OSError:
+        shutil.copy2(src, dst)
+
+
+def take_cached_ripples(cache, stage):
+    """Puts the cached flipbooks into the staging folder; False when the
+    cache is incomplete or cannot be read."""
+    if not ripples_cached(cache):
+        return False
+    try:
+        for f in _ripple_files(cache):
+            _link_or_copy(f, os.path.join(stage, os.path.basename(f)))
+    except OSError:
+        return False
+    return True
+
+
+def keep_ripples(stage, cache):
+    """Copies a fresh ripple bake into the cache (best effort: a cache that
+    cannot be written only costs the next bake its time)."""
+    tmp = cache + f".tmp{os.getpid()}"
+    try:
+        os.makedirs(tmp, exist_ok=True)
+        for f in _ripple_files(stage):
+            _link_or_copy(f, os.path.join(tmp, os.path.basename(f)))
+        if os.path.isdir(cache):
+            shutil.rmtree(cache, ignore_errors=True)
+        os.rename(tmp, cache)
+    except OSError:
+        shutil.rmtree(tmp, ignore_errors=True)
 
 
 REACH_REPORT = {
@@ -116,6 +198,8 @@ def check(context, s):
         return f"mesh '{ob.name}' has no UV map: the drops are baked over the UVs"
     if not s.end_frame > s.start_frame:
         return f"the rain ends (frame {s.end_frame}) before it starts (frame {s.start_frame})"
+    if not seconds_per_frame(s) > 0.0:
+        return f"Time Scale is {seconds_per_frame(s):g} s per frame: give a positive number of seconds"
     if context.scene.frame_end < s.start_frame:
         return f"the scene ends (frame {context.scene.frame_end}) before the rain starts (frame {s.start_frame})"
     mat = ob.active_material
@@ -168,37 +252,65 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         sc = context.scene
         fps = scene_fps(sc)
         self._first, self._last = s.start_frame, max(sc.frame_end, s.start_frame + 1)
-        self._cmds = [drops_command(exe, mesh, os.path.join(self._stage, "drops.%04d.exr"), s, fps, self._first,
-                                    self._last, s.size, map_size(ob, s), s.shelter),
-                      ripples_command(exe, os.path.join(self._stage, "ripples.%04d.exr"), s, fps),
-                      film_command(exe, mesh, os.path.join(self._stage, "film.%04d.exr"), s, fps, self._first,
-                                   self._last, s.size)]
-        self._steps = len(self._cmds)
+        self._cache = ripple_cache(parent, exe, s, fps)
+        self._cached = take_cached_ripples(self._cache, self._stage)
+        cmds = [drops_command(exe, mesh, os.path.join(self._stage, "drops.%04d.exr"), s, self._first,
+                              self._last, s.size, map_size(ob, s), s.shelter),
+                film_command(exe, mesh, os.path.join(self._stage, "film.%04d.exr"), s, self._first, self._last,
+                             s.size)]
+        if not self._cached:
+            cmds.append(ripples_command(exe, os.path.join(self._stage, "ripples.%04d.exr"), s, fps))
         self._repeat = map_size(ob, s) / RIPPLE_TILE
         self._mat, self._ob, self._scene_start = ob.active_material, ob, sc.frame_start
         self._uv = ob.data.uv_layers.active.name
-        self._proc = None
-        return self._next()
-
-    def _next(self):
-        """Starts the next command; False (and reported) when it cannot."""
-        cmd = self._cmds.pop(0)
-        try:
-            self._proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        except OSError as e:
-            shutil.rmtree(self._stage, ignore_errors=True)
-            self.report({"ERROR"}, f"cannot run {cmd[0]}: {e}")
-            return False
-        self._what = " ".join(cmd[1:3])
+        self._procs = []
+        # all at once: each bake has stretches on one thread (start-up, mesh,
+        # writing frames) that the others fill
+        for cmd in cmds:
+            if not self._launch(cmd):
+                self._kill()
+                shutil.rmtree(self._stage, ignore_errors=True)
+                return False
         return True
 
+    def _launch(self, cmd):
+        """Starts one bake, its output in a log file (pipes could fill and
+        stall a bake nobody reads); False (and reported) when it cannot."""
+        what = " ".join(cmd[1:3])
+        try:
+            log = open(os.path.join(self._stage, f".{cmd[2]}.log"), "w+", encoding="utf-8")
+        except OSError as e:
+            self.report({"ERROR"}, f"cannot write the rain bake's log in {self._stage}: {e}")
+            return False
+        try:
+            proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, text=True)
+        except OSError as e:
+            log.close()
+            self.report({"ERROR"}, f"cannot run {cmd[0]}: {e}")
+            return False
+        self._procs.append((proc, what, log))
+        return True
+
+    def _kill(self):
+        for proc, _what, log in self._procs:
+            if proc.poll() is None:
+                proc.terminate()
+            proc.wait()
+            log.close()
+
     def _failed(self):
-        """None when the running command succeeded, else the report."""
-        out, err = self._proc.communicate()
-        if self._proc.returncode == 0:
-            return None
-        msg = (err or out or "").strip().splitlines()
-        return f"soak {self._what} failed (exit {self._proc.returncode}): {msg[-1] if msg else 'no message'}"
+        """None when every bake succeeded, else the report of the first that
+        failed (the others are stopped)."""
+        msg = None
+        for proc, what, log in self._procs:
+            proc.wait()
+            if proc.returncode != 0 and msg is None:
+                log.seek(0)
+                lines = log.read().strip().splitlines()
+                msg = f"soak {what} failed (exit {proc.returncode}): {lines[-1] if lines else 'no message'}"
+        for _proc, _what, log in self._procs:
+            log.close()
+        return msg
 
     def _finish(self, context):
         try:
@@ -209,9 +321,11 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
     def _install(self):
         """Renames the staged frames to a folder of their own (the previous
         bake's frames stay until the new ones are wired)."""
-        mesh = os.path.join(self._stage, "mesh.obj")
-        if os.path.exists(mesh):
-            os.remove(mesh)
+        for name in os.listdir(self._stage):
+            if name == "mesh.obj" or name.endswith(".log"):
+                os.remove(os.path.join(self._stage, name))
+        if not self._cached:
+            keep_ripples(self._stage, self._cache)
         n = 1
         while os.path.exists(f"{self._base}.{n:03d}"):
             n += 1
@@ -274,13 +388,9 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
     def execute(self, context):  # blocking variant (scripts, tests)
         if not self._start(context):
             return {"CANCELLED"}
-        while True:
-            self._proc.wait()
-            if not self._cmds or self._proc.returncode != 0:
-                return self._finish(context)
-            self._proc.communicate()
-            if not self._next():
-                return {"CANCELLED"}
+        for proc, _what, _log in self._procs:
+            proc.wait()
+        return self._finish(context)
 
     def invoke(self, context, event):
         if not self._start(context):
@@ -288,15 +398,38 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         wm = context.window_manager
         self._timer = wm.event_timer_add(0.2, window=context.window)
         wm.progress_begin(0, 100)
+        self._fraction = 0.0
+        self._draw_status = self._status_bar()
+        context.workspace.status_text_set(self._draw_status)
         wm.modal_handler_add(self)
         return {"RUNNING_MODAL"}
 
     def _progress(self):
-        """(frames written, frames to write) over the three bakes: the files
-        in the staging folder (each frame is renamed into place when done)."""
+        """(frames written, frames to write) over the bakes: the files in
+        the staging folder (each frame is renamed into place when done)."""
         names = os.listdir(self._stage) if os.path.isdir(self._stage) else []
         done = sum(1 for n in names if n.endswith(".exr") and not n.startswith("."))
         return done, 2 * (self._last - self._first + 1) + 2 * RIPPLE_FRAMES    # drops, film; sharp and far ripples
+
+    def _status_bar(self):
+        """The status bar's draw function while baking: a progress bar (4.0+:
+        UILayout.progress; 3.x: the share as text) and how to cancel. A plain
+        function (Blender calls it as the status bar header's draw and
+        refuses a bound method)."""
+        op = self
+
+        def draw(header, _context):
+            layout = header.layout
+            done = int(100 * op._fraction)
+            text = f"Soak: Bake Rain {done} %"
+            if hasattr(layout, "progress"):
+                row = layout.row()
+                row.ui_units_x = 12          # a header sizes a bar to almost nothing otherwise
+                row.progress(factor=op._fraction, type="BAR", text=text)
+            else:
+                layout.label(text=text + "  " + "\u2588" * (done // 5) + "\u2591" * (20 - done // 5))
+            layout.label(text="Esc cancels", icon="EVENT_ESC")
+        return draw
 
     def _stop(self, context):
         wm = context.window_manager
@@ -306,8 +439,7 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
 
     def modal(self, context, event):
         if event.type == "ESC":
-            self._proc.terminate()
-            self._proc.wait()
+            self._kill()
             shutil.rmtree(self._stage, ignore_errors=True)
             self._stop(context)
             self.report({"WARNING"}, "rain bake cancelled")
@@ -315,18 +447,17 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         if event.type != "TIMER":
             return {"PASS_THROUGH"}
         done, total = self._progress()
-        step = self._steps - len(self._cmds)     # 1 drops, 2 ripples, 3 film
-        context.window_manager.progress_update(min(99, int(100 * done / total)))
-        context.workspace.status_text_set(f"Soak: {self._what} ({step}/{self._steps}), {done} of {total} frames... "
-                                          "(Esc cancels)")
-        if self._proc.poll() is None:
+        self._fraction = min(0.99, done / total)
+        context.window_manager.progress_update(int(100 * self._fraction))
+        context.workspace.status_text_set(self._draw_status)     # redraws the status bar
+        running = [proc.poll() is None for proc, _what, _log in self._procs]
+        failed = any(proc.returncode not in (None, 0) for proc, _what, _log in self._procs)
+        if any(running) and not failed:
             return {"PASS_THROUGH"}
-        if self._cmds and self._proc.returncode == 0:
-            self._proc.communicate()
-            if self._next():
-                return {"PASS_THROUGH"}
-            self._stop(context)
-            return {"CANCELLED"}
+        if failed:                       # no use waiting for the others
+            for proc, _what, _log in self._procs:
+                if proc.poll() is None:
+                    proc.terminate()
         self._stop(context)
         return self._finish(context)
 
