@@ -1,5 +1,6 @@
 # The two commands of README.md:
-#   make demo   install missing Debian packages, build everything, run the main job
+#   make demo   install missing Debian packages, build the soak tool, run the main job
+#               (scripts/demo.sh: one line per step, logs in out/demo/logs/)
 #   make test   the same set-up, then the whole test suite (release + sanitizer pass)
 BUILD      ?= build
 BUILD_ASAN ?= build-asan
@@ -15,7 +16,7 @@ test test-release test-asan blender43 blender52: DEPS_TIER = test
 # The project's own builds treat warnings as errors (a plain cmake build does not).
 CMAKE_DEV  = -DSOAK_WERROR=ON
 
-.PHONY: all deps install package build build-asan blender43 blender52 addon extension-repo asset-library exports demo gallery povray-gallery soak-gallery rainfall-gallery test test-release test-asan bench fuzz clean
+.PHONY: all deps install package build build-asan blender43 blender52 addon extension-repo asset-library exports demo gallery povray-gallery soak-gallery rainfall-gallery test test-release test-asan ctest-release ctest-asan bench fuzz clean
 
 all: build
 
@@ -77,12 +78,11 @@ asset-library: addon blender52
 exports: build
 	@bash scripts/regenerate-exports.sh $(BUILD)/bin/soak
 
-demo: build addon
-	@$(BUILD)/bin/soak demo --out out/demo
-	@bash povray/render_scenes.sh $(BUILD)/bin/soak out/demo/povray full
-	@/usr/bin/python3 scenes/blender/variant_addon.py $(BUILD)/bin/soak $(BUILD)/soak_blender.zip scenes/gallery/variants.txt \
-	  $(BUILD)/soak_blender_gallery.zip
-	@BLENDER_USER_SCRIPTS=$(CURDIR)/$(BUILD)/blender_user blender -b --factory-startup --python-exit-code 1 --python scenes/blender/render_all.py -- --addon $(BUILD)/soak_blender_gallery.zip --out out/demo/blender --soak $(BUILD)/bin/soak
+# Builds only the soak tool and its modules (not the tests nor the clang
+# fuzzing tree of `make test`), then soak demo, the POV-Ray and the Blender
+# seed scenes, one line per step; every log in out/demo/logs/.
+demo: deps
+	@bash scripts/demo.sh $(BUILD) out/demo $(JOBS)
 
 # The Blender gallery of blender_addon/README.md: the seed scenes of the physics
 # sources (scenes/blender/seeds.py), Cycles, 960x540, into blender_addon/images/
@@ -138,17 +138,30 @@ rainfall-gallery: build addon $(if $(filter 5.2,$(RAIN_BLENDER)),blender52) $(if
 CTEST_ARGS = --output-on-failure -j $(JOBS) --output-junit ctest-junit.xml \
   --test-output-size-passed 1000000 --test-output-size-failed 1000000
 
-test-release: build blender43 blender52
+ctest-release:
 	@cd $(BUILD) && { ctest $(CTEST_ARGS); rc=$$?; \
 	  /usr/bin/python3 $(CURDIR)/scripts/test_skips.py . ctest-junit.xml || rc=1; exit $$rc; }
 
-# Sanitizer pass: every test but the long Monte Carlo ones (labelled slow).
-test-asan: build-asan
+# Sanitizer pass: every test but the long Monte Carlo ones (labelled slow) and
+# the checks that run none of the project's C code (labelled nocode: source
+# and documentation checks, plain Python; the release pass runs them).
+ctest-asan:
 	@cd $(BUILD_ASAN) && { ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-	  ctest $(CTEST_ARGS) -LE slow; rc=$$?; \
+	  ctest $(CTEST_ARGS) -LE 'slow|nocode'; rc=$$?; \
 	  /usr/bin/python3 $(CURDIR)/scripts/test_skips.py . ctest-junit.xml || rc=1; exit $$rc; }
 
-test: test-release test-asan
+test-release: build blender43 blender52
+	@$(MAKE) --no-print-directory ctest-release
+
+test-asan: build-asan
+	@$(MAKE) --no-print-directory ctest-asan
+
+# Both passes, the Debian roots made meanwhile (scripts/test.sh): the roots
+# (mostly download and unpacking) beside the two builds and the sanitizer
+# pass, which needs no Blender; then the release pass. Both passes run even
+# when one fails.
+test: deps
+	@bash scripts/test.sh "$(MAKE)" $(BUILD)
 
 # libFuzzer runs of tests/fuzz's targets (clang needed; not part of make test,
 # which replays the stored corpora and reproducers in every build).

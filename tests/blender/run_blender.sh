@@ -77,8 +77,9 @@ for a in "$@"; do
     bin=$(readlink -f "$a")
     wrap_dir="$root/opt/soak-host/$(printf '%s' "$bin" | md5sum | cut -c1-16)"
     mkdir -p "$wrap_dir"
+    # a temporary of this process's own: tests of one root run in parallel
     printf '#!/bin/sh\n# %s, a Debian 12 program, with its own loader and libraries\nexec /host/usr/lib/x86_64-linux-gnu/ld-linux-x86-64.so.2 --library-path /host/usr/lib/x86_64-linux-gnu:/host/usr/lib "%s" "$@"\n' \
-      "$bin" "$bin" > "$wrap_dir/soak.tmp" && chmod +x "$wrap_dir/soak.tmp" && mv "$wrap_dir/soak.tmp" "$wrap_dir/soak"
+      "$bin" "$bin" > "$wrap_dir/soak.tmp.$$" && chmod +x "$wrap_dir/soak.tmp.$$" && mv "$wrap_dir/soak.tmp.$$" "$wrap_dir/soak"
     binds+=("$(dirname "$bin")")
     args+=("/opt/soak-host/$(basename "$wrap_dir")/soak")
     prev=$a
@@ -96,7 +97,13 @@ for v in BLENDER_USER_SCRIPTS BLENDER_USER_EXTENSIONS BLENDER_USER_CONFIG TMPDIR
 done
 mapfile -d '' blender_args < <(script_args "${args[@]}")
 
-exec unshare --mount --propagation private bash -euc '
+# --net: a network namespace of its own (loopback only; Blender needs no
+# network). Xvfb listens on an abstract socket named by its display number,
+# shared by every process of a network namespace whatever its /tmp; the
+# root's private /tmp hides other tests' lock files, so xvfb-run -a picks :99
+# in every root. Alone in its namespace, each test's :99 is its own, and
+# Blender tests of all three versions run in parallel (ctest -j).
+exec unshare --mount --net --propagation private bash -euc '
   root=$1; cwd=$2; nb=$3; shift 3
   binds=("${@:1:$nb}"); shift "$nb"
   mount -t proc proc "$root/proc"

@@ -81,17 +81,17 @@ static double conductor_film(double n, double k, double n_liq, double two_pass)
 /* Step 5 for dielectrics: the diffuse light leaving through a film over a
  * Lambertian base, T(A) - T(0), and the film's own specular part T(0), for
  * uniform diffuse light (cos_i < 0) or collimated light at cos_i. */
-static soak_status film_parts(const soak_film *film, double base, double cos_i, double *diffuse, double *specular)
+static soak_status film_ctx_parts(const soak_film_ctx *ctx, double base, double cos_i, double *diffuse,
+                                  double *specular)
 {
     double total = 0.0;
-    soak_film_ctx ctx; /* one quadrature setup for both evaluations */
-    soak_status st = soak_film_setup(film, &ctx);
+    soak_status st;
     if (cos_i < 0.0) {
-        if (st == SOAK_OK) st = soak_film_ctx_albedo_diffuse(&ctx, base, &total);
-        if (st == SOAK_OK) st = soak_film_ctx_albedo_diffuse(&ctx, 0.0, specular);
+        st = soak_film_ctx_albedo_diffuse(ctx, base, &total);
+        if (st == SOAK_OK) st = soak_film_ctx_albedo_diffuse(ctx, 0.0, specular);
     } else {
-        if (st == SOAK_OK) st = soak_film_ctx_albedo_dir(&ctx, base, cos_i, &total);
-        if (st == SOAK_OK) st = soak_film_ctx_albedo_dir(&ctx, 0.0, cos_i, specular);
+        st = soak_film_ctx_albedo_dir(ctx, base, cos_i, &total);
+        if (st == SOAK_OK) st = soak_film_ctx_albedo_dir(ctx, 0.0, cos_i, specular);
     }
     if (st != SOAK_OK) return st;
     *diffuse = total - *specular;
@@ -110,6 +110,13 @@ static soak_status interface_step(const soak_preset *p, const soak_liquid *l, co
     soak_film film = {l->ior, 0.0, o->film_thickness_m};
     const soak_film pores = {l->ior, 0.0, 0.0};
     const double pore_area = soak_material_kind_porous(p->kind) ? p->porosity * o->fill : 0.0;
+    /* The pores' interface is the same in every channel: one set-up (its
+     * Fresnel average was most of soak export's time, computed per channel). */
+    soak_film_ctx pore_ctx = {0};
+    if (!conductor && pore_area > 0.0) {
+        soak_status st = soak_film_setup(&pores, &pore_ctx);
+        if (st != SOAK_OK) return st;
+    }
     for (int i = 0; i < 3; ++i) {
         double base = soak_rgb_at(o->albedo_subsurface, i);
         double diffuse, specular;
@@ -121,10 +128,12 @@ static soak_status interface_step(const soak_preset *p, const soak_liquid *l, co
             diffuse = conductor_film(soak_rgb_at(p->ior_n, i), soak_rgb_at(p->ior_k, i), l->ior, two_pass);
         } else {
             film.alpha = soak_rgb_at(o->film_absorption_per_m, i);
-            soak_status st = film_parts(&film, base, cos_i, &diffuse, &specular);
+            soak_film_ctx film_ctx; /* one quadrature set-up for both evaluations */
+            soak_status st = soak_film_setup(&film, &film_ctx);
+            if (st == SOAK_OK) st = film_ctx_parts(&film_ctx, base, cos_i, &diffuse, &specular);
             if (st == SOAK_OK && pore_area > 0.0) {
                 double pore_diffuse = 0.0, pore_specular = 0.0;
-                st = film_parts(&pores, base, cos_i, &pore_diffuse, &pore_specular);
+                st = film_ctx_parts(&pore_ctx, base, cos_i, &pore_diffuse, &pore_specular);
                 open = lerp(base, pore_diffuse, pore_area);
                 open_total = lerp(base, pore_diffuse + pore_specular, pore_area);
             }
