@@ -9,6 +9,11 @@ sheet's pixels are found by projecting the sheet's own wet map function
 (scenes/gallery/meshes.py `blot`) through the scene's camera, never from the render.
 A pass needs the difference beyond 4 standard errors of the pixel means.
 
+[Hnat06] §4, Fig. 5: the larger alpha_poro, the darker the wet flowerpot. Each front
+(wet) pot's wall is divided by the same pixels of a second render in which every pot
+has alpha_poro = 0, so position and lighting cancel; alpha_poro 0.5 must come out
+darker than alpha_poro 0 beyond 4 standard errors.
+
 usage: gallery_claims.py SOAK ROOT TMP   (exit 77 and SKIPPED: when oiiotool is missing)
 """
 import json
@@ -103,6 +108,65 @@ def stats(values):
     return mean, var / n
 
 
+def pot_pixels(scene, x_pot, y_pot, width, height):
+    """Pixels of a pot's outer wall facing the camera (meshes.py's lathe profile:
+    radius 0.055 m at the foot to 0.08 m at 0.14 m), clear of rim and foot."""
+    project = projector(scene["camera"], width, height)
+    pixels = set()
+    for k in range(15):
+        z = 0.04 + 0.07 * k / 14
+        r = 0.055 + 0.025 * z / 0.14
+        for a in range(-30, 31, 3):
+            t = math.radians(a)
+            pixels.add(project((x_pot + r * math.sin(t), y_pot - r * math.cos(t), z)))
+    return pixels
+
+
+def render(soak, scene, path, width, height, spp):
+    with open(path + ".json", "w") as f:
+        json.dump(scene, f)
+    subprocess.run([soak, "render", path + ".json", "-o", path + ".exr", "--width", str(width),
+                    "--height", str(height), "--spp", str(spp), "--threads", "2", "-q"], check=True)
+    return luminance_map(path + ".exr")
+
+
+def check_flowerpots(soak, gallery, tmp):
+    """[Hnat06] Fig. 5: the larger alpha_poro, the darker the wet pot. The front row's
+    pots are each divided by the same pot at the same place rendered with alpha_poro = 0
+    (a second render), so the lamp's distance and the view do not enter."""
+    width, height, spp = 192, 108, 32
+    with open(os.path.join(gallery, "flowerpot_porosity.json")) as f:
+        scene = json.load(f)
+    subprocess.run([sys.executable, os.path.join(gallery, "meshes.py"), tmp], check=True,
+                   stdout=subprocess.DEVNULL)
+    front = [(o["translate"], o["material"]) for o in scene["objects"]
+             if o.get("file") == "pot.obj" and o["translate"][1] == 0.0]
+    control = json.loads(json.dumps(scene))
+    for name in scene["materials"]:
+        if name.startswith("pot_"):
+            control["materials"][name] = dict(scene["materials"]["pot_0"])
+    lum = render(soak, scene, os.path.join(tmp, "pots"), width, height, spp)
+    ref = render(soak, control, os.path.join(tmp, "pots_control"), width, height, spp)
+    rows = []
+    for (x, y, _), mat in front:
+        px = [p for p in pot_pixels(scene, x, y, width, height) if p in lum]
+        m, v = stats([lum[p] for p in px])
+        mr, vr = stats([ref[p] for p in px])
+        ratio = m / mr
+        rows.append((scene["materials"][mat]["porosity"], ratio,
+                     ratio * math.sqrt(v / m ** 2 + vr / mr ** 2), len(px)))
+    rows.sort()
+    for a, r, e, n in rows:
+        print(f"  flowerpot alpha_poro {a:.1f}: wet body / same pot at alpha_poro 0 = {r:.3f}"
+              f" +- {e:.3f} ({n} px)")
+    (a0, r0, e0, _), (a1, r1, e1, _) = rows[0], rows[-1]
+    margin, se = r0 - r1, math.sqrt(e0 ** 2 + e1 ** 2)
+    ok = margin > 4 * se and len(rows) == 6
+    print(f"{'ok' if ok else 'FAIL'} flowerpot_porosity: alpha_poro {a1} / {a0} = {r1 / r0:.3f};"
+          f" [Hnat06] Fig. 5: darker with alpha_poro, margin {margin:.3f} vs 4 SE {4 * se:.3f}")
+    return 0 if ok else 1
+
+
 def main():
     soak, root, tmp = sys.argv[1:4]
     if shutil.which("oiiotool") is None:
@@ -145,6 +209,7 @@ def main():
         print(f"{verdict} {name}: blot {mw:.4f} ({len(wet)} px), dry sheet {md:.4f} "
               f"({len(dry)} px), ratio {mw / md:.3f}; [JLD99] Fig. 5: blot {word}, "
               f"margin {diff:.4f} vs 4 SE {4 * se:.4f}")
+    failures += check_flowerpots(soak, gallery, tmp)
     return 1 if failures else 0
 
 
