@@ -71,19 +71,8 @@ POV_DIR=$WORK/variants pov flowerpot_porosity.pov flowerpot_porosity "$W" "$H"; 
 pov film_copper.pov film_copper "$W" "$H"; png film_copper
 # 7b [Lag13]'s film depths at full coverage: dry, 0, 0.5 mm, 50 cm over a ground and over copper
 POV_DIR=$WORK/variants pov film_thickness.pov film_thickness "$W" "$H"; png film_thickness
-# beside them, soak render of the same description where the tracer can render it
-# (spheres, boxes and planes of presets: the beach rock and the films with copper)
-for s in beach_rock film_copper; do
-  t0=$(date +%s)
-  "$SOAK" render "$SCN/$s.json" -o "$WORK/soak_$s.png" --threads 2 --seed 1 >"$WORK/soak_$s.log" 2>&1 \
-    || { echo "FAIL: soak render $s.json, see $WORK/soak_$s.log"; tail -3 "$WORK/soak_$s.log"; exit 1; }
-  oiiotool "$WORK/soak_$s.png" -d uint8 --attrib png:compressionLevel 9 -o "$OUT/gallery_soak_$s.png"   # soak writes 16-bit PNGs
-  if [ "$(stat -c %s "$OUT/gallery_soak_$s.png")" -ge 409600 ]; then   # Monte Carlo fireflies do not compress
-    oiiotool "$WORK/soak_$s.png" --median 3x3 -d uint8 -o "$OUT/gallery_soak_$s.png"
-    echo "soak render $s: 3x3 median (fireflies) to stay under 400 KB"
-  fi
-  echo "soak render $s: $(( $(date +%s) - t0 )) s"
-done
+# the soak render column of these scenes is docs/images/gallery/soak_*.png (make soak-gallery,
+# scenes/gallery/*.json): one copy of each picture
 for f in "$OUT"/gallery_*.png; do
   kb=$(( $(stat -c %s "$f") / 1024 ))
   [ "$kb" -lt 400 ] || { echo "FAIL: $f is $kb KB (limit 400)"; exit 1; }
