@@ -12,6 +12,7 @@
 #include "bake_rain_film.h"
 #include "bake_rain_flow.h"
 #include "bake_rain_scene.h"
+#include "bake_rain_surface.h"
 
 void soak_rain_defaults(soak_rain_params *p)
 {
@@ -66,19 +67,6 @@ soak_status soak_rain_check(const soak_rain_params *p)
 static const int *const DX = SOAK_RAIN_DX;
 static const int *const DY = SOAK_RAIN_DY;
 
-typedef struct rain_surface {
-    int w, h;
-    int *tri;          /* per texel, -1 = empty */
-    double *pos;       /* 3 per texel */
-    float *nrm;        /* 3 per texel */
-    float *dpdx, *dpdy;/* 3 per texel: world step of one texel in +x, +y (image rows down) */
-    float *area;       /* world area of the texel */
-    double *level;     /* p.up */
-    unsigned char *adj;/* bit d: neighbour d is 3D-adjacent and covered */
-    float *drip;       /* > 0: level drop toward the open edge the water drips off */
-    double mean_texel; /* mean sqrt(area) of covered texels */
-} rain_surface;
-
 static void surface_free(rain_surface *s)
 {
     free(s->tri);
@@ -95,63 +83,6 @@ static void surface_free(rain_surface *s)
 static soak_vec3 vget(const double *a, size_t i)
 {
     return soak_v3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
-}
-
-static soak_status rasterise(const soak_mesh *m, rain_surface *s, soak_vec3 up)
-{
-    size_t n = (size_t)s->w * s->h;
-    for (size_t i = 0; i < n; ++i) s->tri[i] = -1;
-    for (size_t t = 0; t < m->n_triangles; ++t) {
-        unsigned ix[3] = {m->indices[3 * t], m->indices[3 * t + 1], m->indices[3 * t + 2]};
-        double X[3], Y[3];
-        soak_vec3 P[3];
-        for (int k = 0; k < 3; ++k) {
-            X[k] = m->uvs[2 * ix[k]] * s->w;
-            Y[k] = (1.0 - m->uvs[2 * ix[k] + 1]) * s->h;
-            P[k] = vget(m->positions, ix[k]);
-        }
-        double den = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
-        soak_vec3 cr = soak_v3_cross(soak_v3_sub(P[1], P[0]), soak_v3_sub(P[2], P[0]));
-        double area3 = 0.5 * soak_v3_len(cr);
-        if (!(fabs(den) > 1e-12) || !(area3 > 0.0) || !soak_is_finite(den)) continue; /* degenerate */
-        soak_vec3 ng = soak_v3_scale(cr, 0.5 / area3);
-        if (m->normals) {
-            soak_vec3 vn = soak_v3_add(soak_v3_add(vget(m->normals, ix[0]), vget(m->normals, ix[1])),
-                                       vget(m->normals, ix[2]));
-            if (soak_v3_dot(vn, ng) < 0) ng = soak_v3_scale(ng, -1.0);
-        }
-        double texel_area = area3 / (0.5 * fabs(den));
-        /* World step per texel: solve P = P0 + a (P1-P0) + b (P2-P0) for X, Y. */
-        double ia = 1.0 / den;
-        soak_vec3 e1 = soak_v3_sub(P[1], P[0]), e2 = soak_v3_sub(P[2], P[0]);
-        /* d(a,b)/dX and d(a,b)/dY of the barycentric map. */
-        double dadx = (Y[2] - Y[0]) * ia, dbdx = -(Y[1] - Y[0]) * ia;
-        double dady = -(X[2] - X[0]) * ia, dbdy = (X[1] - X[0]) * ia;
-        soak_vec3 sx = soak_v3_add(soak_v3_scale(e1, dadx), soak_v3_scale(e2, dbdx));
-        soak_vec3 sy = soak_v3_add(soak_v3_scale(e1, dady), soak_v3_scale(e2, dbdy));
-        double xmin = fmin(X[0], fmin(X[1], X[2])), xmax = fmax(X[0], fmax(X[1], X[2]));
-        double ymin = fmin(Y[0], fmin(Y[1], Y[2])), ymax = fmax(Y[0], fmax(Y[1], Y[2]));
-        int x0 = (int)fmax(0.0, floor(xmin - 0.5)), x1 = (int)fmin(s->w - 1.0, ceil(xmax - 0.5));
-        int y0 = (int)fmax(0.0, floor(ymin - 0.5)), y1 = (int)fmin(s->h - 1.0, ceil(ymax - 0.5));
-        const double eps = -1e-9;
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                size_t i = (size_t)y * s->w + x;
-                if (s->tri[i] >= 0) continue;
-                double px = x + 0.5 - X[0], py = y + 0.5 - Y[0];
-                double a = px * dadx + py * dady, b = px * dbdx + py * dbdy;
-                if (a < eps || b < eps || a + b > 1.0 - eps) continue;
-                soak_vec3 p = soak_v3_add(P[0], soak_v3_add(soak_v3_scale(e1, a), soak_v3_scale(e2, b)));
-                s->tri[i] = (int)(t < 0x7fffffff ? t : 0x7fffffff);
-                s->pos[3 * i] = p.x, s->pos[3 * i + 1] = p.y, s->pos[3 * i + 2] = p.z;
-                s->nrm[3 * i] = (float)ng.x, s->nrm[3 * i + 1] = (float)ng.y, s->nrm[3 * i + 2] = (float)ng.z;
-                s->dpdx[3 * i] = (float)sx.x, s->dpdx[3 * i + 1] = (float)sx.y, s->dpdx[3 * i + 2] = (float)sx.z;
-                s->dpdy[3 * i] = (float)sy.x, s->dpdy[3 * i + 1] = (float)sy.y, s->dpdy[3 * i + 2] = (float)sy.z;
-                s->area[i] = (float)texel_area;
-                s->level[i] = soak_v3_dot(p, up);
-            }
-    }
-    return SOAK_OK;
 }
 
 static soak_vec3 fget(const float *a, size_t i)
@@ -608,47 +539,11 @@ static soak_status surface_alloc(rain_surface *s, int w, int h)
     return SOAK_OK;
 }
 
-/* Texture coordinates beyond this are not a texture layout but corrupt data
- * (a UV of 1e30 was called "not finite"). */
-#define SOAK_RAIN_UV_MAX 1e6
-
-static soak_status check_mesh(const soak_mesh *m, char *err, size_t errlen)
-{
-    if (!m->positions || !m->indices || m->n_triangles == 0 || m->n_vertices == 0) {
-        if (err && errlen) snprintf(err, errlen, "mesh has no triangles");
-        return SOAK_ERR_ARG;
-    }
-    if (!m->uvs) {
-        if (err && errlen) snprintf(err, errlen, "mesh has no UVs: the rain bake needs texture coordinates");
-        return SOAK_ERR_ARG;
-    }
-    for (size_t i = 0; i < 3 * m->n_triangles; ++i)
-        if (m->indices[i] >= m->n_vertices) {
-            if (err && errlen) snprintf(err, errlen, "mesh index %zu out of range", i);
-            return SOAK_ERR_ARG;
-        }
-    for (size_t i = 0; i < m->n_vertices; ++i) {
-        for (int k = 0; k < 3; ++k)
-            if (!soak_is_finite(m->positions[3 * i + k])) {
-                if (err && errlen) snprintf(err, errlen, "mesh vertex %zu is not finite", i);
-                return SOAK_ERR_ARG;
-            }
-        if (!soak_in_range(m->uvs[2 * i], -SOAK_RAIN_UV_MAX, SOAK_RAIN_UV_MAX) ||
-            !soak_in_range(m->uvs[2 * i + 1], -SOAK_RAIN_UV_MAX, SOAK_RAIN_UV_MAX)) {
-            if (err && errlen)
-                snprintf(err, errlen, "mesh UV %zu (%g, %g) is out of range: UVs must be finite and within [-%g, %g]",
-                         i, m->uvs[2 * i], m->uvs[2 * i + 1], SOAK_RAIN_UV_MAX, SOAK_RAIN_UV_MAX);
-            return SOAK_ERR_ARG;
-        }
-    }
-    return SOAK_OK;
-}
-
 /* Steps 1 and 2: the surface of mesh and its sky exposure (allocated into
  * *exposure); on error neither is kept. */
 static soak_status surface_and_exposure(const soak_mesh *mesh, int width, int height, const soak_rain_params *p,
                                         const soak_bake_exec *exec, double progress_hi, rain_surface *s,
-                                        soak_image *exposure, char *err, size_t errlen)
+                                        soak_image *exposure, soak_uv_stats *uv, char *err, size_t errlen)
 {
     soak_status st = soak_rain_check(p);
     if (st != SOAK_OK) {
@@ -657,12 +552,12 @@ static soak_status surface_and_exposure(const soak_mesh *mesh, int width, int he
     }
     if ((st = soak_bake_check_size(width, height)) != SOAK_OK) return st;
     if (exec && soak_bake_threads(exec) == 0) return SOAK_ERR_ARG;
-    if ((st = check_mesh(mesh, err, errlen)) != SOAK_OK) return st;
+    if ((st = soak_rain_check_mesh(mesh, err, errlen)) != SOAK_OK) return st;
     soak_vec3 up = soak_v3_norm(p->up);
     if ((st = surface_alloc(s, width, height)) != SOAK_OK) return st;
-    rasterise(mesh, s, up);
     soak_geometry *g = NULL;
-    st = connect(s, up, exec);
+    st = soak_rain_rasterise(mesh, &p->uv, s, up, uv, err, errlen);
+    if (st == SOAK_OK) st = connect(s, up, exec);
     if (st == SOAK_OK) st = build_geometry(mesh, &g, err, errlen);
     if (st == SOAK_OK) st = soak_image_alloc(exposure, width, height, 1);
     if (st == SOAK_OK) {
@@ -694,7 +589,7 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
     soak_rain_result r;
     memset(&r, 0, sizeof r);
     soak_status st = surface_and_exposure(mesh, width, height, p, exec, p->duration > 0 ? 0.7 : 1.0, &s,
-                                          &r.exposure, err, errlen);
+                                          &r.exposure, &r.uv, err, errlen);
     if (st != SOAK_OK) return st;
     size_t n = (size_t)width * height;
     if (st == SOAK_OK) st = soak_image_alloc(&r.wetness, width, height, 1);
@@ -749,7 +644,7 @@ soak_status soak_rain_scene_build(const soak_mesh *mesh, int width, int height, 
     if (!mesh || !p || !out) return SOAK_ERR_NULL;
     memset(out, 0, sizeof *out);
     rain_surface s;
-    soak_status st = surface_and_exposure(mesh, width, height, p, exec, 1.0, &s, &out->exposure, err, errlen);
+    soak_status st = surface_and_exposure(mesh, width, height, p, exec, 1.0, &s, &out->exposure, &out->uv, err, errlen);
     if (st != SOAK_OK) return st;
     size_t n = (size_t)width * height;
     out->w = width, out->h = height;

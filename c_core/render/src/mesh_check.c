@@ -287,10 +287,18 @@ static soak_status check_glb(const char *path, const char *buf, size_t n, long l
     const unsigned char *u = (const unsigned char *)buf;
     char msg[256];
     if (n < 20 || memcmp(buf, "glTF", 4) != 0) return refuse(err, errlen, path, "GLB without the 'glTF' magic and header");
-    if (le32(u + 4) != 2) return refuse(err, errlen, path, "GLB version is not 2");
+    if (le32(u + 4) != 2 && le32(u + 4) != 1) {
+        snprintf(msg, sizeof msg, "GLB version %u: Soak reads glTF binary versions 1 and 2", le32(u + 4));
+        return refuse(err, errlen, path, msg);
+    }
     if ((long long)le32(u + 8) != size) {
         snprintf(msg, sizeof msg, "GLB header declares %u bytes, the file has %lld (truncated?)", le32(u + 8), size);
         return refuse(err, errlen, path, msg);
+    }
+    if (le32(u + 4) == 1) { /* KHR_binary_glTF: content length, format 0 (JSON), then the body */
+        if (le32(u + 16) != 0 || 20 + (long long)le32(u + 12) > size)
+            return refuse(err, errlen, path, "glTF 1.0 binary header whose scene is not JSON or does not fit the file");
+        return SOAK_OK;
     }
     long long at = 12;
     while (at < size) {
@@ -320,6 +328,14 @@ static soak_status check_gltf(const char *path, FILE *f, long long size, char *e
     return ok ? SOAK_OK : refuse(err, errlen, path, "glTF that is not a complete JSON object with an 'asset' (truncated?)");
 }
 
+/* A UTF-16 byte-order mark: the reader converts such an OBJ to UTF-8
+ * (render/plugin/mesh_convert.c) and counts its faces itself. */
+static int utf16_bom(const char *buf, size_t n)
+{
+    const unsigned char *u = (const unsigned char *)buf;
+    return n >= 2 && ((u[0] == 0xFE && u[1] == 0xFF) || (u[0] == 0xFF && u[1] == 0xFE));
+}
+
 soak_status soak_mesh_check_file(const char *path, FILE *f, long long size, char *err, size_t errlen)
 {
     char *buf = malloc(HEADER_MAX);
@@ -332,7 +348,7 @@ soak_status soak_mesh_check_file(const char *path, FILE *f, long long size, char
     else if (!strcasecmp(ext, "ply")) st = check_ply(path, buf, n, size, err, errlen);
     else if (!strcasecmp(ext, "off")) st = check_off(path, buf, n, size, err, errlen);
     else if (!strcasecmp(ext, "stl")) st = check_stl(path, f, buf, n, size, err, errlen);
-    else if (!strcasecmp(ext, "obj")) st = check_obj(path, f, err, errlen);
+    else if (!strcasecmp(ext, "obj") && !utf16_bom(buf, n)) st = check_obj(path, f, err, errlen);
     else if (!strcasecmp(ext, "glb")) st = check_glb(path, buf, n, size, err, errlen);
     else if (!strcasecmp(ext, "gltf")) st = check_gltf(path, f, size, err, errlen);
     free(buf);
