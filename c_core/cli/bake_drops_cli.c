@@ -128,7 +128,9 @@ static int mesh_exposure(drops_job *j, const bake_opts *o)
     j->exposure = res.exposure;
     res.exposure.pixels = NULL;
     soak_rain_result_free(&res);
-    if (bake_uv_verdict(CMD, j->mesh_path, &res.uv, &j->uvo)) return SOAK_EXIT_FAIL;
+    if (bake_uv_verdict(CMD, j->mesh_path, &res.uv, &j->uvo) ||
+        bake_uv_dry_verdict(CMD, j->mesh_path, &j->exposure, &res.uv, &j->uvo))
+        return SOAK_EXIT_FAIL;
     bake_uv_report(j->mesh_path, &res.uv);
     return 0;
 }

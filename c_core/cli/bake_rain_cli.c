@@ -384,7 +384,10 @@ int soak_bake_rain_main(int argc, char **argv)
     soak_rain_result res;
     if (bake(&a, &o, &res) != SOAK_OK) return SOAK_EXIT_FAIL;
     const soak_image *imgs[4] = {&res.wetness, &res.exposure, &res.water, &res.film};
-    rc = bake_uv_verdict(CMD, a.mesh_path, &res.uv, &a.uvo) ? SOAK_EXIT_FAIL : write_outputs(paths, imgs, 4);
+    rc = bake_uv_verdict(CMD, a.mesh_path, &res.uv, &a.uvo) ||
+                 bake_uv_dry_verdict(CMD, a.mesh_path, &res.exposure, &res.uv, &a.uvo)
+             ? SOAK_EXIT_FAIL
+             : write_outputs(paths, imgs, 4);
     if (rc == SOAK_EXIT_OK) printf("%s: %ldx%ld rain wetness from %s\n", o.output, o.width, o.height, a.mesh_path);
     if (rc == SOAK_EXIT_OK) bake_uv_report(o.output, &res.uv);
     const soak_rain_runoff *r = &res.runoff;

@@ -41,7 +41,8 @@ const cli_opt bake_uv_opts_table[] = {
              "map per UDIM tile instead (1001 + u + 10 v)"},
     {"--strict", NULL, CLI_OPT_FLAG, .flag = 1, F(strict),
      .help = "fail (exit 1, nothing written) where the bake would warn: an empty map,\n"
-             "faces without UVs, or faces holding over half the UV area between texels"},
+             "faces without UVs, faces holding over half the UV area between texels,\n"
+             "or covered texels none of which sees the sky"},
 };
 #undef F
 const size_t bake_uv_opts_table_n = sizeof bake_uv_opts_table / sizeof bake_uv_opts_table[0];
@@ -56,6 +57,24 @@ int bake_uv_verdict(const char *cmd, const char *mesh, const soak_uv_stats *s, c
 {
     char msg[1024];
     if (!soak_uv_stats_warning(s, msg, sizeof msg)) return 0;
+    if (u->strict) {
+        cli_error(cmd, "%s: %s; --strict: nothing written", mesh, msg);
+        return 1;
+    }
+    fprintf(stderr, "soak %s: warning: %s: %s\n", cmd, mesh, msg);
+    return 0;
+}
+
+int bake_uv_dry_verdict(const char *cmd, const char *mesh, const soak_image *exposure, const soak_uv_stats *s,
+                        const bake_uv_opts *u)
+{
+    size_t n = (size_t)exposure->width * exposure->height * exposure->channels;
+    for (size_t i = 0; i < n; ++i)
+        if (exposure->pixels[i] > 0.0f) return 0;
+    if (s->covered == 0) return 0; /* bake_uv_verdict's empty map */
+    const char *why = "no covered texel sees the sky (exposure 0 on all %lld): is --up the mesh's up axis?";
+    char msg[256];
+    snprintf(msg, sizeof msg, why, s->covered);
     if (u->strict) {
         cli_error(cmd, "%s: %s; --strict: nothing written", mesh, msg);
         return 1;
@@ -87,5 +106,5 @@ soak_status bake_uv_tile_path(const char *path, int tile, char *out, size_t n)
 void bake_uv_formats_help(FILE *out)
 {
     fprintf(out, "\n");
-    soak_mesh_formats_print(out, 0);
+    soak_mesh_formats_print(out);
 }

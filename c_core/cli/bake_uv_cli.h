@@ -9,6 +9,7 @@
 #include "cli.h"
 #include "soak/bake_uv.h"
 #include "soak/geometry.h"
+#include "soak/image.h"
 
 typedef struct bake_uv_opts {
     soak_mesh_uv_choice uv;
@@ -24,6 +25,11 @@ void bake_uv_opts_init(bake_uv_opts *u);
 /* After a bake: the warning on stderr when the stats call for one (then,
  * with --strict, an error and 1: write nothing); else 0. */
 int bake_uv_verdict(const char *cmd, const char *mesh, const soak_uv_stats *s, const bake_uv_opts *u);
+/* After a bake whose map covers texels: the warning when none of them
+ * sees the sky (exposure 0 everywhere: the mesh faces away from --up, or
+ * lies under its own faces); with --strict an error and 1; else 0. */
+int bake_uv_dry_verdict(const char *cmd, const char *mesh, const soak_image *exposure, const soak_uv_stats *s,
+                        const bake_uv_opts *u);
 /* The report line on stdout: "uv: ..." */
 void bake_uv_report(const char *label, const soak_uv_stats *s);
 /* 1 when path names UDIM tiles (holds "<UDIM>"). */

@@ -51,6 +51,7 @@ typedef struct walk_state {
     const struct aiScene *scene;
     soak_mesh *out;
     size_t nv, nt;     /* filled so far */
+    size_t nt_uv;      /* counted triangles with the UV set */
     int counting;      /* first pass only counts */
     int any_uv, all_uv;
     const soak_mesh_uv_choice *uv;
@@ -107,6 +108,7 @@ static void walk(walk_state *w, const struct aiNode *node, const double *parent)
             w->all_uv &= has_uv;
             w->nv += m->mNumVertices;
             w->nt += ntri;
+            w->nt_uv += has_uv ? ntri : 0;
             continue;
         }
         soak_mesh *o = w->out;
@@ -217,7 +219,12 @@ static soak_status import(const char *path, const soak_mesh_request *rq, soak_me
     sc = read_scene(path, aiProcess_Triangulate | aiProcess_GenSmoothNormals | aiProcess_JoinIdenticalVertices |
                               aiProcess_SortByPType, err, errlen);
     if (!sc || !sc->mRootNode) {
-        set_err(err, errlen, "%s: cannot read mesh (%s)", path, aiGetErrorString());
+        const char *dot = strrchr(path, '.');
+        if (dot && !strcmp(dot, ".blend") && strstr(aiGetErrorString(), "BlendDNA"))
+            set_err(err, errlen, "%s: cannot read mesh (%s): Assimp 5.2 reads .blend files of Blender 2.5 to 3.0; "
+                    "export FBX or glTF from newer Blender versions", path, aiGetErrorString());
+        else
+            set_err(err, errlen, "%s: cannot read mesh (%s)", path, aiGetErrorString());
         if (sc) aiReleaseImport(sc);
         return SOAK_ERR_PARSE;
     }
@@ -232,6 +239,11 @@ static soak_status import(const char *path, const soak_mesh_request *rq, soak_me
         st = SOAK_ERR_PARSE;
     } else if (rq->require_uvs && !w.any_uv) {
         no_uvs(&w, path, err, errlen);
+        st = SOAK_ERR_PARSE;
+    } else if (rq->require_uvs == SOAK_MESH_UVS_ALL && !w.all_uv) {
+        if (err && errlen)
+            snprintf(err, errlen, "%s: partial UVs: %zu of %zu triangles have no texture coordinates (a wetness map "
+                     "needs them on every face)", path, w.nt - w.nt_uv, w.nt);
         st = SOAK_ERR_PARSE;
     } else if (w.nv > 0xFFFFFFFEu) {
         set_err(err, errlen, "%s: %s", path, "too many vertices");

@@ -21,6 +21,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -223,6 +224,23 @@ static int obj_index_ok(const char *s, long long count)
     return k != 0 && (k > 0 ? k <= count : -k <= count);
 }
 
+/* The numbers of a v, vt or vn line: Assimp reads "nan" and "inf" as 0. */
+static int obj_numbers_finite(const char *s, long long lineno, char *msg, size_t n)
+{
+    char *end = NULL;
+    for (;;) {
+        while (*s == ' ' || *s == '\t') ++s;
+        if (!*s || *s == '\r' || *s == '\n' || *s == '#') return 1;
+        double x = strtod(s, &end);
+        if (end == s) return 1; /* not a number: left to Assimp */
+        if (!isfinite(x)) {
+            snprintf(msg, n, "line %lld: '%.*s' is not a finite number", lineno, (int)(end - s), s);
+            return 0;
+        }
+        s = end;
+    }
+}
+
 static soak_status check_obj(const char *path, FILE *f, char *err, size_t errlen)
 {
     long long nv = 0, nt = 0, nn = 0, faces = 0, lineno = 0;
@@ -235,9 +253,12 @@ static soak_status check_obj(const char *path, FILE *f, char *err, size_t errlen
             size_t len = strlen(line);
             int cut = len == sizeof line - 1 && line[len - 1] != '\n';
             if (pass == 0) {
-                if (!strncmp(line, "v ", 2) || !strncmp(line, "v\t", 2)) ++nv;
-                else if (!strncmp(line, "vt", 2) && isspace((unsigned char)line[2])) ++nt;
-                else if (!strncmp(line, "vn", 2) && isspace((unsigned char)line[2])) ++nn;
+                int is_v = !strncmp(line, "v ", 2) || !strncmp(line, "v\t", 2);
+                int is_vt = !strncmp(line, "vt", 2) && isspace((unsigned char)line[2]);
+                int is_vn = !strncmp(line, "vn", 2) && isspace((unsigned char)line[2]);
+                nv += is_v, nt += is_vt, nn += is_vn;
+                if ((is_v || is_vt || is_vn) && !cut && !obj_numbers_finite(line + (is_v ? 1 : 2), lineno, msg, sizeof msg))
+                    return refuse(err, errlen, path, msg);
             } else if (line[0] == 'f' && isspace((unsigned char)line[1])) {
                 if (cut) continue; /* a face longer than the buffer: left to Assimp */
                 int refs = 0;

@@ -344,6 +344,6 @@ soak_status soak_mesh_load_uv(const char *path, const soak_mesh_uv_choice *uv, s
     if (uv && (!(uv->uv_index >= 0 && uv->uv_index < SOAK_MESH_UV_SETS) ||
                !memchr(uv->uv_name, '\0', sizeof uv->uv_name)))
         return SOAK_ERR_ARG;
-    soak_mesh_request rq = {1, uv};
+    soak_mesh_request rq = {SOAK_MESH_UVS_SOME, uv};
     return load(path, &rq, mesh, err, errlen);
 }

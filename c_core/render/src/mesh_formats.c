@@ -1,9 +1,10 @@
 /* The mesh formats Soak reads, one table for the check before the reader
- * starts (soak_mesh_format_ok), --help and the README's table
- * (soak_mesh_formats_print; tests/cli/mesh_formats.sh checks the README
- * against it). Every format is read by Debian's Assimp 5.2 in the contained
- * reader (mesh_contain.c); a format is left out, with the reason, when the
- * file holds no surface to bake or names the files that do. */
+ * starts (soak_mesh_format_ok) and --help (soak_mesh_formats_print), from
+ * which tests/cli/meshes/formats_table.py writes the README's table
+ * (tests/cli/mesh_formats.sh checks it is current). Every format is read
+ * by Debian's Assimp 5.2 in the contained reader (mesh_contain.c); a format
+ * is left out, with the reason, when the file holds no surface to bake,
+ * names the files that do, or Assimp's reader fails on valid files. */
 #include <stdio.h>
 #include <string.h>
 #include <strings.h>
@@ -26,7 +27,7 @@ static const mesh_format formats[] = {
     {"dae", "Collada", NULL},
     {"zae", "Collada, zipped", NULL},
     {"3ds", "3D Studio mesh", NULL},
-    {"blend", "Blender (Assimp's reader: meshes of 2.5-2.79 files; newer files often fail)", NULL},
+    {"blend", "Blender 2.5 to 3.0 (Assimp's reader; from newer Blender export FBX or glTF)", NULL},
     {"x", "DirectX (text and binary)", NULL},
     {"lwo", "LightWave object", NULL},
     {"lxo", "Modo object", NULL},
@@ -55,7 +56,7 @@ static const mesh_format formats[] = {
     {"iqm", "Inter-Quake Model", NULL},
     {"nff", "Neutral File Format", NULL},
     {"enff", "Neutral File Format (extended)", NULL},
-    {"raw", "PovRay raw triangles", NULL},
+    {"raw", "PovRay raw triangles", "a format Assimp 5.2 reads badly: its reader crashes on RAW files with colours or textures"},
     {"ter", "Terragen terrain", NULL},
     {"q3o", "Quick3D object", NULL},
     {"q3s", "Quick3D scene", NULL},
@@ -108,14 +109,11 @@ int soak_mesh_format_ok(const char *path, char *why, size_t whylen)
     return 0;
 }
 
-void soak_mesh_formats_print(FILE *out, int markdown)
+void soak_mesh_formats_print(FILE *out)
 {
-    if (markdown) fprintf(out, "| extension | format | read |\n|---|---|---|\n");
-    else fprintf(out, "mesh formats (Assimp in a contained reader; left out with the reason):\n");
+    fprintf(out, "mesh formats (Assimp in a contained reader; left out with the reason):\n");
     for (size_t i = 0; i < sizeof formats / sizeof *formats; ++i) {
         const mesh_format *f = &formats[i];
-        if (markdown) fprintf(out, "| .%s | %s | %s |\n", f->ext, f->name, f->left_out ? f->left_out : "yes");
-        else fprintf(out, "  .%-9s %s%s%s\n", f->ext, f->name, f->left_out ? ": not read, " : "",
-                     f->left_out ? f->left_out : "");
+        fprintf(out, "  .%-9s %s%s%s\n", f->ext, f->name, f->left_out ? ": not read, " : "", f->left_out ? f->left_out : "");
     }
 }

@@ -8,8 +8,11 @@
 
 #include "soak/geometry.h"
 
-/* What the import is asked for: require_uvs as soak_mesh_load's; uv the
- * UV set (NULL: the first). */
+/* What the import is asked for: require_uvs 0 (none), SOAK_MESH_UVS_ALL
+ * (soak_mesh_load's: on every face) or SOAK_MESH_UVS_SOME (soak_mesh_load_uv:
+ * faces without are marked in tri_uv); uv the UV set (NULL: the first). */
+#define SOAK_MESH_UVS_ALL 1
+#define SOAK_MESH_UVS_SOME 2
 typedef struct soak_mesh_request {
     int require_uvs;
     const soak_mesh_uv_choice *uv;

@@ -67,8 +67,9 @@ typedef struct soak_hit {
  * triangulated, smooth normals generated where missing, identical
  * vertices joined, all meshes of the file merged with their node transforms
  * applied. With require_uvs, a file without texture coordinates fails with
- * SOAK_ERR_PARSE and "<file>: mesh has no UVs"; a file where only some
- * parts have them loads with tri_uv marking the faces that do. Missing/unreadable files
+ * SOAK_ERR_PARSE and "<file>: mesh has no UVs", and a file where only some
+ * parts have them with "partial UVs" and the counts (soak_mesh_load_uv
+ * loads it with tri_uv marking the faces that have them). Missing/unreadable files
  * give SOAK_ERR_IO with the file and the reason. Formats outside the table
  * are SOAK_ERR_UNSUPPORTED with the reason. Assimp runs in a child process
  * with a time limit (SOAK_MESH_TIMEOUT seconds, default 120): a crash or a
@@ -85,15 +86,16 @@ typedef struct soak_mesh_uv_choice {
     int uv_index;
     char uv_name[SOAK_MESH_UV_NAME_MAX];
 } soak_mesh_uv_choice;
-/* soak_mesh_load with require_uvs and a choice of UV set (NULL: the first).
+/* soak_mesh_load with require_uvs and a choice of UV set (NULL: the first);
+ * parts of the file without the set load with tri_uv marking their faces.
  * A set that no part of the file has fails naming the sets it has. */
 soak_status soak_mesh_load_uv(const char *path, const soak_mesh_uv_choice *uv, soak_mesh *mesh, char *err,
                               size_t errlen);
 void soak_mesh_free(soak_mesh *mesh);
 
-/* The mesh formats: one line per extension with what reads it or why it is
- * left out (markdown = 0: --help text; 1: the README's table). */
-void soak_mesh_formats_print(FILE *out, int markdown);
+/* The mesh formats for --help: one line per extension with what reads it
+ * or why it is left out. */
+void soak_mesh_formats_print(FILE *out);
 
 soak_status soak_geometry_create(soak_geometry **out, char *err, size_t errlen);
 void soak_geometry_destroy(soak_geometry *g);
