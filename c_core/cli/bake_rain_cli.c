@@ -112,7 +112,7 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: soak bake rain MESH -o OUT [options]\n"
             "       soak bake rain MESH --frames A-B -o wet.%%04d.exr [options]\n\n"
-            "Rain wet map of a mesh (OBJ, PLY, glTF/GLB...; it must have UVs) at a texture\n"
+            "Rain wet map of a mesh (FBX, glTF, OBJ, ... listed below; it needs UVs) at a texture\n"
             "resolution: per-texel sky exposure by ray casting through the mesh (Embree), drop\n"
             "impacts as a Poisson process with a splat kernel, evaporation, and downhill flow\n"
             "that fills concave upward-facing regions (puddles); inclined, vertical and\n"
@@ -141,6 +141,7 @@ static void usage(FILE *out)
     fprintf(out, "\nexample:\n"
                  "  soak bake rain statue.glb --width 2048 --height 2048 --rays 64 --duration 1800 \\\n"
                  "       --exposure exposure.exr -o rain_wet.exr\n"
+                 "  soak bake rain character.fbx --uv-set UVMap --strict -o wet.<UDIM>.exr\n"
                  "  soak bake rain wall.obj --up z --duration 600 --steps 60 --fps 0.04 --frames 0-23 \\\n"
                  "       --film film.%%04d.exr -o wet.%%04d.exr\n");
 }

@@ -205,6 +205,7 @@ static void no_uvs(const walk_state *w, const char *path, char *err, size_t errl
 static soak_status import(const char *path, const soak_mesh_request *rq, soak_mesh *mesh, char *err, size_t errlen)
 {
     if (!path || !mesh || !rq) return SOAK_ERR_NULL;
+    if (err && errlen) err[0] = '\0'; /* read_scene's refusal is told by a message */
     /* Coordinates are checked on a first import without post-processing:
      * joining identical vertices merges a NaN vertex into another one (NaN
      * compares equal in its spatial sort), leaving a silently degenerate
