@@ -19,6 +19,7 @@ demo=(povray blender xvfb python3 openimageio-tools)
 test=(
   git python3-numpy python3-jsonschema python3-matplotlib valgrind debootstrap hyperfine
   slurm-wlm munge nodejs man-db clang-format flake8 povray-examples
+  assimp-testmodels  # the mesh corpus of test_mesh_corpus (issue 47)
 )
 case "$tier" in
   build) packages=("${build[@]}") ;;

@@ -7,6 +7,7 @@
 
 #include "bake_budget.h"
 #include "bake_cli.h"
+#include "bake_uv_cli.h"
 #include "cli.h"
 #include "soak/bake_drops.h"
 #include "soak/bake_rain.h"
@@ -22,6 +23,7 @@ typedef struct drops_job {
     int have_fps, have_texel, have_map_size, rays, up_axis, no_wrap;
     soak_image exposure; /* pixels NULL without */
     soak_drops_state *state;
+    bake_uv_opts uvo; /* MESH: --uv-set, --uv-outside, --strict */
 } drops_job;
 
 static const cli_choice axes[] = {{"x", 0, 0},  {"y", 1, 0},  {"z", 2, 0}, {"-x", 3, 0},
@@ -60,7 +62,7 @@ static const cli_opt drops_opts[] = {
 };
 #undef F
 
-#define DROPS_TABLES(o, j) {BAKE_IMAGE_TABLE(o), CLI_TABLE(drops_opts, (j)), BAKE_SEQUENCE_TABLE(o)}
+#define DROPS_TABLES(o, j, u) {BAKE_IMAGE_TABLE(o), CLI_TABLE(drops_opts, (j)), BAKE_UV_TABLE(u), BAKE_SEQUENCE_TABLE(o)}
 
 static void usage(FILE *out)
 {
@@ -80,8 +82,9 @@ static void usage(FILE *out)
             "options:\n");
     cli_opt seq[BAKE_SHARED_OPTS_MAX];
     size_t n = bake_table_help(bake_sequence_opts, bake_sequence_opts_n, seq, "--frame-origin", BAKE_ORIGIN_ZERO_HELP);
-    const cli_opt_table tables[] = {BAKE_IMAGE_TABLE(NULL), CLI_TABLE(drops_opts, NULL), {seq, n, NULL}};
+    const cli_opt_table tables[] = {BAKE_IMAGE_TABLE(NULL), CLI_TABLE(drops_opts, NULL), BAKE_UV_TABLE(NULL), {seq, n, NULL}};
     cli_opts_help(out, tables, sizeof tables / sizeof tables[0]);
+    bake_uv_formats_help(out);
     fprintf(out, "\nexample:\n"
                  "  soak bake drops --rate 10 --map-size 1 --duration 8 --frames 0-239 --fps 24 -o drops.%%04d.exr\n");
 }
@@ -102,7 +105,7 @@ static int mesh_exposure(drops_job *j, const bake_opts *o)
 {
     char err[4352] = "";
     soak_mesh mesh;
-    soak_status st = soak_mesh_load(j->mesh_path, 1, &mesh, err, sizeof err);
+    soak_status st = soak_mesh_load_uv(j->mesh_path, &j->uvo.uv, &mesh, err, sizeof err);
     if (st != SOAK_OK) {
         cli_error(CMD, "%s", err[0] ? err : soak_status_str(st));
         return SOAK_EXIT_FAIL;
@@ -116,6 +119,7 @@ static int mesh_exposure(drops_job *j, const bake_opts *o)
     rp.duration = 0;
     rp.rays = j->rays;
     rp.seed = o->seed;
+    rp.uv.outside = (soak_uv_outside)j->uvo.outside;
     soak_rain_result res;
     soak_bake_exec exec = {(int)o->threads, NULL, NULL};
     st = soak_bake_rain(&mesh, (int)o->width, (int)o->height, &rp, &exec, &res, err, sizeof err);
@@ -127,6 +131,10 @@ static int mesh_exposure(drops_job *j, const bake_opts *o)
     j->exposure = res.exposure;
     res.exposure.pixels = NULL;
     soak_rain_result_free(&res);
+    if (bake_uv_verdict(CMD, j->mesh_path, &res.uv, &j->uvo) ||
+        bake_uv_dry_verdict(CMD, j->mesh_path, &j->exposure, &res.uv, &j->uvo))
+        return SOAK_EXIT_FAIL;
+    bake_uv_report(j->mesh_path, &res.uv);
     return 0;
 }
 
@@ -202,7 +210,8 @@ int soak_bake_drops_main(int argc, char **argv)
     soak_drops_defaults(&j.p);
     j.rays = 64, j.up_axis = 1;
     const cli_spec spec = BAKE_SPEC(CMD, usage, mesh_arg, &j);
-    const cli_opt_table tables[] = DROPS_TABLES(&o, &j);
+    bake_uv_opts_init(&j.uvo);
+    const cli_opt_table tables[] = DROPS_TABLES(&o, &j, &j.uvo);
     int rc = cli_opts_parse(&spec, tables, sizeof tables / sizeof tables[0], argc, argv);
     if (rc >= 0) return rc;
     if ((rc = settle(&j, &o)) != 0) return rc;

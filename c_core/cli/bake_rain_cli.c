@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "bake_cli.h"
+#include "bake_uv_cli.h"
 #include "cli.h"
 #include "soak/bake_rain.h"
 #include "soak/geometry.h"
@@ -21,6 +22,7 @@ typedef struct rain_args {
     int float_exr;                /* the sequence table's --float, for the extra maps */
     soak_rain_frames *frames;     /* --frames: the sequence's state */
     soak_rain_frame last;         /* the last frame's balance */
+    bake_uv_opts uvo;             /* --uv-set, --uv-outside, --strict */
 } rain_args;
 
 #define RAIN_MAX_FPS 10000
@@ -103,14 +105,14 @@ static const cli_opt rain_opts[] = {
 };
 #undef F
 
-#define RAIN_TABLES(o, a) {BAKE_IMAGE_TABLE(o), CLI_TABLE(rain_opts, (a)), BAKE_SEQUENCE_TABLE(o)}
+#define RAIN_TABLES(o, a, u) {BAKE_IMAGE_TABLE(o), CLI_TABLE(rain_opts, (a)), BAKE_UV_TABLE(u), BAKE_SEQUENCE_TABLE(o)}
 
 static void usage(FILE *out)
 {
     fprintf(out,
             "usage: soak bake rain MESH -o OUT [options]\n"
             "       soak bake rain MESH --frames A-B -o wet.%%04d.exr [options]\n\n"
-            "Rain wet map of a mesh (OBJ, PLY, glTF/GLB...; it must have UVs) at a texture\n"
+            "Rain wet map of a mesh (FBX, glTF, OBJ, ... listed below; it needs UVs) at a texture\n"
             "resolution: per-texel sky exposure by ray casting through the mesh (Embree), drop\n"
             "impacts as a Poisson process with a splat kernel, evaporation, and downhill flow\n"
             "that fills concave upward-facing regions (puddles); inclined, vertical and\n"
@@ -140,11 +142,13 @@ static void usage(FILE *out)
             "options:\n");
     cli_opt seq[BAKE_SHARED_OPTS_MAX];
     size_t n = bake_table_help(bake_sequence_opts, bake_sequence_opts_n, seq, "--frame-origin", BAKE_ORIGIN_ZERO_HELP);
-    const cli_opt_table tables[] = {BAKE_IMAGE_TABLE(NULL), CLI_TABLE(rain_opts, NULL), {seq, n, NULL}};
+    const cli_opt_table tables[] = {BAKE_IMAGE_TABLE(NULL), CLI_TABLE(rain_opts, NULL), BAKE_UV_TABLE(NULL), {seq, n, NULL}};
     cli_opts_help(out, tables, sizeof tables / sizeof tables[0]);
+    bake_uv_formats_help(out);
     fprintf(out, "\nexample:\n"
                  "  soak bake rain statue.glb --width 2048 --height 2048 --rays 64 --duration 1800 \\\n"
                  "       --exposure exposure.exr -o rain_wet.exr\n"
+                 "  soak bake rain character.fbx --uv-set UVMap --strict -o wet.<UDIM>.exr\n"
                  "  soak bake rain wall.obj --up z --duration 600 --steps 60 --fps 0.04 --frames 0-23 \\\n"
                  "       --film film.%%04d.exr -o wet.%%04d.exr\n");
 }
@@ -211,7 +215,8 @@ static int parse_args(int argc, char **argv, rain_args *a, bake_opts *o)
     a->up_axis = 1;
     bake_opts_init(o, CMD, NAN, 1.0 / 24);
     const cli_spec spec = BAKE_SPEC(CMD, usage, mesh_arg, a);
-    const cli_opt_table tables[] = RAIN_TABLES(o, a);
+    bake_uv_opts_init(&a->uvo);
+    const cli_opt_table tables[] = RAIN_TABLES(o, a, &a->uvo);
     int rc = cli_opts_parse(&spec, tables, sizeof tables / sizeof tables[0], argc, argv);
     if (rc >= 0) return rc;
     if (!a->mesh_path) {
@@ -229,6 +234,7 @@ static int parse_args(int argc, char **argv, rain_args *a, bake_opts *o)
                   soak_v3_len(a->p.rain_dir));
         return SOAK_EXIT_USAGE;
     }
+    a->p.uv.outside = (soak_uv_outside)a->uvo.outside;
     if (soak_v3_dot(a->p.rain_dir, a->p.up) <= 1e-6 * soak_v3_len(a->p.rain_dir)) {
         cli_error(CMD, "--rain-dir: the rain must come from above (positive component along --up)");
         return SOAK_EXIT_USAGE;
@@ -281,7 +287,7 @@ static soak_status bake(const rain_args *a, const bake_opts *o, soak_rain_result
 {
     char err[4352] = "";
     soak_mesh mesh;
-    soak_status st = soak_mesh_load(a->mesh_path, 1, &mesh, err, sizeof err);
+    soak_status st = soak_mesh_load_uv(a->mesh_path, &a->uvo.uv, &mesh, err, sizeof err);
     if (st != SOAK_OK) {
         cli_error(CMD, "%s", err[0] ? err : soak_status_str(st));
         return st;
@@ -330,7 +336,7 @@ static int run_frames(rain_args *a, const bake_opts *o)
 {
     char err[4352] = "";
     soak_mesh mesh;
-    soak_status st = soak_mesh_load(a->mesh_path, 1, &mesh, err, sizeof err);
+    soak_status st = soak_mesh_load_uv(a->mesh_path, &a->uvo.uv, &mesh, err, sizeof err);
     if (st != SOAK_OK) return bake_fail(CMD, st == SOAK_ERR_ARG ? SOAK_ERR_IO : st, err);
     cli_progress bar;
     cli_progress_start(&bar, CMD " (exposure)", 1.0);
@@ -343,7 +349,8 @@ static int run_frames(rain_args *a, const bake_opts *o)
         return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
     }
     a->float_exr = o->float_exr;
-    int rc = bake_run_staged(o, rain_frame, a);
+    int rc = bake_uv_verdict(CMD, a->mesh_path, soak_rain_frames_uv(a->frames), &a->uvo) ? SOAK_EXIT_FAIL
+                                                                                        : bake_run_staged(o, rain_frame, a);
     if (rc == SOAK_EXIT_OK && a->exposure_path) {
         const char *paths[1] = {a->exposure_path};
         const soak_image *imgs[1] = {soak_rain_frames_exposure(a->frames)};
@@ -353,6 +360,7 @@ static int run_frames(rain_args *a, const bake_opts *o)
     if (rc == SOAK_EXIT_OK)
         printf("%s: frames %ld-%ld, %ldx%ld, from %s\n", o->output, o->first, o->last, o->width, o->height,
                a->mesh_path);
+    if (rc == SOAK_EXIT_OK) bake_uv_report(o->output, soak_rain_frames_uv(a->frames));
     if (rc == SOAK_EXIT_OK && b->in > 0.0)
         printf("by frame %ld (t = %g s) %.4g L fell on the mesh: %.1f %% dripped off, %.1f %% is on it, "
                "%.1f %% evaporated\n",
@@ -369,13 +377,22 @@ int soak_bake_rain_main(int argc, char **argv)
     int rc = parse_args(argc, argv, &a, &o);
     if (rc >= 0) return rc;
     if ((rc = check_outputs(&a, &o)) != 0) return rc;
+    if (o.have_frames && bake_uv_is_udim(o.output)) {
+        cli_error(CMD, "-o with <UDIM> bakes single maps: not with --frames");
+        return SOAK_EXIT_USAGE;
+    }
     if (o.have_frames) return run_frames(&a, &o);
+    const char *paths[4] = {o.output, a.exposure_path, a.water_path, a.film_path};
+    if (bake_uv_is_udim(o.output)) return bake_rain_udim(a.mesh_path, &a.p, &o, paths, &a.uvo);
     soak_rain_result res;
     if (bake(&a, &o, &res) != SOAK_OK) return SOAK_EXIT_FAIL;
-    const char *paths[4] = {o.output, a.exposure_path, a.water_path, a.film_path};
     const soak_image *imgs[4] = {&res.wetness, &res.exposure, &res.water, &res.film};
-    rc = write_outputs(paths, imgs, 4, o.float_exr);
+    rc = bake_uv_verdict(CMD, a.mesh_path, &res.uv, &a.uvo) ||
+                 bake_uv_dry_verdict(CMD, a.mesh_path, &res.exposure, &res.uv, &a.uvo)
+             ? SOAK_EXIT_FAIL
+             : write_outputs(paths, imgs, 4, o.float_exr);
     if (rc == SOAK_EXIT_OK) printf("%s: %ldx%ld rain wetness from %s\n", o.output, o.width, o.height, a.mesh_path);
+    if (rc == SOAK_EXIT_OK) bake_uv_report(o.output, &res.uv);
     const soak_rain_runoff *r = &res.runoff;
     if (rc == SOAK_EXIT_OK && r->in > 0.0) /* m^3/s -> L/h */
         printf("steady rain on the mesh %.4g L/h: %.1f %% drips off, %.1f %% collects in puddles, %.1f %% evaporates\n",

@@ -24,8 +24,8 @@ declare -A WHY=(
     [off_8byte_triangulate_abort]="malformed mesh file: the OFF header claims 3 vertices and 1 faces"
     [off_face_count_abort]="malformed mesh file: the OFF header claims 3 vertices and 2 faces"
     [ply_no_end_header_hang]="malformed mesh file: PLY header without end_header"
-    [obj_nan_vertex]="vertex 3 of mesh 1 has a non-finite coordinate \(nan"
-    [obj_inf_vertex]="non-finite coordinate \(inf"
+    [obj_nan_vertex]="line 3: 'nan' is not a finite number"
+    [obj_inf_vertex]="line 3: 'inf' is not a finite number"
     [stl_truncated_facet]="malformed mesh file: ASCII STL without 'endsolid'"
     [stl_binary_short]="malformed mesh file: binary STL header claims 1000 triangles"
     [off_fuzz_segv]="crashed on this file \((signal 11|exit status)"
@@ -53,10 +53,10 @@ expect_exit 1 "bake rain on an OFF that crashes Assimp" -- "$SOAK" bake rain "$D
 expect_stderr "abort\.off: .*crashed" "bake rain: names the file"
 [ ! -e "$D/r.exr" ] && ok "bake rain: no output" || bad "bake rain wrote an output"
 # Formats outside the fuzzed set are refused by name.
-cp "$D/obj_inf_vertex.obj" "$D/model.fbx"
-scene_with "{\"type\": \"mesh\", \"file\": \"$D/model.fbx\", \"material\": \"m\"}" "$CONST" >"$D/fbx.json"
-expect_exit 1 "mesh .fbx" -- "$SOAK" render "$D/fbx.json" --width 8 --height 8 --spp 1 -o "$D/o.exr"
-expect_stderr "model\.fbx: unsupported mesh format" "mesh .fbx: unsupported format named"
+cp "$D/obj_inf_vertex.obj" "$D/model.max"
+scene_with "{\"type\": \"mesh\", \"file\": \"$D/model.max\", \"material\": \"m\"}" "$CONST" >"$D/max.json"
+expect_exit 1 "mesh .max" -- "$SOAK" render "$D/max.json" --width 8 --height 8 --spp 1 -o "$D/o.exr"
+expect_stderr "model\.max: unsupported mesh format: .max .*export FBX" "mesh .max: unsupported format named with the reason"
 
 # NaN pixels in an environment map were silently read as 0.
 tail -c +2 "$R/image/exr_nan_pixels" >"$D/sky_nan.exr"

@@ -436,7 +436,7 @@ static soak_status build_geometry(const soak_mesh *mesh, soak_geometry **g, char
  * *exposure); on error neither is kept. */
 static soak_status surface_and_exposure(const soak_mesh *mesh, int width, int height, const soak_rain_params *p,
                                         const soak_bake_exec *exec, double progress_hi, rain_surface *s,
-                                        soak_image *exposure, char *err, size_t errlen)
+                                        soak_image *exposure, soak_uv_stats *uv, char *err, size_t errlen)
 {
     soak_status st = soak_rain_check(p);
     if (st != SOAK_OK) {
@@ -448,9 +448,9 @@ static soak_status surface_and_exposure(const soak_mesh *mesh, int width, int he
     if ((st = soak_rain_check_mesh(mesh, err, errlen)) != SOAK_OK) return st;
     soak_vec3 up = soak_v3_norm(p->up);
     if ((st = soak_rain_surface_alloc(s, width, height)) != SOAK_OK) return st;
-    soak_rain_surface_rasterise(mesh, s, up);
     soak_geometry *g = NULL;
-    st = soak_rain_surface_connect(s, up, exec);
+    st = soak_rain_rasterise(mesh, &p->uv, s, up, uv, err, errlen);
+    if (st == SOAK_OK) st = soak_rain_surface_connect(s, up, exec);
     if (st == SOAK_OK) st = build_geometry(mesh, &g, err, errlen);
     if (st == SOAK_OK) st = soak_image_alloc(exposure, width, height, 1);
     if (st == SOAK_OK) {
@@ -482,7 +482,7 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
     soak_rain_result r;
     memset(&r, 0, sizeof r);
     soak_status st = surface_and_exposure(mesh, width, height, p, exec, p->duration > 0 ? 0.7 : 1.0, &s,
-                                          &r.exposure, err, errlen);
+                                          &r.exposure, &r.uv, err, errlen);
     if (st != SOAK_OK) return st;
     size_t n = (size_t)width * height;
     if (st == SOAK_OK) st = soak_image_alloc(&r.wetness, width, height, 1);
@@ -538,7 +538,7 @@ soak_status soak_rain_scene_build(const soak_mesh *mesh, int width, int height, 
     if (!mesh || !p || !out) return SOAK_ERR_NULL;
     memset(out, 0, sizeof *out);
     rain_surface s;
-    soak_status st = surface_and_exposure(mesh, width, height, p, exec, 1.0, &s, &out->exposure, err, errlen);
+    soak_status st = surface_and_exposure(mesh, width, height, p, exec, 1.0, &s, &out->exposure, &out->uv, err, errlen);
     if (st != SOAK_OK) return st;
     size_t n = (size_t)width * height;
     out->w = width, out->h = height;

@@ -276,3 +276,8 @@ const soak_image *soak_rain_frames_exposure(const soak_rain_frames *f)
 {
     return f ? &f->sc.exposure : NULL;
 }
+
+const soak_uv_stats *soak_rain_frames_uv(const soak_rain_frames *f)
+{
+    return &f->sc.uv;
+}

@@ -15,6 +15,7 @@ typedef struct soak_rain_scene {
     float *descent;         /* 2 per texel: steepest descent in texel steps */
     float *up_dot_n;        /* n.up (1 on uncovered texels) */
     soak_image exposure;    /* step 2 */
+    soak_uv_stats uv;       /* step 1's faces (soak/bake_uv.h) */
 } soak_rain_scene;
 
 /* Checks p, the size and the mesh as soak_bake_rain does (same errors). */

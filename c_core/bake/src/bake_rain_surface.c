@@ -26,62 +26,6 @@ void soak_rain_surface_free(rain_surface *s)
     free(s->descent);
 }
 
-void soak_rain_surface_rasterise(const soak_mesh *m, rain_surface *s, soak_vec3 up)
-{
-    size_t n = (size_t)s->w * s->h;
-    for (size_t i = 0; i < n; ++i) s->tri[i] = -1;
-    for (size_t t = 0; t < m->n_triangles; ++t) {
-        unsigned ix[3] = {m->indices[3 * t], m->indices[3 * t + 1], m->indices[3 * t + 2]};
-        double X[3], Y[3];
-        soak_vec3 P[3];
-        for (int k = 0; k < 3; ++k) {
-            X[k] = m->uvs[2 * ix[k]] * s->w;
-            Y[k] = (1.0 - m->uvs[2 * ix[k] + 1]) * s->h;
-            P[k] = soak_rain_vget(m->positions, ix[k]);
-        }
-        double den = (X[1] - X[0]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[1] - Y[0]);
-        soak_vec3 cr = soak_v3_cross(soak_v3_sub(P[1], P[0]), soak_v3_sub(P[2], P[0]));
-        double area3 = 0.5 * soak_v3_len(cr);
-        if (!(fabs(den) > 1e-12) || !(area3 > 0.0) || !soak_is_finite(den)) continue; /* degenerate */
-        soak_vec3 ng = soak_v3_scale(cr, 0.5 / area3);
-        if (m->normals) {
-            soak_vec3 v0 = soak_rain_vget(m->normals, ix[0]), v1 = soak_rain_vget(m->normals, ix[1]);
-            soak_vec3 vn = soak_v3_add(soak_v3_add(v0, v1), soak_rain_vget(m->normals, ix[2]));
-            if (soak_v3_dot(vn, ng) < 0) ng = soak_v3_scale(ng, -1.0);
-        }
-        double texel_area = area3 / (0.5 * fabs(den));
-        /* World step per texel: solve P = P0 + a (P1-P0) + b (P2-P0) for X, Y. */
-        double ia = 1.0 / den;
-        soak_vec3 e1 = soak_v3_sub(P[1], P[0]), e2 = soak_v3_sub(P[2], P[0]);
-        /* d(a,b)/dX and d(a,b)/dY of the barycentric map. */
-        double dadx = (Y[2] - Y[0]) * ia, dbdx = -(Y[1] - Y[0]) * ia;
-        double dady = -(X[2] - X[0]) * ia, dbdy = (X[1] - X[0]) * ia;
-        soak_vec3 sx = soak_v3_add(soak_v3_scale(e1, dadx), soak_v3_scale(e2, dbdx));
-        soak_vec3 sy = soak_v3_add(soak_v3_scale(e1, dady), soak_v3_scale(e2, dbdy));
-        double xmin = fmin(X[0], fmin(X[1], X[2])), xmax = fmax(X[0], fmax(X[1], X[2]));
-        double ymin = fmin(Y[0], fmin(Y[1], Y[2])), ymax = fmax(Y[0], fmax(Y[1], Y[2]));
-        int x0 = (int)fmax(0.0, floor(xmin - 0.5)), x1 = (int)fmin(s->w - 1.0, ceil(xmax - 0.5));
-        int y0 = (int)fmax(0.0, floor(ymin - 0.5)), y1 = (int)fmin(s->h - 1.0, ceil(ymax - 0.5));
-        const double eps = -1e-9;
-        for (int y = y0; y <= y1; ++y)
-            for (int x = x0; x <= x1; ++x) {
-                size_t i = (size_t)y * s->w + x;
-                if (s->tri[i] >= 0) continue;
-                double px = x + 0.5 - X[0], py = y + 0.5 - Y[0];
-                double a = px * dadx + py * dady, b = px * dbdx + py * dbdy;
-                if (a < eps || b < eps || a + b > 1.0 - eps) continue;
-                soak_vec3 p = soak_v3_add(P[0], soak_v3_add(soak_v3_scale(e1, a), soak_v3_scale(e2, b)));
-                s->tri[i] = (int)(t < 0x7fffffff ? t : 0x7fffffff);
-                s->pos[3 * i] = p.x, s->pos[3 * i + 1] = p.y, s->pos[3 * i + 2] = p.z;
-                s->nrm[3 * i] = (float)ng.x, s->nrm[3 * i + 1] = (float)ng.y, s->nrm[3 * i + 2] = (float)ng.z;
-                s->dpdx[3 * i] = (float)sx.x, s->dpdx[3 * i + 1] = (float)sx.y, s->dpdx[3 * i + 2] = (float)sx.z;
-                s->dpdy[3 * i] = (float)sy.x, s->dpdy[3 * i + 1] = (float)sy.y, s->dpdy[3 * i + 2] = (float)sy.z;
-                s->area[i] = (float)texel_area;
-                s->level[i] = soak_v3_dot(p, up);
-            }
-    }
-}
-
 /* The direction water runs on the surface, in texel steps per metre run:
  * gravity's part in the tangent plane, g_t = -(up - (up.n) n), written as
  * a dpdx + b dpdy by least squares through the UV Jacobian (dpdx, dpdy) and
@@ -187,42 +131,6 @@ soak_status soak_rain_surface_alloc(rain_surface *s, int w, int h)
         !s->descent) {
         soak_rain_surface_free(s);
         return SOAK_ERR_NOMEM;
-    }
-    return SOAK_OK;
-}
-
-/* Texture coordinates beyond this are not a texture layout but corrupt data
- * (a UV of 1e30 was called "not finite"). */
-#define SOAK_RAIN_UV_MAX 1e6
-
-soak_status soak_rain_check_mesh(const soak_mesh *m, char *err, size_t errlen)
-{
-    if (!m->positions || !m->indices || m->n_triangles == 0 || m->n_vertices == 0) {
-        if (err && errlen) snprintf(err, errlen, "mesh has no triangles");
-        return SOAK_ERR_ARG;
-    }
-    if (!m->uvs) {
-        if (err && errlen) snprintf(err, errlen, "mesh has no UVs: the rain bake needs texture coordinates");
-        return SOAK_ERR_ARG;
-    }
-    for (size_t i = 0; i < 3 * m->n_triangles; ++i)
-        if (m->indices[i] >= m->n_vertices) {
-            if (err && errlen) snprintf(err, errlen, "mesh index %zu out of range", i);
-            return SOAK_ERR_ARG;
-        }
-    for (size_t i = 0; i < m->n_vertices; ++i) {
-        for (int k = 0; k < 3; ++k)
-            if (!soak_is_finite(m->positions[3 * i + k])) {
-                if (err && errlen) snprintf(err, errlen, "mesh vertex %zu is not finite", i);
-                return SOAK_ERR_ARG;
-            }
-        if (!soak_in_range(m->uvs[2 * i], -SOAK_RAIN_UV_MAX, SOAK_RAIN_UV_MAX) ||
-            !soak_in_range(m->uvs[2 * i + 1], -SOAK_RAIN_UV_MAX, SOAK_RAIN_UV_MAX)) {
-            if (err && errlen)
-                snprintf(err, errlen, "mesh UV %zu (%g, %g) is out of range: UVs must be finite and within [-%g, %g]",
-                         i, m->uvs[2 * i], m->uvs[2 * i + 1], SOAK_RAIN_UV_MAX, SOAK_RAIN_UV_MAX);
-            return SOAK_ERR_ARG;
-        }
     }
     return SOAK_OK;
 }

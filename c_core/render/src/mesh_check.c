@@ -21,6 +21,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -223,6 +224,23 @@ static int obj_index_ok(const char *s, long long count)
     return k != 0 && (k > 0 ? k <= count : -k <= count);
 }
 
+/* The numbers of a v, vt or vn line: Assimp reads "nan" and "inf" as 0. */
+static int obj_numbers_finite(const char *s, long long lineno, char *msg, size_t n)
+{
+    char *end = NULL;
+    for (;;) {
+        while (*s == ' ' || *s == '\t') ++s;
+        if (!*s || *s == '\r' || *s == '\n' || *s == '#') return 1;
+        double x = strtod(s, &end);
+        if (end == s) return 1; /* not a number: left to Assimp */
+        if (!isfinite(x)) {
+            snprintf(msg, n, "line %lld: '%.*s' is not a finite number", lineno, (int)(end - s), s);
+            return 0;
+        }
+        s = end;
+    }
+}
+
 static soak_status check_obj(const char *path, FILE *f, char *err, size_t errlen)
 {
     long long nv = 0, nt = 0, nn = 0, faces = 0, lineno = 0;
@@ -235,9 +253,12 @@ static soak_status check_obj(const char *path, FILE *f, char *err, size_t errlen
             size_t len = strlen(line);
             int cut = len == sizeof line - 1 && line[len - 1] != '\n';
             if (pass == 0) {
-                if (!strncmp(line, "v ", 2) || !strncmp(line, "v\t", 2)) ++nv;
-                else if (!strncmp(line, "vt", 2) && isspace((unsigned char)line[2])) ++nt;
-                else if (!strncmp(line, "vn", 2) && isspace((unsigned char)line[2])) ++nn;
+                int is_v = !strncmp(line, "v ", 2) || !strncmp(line, "v\t", 2);
+                int is_vt = !strncmp(line, "vt", 2) && isspace((unsigned char)line[2]);
+                int is_vn = !strncmp(line, "vn", 2) && isspace((unsigned char)line[2]);
+                nv += is_v, nt += is_vt, nn += is_vn;
+                if ((is_v || is_vt || is_vn) && !cut && !obj_numbers_finite(line + (is_v ? 1 : 2), lineno, msg, sizeof msg))
+                    return refuse(err, errlen, path, msg);
             } else if (line[0] == 'f' && isspace((unsigned char)line[1])) {
                 if (cut) continue; /* a face longer than the buffer: left to Assimp */
                 int refs = 0;
@@ -287,10 +308,18 @@ static soak_status check_glb(const char *path, const char *buf, size_t n, long l
     const unsigned char *u = (const unsigned char *)buf;
     char msg[256];
     if (n < 20 || memcmp(buf, "glTF", 4) != 0) return refuse(err, errlen, path, "GLB without the 'glTF' magic and header");
-    if (le32(u + 4) != 2) return refuse(err, errlen, path, "GLB version is not 2");
+    if (le32(u + 4) != 2 && le32(u + 4) != 1) {
+        snprintf(msg, sizeof msg, "GLB version %u: Soak reads glTF binary versions 1 and 2", le32(u + 4));
+        return refuse(err, errlen, path, msg);
+    }
     if ((long long)le32(u + 8) != size) {
         snprintf(msg, sizeof msg, "GLB header declares %u bytes, the file has %lld (truncated?)", le32(u + 8), size);
         return refuse(err, errlen, path, msg);
+    }
+    if (le32(u + 4) == 1) { /* KHR_binary_glTF: content length, format 0 (JSON), then the body */
+        if (le32(u + 16) != 0 || 20 + (long long)le32(u + 12) > size)
+            return refuse(err, errlen, path, "glTF 1.0 binary header whose scene is not JSON or does not fit the file");
+        return SOAK_OK;
     }
     long long at = 12;
     while (at < size) {
@@ -320,6 +349,14 @@ static soak_status check_gltf(const char *path, FILE *f, long long size, char *e
     return ok ? SOAK_OK : refuse(err, errlen, path, "glTF that is not a complete JSON object with an 'asset' (truncated?)");
 }
 
+/* A UTF-16 byte-order mark: the reader converts such an OBJ to UTF-8
+ * (render/plugin/mesh_convert.c) and counts its faces itself. */
+static int utf16_bom(const char *buf, size_t n)
+{
+    const unsigned char *u = (const unsigned char *)buf;
+    return n >= 2 && ((u[0] == 0xFE && u[1] == 0xFF) || (u[0] == 0xFF && u[1] == 0xFE));
+}
+
 soak_status soak_mesh_check_file(const char *path, FILE *f, long long size, char *err, size_t errlen)
 {
     char *buf = malloc(HEADER_MAX);
@@ -332,7 +369,7 @@ soak_status soak_mesh_check_file(const char *path, FILE *f, long long size, char
     else if (!strcasecmp(ext, "ply")) st = check_ply(path, buf, n, size, err, errlen);
     else if (!strcasecmp(ext, "off")) st = check_off(path, buf, n, size, err, errlen);
     else if (!strcasecmp(ext, "stl")) st = check_stl(path, f, buf, n, size, err, errlen);
-    else if (!strcasecmp(ext, "obj")) st = check_obj(path, f, err, errlen);
+    else if (!strcasecmp(ext, "obj") && !utf16_bom(buf, n)) st = check_obj(path, f, err, errlen);
     else if (!strcasecmp(ext, "glb")) st = check_glb(path, buf, n, size, err, errlen);
     else if (!strcasecmp(ext, "gltf")) st = check_gltf(path, f, size, err, errlen);
     free(buf);

@@ -62,21 +62,10 @@
 #endif
 
 typedef struct reply_header {
-    int32_t status, has_uvs;
+    int32_t status, has_uvs, has_tri_uv;
     uint64_t n_vertices, n_triangles;
     char message[1024];
 } reply_header;
-
-int soak_mesh_format_ok(const char *path)
-{
-    static const char *const ok[] = {"obj", "ply", "stl", "off", "gltf", "glb"};
-    const char *slash = strrchr(path, '/');
-    const char *dot = strrchr(path, '.');
-    if (!dot || (slash && dot < slash)) return 0;
-    for (size_t i = 0; i < sizeof ok / sizeof ok[0]; ++i)
-        if (strcasecmp(dot + 1, ok[i]) == 0) return 1;
-    return 0;
-}
 
 /* Bytes the reader's address space may grow by: SOAK_MESH_MEMORY_MB when
  * set to a number in [64, 1e7], else MEMORY_BASE_MIB + MEMORY_PER_BYTE x
@@ -111,7 +100,8 @@ static void limit_memory(double budget)
 #endif
 }
 
-static void child_main(int fd, int err_fd, double budget, const char *path, int require_uvs, pid_t parent)
+static void child_main(int fd, int err_fd, double budget, const char *path, const soak_mesh_request *rq,
+                       pid_t parent)
 {
     /* Dies with the parent; the check after it catches a parent that died
      * before the request was made. */
@@ -128,11 +118,12 @@ static void child_main(int fd, int err_fd, double budget, const char *path, int 
     reply_header h;
     memset(&h, 0, sizeof h);
     soak_mesh m = {0};
-    h.status = soak_mesh_import(path, require_uvs, &m, h.message, sizeof h.message);
+    h.status = soak_mesh_import_rq(path, rq, &m, h.message, sizeof h.message);
     if (h.status == SOAK_OK) {
         h.n_vertices = m.n_vertices;
         h.n_triangles = m.n_triangles;
         h.has_uvs = m.uvs != NULL;
+        h.has_tri_uv = m.tri_uv != NULL;
     }
     int bad = soak_write_all(fd, &h, sizeof h);
     if (!bad && h.status == SOAK_OK) {
@@ -140,7 +131,8 @@ static void child_main(int fd, int err_fd, double budget, const char *path, int 
         bad = soak_write_all(fd, m.positions, 3 * nv * sizeof(double)) ||
               soak_write_all(fd, m.normals, 3 * nv * sizeof(double)) ||
               (m.uvs && soak_write_all(fd, m.uvs, 2 * nv * sizeof(double))) ||
-              soak_write_all(fd, m.indices, 3 * nt * sizeof(unsigned));
+              soak_write_all(fd, m.indices, 3 * nt * sizeof(unsigned)) ||
+              (m.tri_uv && soak_write_all(fd, m.tri_uv, nt));
     }
     _exit(bad ? 3 : 0); /* no atexit handlers, no leak report for Assimp's state */
 }
@@ -240,7 +232,8 @@ static soak_status receive(int fd, const reader *rd, double deadline, soak_mesh 
     m.normals = malloc(3 * m.n_vertices * sizeof(double) + 1);
     m.uvs = h.has_uvs ? malloc(2 * m.n_vertices * sizeof(double) + 1) : NULL;
     m.indices = malloc(3 * m.n_triangles * sizeof(unsigned) + 1);
-    if (!m.positions || !m.normals || !m.indices || (h.has_uvs && !m.uvs)) {
+    m.tri_uv = h.has_tri_uv ? malloc(m.n_triangles + 1) : NULL;
+    if (!m.positions || !m.normals || !m.indices || (h.has_uvs && !m.uvs) || (h.has_tri_uv && !m.tri_uv)) {
         soak_mesh_free(&m);
         child_fate(rd, 1, NULL, 0);
         if (err && errlen)
@@ -252,6 +245,7 @@ static soak_status receive(int fd, const reader *rd, double deadline, soak_mesh 
     if (!r) r = soak_read_all(fd, m.normals, 3 * m.n_vertices * sizeof(double), deadline);
     if (!r && m.uvs) r = soak_read_all(fd, m.uvs, 2 * m.n_vertices * sizeof(double), deadline);
     if (!r) r = soak_read_all(fd, m.indices, 3 * m.n_triangles * sizeof(unsigned), deadline);
+    if (!r && m.tri_uv) r = soak_read_all(fd, m.tri_uv, m.n_triangles, deadline);
     if (r != 0) {
         soak_mesh_free(&m);
         child_fate(rd, r == SOAK_READ_TIMEOUT ? 1 : r == SOAK_READ_INTERRUPTED ? -3 : 0, err, errlen);
@@ -272,11 +266,7 @@ static soak_status open_and_check(const char *path, long long *size, soak_mesh_i
     struct stat sb;
     soak_status st = soak_input_check(path, SOAK_INPUT_MESH, NULL, err, errlen);
     if (st != SOAK_OK) return st;
-    if (!soak_mesh_format_ok(path)) {
-        if (err && errlen)
-            snprintf(err, errlen, "%s: unsupported mesh format (use .obj, .ply, .stl, .off, .gltf or .glb)", path);
-        return SOAK_ERR_UNSUPPORTED;
-    }
+    if (!soak_mesh_format_ok(path, err, errlen)) return SOAK_ERR_UNSUPPORTED;
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     FILE *f = fd >= 0 ? fdopen(fd, "rb") : NULL;
     if (!f) {
@@ -297,7 +287,7 @@ static soak_status open_and_check(const char *path, long long *size, soak_mesh_i
 }
 
 /* Forks the reader: it imports path and sends the mesh through fds[1]. */
-static soak_status start_reader(reader *r, int fds[2], int require_uvs, char *err, size_t errlen)
+static soak_status start_reader(reader *r, int fds[2], const soak_mesh_request *rq, char *err, size_t errlen)
 {
     if (pipe2(fds, O_CLOEXEC) != 0) {
         if (err && errlen) snprintf(err, errlen, "%s: cannot start the mesh reader: %s", r->path, strerror(errno));
@@ -316,13 +306,13 @@ static soak_status start_reader(reader *r, int fds[2], int require_uvs, char *er
     }
     if (r->pid == 0) {
         close(fds[0]);
-        child_main(fds[1], r->err_fd, r->budget, r->path, require_uvs, parent);
+        child_main(fds[1], r->err_fd, r->budget, r->path, rq, parent);
     }
     close(fds[1]);
     return SOAK_OK;
 }
 
-soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen)
+static soak_status load(const char *path, const soak_mesh_request *rq, soak_mesh *mesh, char *err, size_t errlen)
 {
     if (!path || !mesh) return SOAK_ERR_NULL;
     memset(mesh, 0, sizeof *mesh);
@@ -334,10 +324,26 @@ soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, c
     double limit_s = soak_time_limit_s("SOAK_MESH_TIMEOUT", TIMEOUT_BASE_S, TIMEOUT_S_PER_MIB, in.stored_bytes);
     reader r = {-1, -1, limit_s, memory_budget(in.stored_bytes), path};
     int fds[2];
-    st = start_reader(&r, fds, require_uvs, err, errlen);
+    st = start_reader(&r, fds, rq, err, errlen);
     if (st != SOAK_OK) return st;
     st = receive(fds[0], &r, soak_monotonic_s() + r.limit_s, mesh, err, errlen);
     close(fds[0]);
     if (r.err_fd >= 0) close(r.err_fd);
     return st;
+}
+
+soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen)
+{
+    soak_mesh_request rq = {require_uvs, NULL};
+    return load(path, &rq, mesh, err, errlen);
+}
+
+soak_status soak_mesh_load_uv(const char *path, const soak_mesh_uv_choice *uv, soak_mesh *mesh, char *err,
+                              size_t errlen)
+{
+    if (uv && (!(uv->uv_index >= 0 && uv->uv_index < SOAK_MESH_UV_SETS) ||
+               !memchr(uv->uv_name, '\0', sizeof uv->uv_name)))
+        return SOAK_ERR_ARG;
+    soak_mesh_request rq = {SOAK_MESH_UVS_SOME, uv};
+    return load(path, &rq, mesh, err, errlen);
 }

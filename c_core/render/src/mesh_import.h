@@ -7,10 +7,14 @@
 #include <stdio.h>
 
 #include "soak/geometry.h"
+#include "mesh_plugin.h"
 
 /* Assimp import in this process, validated. No containment: a malformed
  * file may crash or hang it. Opens libsoak_mesh.so on first use. */
 soak_status soak_mesh_import(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen);
+/* The same with a choice of UV set (mesh_plugin.h). */
+soak_status soak_mesh_import_rq(const char *path, const soak_mesh_request *rq, soak_mesh *mesh, char *err,
+                                size_t errlen);
 /* Opens libsoak_mesh.so (Assimp) if it is not open yet: an error naming
  * path and the module when it cannot be loaded. */
 soak_status soak_mesh_reader_open(const char *path, char *err, size_t errlen);
@@ -30,7 +34,8 @@ typedef struct soak_mesh_inputs {
 /* Checks every file the mesh at path names against the input policy
  * (soak/input_file.h) and adds up their sizes. */
 soak_status soak_mesh_external_files(const char *path, soak_mesh_inputs *in, char *err, size_t errlen);
-/* 1 when path's extension is a mesh format Soak accepts (and fuzzes). */
-int soak_mesh_format_ok(const char *path);
+/* 1 when path's extension is a mesh format Soak accepts; 0 with the
+ * reason in why (mesh_formats.c). */
+int soak_mesh_format_ok(const char *path, char *why, size_t whylen);
 
 #endif

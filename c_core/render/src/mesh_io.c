@@ -45,15 +45,23 @@ void soak_mesh_free(soak_mesh *m)
     free(m->normals);
     free(m->uvs);
     free(m->indices);
+    free(m->tri_uv);
     memset(m, 0, sizeof *m);
 }
 
 soak_status soak_mesh_import(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen)
 {
-    if (!path || !mesh) return SOAK_ERR_NULL;
+    soak_mesh_request rq = {require_uvs, NULL};
+    return soak_mesh_import_rq(path, &rq, mesh, err, errlen);
+}
+
+soak_status soak_mesh_import_rq(const char *path, const soak_mesh_request *rq, soak_mesh *mesh, char *err,
+                                size_t errlen)
+{
+    if (!path || !mesh || !rq) return SOAK_ERR_NULL;
     const soak_mesh_plugin *p = mesh_plugin(path, err, errlen);
     if (!p) return SOAK_ERR_UNSUPPORTED;
-    soak_status st = p->import(path, require_uvs, mesh, err, errlen);
+    soak_status st = p->import(path, rq, mesh, err, errlen);
     return st == SOAK_OK ? soak_mesh_validate(mesh, path, err, errlen) : st;
 }
 

@@ -17,6 +17,7 @@ static void surface_triangles(soak_mesh *m, int nu, int nv)
 
 void surface_mesh(soak_mesh *m, int nu, int nv, surface_fn f)
 {
+    m->tri_uv = NULL;
     m->n_vertices = (size_t)(nu + 1) * (nv + 1);
     m->n_triangles = 2 * (size_t)nu * nv;
     m->positions = malloc(3 * m->n_vertices * sizeof(double));

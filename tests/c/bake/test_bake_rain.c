@@ -23,6 +23,7 @@ typedef double (*height_fn)(double x, double y);
 
 static void grid_mesh(soak_mesh *m, int n, double L, height_fn f, double z0)
 {
+    m->tri_uv = NULL;
     m->n_vertices = (size_t)(n + 1) * (n + 1);
     m->n_triangles = 2 * (size_t)n * n;
     m->positions = malloc(3 * m->n_vertices * sizeof(double));
@@ -65,7 +66,7 @@ static void append_mesh(soak_mesh *a, const soak_mesh *b)
 }
 
 /* Appends quad p0 p1 p2 p3 (CCW seen from its front) with UVs outside
- * [0,1]^2, so it only occludes and never owns texels. */
+ * [0,1]^2, so with SOAK_UV_SKIP it only occludes and never owns texels. */
 static void append_quad(soak_mesh *m, const double q[4][3])
 {
     soak_mesh b;
@@ -132,9 +133,13 @@ static void test_roof(void)
     soak_mesh floor_m, roof;
     grid_mesh(&floor_m, 1, 1.0, NULL, 0.0);
     grid_mesh(&roof, 1, 2.0, NULL, 0.2);
+    /* The roof occludes and owns no texel: UVs outside [0,1]^2, skipped. On
+     * shared UVs the roof would win the texels (more surface per texel). */
+    for (size_t i = 0; i < 2 * roof.n_vertices; ++i) roof.uvs[i] += 5.0;
     append_mesh(&floor_m, &roof);
     soak_rain_params p;
     soak_rain_defaults(&p);
+    p.uv.outside = SOAK_UV_SKIP;
     p.rays = 32;
     p.duration = 600;
     p.steps = 4;
@@ -175,6 +180,7 @@ static void test_well(void)
     soak_rain_params p;
     soak_rain_defaults(&p);
     p.sky = SOAK_RAIN_SKY_HEMISPHERE;
+    p.uv.outside = SOAK_UV_SKIP; /* the walls' UVs lie outside [0,1]^2: they occlude and own no texel */
     p.duration = 0;
     p.rays = 16384;
     soak_rain_result r;

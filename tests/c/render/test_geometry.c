@@ -651,7 +651,7 @@ static soak_geometry *soup_geometry(const char *label, unsigned long long *s)
             idx[3 * t + k] = (unsigned)(3 * t + k);
         }
     }
-    soak_mesh m = {3 * TRIS, TRIS, pos, NULL, NULL, idx};
+    soak_mesh m = {3 * TRIS, TRIS, pos, NULL, NULL, idx, NULL};
     unsigned id;
     snprintf(what, sizeof what, "%s: add mesh", label);
     check_status(what, soak_geometry_add_mesh(g, &m, NULL, &id), SOAK_OK);

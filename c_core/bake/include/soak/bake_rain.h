@@ -8,8 +8,10 @@
  *    centres, v = 0 at the bottom image row); a texel covered by a triangle
  *    gets that triangle's surface point p, unit normal n (the geometric
  *    normal turned to the side of the interpolated vertex normal) and world
- *    area (triangle area / UV area * texel UV area). Overlapping UVs: the
- *    first triangle in index order wins. Texels outside every triangle stay
+ *    area (triangle area / UV area * texel UV area). Faces without UVs,
+ *    degenerate faces, faces outside [0, 1]^2, UDIM tiles and overlapping
+ *    UVs follow soak/bake_uv.h (an overlap goes to one face by a rule that
+ *    does not depend on the faces' order). Texels outside every triangle stay
  *    empty (value 0, later filled by a `gutter`-texel dilation).
  *
  * 2. Sky exposure (Monte Carlo, Embree occlusion queries through
@@ -146,6 +148,7 @@
 #include <stdint.h>
 
 #include "soak/bake.h"
+#include "soak/bake_uv.h"
 #include "soak/geometry.h"
 #include "soak/image.h"
 #include "soak/status.h"
@@ -201,6 +204,7 @@ typedef struct soak_rain_params {
     int flow_iterations;    /* routing sweeps per step, 0..100000 */
     int gutter;             /* texels of dilation into empty texels, 0..64 */
     int film;               /* 1: falling film on slopes (step 3b), 0: static retention only */
+    soak_uv_options uv;     /* step 1's UV rules (soak/bake_uv.h): wrap outside [0,1]^2, no UDIM */
 } soak_rain_params;
 
 /* seed 0, 64 rays, rain sky, up +z, rain from +z, spread 10 deg, 600 s in
@@ -225,6 +229,7 @@ typedef struct soak_rain_result {
     soak_image coverage; /* 1 channel, 1 where a triangle covers the texel centre */
     soak_image film;     /* 1 channel, falling film thickness while rain falls, m (0 with film = 0) */
     soak_rain_runoff runoff;
+    soak_uv_stats uv;    /* what step 1 made of the faces (soak/bake_uv.h) */
 } soak_rain_result;
 
 /* Bakes at width x height (soak_bake_check_size). The mesh must have UVs
@@ -285,5 +290,7 @@ soak_status soak_rain_frames_at(soak_rain_frames *f, double t, const soak_bake_e
 void soak_rain_frame_free(soak_rain_frame *r);
 /* The sky exposure of the frames' mesh (step 2, gutter not applied). */
 const soak_image *soak_rain_frames_exposure(const soak_rain_frames *f);
+/* What step 1 made of the mesh's faces. */
+const soak_uv_stats *soak_rain_frames_uv(const soak_rain_frames *f);
 
 #endif

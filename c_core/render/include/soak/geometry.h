@@ -19,6 +19,7 @@
 #define SOAK_GEOMETRY_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "soak/status.h"
 #include "soak/vec.h"
@@ -33,6 +34,8 @@ typedef struct soak_mesh {
     double *normals;    /* 3 * n_vertices, unit, or NULL */
     double *uvs;        /* 2 * n_vertices, or NULL */
     unsigned *indices;  /* 3 * n_triangles, each < n_vertices */
+    unsigned char *tri_uv; /* n_triangles: 0 where the face has no UVs (a part of the file without
+                              the UV set); NULL when every face has them or there are none */
 } soak_mesh;
 
 typedef enum soak_shape_kind {
@@ -59,18 +62,40 @@ typedef struct soak_hit {
     unsigned object_id; /* as returned by soak_geometry_add_* */
 } soak_hit;
 
-/* Mesh loading through Assimp (OBJ, PLY, glTF/GLB and every format Assimp
- * reads): triangulated, smooth normals generated where missing, identical
+/* Mesh loading through Assimp (the formats of soak_mesh_formats_print:
+ * OBJ, PLY, glTF/GLB, FBX, Collada, 3DS, .blend, X, LWO, MS3D, ...):
+ * triangulated, smooth normals generated where missing, identical
  * vertices joined, all meshes of the file merged with their node transforms
  * applied. With require_uvs, a file without texture coordinates fails with
- * SOAK_ERR_PARSE and "<file>: mesh has no UVs". Missing/unreadable files
- * give SOAK_ERR_IO with the file and the reason. Formats: .obj .ply .stl .off
- * .gltf .glb (others: SOAK_ERR_UNSUPPORTED). Assimp runs in a child process
+ * SOAK_ERR_PARSE and "<file>: mesh has no UVs", and a file where only some
+ * parts have them with "partial UVs" and the counts (soak_mesh_load_uv
+ * loads it with tri_uv marking the faces that have them). Missing/unreadable files
+ * give SOAK_ERR_IO with the file and the reason. Formats outside the table
+ * are SOAK_ERR_UNSUPPORTED with the reason. Assimp runs in a child process
  * with a time limit (SOAK_MESH_TIMEOUT seconds, default 120): a crash or a
  * hang there is SOAK_ERR_PARSE naming the file; non-finite coordinates and
  * out-of-range indices are rejected. */
 soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen);
+
+/* Which UV set soak_mesh_load_uv reads: uv_index (0 = the first; Assimp's
+ * channel number) or, when uv_name is not empty, the set of that name
+ * (formats that name their sets, e.g. FBX, Collada). */
+#define SOAK_MESH_UV_NAME_MAX 64
+#define SOAK_MESH_UV_SETS 8
+typedef struct soak_mesh_uv_choice {
+    int uv_index;
+    char uv_name[SOAK_MESH_UV_NAME_MAX];
+} soak_mesh_uv_choice;
+/* soak_mesh_load with require_uvs and a choice of UV set (NULL: the first);
+ * parts of the file without the set load with tri_uv marking their faces.
+ * A set that no part of the file has fails naming the sets it has. */
+soak_status soak_mesh_load_uv(const char *path, const soak_mesh_uv_choice *uv, soak_mesh *mesh, char *err,
+                              size_t errlen);
 void soak_mesh_free(soak_mesh *mesh);
+
+/* The mesh formats for --help: one line per extension with what reads it
+ * or why it is left out. */
+void soak_mesh_formats_print(FILE *out);
 
 soak_status soak_geometry_create(soak_geometry **out, char *err, size_t errlen);
 void soak_geometry_destroy(soak_geometry *g);
