@@ -11,7 +11,13 @@ both maps 0, no warning), unsupported (format refused), no-uvs, refused
 (another clear refusal, exit 1/2 naming the file), crash (a signal or a
 message about the reader crashing), timeout. The map maximum is read with
 oiiotool --stats, not with soak."""
-import argparse, collections, concurrent.futures as cf, os, re, subprocess, sys, tempfile
+import argparse
+import collections
+import concurrent.futures as cf
+import os
+import re
+import subprocess
+import tempfile
 
 AUX = {"png", "jpg", "jpeg", "tga", "bmp", "dds", "txt", "bin", "mtl", "glsl", "vert", "frag", "material",
        "md", "program", "skeleton", "uc", "mesh", "pk3", "shader", "ppm", "gif"}

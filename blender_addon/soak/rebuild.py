@@ -12,6 +12,7 @@ from .material_tree import NODE_TAG, RESTORE_KEY, group_nodes, find_ref
 from .snapshot import Snapshot
 from .wet_group import GROUP_TAG
 
+
 def _fill_time_is_default(gn, old_preset):
     try:
         old = data.material(old_preset)["t_fill"]

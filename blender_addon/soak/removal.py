@@ -8,6 +8,7 @@ import bpy
 from .checks import check_editable
 from .material_tree import NODE_TAG, RESTORE_KEY, group_nodes, out_socket, in_socket, find_ref, clear_refs
 
+
 def _restore_inputs(tree, bsdf, restore, problems):
     for ident, rec in restore.get("inputs", {}).items():
         s = in_socket(bsdf, ident)

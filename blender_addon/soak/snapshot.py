@@ -5,6 +5,7 @@ import bpy
 
 from .material_tree import REF_KEY, socket_value, out_socket, in_socket
 
+
 def _link_key(link):
     return (link.from_node.name, link.from_socket.identifier, link.to_node.name, link.to_socket.identifier)
 

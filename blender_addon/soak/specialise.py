@@ -17,6 +17,7 @@ from .snapshot import Snapshot
 from .wet_constant import LIQUID_INPUTS
 from .wet_group import GROUP_TAG
 
+
 def _fcurve_of(tree, gn):
     """name -> the F-curve keying the group node's input, "driver" (a
     driver or NLA strips: anything), or None."""

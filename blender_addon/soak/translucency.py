@@ -4,6 +4,7 @@ beside the Principled BSDF, added and taken out."""
 
 from .material_tree import NODE_TAG, ROLE_KEY, tag
 
+
 def add_translucency(tree, gn, bsdf):
     tr = tag(tree.nodes.new("ShaderNodeBsdfTranslucent"), "translucency")
     add = tag(tree.nodes.new("ShaderNodeAddShader"), "translucency")

@@ -145,7 +145,9 @@ class _Controls:
     @classmethod
     def poll(cls, context):
         mat = _material(context)
-        return mat is not None and mat.node_tree is not None and material_tree.find_group_node(mat.node_tree) is not None
+        if mat is None or mat.node_tree is None:
+            return False
+        return material_tree.find_group_node(mat.node_tree) is not None
 
     def draw(self, context):
         layout = self.layout

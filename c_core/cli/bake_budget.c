@@ -23,10 +23,10 @@
 #define DROPS_S_PER_IMPACT 0.5e-6
 #define DROPS_BYTES_PER_IMPACT 128.0
 #define DROPS_STEP_S (64 * SOAK_DROPS_SLAB) /* CATCH_UP_SLABS of bake_drops_state.c */
-#define RIPPLE_S_PER_RING 1e-7    /* measured 2.2e-7 (32^2, tile 20 m: 0.77 M small rings) */
-#define RIPPLE_S_PER_SAMPLE 2e-8  /* exp, sin, cos of a profile sample */
-#define RIPPLE_S_PER_TEXEL 5e-9   /* measured 1.1-1.5e-8 (64^2 lifetime 5 s, 256^2 rate 50) */
-#define RIPPLE_BYTES_PER_RING 48.0 /* struct ring */
+#define RIPPLE_S_PER_RING 1e-7              /* measured 2.2e-7 (32^2, tile 20 m: 0.77 M small rings) */
+#define RIPPLE_S_PER_SAMPLE 2e-8            /* exp, sin, cos of a profile sample */
+#define RIPPLE_S_PER_TEXEL 5e-9             /* measured 1.1-1.5e-8 (64^2 lifetime 5 s, 256^2 rate 50) */
+#define RIPPLE_BYTES_PER_RING 48.0          /* struct ring */
 #define RIPPLE_BYTES_PER_SAMPLE 16.0
 #define RIPPLE_PROFILE_STEP 0.25 /* texels, bake_ripples.c */
 #define RIPPLE_ENVELOPE_SIGMAS 3.5
@@ -48,8 +48,7 @@ double bake_work_budget_s(double out_texels)
 }
 
 /* 0, or the exit code after naming the estimate, the budget and its variable. */
-static int check(const char *cmd, const char *what, double bytes, double seconds, double out_texels,
-                 const char *counts)
+static int check(const char *cmd, const char *what, double bytes, double seconds, double out_texels, const char *counts)
 {
     char err[1024];
     if (soak_memory_check(what, bytes, 0, err, sizeof err) != SOAK_OK) {
@@ -58,8 +57,9 @@ static int check(const char *cmd, const char *what, double bytes, double seconds
     }
     double budget = bake_work_budget_s(out_texels);
     if (seconds <= budget) return 0;
-    cli_error(cmd, "%s needs at least %.3g s of work on one core (%s); the budget is %.3g s (10 s + 2 us per output "
-                   "texel; SOAK_MAX_BAKE_S sets it); refused before any work",
+    cli_error(cmd,
+              "%s needs at least %.3g s of work on one core (%s); the budget is %.3g s (10 s + 2 us per output "
+              "texel; SOAK_MAX_BAKE_S sets it); refused before any work",
               what, seconds, counts, budget);
     return SOAK_EXIT_USAGE;
 }
@@ -96,8 +96,8 @@ int bake_ripples_budget(const char *cmd, const soak_ripples_params *p, long fram
         samples += (fmin(r, reach) + reach) / RIPPLE_PROFILE_STEP / 64;
     }
     double rings_cap = per_loop * (ceil(max_age / p->period) + 1);
-    double bytes = rings_cap * RIPPLE_BYTES_PER_RING + live * samples * RIPPLE_BYTES_PER_SAMPLE +
-                   (double)p->size * p->size * 64.0;
+    double bytes =
+        rings_cap * RIPPLE_BYTES_PER_RING + live * samples * RIPPLE_BYTES_PER_SAMPLE + (double)p->size * p->size * 64.0;
     double seconds =
         (double)frames * live * (RIPPLE_S_PER_RING + samples * RIPPLE_S_PER_SAMPLE + texels * RIPPLE_S_PER_TEXEL);
     char counts[320];

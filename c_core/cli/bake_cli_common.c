@@ -195,13 +195,6 @@ double bake_frame_time(const bake_opts *o, long f)
     return o->time + offset;
 }
 
-const char *bake_frame_label(long f, char *buf, size_t n)
-{
-    if (f < 0) snprintf(buf, n, "the map");
-    else snprintf(buf, n, "frame %ld", f);
-    return buf;
-}
-
 int bake_check_times(const bake_opts *o, double lo, double hi)
 {
     long ends[2] = {o->have_frames ? o->first : -1, o->have_frames ? o->last : -1};

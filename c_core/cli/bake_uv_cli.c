@@ -90,10 +90,7 @@ void bake_uv_report(const char *label, const soak_uv_stats *s)
     printf("%s: uv: %s\n", label, line);
 }
 
-int bake_uv_is_udim(const char *path)
-{
-    return path && strstr(path, "<UDIM>") != NULL;
-}
+int bake_uv_is_udim(const char *path) { return path && strstr(path, "<UDIM>") != NULL; }
 
 soak_status bake_uv_tile_path(const char *path, int tile, char *out, size_t n)
 {

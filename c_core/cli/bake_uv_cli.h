@@ -19,7 +19,10 @@ typedef struct bake_uv_opts {
 
 extern const cli_opt bake_uv_opts_table[];
 extern const size_t bake_uv_opts_table_n;
-#define BAKE_UV_TABLE(dst) {bake_uv_opts_table, bake_uv_opts_table_n, (dst)}
+#define BAKE_UV_TABLE(dst)                                                                                             \
+    {                                                                                                                  \
+        bake_uv_opts_table, bake_uv_opts_table_n, (dst)                                                                \
+    }
 
 void bake_uv_opts_init(bake_uv_opts *u);
 /* After a bake: the warning on stderr when the stats call for one (then,

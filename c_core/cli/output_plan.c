@@ -25,7 +25,7 @@
 typedef struct plan_entry {
     char *id;
     const char *option;
-    int rank; /* the option's place in the command's list: inputs first */
+    int rank;   /* the option's place in the command's list: inputs first */
     long frame; /* -1: not a sequence */
     int input;
 } plan_entry;
@@ -36,6 +36,15 @@ typedef struct plan {
     char last_dir[PATH_MAX], last_real[PATH_MAX]; /* consecutive frames share a folder */
     const char *cmd;
 } plan;
+
+/* How a message names a frame; here, below bake_cli_common.c, which calls
+ * the plan. */
+const char *bake_frame_label(long f, char *buf, size_t n)
+{
+    if (f < 0) snprintf(buf, n, "the map");
+    else snprintf(buf, n, "frame %ld", f);
+    return buf;
+}
 
 /* "i:<dev>:<ino>" for an existing file, else "p:<canonical folder>/<name>"
  * (the path as given when its folder does not resolve: writing it then
@@ -104,8 +113,9 @@ static int check_name_length(const bake_opts *o, const char *option, long frame,
     size_t n = strlen(base);
     if (n + TEMP_SUFFIX_BYTES <= (size_t)name_max && strlen(path) + TEMP_SUFFIX_BYTES < PATH_MAX) return 0;
     char label[32];
-    cli_error(o->cmd, "%s%s%s: the name '%.40s...' has %zu bytes (path %zu): with the temporary's %d-byte suffix "
-                      "it exceeds the folder's limit of %ld (paths %d); use a name of at most %ld bytes",
+    cli_error(o->cmd,
+              "%s%s%s: the name '%.40s...' has %zu bytes (path %zu): with the temporary's %d-byte suffix "
+              "it exceeds the folder's limit of %ld (paths %d); use a name of at most %ld bytes",
               option, frame >= 0 ? " " : "", frame >= 0 ? bake_frame_label(frame, label, sizeof label) : "", base, n,
               strlen(path), TEMP_SUFFIX_BYTES, name_max, PATH_MAX - 1, name_max - TEMP_SUFFIX_BYTES);
     return SOAK_EXIT_USAGE;
@@ -149,10 +159,8 @@ static int report_clash(const plan *p, const bake_opts *o, const bake_output *ou
         char da[PATH_MAX + 128], db[PATH_MAX + 128];
         describe(a, o, outs, ins, da, sizeof da);
         describe(b, o, outs, ins, db, sizeof db);
-        if (a->input)
-            cli_error(o->cmd, "%s is the same file as the input %s; refusing to overwrite it", db, da);
-        else
-            cli_error(o->cmd, "%s and %s are the same file; refusing to write one over the other", da, db);
+        if (a->input) cli_error(o->cmd, "%s is the same file as the input %s; refusing to overwrite it", db, da);
+        else cli_error(o->cmd, "%s and %s are the same file; refusing to write one over the other", da, db);
         return SOAK_EXIT_USAGE;
     }
     return 0;

@@ -197,7 +197,7 @@ def differs(a, b, eps=1e-4):
 
 def outputs(sc, mat, gn):
     return {o: render(sc, mat, gn, o) for o in ("Base Color", "Roughness", "Specular", "Coat Weight", "Liquid",
-                                                 "Normal")}
+                                                "Normal")}
 
 
 def check_shown(sc, mat, gn, name, failures):

@@ -14,7 +14,8 @@ import sys
 repo = sys.argv[1]
 shipped_path = os.path.join(repo, "blender_addon", "soak", "price.json")
 shipped = json.load(open(shipped_path, encoding="utf-8"))
-spec = importlib.util.spec_from_file_location("blender_price", os.path.join(repo, "c_core", "bench", "blender_price.py"))
+spec = importlib.util.spec_from_file_location(
+    "blender_price", os.path.join(repo, "c_core", "bench", "blender_price.py"))
 bp = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(bp)
 bench = os.path.join(repo, shipped["benchmark"])

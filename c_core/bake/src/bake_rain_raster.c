@@ -26,12 +26,22 @@ typedef struct face {
  * greater than what texel i holds. A total order on the stored values. */
 static int wins(const rain_surface *s, size_t i, const texel_value *val, soak_vec3 p)
 {
-    double a[13] = {val->area, p.x, p.y, p.z, (float)val->ng.x, (float)val->ng.y, (float)val->ng.z,
-                    (float)val->sx.x, (float)val->sx.y, (float)val->sx.z, (float)val->sy.x, (float)val->sy.y,
+    double a[13] = {val->area,
+                    p.x,
+                    p.y,
+                    p.z,
+                    (float)val->ng.x,
+                    (float)val->ng.y,
+                    (float)val->ng.z,
+                    (float)val->sx.x,
+                    (float)val->sx.y,
+                    (float)val->sx.z,
+                    (float)val->sy.x,
+                    (float)val->sy.y,
                     (float)val->sy.z};
-    double b[13] = {s->area[i], s->pos[3 * i], s->pos[3 * i + 1], s->pos[3 * i + 2], s->nrm[3 * i],
-                    s->nrm[3 * i + 1], s->nrm[3 * i + 2], s->dpdx[3 * i], s->dpdx[3 * i + 1], s->dpdx[3 * i + 2],
-                    s->dpdy[3 * i], s->dpdy[3 * i + 1], s->dpdy[3 * i + 2]};
+    double b[13] = {s->area[i],        s->pos[3 * i],      s->pos[3 * i + 1], s->pos[3 * i + 2],  s->nrm[3 * i],
+                    s->nrm[3 * i + 1], s->nrm[3 * i + 2],  s->dpdx[3 * i],    s->dpdx[3 * i + 1], s->dpdx[3 * i + 2],
+                    s->dpdy[3 * i],    s->dpdy[3 * i + 1], s->dpdy[3 * i + 2]};
     for (int k = 0; k < 13; ++k)
         if (a[k] != b[k]) return a[k] > b[k];
     return 0;
@@ -58,7 +68,8 @@ static long long draw(rain_surface *s, const face *f, int t, soak_vec3 up, unsig
     double ymin = fmin(f->Y[0], fmin(f->Y[1], f->Y[2])), ymax = fmax(f->Y[0], fmax(f->Y[1], f->Y[2]));
     double x0 = floor(xmin - 0.5), x1 = ceil(xmax - 0.5), y0 = floor(ymin - 0.5), y1 = ceil(ymax - 0.5);
     /* A face over more than WRAP_TILES tiles (corrupt UVs, not a layout) is cut at the map's border. */
-    if (!f->wrap || xmax - xmin > WRAP_TILES * s->w || ymax - ymin > WRAP_TILES * s->h) x0 = fmax(x0, 0), y0 = fmax(y0, 0), x1 = fmin(x1, s->w - 1.0), y1 = fmin(y1, s->h - 1.0);
+    if (!f->wrap || xmax - xmin > WRAP_TILES * s->w || ymax - ymin > WRAP_TILES * s->h)
+        x0 = fmax(x0, 0), y0 = fmax(y0, 0), x1 = fmin(x1, s->w - 1.0), y1 = fmin(y1, s->h - 1.0);
     const double eps = -1e-9;
     long long n = 0;
     for (long y = (long)y0; y <= (long)y1; ++y)
@@ -133,7 +144,8 @@ static int place(const soak_mesh *m, size_t t, const soak_uv_options *o, soak_uv
         return 1;
     }
     *su = *sv = 0;
-    if (lo[0] >= -SOAK_UV_TOL && lo[1] >= -SOAK_UV_TOL && hi[0] <= 1 + SOAK_UV_TOL && hi[1] <= 1 + SOAK_UV_TOL) return 1;
+    if (lo[0] >= -SOAK_UV_TOL && lo[1] >= -SOAK_UV_TOL && hi[0] <= 1 + SOAK_UV_TOL && hi[1] <= 1 + SOAK_UV_TOL)
+        return 1;
     ++st->outside_faces;
     if (o->outside != SOAK_UV_WRAP) return 0;
     *su = floor(lo[0] + SOAK_UV_TOL), *sv = floor(lo[1] + SOAK_UV_TOL);
@@ -150,10 +162,11 @@ static soak_status refuse_outside(const soak_mesh *m, const soak_uv_stats *st, c
         if (lo[0] >= -SOAK_UV_TOL && lo[1] >= -SOAK_UV_TOL && hi[0] <= 1 + SOAK_UV_TOL && hi[1] <= 1 + SOAK_UV_TOL)
             continue;
         if (err && errlen)
-            snprintf(err, errlen, "%lld of %lld faces have UVs outside [0, 1]^2 (face %zu spans u %g..%g, v %g..%g): "
+            snprintf(err, errlen,
+                     "%lld of %lld faces have UVs outside [0, 1]^2 (face %zu spans u %g..%g, v %g..%g): "
                      "--uv-outside wrap bakes them as a repeating texture, skip leaves them out, or name the "
-                     "output with <UDIM> for one map per tile", st->outside_faces, st->faces, t + 1, lo[0], hi[0],
-                     lo[1], hi[1]);
+                     "output with <UDIM> for one map per tile",
+                     st->outside_faces, st->faces, t + 1, lo[0], hi[0], lo[1], hi[1]);
         break;
     }
     return SOAK_ERR_ARG;
@@ -248,10 +261,7 @@ void soak_uv_stats_add(soak_uv_stats *a, const soak_uv_stats *b)
     a->uv_area += b->uv_area, a->uv_area_seen += b->uv_area_seen;
 }
 
-static double pct(double a, double b)
-{
-    return b > 0 ? 100.0 * a / b : 0.0;
-}
+static double pct(double a, double b) { return b > 0 ? 100.0 * a / b : 0.0; }
 
 int soak_uv_stats_warning(const soak_uv_stats *s, char *msg, size_t n)
 {
@@ -266,9 +276,10 @@ int soak_uv_stats_warning(const soak_uv_stats *s, char *msg, size_t n)
                  s->faces);
         why = buf;
     } else if (s->uv_area > 0 && s->uv_area_seen < SOAK_UV_MIN_SEEN * s->uv_area) {
-        snprintf(buf, sizeof buf, "faces holding %.1f %% of the UV area (over the %.0f %% allowed) fall between "
-                 "texel centres: raise --width/--height", pct(s->uv_area - s->uv_area_seen, s->uv_area),
-                 100.0 * (1.0 - SOAK_UV_MIN_SEEN));
+        snprintf(buf, sizeof buf,
+                 "faces holding %.1f %% of the UV area (over the %.0f %% allowed) fall between "
+                 "texel centres: raise --width/--height",
+                 pct(s->uv_area - s->uv_area_seen, s->uv_area), 100.0 * (1.0 - SOAK_UV_MIN_SEEN));
         why = buf;
     }
     if (!why) return 0;
@@ -278,11 +289,12 @@ int soak_uv_stats_warning(const soak_uv_stats *s, char *msg, size_t n)
 
 void soak_uv_stats_line(const soak_uv_stats *s, char *buf, size_t n)
 {
-    snprintf(buf, n, "%lld of %lld texels covered (%.1f %%), %.1f %% of them by overlapping faces; %lld of %lld "
+    snprintf(buf, n,
+             "%lld of %lld texels covered (%.1f %%), %.1f %% of them by overlapping faces; %lld of %lld "
              "faces baked, %lld without UVs, %lld degenerate, %lld outside [0,1]^2 %s, %lld smaller than a texel",
-             s->covered, s->texels, pct((double)s->covered, (double)s->texels), pct((double)s->shared, (double)s->covered),
-             s->baked_faces, s->faces, s->no_uv_faces, s->degenerate_faces, s->outside_faces,
-             s->outside_wrapped ? "(wrapped)" : "(left out or cut)", s->unseen_faces);
+             s->covered, s->texels, pct((double)s->covered, (double)s->texels),
+             pct((double)s->shared, (double)s->covered), s->baked_faces, s->faces, s->no_uv_faces, s->degenerate_faces,
+             s->outside_faces, s->outside_wrapped ? "(wrapped)" : "(left out or cut)", s->unseen_faces);
 }
 
 soak_status soak_uv_udim_tiles(const soak_mesh *m, int *tiles, int max, int *count, char *err, size_t errlen)
@@ -295,8 +307,10 @@ soak_status soak_uv_udim_tiles(const soak_mesh *m, int *tiles, int max, int *cou
         uv_box(m, t, lo, hi, mid);
         if (!(mid[0] >= 0 && mid[0] < 10 && mid[1] >= 0 && mid[1] < 100)) {
             if (err && errlen)
-                snprintf(err, errlen, "face %zu's UV centre (%g, %g) is outside the UDIM range u 0..10, v 0..100 "
-                         "(tiles %d..%d)", t + 1, mid[0], mid[1], SOAK_UDIM_FIRST, SOAK_UDIM_LAST);
+                snprintf(err, errlen,
+                         "face %zu's UV centre (%g, %g) is outside the UDIM range u 0..10, v 0..100 "
+                         "(tiles %d..%d)",
+                         t + 1, mid[0], mid[1], SOAK_UDIM_FIRST, SOAK_UDIM_LAST);
             return SOAK_ERR_ARG;
         }
         used[(int)floor(mid[0]) + 10 * (int)floor(mid[1])] = 1;

@@ -13,16 +13,16 @@
 
 typedef struct rain_surface {
     int w, h;
-    int *tri;          /* per texel, -1 = empty */
-    double *pos;       /* 3 per texel */
-    float *nrm;        /* 3 per texel */
-    float *dpdx, *dpdy;/* 3 per texel: world step of one texel in +x, +y (image rows down) */
-    float *area;       /* world area of the texel */
-    double *level;     /* p.up */
-    unsigned char *adj;/* bit d: neighbour d is 3D-adjacent and covered */
-    float *drip;       /* > 0: level drop toward the open edge the water drips off */
-    float *descent;    /* 2 per texel: steepest descent, texels (x, y down) per metre; 0, 0 if level */
-    double mean_texel; /* mean sqrt(area) of covered texels */
+    int *tri;           /* per texel, -1 = empty */
+    double *pos;        /* 3 per texel */
+    float *nrm;         /* 3 per texel */
+    float *dpdx, *dpdy; /* 3 per texel: world step of one texel in +x, +y (image rows down) */
+    float *area;        /* world area of the texel */
+    double *level;      /* p.up */
+    unsigned char *adj; /* bit d: neighbour d is 3D-adjacent and covered */
+    float *drip;        /* > 0: level drop toward the open edge the water drips off */
+    float *descent;     /* 2 per texel: steepest descent, texels (x, y down) per metre; 0, 0 if level */
+    double mean_texel;  /* mean sqrt(area) of covered texels */
 } rain_surface;
 
 /* Below this |tangential gravity| (sin of the slope) a texel is level: no

@@ -74,8 +74,7 @@ soak_status soak_export_header_make(const soak_preset_db *db, soak_export_header
     return SOAK_OK;
 }
 
-soak_status soak_export_begin(const soak_preset_db *db, FILE *out, char *err, size_t errlen,
-                              soak_export_header *h)
+soak_status soak_export_begin(const soak_preset_db *db, FILE *out, char *err, size_t errlen, soak_export_header *h)
 {
     if (!db || !out || !err || !errlen || !h) return SOAK_ERR_NULL;
     soak_status st = soak_export_header_make(db, h);

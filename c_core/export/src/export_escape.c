@@ -39,9 +39,9 @@ static size_t utf8_length(const unsigned char *p)
     size_t n = c >= 0xc2 && c <= 0xdf ? 2 : (c >= 0xe0 && c <= 0xef ? 3 : (c >= 0xf0 && c <= 0xf4 ? 4 : 0));
     for (size_t i = 1; i < n; ++i)
         if ((p[i] & 0xc0) != 0x80) return 0;
-    if (n == 3 && c == 0xe0 && p[1] < 0xa0) return 0; /* overlong */
+    if (n == 3 && c == 0xe0 && p[1] < 0xa0) return 0;  /* overlong */
     if (n == 3 && c == 0xed && p[1] >= 0xa0) return 0; /* surrogate */
-    if (n == 4 && c == 0xf0 && p[1] < 0x90) return 0; /* overlong */
+    if (n == 4 && c == 0xf0 && p[1] < 0x90) return 0;  /* overlong */
     if (n == 4 && c == 0xf4 && p[1] >= 0x90) return 0; /* above U+10FFFF */
     return n;
 }

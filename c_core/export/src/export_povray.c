@@ -324,6 +324,15 @@ static void write_presets(pov_out *o, const soak_preset_db *db)
         num(o, soak_presets_liquid_at(db, i)->ior);
         if (i + 1 < nl) out(o, ", ");
     }
+    /* the liquid's reflectance at normal incidence in air (soak_fresnel_r0),
+     * for soak.inc's wet layer over a user's texture */
+    out(o, "}\n#declare Soak_Liquid_F0 = array[%d] {", nl);
+    for (int i = 0; i < nl; ++i) {
+        double r0 = 0.0;
+        if (soak_fresnel_r0(soak_presets_liquid_at(db, i)->ior, 0.0, &r0) != SOAK_OK) r0 = 0.0;
+        num(o, r0);
+        if (i + 1 < nl) out(o, ", ");
+    }
     out(o, "}\n\n");
 }
 

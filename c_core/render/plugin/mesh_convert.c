@@ -108,15 +108,17 @@ static int glb1_to_gltf(const unsigned char *in, size_t n, soak_mesh_text *out, 
         snprintf(why, whylen, "glTF 1.0 binary file whose scene is not a JSON object");
         return -1;
     }
-    static const char *const unread[] = {"images", "textures", "samplers", "shaders", "programs", "techniques",
-                                         "extensionsUsed"};
+    static const char *const unread[] = {"images",   "textures",   "samplers",      "shaders",
+                                         "programs", "techniques", "extensionsUsed"};
     for (size_t k = 0; k < sizeof unread / sizeof *unread; ++k) cJSON_DeleteItemFromObjectCaseSensitive(j, unread[k]);
     cJSON *m, *views = cJSON_GetObjectItemCaseSensitive(j, "bufferViews"), *v;
-    cJSON_ArrayForEach(m, cJSON_GetObjectItemCaseSensitive(j, "materials")) {
+    cJSON_ArrayForEach(m, cJSON_GetObjectItemCaseSensitive(j, "materials"))
+    {
         cJSON_DeleteItemFromObjectCaseSensitive(m, "technique");
         cJSON_DeleteItemFromObjectCaseSensitive(m, "values");
     }
-    cJSON_ArrayForEach(v, views) {
+    cJSON_ArrayForEach(v, views)
+    {
         cJSON *b = cJSON_GetObjectItemCaseSensitive(v, "buffer");
         if (cJSON_IsString(b) && !strcmp(b->valuestring, "binary_glTF"))
             cJSON_ReplaceItemInObjectCaseSensitive(v, "buffer", cJSON_CreateString("soak_body"));

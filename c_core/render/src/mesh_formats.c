@@ -56,7 +56,8 @@ static const mesh_format formats[] = {
     {"iqm", "Inter-Quake Model", NULL},
     {"nff", "Neutral File Format", NULL},
     {"enff", "Neutral File Format (extended)", NULL},
-    {"raw", "PovRay raw triangles", "a format Assimp 5.2 reads badly: its reader crashes on RAW files with colours or textures"},
+    {"raw", "PovRay raw triangles",
+     "a format Assimp 5.2 reads badly: its reader crashes on RAW files with colours or textures"},
     {"ter", "Terragen terrain", NULL},
     {"q3o", "Quick3D object", NULL},
     {"q3s", "Quick3D scene", NULL},
@@ -101,11 +102,12 @@ int soak_mesh_format_ok(const char *path, char *why, size_t whylen)
     const mesh_format *f = find(path);
     if (f && !f->left_out) return 1;
     if (!why || !whylen) return 0;
-    if (f)
-        snprintf(why, whylen, "%s: unsupported mesh format: .%s (%s) is %s", path, f->ext, f->name, f->left_out);
+    if (f) snprintf(why, whylen, "%s: unsupported mesh format: .%s (%s) is %s", path, f->ext, f->name, f->left_out);
     else
-        snprintf(why, whylen, "%s: unsupported mesh format (the extension is not one of the mesh formats Soak "
-                 "reads: `soak bake rain --help` lists them)", path);
+        snprintf(why, whylen,
+                 "%s: unsupported mesh format (the extension is not one of the mesh formats Soak "
+                 "reads: `soak bake rain --help` lists them)",
+                 path);
     return 0;
 }
 
@@ -114,6 +116,7 @@ void soak_mesh_formats_print(FILE *out)
     fprintf(out, "mesh formats (Assimp in a contained reader; left out with the reason):\n");
     for (size_t i = 0; i < sizeof formats / sizeof *formats; ++i) {
         const mesh_format *f = &formats[i];
-        fprintf(out, "  .%-9s %s%s%s\n", f->ext, f->name, f->left_out ? ": not read, " : "", f->left_out ? f->left_out : "");
+        fprintf(out, "  .%-9s %s%s%s\n", f->ext, f->name, f->left_out ? ": not read, " : "",
+                f->left_out ? f->left_out : "");
     }
 }

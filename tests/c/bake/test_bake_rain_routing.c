@@ -170,8 +170,8 @@ static void check_uniform_plane(double deg)
     snprintf(what, sizeof what, "plane, UVs turned %g deg: %d bottom texels found", deg, count);
     check_true(what, count >= N / 2);
     snprintf(what, sizeof what,
-             "plane, UVs turned %g deg: every film by the bottom edge within 1 %% of Nusselt (worst %.2f %% at %d,%d)", deg,
-             100 * worst, worst_x, worst_y);
+             "plane, UVs turned %g deg: every film by the bottom edge within 1 %% of Nusselt (worst %.2f %% at %d,%d)",
+             deg, 100 * worst, worst_x, worst_y);
     check_true(what, worst <= 0.01);
     printf("uniform plane, UVs turned %g deg: worst bottom-edge film error %.3f %%\n", deg, 100 * worst);
     if (deg == 0.0) { /* the report's column count: the bottom row, every column, edges included */
@@ -202,10 +202,7 @@ static void check_uniform_plane(double deg)
 static const double LX0 = 0.3, LX1 = 0.7, LZ0 = 0.55, LZ1 = 0.6, LD = 0.2;
 enum { WALL_CELLS = 40 };
 
-static void wall(double s, double t, double p[3])
-{
-    p[0] = s, p[1] = 0.0, p[2] = t;
-}
+static void wall(double s, double t, double p[3]) { p[0] = s, p[1] = 0.0, p[2] = t; }
 
 static int behind_ledge(int i, int j, int M)
 {

@@ -35,9 +35,9 @@
 
 #define MAX_FILES 1024
 
-static const char *const aux[] = {"png", "jpg", "jpeg", "tga", "bmp", "dds", "txt", "bin", "mtl", "glsl",
-                                  "vert", "frag", "material", "md", "program", "skeleton", "uc", "mesh",
-                                  "pk3", "shader", "ppm", "gif"};
+static const char *const aux[] = {"png", "jpg",  "jpeg", "tga",    "bmp",      "dds", "txt",     "bin",
+                                  "mtl", "glsl", "vert", "frag",   "material", "md",  "program", "skeleton",
+                                  "uc",  "mesh", "pk3",  "shader", "ppm",      "gif"};
 
 static char *files[MAX_FILES];
 static int n_files;
@@ -59,10 +59,7 @@ static int collect(const char *path, const struct stat *sb, int type, struct FTW
     return 0;
 }
 
-static int by_name(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
+static int by_name(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
 typedef struct outcome {
     soak_status load, bake;
@@ -111,12 +108,14 @@ static void check_file_facts(void)
                     2710 - 668, 0);
     }
     if ((f = find("/OBJ/WusonOBJ.obj")) && (bake_one(f, 32, &o), check_status("WusonOBJ.obj bakes", o.bake, SOAK_OK))) {
-        check_close("WusonOBJ.obj: every one of 3732 triangles degenerate in UV", (double)o.uv.degenerate_faces, 3732, 0);
+        check_close("WusonOBJ.obj: every one of 3732 triangles degenerate in UV", (double)o.uv.degenerate_faces, 3732,
+                    0);
         check_true("WusonOBJ.obj: the empty map warns", soak_uv_stats_warning(&o.uv, NULL, 0));
     }
     if ((f = find("/glTF2/BoxTextured-glTF/BoxTextured.gltf")) &&
         (bake_one(f, 32, &o), check_status("BoxTextured.gltf bakes", o.bake, SOAK_OK)))
-        check_close("BoxTextured.gltf: triangles outside [0,1]^2 (issue 47: 10 of 12)", (double)o.uv.outside_faces, 10, 0);
+        check_close("BoxTextured.gltf: triangles outside [0,1]^2 (issue 47: 10 of 12)", (double)o.uv.outside_faces, 10,
+                    0);
     if ((f = find("/PLY/Wuson.ply")) && (bake_one(f, 128, &o), check_status("Wuson.ply bakes", o.bake, SOAK_OK))) {
         check_close("Wuson.ply at 128^2: covered texels (issue 47: 4835)", (double)o.uv.covered, 4835, 0);
         check_close("Wuson.ply at 128^2: shared texels (issue 47: 4221)", (double)o.uv.shared, 4221, 0);
@@ -190,9 +189,9 @@ int main(void)
     struct rusage self, kids;
     getrusage(RUSAGE_SELF, &self);
     getrusage(RUSAGE_CHILDREN, &kids);
-    double cpu = (double)(self.ru_utime.tv_sec + self.ru_stime.tv_sec + kids.ru_utime.tv_sec + kids.ru_stime.tv_sec) +
-                 1e-6 * (double)(self.ru_utime.tv_usec + self.ru_stime.tv_usec + kids.ru_utime.tv_usec +
-                                 kids.ru_stime.tv_usec);
+    double cpu =
+        (double)(self.ru_utime.tv_sec + self.ru_stime.tv_sec + kids.ru_utime.tv_sec + kids.ru_stime.tv_sec) +
+        1e-6 * (double)(self.ru_utime.tv_usec + self.ru_stime.tv_usec + kids.ru_utime.tv_usec + kids.ru_stime.tv_usec);
     printf("%d files, %d baked a covered map, %.1f s wall, %.1f s CPU\n", n_files, baked,
            (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec), cpu);
     for (int i = 0; i < n_files; ++i) free(files[i]);

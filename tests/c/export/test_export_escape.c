@@ -92,18 +92,15 @@ static void test_readers(const char *dir)
     snprintf(text, sizeof text, "%s\xc3\xa9\xe2\x80\xa8\xf0\x9f\x92\xa7", ascii);
     if (on_path("python3")) {
         soak_escape_python(text, lit, sizeof lit);
-        snprintf(program, sizeof program,
-                 "s = \"%s\"\nopen('out.bin', 'wb').write(s.encode('utf-8'))\n", lit);
+        snprintf(program, sizeof program, "s = \"%s\"\nopen('out.bin', 'wb').write(s.encode('utf-8'))\n", lit);
         run_reader("python3", dir, "t.py", program, "python3 t.py", text);
-    } else
-        check_skip("python3 round trip", "python3 not on PATH");
+    } else check_skip("python3 round trip", "python3 not on PATH");
     if (on_path("node")) {
         soak_escape_javascript(text, lit, sizeof lit);
         snprintf(program, sizeof program,
                  "const s = \"%s\";\nrequire('fs').writeFileSync('out.bin', Buffer.from(s, 'utf8'));\n", lit);
         run_reader("node", dir, "t.js", program, "node t.js", text);
-    } else
-        check_skip("node round trip", "node not on PATH");
+    } else check_skip("node round trip", "node not on PATH");
     if (on_path("povray")) {
         /* POV-Ray's #write turns "\n" into the platform's line end and stops
          * at nothing else: printable ASCII, quotes and backslashes included. */
@@ -115,8 +112,7 @@ static void test_readers(const char *dir)
         char pwned[512];
         snprintf(pwned, sizeof pwned, "%s/pwned.txt", dir);
         check_true("povray: directive text inside the literal wrote no file", access(pwned, F_OK) != 0);
-    } else
-        check_skip("povray round trip", "povray not on PATH");
+    } else check_skip("povray round trip", "povray not on PATH");
 }
 
 int main(void)

@@ -8,7 +8,11 @@ reproduce. Written from the formats' specifications (cited per writer), not
 by Assimp.
 
 usage: make_models.py DIR [--u U]"""
-import base64, json, os, struct, sys
+import base64
+import json
+import os
+import struct
+import sys
 
 P = [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (1.0, 1.0, 0.0), (0.0, 1.0, 0.0)]
 TRIS = [(0, 1, 2), (0, 2, 3)]
@@ -158,7 +162,8 @@ def ms3d(U):  # MilkShape 3D 1.8 (Chumbalum Soft, msLib ms3dspec.h), version 4
         out += struct.pack("<H3H", 0, *tri) + struct.pack("<9f", *([0, 0, 1] * 3))
         out += struct.pack("<3f", *(t[i][0] for i in tri)) + struct.pack("<3f", *(1.0 - t[i][1] for i in tri))
         out += struct.pack("<BB", 1, 0)
-    out += struct.pack("<H", 1) + struct.pack("<B32sH", 0, b"quad", 2) + struct.pack("<2H", 0, 1) + struct.pack("<b", -1)
+    out += struct.pack("<H", 1) + struct.pack("<B32sH", 0, b"quad", 2) + \
+    struct.pack("<2H", 0, 1) + struct.pack("<b", -1)
     out += struct.pack("<H", 0) + struct.pack("<ffi", 24.0, 0.0, 1) + struct.pack("<H", 0)
     return out
 
@@ -178,7 +183,8 @@ def lwo(U):  # LightWave LWO2 (NewTek, "LightWave Object File Format", 2001)
     tags = iff(b"TAGS", s0("surf"))
     ptag = iff(b"PTAG", b"SURF" + b"".join(struct.pack(">HH", i, 0) for i in range(2)))
     surf = iff(b"SURF", s0("surf") + s0(""))
-    body = b"LWO2" + tags + iff(b"LAYR", struct.pack(">HH3f", 0, 0, 0, 0, 0) + s0("")) + pnts + vmap + pols + ptag + surf
+    body = b"LWO2" + tags + iff(b"LAYR", struct.pack(">HH3f", 0, 0, 0, 0, 0) + \
+                                s0("")) + pnts + vmap + pols + ptag + surf
     return b"FORM" + struct.pack(">I", len(body)) + body
 
 

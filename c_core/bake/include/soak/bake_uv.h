@@ -55,8 +55,8 @@ typedef struct soak_uv_stats {
     long long texels, covered, shared; /* of the map: covered by a face; by more than one */
     long long faces, baked_faces;      /* all faces; faces that cover a texel */
     long long no_uv_faces, degenerate_faces, outside_faces, other_tile_faces, unseen_faces;
-    int outside_wrapped;               /* 1: the outside faces were wrapped, 0: skipped (or cut at a tile) */
-    double uv_area, uv_area_seen;      /* UV area (tile units) of the faces baked, of those covering a texel */
+    int outside_wrapped;          /* 1: the outside faces were wrapped, 0: skipped (or cut at a tile) */
+    double uv_area, uv_area_seen; /* UV area (tile units) of the faces baked, of those covering a texel */
 } soak_uv_stats;
 
 /* 1 and a message (stderr's warning, without "warning: ") when the stats
