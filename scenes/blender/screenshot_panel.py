@@ -16,6 +16,8 @@ argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 opts = dict(zip(argv[::2], argv[1::2]))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon", "tools"))
 import soak_install  # noqa: E402  (blender_addon/tools/: as users of this Blender install it)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import xwd  # noqa: E402  (scenes/blender/xwd.py)
 
 soak_install.install(opts["--addon"])
 out = os.path.abspath(opts["--out"])
@@ -44,52 +46,13 @@ def tab():
     bpy.app.timers.register(shoot, first_interval=1.0)
 
 
-def read_xwd(path):
-    """(width, height, rows of (r, g, b) bytes top first) of an Xvfb -fbdir
-    frame buffer file (XWD, 24-bit TrueColor, 32 bits per pixel)."""
-    import struct
-    with open(path, "rb") as f:
-        raw = f.read()
-    h = struct.unpack(">25I", raw[:100])
-    size, width, height, byte_order, bpp, stride, ncolors = h[0], h[4], h[5], h[7], h[11], h[12], h[19]
-    if bpp != 32:
-        raise SystemExit(f"{path}: {bpp} bits per pixel, expected 32 (Xvfb -screen 0 WxHx24)")
-    start = size + 12 * ncolors
-    rows = []
-    for y in range(height):
-        line = raw[start + y * stride:start + y * stride + 4 * width]
-        if byte_order == 0:      # LSBFirst: B G R X
-            rgb = bytes(b for i in range(0, len(line), 4) for b in (line[i + 2], line[i + 1], line[i]))
-        else:
-            rgb = bytes(b for i in range(0, len(line), 4) for b in (line[i + 1], line[i + 2], line[i + 3]))
-        rows.append(rgb)
-    return width, height, rows
-
-
-def save_area_from_xwd(fb, area, win, path):
-    """Blender 4.x under Xvfb/llvmpipe reads a black front buffer: crop the
-    area out of the X server's own frame buffer instead."""
-    width, height, rows = read_xwd(fb)
-    x0, y0 = area.x, win.height - (area.y + area.height)     # X rows from the top
-    img = bpy.data.images.new("panel_shot", area.width, area.height)
-    px = []
-    for y in range(area.height - 1, -1, -1):                   # Blender rows from the bottom
-        line = rows[y0 + y]
-        for x in range(x0, x0 + area.width):
-            px += [line[3 * x] / 255.0, line[3 * x + 1] / 255.0, line[3 * x + 2] / 255.0, 1.0]
-    img.pixels[:] = px
-    img.filepath_raw = path
-    img.file_format = "PNG"
-    img.save()
-
-
 def shoot():
     area = setup.area
     win = bpy.context.window_manager.windows[0]
     with bpy.context.temp_override(window=win, area=area, region=area.regions[-1]):
         if "--xwd" in opts:
             bpy.ops.wm.redraw_timer(type="DRAW_WIN_SWAP", iterations=2)   # the X frame buffer up to date
-            save_area_from_xwd(opts["--xwd"], area, win, out)
+            xwd.save_rect(opts["--xwd"], area.x, win.height - (area.y + area.height), area.width, area.height, out)
         else:
             bpy.ops.screen.screenshot_area(filepath=out)
     print("wrote", out)

@@ -101,6 +101,37 @@ def fail(msg):
     raise SystemExit(1)
 
 
+def make_check(quiet=False):
+    """(check, checks): check(cond, msg) fails the test with msg unless cond,
+    and otherwise records msg in the list checks (and prints it unless quiet)."""
+    checks = []
+
+    def check(cond, msg):
+        if not cond:
+            fail(msg)
+        checks.append(msg)
+        if not quiet:
+            print("ok:", msg)
+    return check, checks
+
+
+def ortho_exr_camera(sc, width, height, ortho_scale):
+    """sc renders width x height 32-bit EXR in the Standard view through an
+    orthographic camera at (0, 0, 3) looking down, ortho_scale wide."""
+    sc.render.resolution_x, sc.render.resolution_y = width, height
+    sc.render.resolution_percentage = 100
+    sc.render.image_settings.file_format = "OPEN_EXR"
+    sc.render.image_settings.color_depth = "32"
+    sc.view_settings.view_transform = "Standard"
+    cd = bpy.data.cameras.new("C")
+    cd.type = "ORTHO"
+    cd.ortho_scale = ortho_scale
+    co = bpy.data.objects.new("C", cd)
+    sc.collection.objects.link(co)
+    co.location = (0, 0, 3)
+    sc.camera = co
+
+
 def plane_case_scene(cases, width, height):
     """The plane of plane_cases.json on an empty scene: black world, the
     camera along the normal, Cycles CPU with the cases' samples, no

@@ -27,14 +27,7 @@ import common  # noqa: E402
 
 A = common.args()
 COMBOS = ("Wet asphalt with puddles", "Wet brick in rain", "Wet sand at a shoreline")
-CHECKS = []
-
-
-def check(cond, msg):
-    if not cond:
-        common.fail(msg)
-    CHECKS.append(msg)
-    print("ok:", msg)
+check, CHECKS = common.make_check()
 
 
 def render_mean(sc, plane, mat):

@@ -64,18 +64,7 @@ def scene():
     sc.cycles.use_denoising = False
     sc.cycles.pixel_filter_type = "BOX"
     sc.cycles.filter_width = 0.01
-    sc.render.resolution_x = sc.render.resolution_y = N
-    sc.render.resolution_percentage = 100
-    sc.render.image_settings.file_format = "OPEN_EXR"
-    sc.render.image_settings.color_depth = "32"
-    sc.view_settings.view_transform = "Standard"
-    cd = bpy.data.cameras.new("C")
-    cd.type = "ORTHO"
-    cd.ortho_scale = 2.0
-    co = bpy.data.objects.new("C", cd)
-    sc.collection.objects.link(co)
-    co.location = (0, 0, 3)
-    sc.camera = co
+    common.ortho_exr_camera(sc, N, N, 2.0)
     return sc
 
 

@@ -37,14 +37,7 @@ import common  # noqa: E402
 A = common.args()
 TMP = A["tmp"]
 RAIN, EVAP, SAT = 10.0, 0.5, 2e-4          # mm/h, mm/h, m: soak bake rain's defaults
-CHECKS = []
-
-
-def check(cond, msg):
-    if not cond:
-        common.fail(msg)
-    CHECKS.append(msg)
-    print("ok:", msg)
+check, CHECKS = common.make_check()
 
 
 def flat_film(t, rate=RAIN):

@@ -32,13 +32,7 @@ import common  # noqa: E402
 
 A = common.args()
 COAT = "Coat Weight" if bpy.app.version >= (4, 0, 0) else "Clearcoat"
-CHECKS = []
-
-
-def check(cond, msg):
-    if not cond:
-        common.fail(msg)
-    CHECKS.append(msg)
+check, CHECKS = common.make_check(quiet=True)
 
 
 def groups():

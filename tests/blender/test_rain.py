@@ -61,14 +61,7 @@ SIZE_M = 0.5             # the plane's side = the ripple tile: one tile over the
 FPS = 2
 START, END, LAST = 3, 29, 40
 TOL = 2e-3               # EXR half values through a linear lookup at the texel centre +- 0.005 px
-CHECKS = []
-
-
-def check(cond, msg):
-    if not cond:
-        common.fail(msg)
-    CHECKS.append(msg)
-    print("ok:", msg)
+check, CHECKS = common.make_check()
 
 
 def scene():

@@ -83,18 +83,7 @@ def scene():
     sc.cycles.use_denoising = False
     sc.cycles.pixel_filter_type = "BOX"
     sc.cycles.filter_width = 0.01
-    sc.render.resolution_x, sc.render.resolution_y = 2 * N, N
-    sc.render.resolution_percentage = 100
-    sc.render.image_settings.file_format = "OPEN_EXR"
-    sc.render.image_settings.color_depth = "32"
-    sc.view_settings.view_transform = "Standard"
-    cd = bpy.data.cameras.new("C")
-    cd.type = "ORTHO"
-    cd.ortho_scale = 4.0
-    co = bpy.data.objects.new("C", cd)
-    sc.collection.objects.link(co)
-    co.location = (0, 0, 3)
-    sc.camera = co
+    common.ortho_exr_camera(sc, 2 * N, N, 4.0)
     planes = []
     for x in (-1.0, 1.0):
         bpy.ops.mesh.primitive_plane_add(size=2, location=(x, 0, 0))

@@ -41,3 +41,17 @@ void surface_mesh_free(soak_mesh *m)
     free(m->indices);
     free(m->normals);
 }
+
+void surface_rain_params(soak_rain_params *p, soak_vec3 rain_dir)
+{
+    soak_rain_defaults(p);
+    p->rays = 1;
+    p->spread_deg = 0;
+    p->rain_dir = rain_dir;
+    p->duration = 60;
+    p->steps = 1;
+    p->flow_iterations = 1;
+    p->evaporation_mm_h = 0;
+    p->rainfall_mm_h = 20;
+    p->gutter = 0;
+}

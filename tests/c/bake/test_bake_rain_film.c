@@ -42,20 +42,6 @@ static void tilted_plane(double u, double v, double out[3])
     out[2] = v * PLANE_L * plane_sin;
 }
 
-static void plane_params(soak_rain_params *p, soak_vec3 rain_dir)
-{
-    soak_rain_defaults(p);
-    p->rays = 1; /* spread 0: every ray is rain_dir, E = n.rain_dir / rain_dir.up exactly */
-    p->spread_deg = 0;
-    p->rain_dir = rain_dir;
-    p->duration = 60;
-    p->steps = 1;
-    p->flow_iterations = 1;
-    p->evaporation_mm_h = 0;
-    p->rainfall_mm_h = 20;
-    p->gutter = 0;
-}
-
 /* Film along the centre column against Nusselt's formula with q the rain
  * on the face above the texel's lower edge, per unit width. */
 static void check_plane(double theta_deg, soak_vec3 rain_dir, double exposure, const char *name)
@@ -67,7 +53,7 @@ static void check_plane(double theta_deg, soak_vec3 rain_dir, double exposure, c
     soak_mesh m;
     surface_mesh(&m, N, N, tilted_plane);
     soak_rain_params p;
-    plane_params(&p, rain_dir);
+    surface_rain_params(&p, rain_dir);
     soak_rain_result r;
     char err[256] = "", what[160];
     if (!check_status(name, soak_bake_rain(&m, N, N, &p, NULL, &r, err, sizeof err), SOAK_OK)) {

@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "surface_mesh.h"
 #include "soak/bake_rain.h"
 
 /* Water at 20 C (CRC Handbook) and standard gravity, written out here. */
@@ -101,20 +102,6 @@ static void add_chart(builder *b, int M, place_fn place, double deg, int (*skip)
         }
 }
 
-static void base_params(soak_rain_params *p, soak_vec3 rain_dir)
-{
-    soak_rain_defaults(p);
-    p->rays = 1; /* spread 0: every ray is rain_dir, E = n.rain_dir / rain_dir.up exactly */
-    p->spread_deg = 0;
-    p->rain_dir = rain_dir;
-    p->duration = 60;
-    p->steps = 1;
-    p->flow_iterations = 1;
-    p->evaporation_mm_h = 0;
-    p->rainfall_mm_h = 20;
-    p->gutter = 0;
-}
-
 /* ---- the uniform plane ---- */
 
 static const double THETA = 30.0 * SOAK_PI / 180.0;
@@ -143,7 +130,7 @@ static void check_uniform_plane(double deg)
     memset(&b, 0, sizeof b);
     add_chart(&b, 16, tilted, deg, NULL);
     soak_rain_params p;
-    base_params(&p, soak_v3(0, 0, 1));
+    surface_rain_params(&p, soak_v3(0, 0, 1));
     soak_rain_result r;
     char err[256] = "", what[200];
     snprintf(what, sizeof what, "plane, UVs turned %g deg: bake", deg);
@@ -231,7 +218,7 @@ static void check_ledge(double deg, double min_dry)
     double lo[3] = {LX0, -LD, LZ0}, hi[3] = {LX1, 0.0, LZ1};
     add_box(&b, lo, hi);
     soak_rain_params p;
-    base_params(&p, soak_v3(0, -1, 1)); /* 45 deg onto the wall: its shadow is z in [LZ0 - LD, LZ0] */
+    surface_rain_params(&p, soak_v3(0, -1, 1)); /* 45 deg onto the wall: its shadow is z in [LZ0 - LD, LZ0] */
     soak_rain_result r;
     char err[256] = "", what[200];
     snprintf(what, sizeof what, "ledge, UVs turned %g deg: bake", deg);
