@@ -11,6 +11,7 @@
 
 #include "bake_rain_film.h"
 #include "bake_rain_flow.h"
+#include "bake_rain_level.h"
 #include "bake_rain_scene.h"
 #include "bake_rain_surface.h"
 
@@ -238,6 +239,7 @@ static soak_status add_film(const rain_surface *s, const soak_rain_params *p, co
 typedef struct water_flow {
     const soak_rain_flow_grid *grid;
     soak_rain_flow_plan *plan;
+    soak_rain_level_plan *puddles; /* NULL: no flow */
     size_t *order, count;
     double *inflow;
     unsigned char *fast; /* 1 where the film is thicker than the static retention */
@@ -261,6 +263,7 @@ static soak_status rain_step(water_job *j, const water_flow *f, int step, const 
     if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, add_deposit_row, j, lo, lo);
     if (st == SOAK_OK && f->order)
         st = soak_rain_flow_cascade(f->grid, f->fast, f->order, f->count, j->depth, f->inflow, &dripped);
+    if (st == SOAK_OK && f->puddles) st = soak_rain_level_run(f->puddles, j->depth);
     if (st == SOAK_OK) st = soak_rain_flow_run(f->plan, j->depth, j->p->flow_iterations, exec, lo, lo);
     j->evaporation = f->evaporation;
     if (st == SOAK_OK) st = soak_parallel_rows(s->h, exec, evaporate_row, j, lo, lo);
@@ -310,6 +313,7 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
     }
     if (st == SOAK_OK) st = prepare_film(s, p, exposure, &j, &f, film, runoff);
     if (st == SOAK_OK) st = soak_rain_flow_create(&grid, exec, SOAK_RAIN_FLOW_AUTO, &f.plan);
+    if (st == SOAK_OK && p->flow_iterations > 0) st = soak_rain_level_create(&grid, &f.puddles);
     double dt = p->duration / p->steps;
     f.evaporation = p->evaporation_mm_h / 3.6e6 * dt;
     j.drop_volume = SOAK_PI / 6.0 * p->drop_diameter * p->drop_diameter * p->drop_diameter;
@@ -317,6 +321,7 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
     f.sigma_texels = s->mean_texel > 0.0 ? p->splat_radius / s->mean_texel : 0.0;
     for (int step = 0; step < p->steps && st == SOAK_OK; ++step) st = rain_step(&j, &f, step, exec);
     soak_rain_flow_destroy(f.plan);
+    soak_rain_level_destroy(f.puddles);
     free(f.order);
     free(f.inflow);
     free(f.fast);

@@ -7,6 +7,7 @@
 
 #include "bake_rain_film.h"
 #include "bake_rain_flow.h"
+#include "bake_rain_level.h"
 #include "bake_rain_scene.h"
 #include "bake_rain_wave.h"
 #include "soak/bake_rain.h"
@@ -26,6 +27,7 @@ struct soak_rain_frames {
     soak_rain_scene sc;
     soak_rain_flow_grid grid;
     soak_rain_flow_plan *plan;
+    soak_rain_level_plan *puddles; /* NULL: no flow */
     int plan_threads; /* the most threads plan sweeps with */
     size_t *order, count;
     double *retain, *kappa, *source, *inflow;
@@ -37,6 +39,7 @@ void soak_rain_frames_destroy(soak_rain_frames *f)
 {
     if (!f) return;
     soak_rain_flow_destroy(f->plan);
+    soak_rain_level_destroy(f->puddles);
     soak_rain_scene_free(&f->sc);
     free(f->order);
     free(f->retain);
@@ -89,6 +92,7 @@ static soak_status frames_alloc(soak_rain_frames *f, const soak_bake_exec *exec)
     soak_status st = film_faces(f);
     if (st == SOAK_OK) st = soak_rain_flow_order(&f->grid, &f->order, &f->count);
     if (st == SOAK_OK) st = soak_rain_flow_create(&f->grid, exec, SOAK_RAIN_FLOW_AUTO, &f->plan);
+    if (st == SOAK_OK && f->p.flow_iterations > 0) st = soak_rain_level_create(&f->grid, &f->puddles);
     f->plan_threads = soak_bake_threads(exec);
     return st;
 }
@@ -159,6 +163,7 @@ static soak_status advance(soak_rain_frames *f, rain_state *s, double tau, int r
                                          s->depth, f->inflow, &dripped);
     s->bal.dripped += dripped;
     double before = volume(f, s->depth);
+    if (st == SOAK_OK && f->puddles) st = soak_rain_level_run(f->puddles, s->depth);
     if (st == SOAK_OK) st = soak_rain_flow_run(f->plan, s->depth, f->p.flow_iterations, exec, at, at);
     s->bal.dripped += before - volume(f, s->depth);
     evap_job j = {f, s->depth, calloc((size_t)f->sc.h, sizeof(double)), f->evap_m_s * tau};

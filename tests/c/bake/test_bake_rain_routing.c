@@ -12,7 +12,11 @@
  *    UV layout turned by 0, 90 and 135 deg (85 % at 30 deg, see main);
  *  - mass: on the ledged wall the rain in equals dripped + held +
  *    evaporated (1e-9), and it equals rainfall * (the wall's area in the
- *    rain less the shadow's) to 2 %. */
+ *    rain less the shadow's) to 2 %;
+ *  - puddles level: on a plane rising 0.2 m per metre with a Gaussian dip,
+ *    the water in the dip stands no higher than its sill (the saddle of
+ *    z(t) along the dip's axis, found here by bisection on dz/dt = 0), its
+ *    surface is flat, and in = dripped + held + evaporated. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -257,8 +261,92 @@ static void check_ledge(double deg, double min_dry)
     builder_free(&b);
 }
 
+/* ---- the tilted dip ---- */
+
+/* z = RISE t - DIP exp(-r^2 / (2 SIG2)), r from the chart's centre. */
+static const double RISE = 0.2, DIP = 0.08, SIG2 = 0.01;
+
+static void dipped(double s, double t, double p[3])
+{
+    double r2 = (s - 0.5) * (s - 0.5) + (t - 0.5) * (t - 0.5);
+    p[0] = s, p[1] = t, p[2] = RISE * t - DIP * exp(-r2 / (2 * SIG2));
+}
+
+static double dip_z(double t) { return RISE * t - DIP * exp(-(t - 0.5) * (t - 0.5) / (2 * SIG2)); }
+static double dip_dz(double t) { return RISE + DIP * (t - 0.5) / SIG2 * exp(-(t - 0.5) * (t - 0.5) / (2 * SIG2)); }
+
+/* The root of dz/dt in [a, b] (a sign change), by bisection. */
+static double dz_root(double a, double b)
+{
+    for (int k = 0; k < 100; ++k) {
+        double m = 0.5 * (a + b);
+        if ((dip_dz(m) > 0) == (dip_dz(a) > 0)) a = m;
+        else b = m;
+    }
+    return 0.5 * (a + b);
+}
+
+static void check_tilted_dip(void)
+{
+    const int N = 64;
+    builder b;
+    memset(&b, 0, sizeof b);
+    add_chart(&b, 64, dipped, 0.0, NULL);
+    soak_rain_params p;
+    surface_rain_params(&p, soak_v3(0, 0, 1));
+    p.duration = 1200, p.steps = 32, p.flow_iterations = 16, p.rainfall_mm_h = 10, p.rays = 4;
+    soak_rain_result r;
+    char err[256] = "";
+    if (!check_status("tilted dip: bake", soak_bake_rain(&b.m, N, N, &p, NULL, &r, err, sizeof err), SOAK_OK)) {
+        builder_free(&b);
+        return;
+    }
+    /* Along the axis s = 0.5 the pit is where dz/dt = 0 near the centre and
+     * the sill (the saddle the pool spills over) the root downhill of it. */
+    double pit = dz_root(0.5 - 0.1, 0.5), sill = dz_root(0.5 - 0.35, 0.5 - 0.1);
+    double z_sill = dip_z(sill), sill_depth = z_sill - dip_z(pit);
+    /* Texel levels are the surface at texel centres: a pool filled to the
+     * discrete sill can stand above the continuous one by the plane's rise
+     * over one texel (the Gaussian's slope cancels the plane's at the
+     * saddle). */
+    double texel = 1.0 / (0.7 * N), tol = RISE * texel;
+    double deepest = 0.0, top = -1e9, low = 1e9;
+    int wet = 0;
+    for (int y = 0; y < N; ++y)
+        for (int x = 0; x < N; ++x) {
+            size_t i = (size_t)y * N + x;
+            double st[2];
+            texel_chart(x, y, N, 0.0, st);
+            if (r.coverage.pixels[i] < 0.5f) continue;
+            double p3[3], d = r.water.pixels[i];
+            dipped(st[0], st[1], p3);
+            if (p3[2] > z_sill || st[1] < sill) continue; /* the dip: below its sill, uphill of the saddle */
+            if (d > deepest) deepest = d;
+            if (d > 1e-3) { /* the pool: water over the 1 mm static film */
+                ++wet;
+                top = fmax(top, p3[2] + d);
+                low = fmin(low, p3[2] + d);
+            }
+        }
+    printf("tilted dip: sill depth %.2f cm, deepest water %.2f cm, pool surface range %.2f mm over %d texels\n",
+           100 * sill_depth, 100 * deepest, 1000 * (top - low), wet);
+    char what[200];
+    snprintf(what, sizeof what, "tilted dip: deepest water %.2f cm <= sill depth %.2f cm + %.2f cm", 100 * deepest,
+             100 * sill_depth, 100 * tol);
+    check_true(what, deepest <= sill_depth + tol);
+    check_true("tilted dip: a pool forms (>= 20 texels over 1 mm)", wet >= 20);
+    snprintf(what, sizeof what, "tilted dip: pool surface flat within %.2f mm (range %.2f mm)", 1000 * tol,
+             1000 * (top - low));
+    check_true(what, top - low <= tol);
+    const soak_rain_runoff *o = &r.runoff;
+    check_rel("tilted dip: in = dripped + held + evaporated", o->dripped + o->held + o->evaporated, o->in, 1e-9);
+    soak_rain_result_free(&r);
+    builder_free(&b);
+}
+
 int main(void)
 {
+    check_tilted_dip();
     const double plane_turns[4] = {0, 90, 30, 45};
     for (int k = 0; k < 4; ++k) check_uniform_plane(plane_turns[k]);
     /* Along the grid's axes and diagonals the shadow is dry; at 30 deg the

@@ -52,6 +52,12 @@
  *      the surface (an open edge) or that faces down (n.up < -1e-6, an
  *      overhang; an exactly vertical face is not one) drains its mobile water
  *      off the mesh (drips). flow_iterations routing sweeps per step.
+ *    - puddles (flow_iterations > 0): before the sweeps, the water in each
+ *      depression of the surface becomes a horizontal surface no higher
+ *      than its spill level, from a priority flood of the levels (Barnes,
+ *      Lehman & Mulla 2014, "Priority-Flood", Computers & Geosciences 62,
+ *      117-127); what exceeds the depression's capacity goes to its sill
+ *      texel and flows on. Volume is conserved.
  *    - falling film (film = 1): a face steeper than flat keeps, besides
  *      the static film retention * max(0, n.up), the film that runs over it
  *      while rain falls. W. Nusselt, "Die Oberflaechenkondensation des
@@ -133,8 +139,8 @@
  *      h^2 (t - duration), so long after the rain h -> sqrt(nu x / (g sin
  *      theta (t - duration))) (H. Jeffreys, "The draining of a vertical
  *      plate", Proc. Camb. Phil. Soc. 26 (1930) 204-205; nu = mu / rho).
- *    - the sweeps of step 3 level the water of every other texel (puddles,
- *      flats, gentle slopes), not the film's faces;
+ *    - step 3's puddle filling, then its sweeps, level the water of every
+ *      other texel (puddles, flats, gentle slopes), not the film's faces;
  *    - evaporation, during and after the rain, as in step 3.
  *    Wetness as in step 4 with the film the water on the film's faces
  *    (film >= SOAK_RAIN_FILM_RUNNING: w = 1); once the film has drained
