@@ -115,9 +115,9 @@ def make_check(quiet=False):
     return check, checks
 
 
-def ortho_exr_camera(sc, width, height, ortho_scale):
+def ortho_exr_camera(sc, width, height, ortho_scale, z=3.0):
     """sc renders width x height 32-bit EXR in the Standard view through an
-    orthographic camera at (0, 0, 3) looking down, ortho_scale wide."""
+    orthographic camera at (0, 0, z) looking down, ortho_scale wide."""
     sc.render.resolution_x, sc.render.resolution_y = width, height
     sc.render.resolution_percentage = 100
     sc.render.image_settings.file_format = "OPEN_EXR"
@@ -128,7 +128,7 @@ def ortho_exr_camera(sc, width, height, ortho_scale):
     cd.ortho_scale = ortho_scale
     co = bpy.data.objects.new("C", cd)
     sc.collection.objects.link(co)
-    co.location = (0, 0, 3)
+    co.location = (0, 0, z)
     sc.camera = co
 
 
@@ -187,3 +187,20 @@ def add_case_sun(sc, cases, back_lit=False):
     sc.collection.objects.link(lo)
     # a sun shines along its local -z: rotate -z onto -d
     lo.rotation_euler = d.to_track_quat("Z", "Y").to_euler()
+
+
+def box_filtered_scene(width, height, ortho_scale):
+    """The current scene emptied of objects, materials and meshes, set to one
+    Cycles sample, no denoising and a box filter narrower than a pixel (each
+    pixel sees its own centre), rendered through ortho_exr_camera."""
+    for coll in (bpy.data.objects, bpy.data.materials, bpy.data.meshes):
+        for item in list(coll):
+            coll.remove(item)
+    sc = bpy.context.scene
+    sc.render.engine = "CYCLES"
+    sc.cycles.samples = 1
+    sc.cycles.use_denoising = False
+    sc.cycles.pixel_filter_type = "BOX"
+    sc.cycles.filter_width = 0.01
+    ortho_exr_camera(sc, width, height, ortho_scale)
+    return sc

@@ -55,17 +55,7 @@ NEW_DRY = (0.2, 0.45, 0.7)
 
 
 def scene():
-    for coll in (bpy.data.objects, bpy.data.materials, bpy.data.meshes):
-        for item in list(coll):
-            coll.remove(item)
-    sc = bpy.context.scene
-    sc.render.engine = "CYCLES"
-    sc.cycles.samples = 1
-    sc.cycles.use_denoising = False
-    sc.cycles.pixel_filter_type = "BOX"
-    sc.cycles.filter_width = 0.01
-    common.ortho_exr_camera(sc, N, N, 2.0)
-    return sc
+    return common.box_filtered_scene(N, N, 2.0)
 
 
 def make(name, quality, source):

@@ -77,22 +77,11 @@ def scene():
     sc.cycles.filter_width = 0.01
     sc.render.fps, sc.render.fps_base = FPS, 1.0
     sc.frame_start, sc.frame_end = 1, LAST
-    sc.render.resolution_x = sc.render.resolution_y = N
-    sc.render.resolution_percentage = 100
-    sc.render.image_settings.file_format = "OPEN_EXR"
-    sc.render.image_settings.color_depth = "32"
-    sc.view_settings.view_transform = "Standard"
     world = bpy.data.worlds.new("W")
     common.use_nodes(world)
     world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
     sc.world = world
-    cd = bpy.data.cameras.new("C")
-    cd.type = "ORTHO"
-    cd.ortho_scale = SIZE_M
-    co = bpy.data.objects.new("C", cd)
-    sc.collection.objects.link(co)
-    co.location = (0, 0, 2)
-    sc.camera = co
+    common.ortho_exr_camera(sc, N, N, SIZE_M, z=2.0)
     bpy.ops.mesh.primitive_plane_add(size=SIZE_M)
     board = bpy.context.object
     board.name = "Board"

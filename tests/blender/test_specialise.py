@@ -74,16 +74,7 @@ def curve_term(rows, knots):
 
 
 def scene():
-    for coll in (bpy.data.objects, bpy.data.materials, bpy.data.meshes):
-        for item in list(coll):
-            coll.remove(item)
-    sc = bpy.context.scene
-    sc.render.engine = "CYCLES"
-    sc.cycles.samples = 1
-    sc.cycles.use_denoising = False
-    sc.cycles.pixel_filter_type = "BOX"
-    sc.cycles.filter_width = 0.01
-    common.ortho_exr_camera(sc, 2 * N, N, 4.0)
+    sc = common.box_filtered_scene(2 * N, N, 4.0)
     planes = []
     for x in (-1.0, 1.0):
         bpy.ops.mesh.primitive_plane_add(size=2, location=(x, 0, 0))
