@@ -31,19 +31,10 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 # adds or removes a file of the same module does not fail). An entry whose
 # circle is gone is reported: delete it.
 ALLOWED = {
-    # The core layer's image I/O: the staged writer asks the image module
-    # whether it can write a path (soak_image_output_ready) while the image
-    # writer stages through it, and the containment checks allocate images.
-    ("core/image", "core/staged_files"):
-        "core's own image I/O and staged outputs",
     # The rain flow and its AVX2/AVX-512 kernels through the rows they share
     # (bake_rain_flow_rows.h); issue 44 gives bake_rain_flow.c to "rain".
     ("bake/bake_rain_flow",):
         "the rain flow's dispatch to its vector kernels (rain's, issue 44)",
-    # export.c dispatches to the writers, which take soak_export_header_make
-    # from it; the writers' shared preamble is "safety"'s part of issue 44.
-    ("export/export",):
-        "the writers' preamble in export.c (safety's, issue 44)",
 }
 
 

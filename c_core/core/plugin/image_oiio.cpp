@@ -1,5 +1,5 @@
 // libsoak_image.so: OpenImageIO behind soak/image.h (the table of
-// core/src/image_plugin.h). Loaded by core/src/image.c on a command's first
+// core/src/image_plugin.h). Loaded by core/src/image_plugin.c on a command's first
 // image, so that commands without images do not map OpenImageIO's 260
 // libraries. Calls nothing of libsoak; no exception leaves the module.
 #include <OpenImageIO/imageio.h>

@@ -16,49 +16,7 @@
 #include "stderr_capture.h"
 #include "soak/image_check.h"
 #include "soak/input_file.h"
-#include "soak/plugin.h"
 #include "soak/staged.h"
-
-/* Written once under pthread_once, read-only afterwards (soak/plugin.h). */
-static soak_plugin_slot image_slot =
-    SOAK_PLUGIN_SLOT(SOAK_IMAGE_PLUGIN_FILE, SOAK_IMAGE_PLUGIN_SYMBOL, "image I/O (OpenImageIO)");
-
-static void image_slot_fill(void)
-{
-    soak_plugin_slot_fill(&image_slot);
-}
-
-static const soak_image_plugin *image_plugin(const char *path, char *err, size_t errlen)
-{
-    pthread_once(&image_slot.once, image_slot_fill);
-    char why[1600];
-    const soak_image_plugin *p = soak_plugin_slot_table(&image_slot, why, sizeof why);
-    if (!p && err && errlen) snprintf(err, errlen, "%s: %s", path, why);
-    return p;
-}
-
-soak_status soak_image_alloc(soak_image *img, int width, int height, int channels)
-{
-    if (!img) return SOAK_ERR_NULL;
-    img->pixels = NULL;
-    if (!(width >= 1 && width <= 65536 && height >= 1 && height <= 65536 && channels >= 1 && channels <= 4))
-        return SOAK_ERR_ARG;
-    size_t n = (size_t)width * (size_t)height * (size_t)channels;
-    img->pixels = calloc(n, sizeof(float));
-    if (!img->pixels) return SOAK_ERR_NOMEM;
-    img->width = width;
-    img->height = height;
-    img->channels = channels;
-    return SOAK_OK;
-}
-
-void soak_image_free(soak_image *img)
-{
-    if (!img) return;
-    free(img->pixels);
-    img->pixels = NULL;
-    img->width = img->height = img->channels = 0;
-}
 
 int soak_path_same(const char *a, const char *b)
 {
@@ -106,7 +64,7 @@ soak_status soak_image_read(const char *path, soak_image *img, char *err, size_t
     long long payload = size;
     st = soak_image_check_header(path, &payload, err, errlen);
     if (st != SOAK_OK) return st;
-    const soak_image_plugin *p = image_plugin(path, err, errlen);
+    const soak_image_plugin *p = soak_image_plugin_for(path, err, errlen);
     if (!p) return SOAK_ERR_UNSUPPORTED;
     st = soak_image_read_contained(p, path, payload, img, err, errlen);
     if (st != SOAK_OK) {
@@ -128,7 +86,7 @@ soak_status soak_image_probe(const char *path, soak_image_info *info, char *err,
     info->payload_bytes = size;
     st = soak_image_check_header(path, &info->payload_bytes, err, errlen);
     if (st != SOAK_OK) return st;
-    const soak_image_plugin *p = image_plugin(path, err, errlen);
+    const soak_image_plugin *p = soak_image_plugin_for(path, err, errlen);
     if (!p) return SOAK_ERR_UNSUPPORTED;
     soak_stderr_capture quiet;
     soak_stderr_capture_begin(&quiet);
@@ -138,29 +96,6 @@ soak_status soak_image_probe(const char *path, soak_image_info *info, char *err,
     return st;
 }
 
-/* path's extension in lower case ("" when it has none). */
-static void extension_of(const char *path, char *ext, size_t n)
-{
-    const char *slash = strrchr(path, '/');
-    const char *dot = strrchr(path, '.');
-    ext[0] = '\0';
-    if (!dot || (slash && dot < slash) || strlen(dot + 1) >= n) return;
-    size_t i = 0;
-    for (const char *c = dot + 1; *c; ++c) ext[i++] = (char)(*c >= 'A' && *c <= 'Z' ? *c - 'A' + 'a' : *c);
-    ext[i] = '\0';
-}
-
-soak_status soak_image_output_ready(const char *path, char *err, size_t errlen)
-{
-    static const char *const image_ext[] = {"exr", "png", "tif", "tiff", "jpg", "jpeg", "hdr", "tx"};
-    if (!path) return SOAK_ERR_NULL;
-    char ext[32];
-    extension_of(path, ext, sizeof ext);
-    for (size_t i = 0; i < sizeof image_ext / sizeof image_ext[0]; ++i)
-        if (!strcmp(ext, image_ext[i])) return image_plugin(path, err, errlen) ? SOAK_OK : SOAK_ERR_UNSUPPORTED;
-    return SOAK_OK;
-}
-
 soak_status soak_image_stage(soak_staged *stage, const char *path, const soak_image *img,
                              const soak_image_write_opts *opts, char *err, size_t errlen)
 {
@@ -168,14 +103,14 @@ soak_status soak_image_stage(soak_staged *stage, const char *path, const soak_im
     soak_status st = soak_output_path_check(path, err, errlen);
     if (st != SOAK_OK) return st;
     char ext[32];
-    extension_of(path, ext, sizeof ext);
+    soak_image_extension_of(path, ext, sizeof ext);
     if (!ext[0]) {
         if (err && errlen) snprintf(err, errlen, "%s: output needs an extension (.exr, .png, .tif, ...)", path);
         return SOAK_ERR_ARG;
     }
     soak_image_write_opts o = {SOAK_TONE_LINEAR, SOAK_PIXEL_AUTO};
     if (opts) o = *opts;
-    const soak_image_plugin *p = image_plugin(path, err, errlen);
+    const soak_image_plugin *p = soak_image_plugin_for(path, err, errlen);
     if (!p) return SOAK_ERR_UNSUPPORTED;
     unsigned char *bytes = NULL;
     size_t n = 0;
@@ -202,7 +137,7 @@ soak_status soak_image_stage_tx(soak_staged *stage, const char *path, const soak
                                 size_t errlen)
 {
     if (!stage || !path || !img || !img->pixels) return SOAK_ERR_NULL;
-    const soak_image_plugin *p = image_plugin(path, err, errlen);
+    const soak_image_plugin *p = soak_image_plugin_for(path, err, errlen);
     if (!p) return SOAK_ERR_UNSUPPORTED;
     const char *tmp = NULL;
     soak_status st = soak_staged_add(stage, path, &tmp, err, errlen);

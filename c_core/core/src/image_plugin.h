@@ -43,4 +43,11 @@ typedef struct soak_image_plugin {
 #define SOAK_IMAGE_PLUGIN_FILE "libsoak_image.so"
 #define SOAK_IMAGE_PLUGIN_SYMBOL "soak_image_plugin_v3"
 
+/* The loaded table, or NULL with err naming path and why the library could
+ * not be opened (image_plugin.c). */
+const soak_image_plugin *soak_image_plugin_for(const char *path, char *err, size_t errlen);
+
+/* path's extension in lower case ("" when it has none or it is n or longer). */
+void soak_image_extension_of(const char *path, char *ext, size_t n);
+
 #endif

@@ -1,9 +1,8 @@
-/* soak export: the table of target writers, the reproducible header and the
- * atomic file output every target shares. */
+/* soak export: the table of target writers and the atomic file output every
+ * target shares (the writers' common header: export_header.c). */
 #define _POSIX_C_SOURCE 200809L
 #include "soak/export.h"
 
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -40,46 +39,6 @@ const soak_export_target *soak_export_find_target(const char *name)
     for (size_t i = 0; i < sizeof targets / sizeof targets[0]; ++i)
         if (strcmp(targets[i].name, name) == 0) return &targets[i];
     return NULL;
-}
-
-/* FNV-1a, 64 bit: a content fingerprint, not a security hash. */
-static uint64_t fnv1a64(const unsigned char *p, size_t n, uint64_t h)
-{
-    for (size_t i = 0; i < n; ++i) {
-        h ^= p[i];
-        h *= 0x100000001b3ULL;
-    }
-    return h;
-}
-
-soak_status soak_export_header_make(const soak_preset_db *db, soak_export_header *h)
-{
-    if (!db || !h) return SOAK_ERR_NULL;
-    memset(h, 0, sizeof *h);
-    h->generator = SOAK_EXPORT_GENERATOR;
-    h->format_version = SOAK_EXPORT_FORMAT_VERSION;
-    const char *path = soak_presets_path(db);
-    const char *slash = strrchr(path, '/');
-    snprintf(h->materials_file, sizeof h->materials_file, "%s", slash ? slash + 1 : path);
-    FILE *f = fopen(path, "rb");
-    if (!f) return SOAK_ERR_IO;
-    uint64_t hash = 0xcbf29ce484222325ULL;
-    unsigned char buf[8192];
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, f)) > 0) hash = fnv1a64(buf, n, hash);
-    int bad = ferror(f);
-    fclose(f);
-    if (bad) return SOAK_ERR_IO;
-    snprintf(h->materials_hash, sizeof h->materials_hash, "%016llx", (unsigned long long)hash);
-    return SOAK_OK;
-}
-
-soak_status soak_export_begin(const soak_preset_db *db, FILE *out, char *err, size_t errlen, soak_export_header *h)
-{
-    if (!db || !out || !err || !errlen || !h) return SOAK_ERR_NULL;
-    soak_status st = soak_export_header_make(db, h);
-    if (st != SOAK_OK) snprintf(err, errlen, "%s: cannot read the preset file to hash it", soak_presets_path(db));
-    return st;
 }
 
 static soak_status write_all(const char *text, size_t len, FILE *f)
