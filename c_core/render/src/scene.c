@@ -4,7 +4,6 @@
 #include "soak/scene.h"
 #include "soak/input_file.h"
 #include "soak/preset.h"
-#include "soak/render.h"
 
 #include <errno.h>
 #include <math.h>

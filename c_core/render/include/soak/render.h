@@ -31,11 +31,9 @@
 #include "soak/scene.h"
 #include "soak/status.h"
 
-/* Limits of soak_render_options and of a scene's "render" block (scene.c);
- * `soak render` takes its option ranges from here. */
-#define SOAK_RENDER_MAX_SIZE 16384    /* width, height */
-#define SOAK_RENDER_MAX_SPP 10000000  /* samples per pixel */
-#define SOAK_RENDER_MAX_DEPTH 100000  /* path length */
+/* Limits of soak_render_options beyond those of a scene's "render" block
+ * (SOAK_RENDER_MAX_SIZE, _SPP, _DEPTH: soak/scene.h); `soak render` takes
+ * its option ranges from these. */
 #define SOAK_RENDER_MAX_THREADS 256
 #define SOAK_RENDER_MAX_TIME 1e9      /* time_limit, seconds */
 

@@ -164,6 +164,11 @@ typedef struct soak_object {
 
 /* Default of render.walk_guide (see soak_scene.walk_guide). */
 #define SOAK_RENDER_WALK_GUIDE 0.0
+/* Limits of a scene's "render" block (scene.c) and of the same
+ * soak_render_options (soak/render.h). */
+#define SOAK_RENDER_MAX_SIZE 16384   /* width, height */
+#define SOAK_RENDER_MAX_SPP 10000000 /* samples per pixel */
+#define SOAK_RENDER_MAX_DEPTH 100000 /* path length */
 
 typedef struct soak_scene {
     char path[1024];
