@@ -8,7 +8,10 @@
  * and 134 bytes of pending impacts per impact of one 4 s catch-up step
  * (16^2 maps, texel 0.5 and 1 m, 2.9 M and 11.4 M impacts); ripples
  * per ring, per profile sample and per texel a ring covers (six runs at
- * 32^2-256^2, see the constants). The constants are rounded
+ * 32^2-256^2, see the constants); rain per texel and time step (5.7e-8 s
+ * with no routing, 5.3e-9 s more per --flow-iterations sweep, 256^2 tilted
+ * plane, 400 steps) and per exposure ray (5e-8 s on two triangles), and
+ * 136-181 bytes per texel (512^2 and 1024^2, frames and single map). The constants are rounded
  * down, so the estimate is a lower bound: a refused bake would have
  * exceeded the budget. */
 #include <math.h>
@@ -23,6 +26,10 @@
 #define DROPS_S_PER_IMPACT 0.5e-6
 #define DROPS_BYTES_PER_IMPACT 128.0
 #define DROPS_STEP_S (64 * SOAK_DROPS_SLAB) /* CATCH_UP_SLABS of bake_drops_state.c */
+#define RAIN_S_PER_TEXEL_STEP 4e-8
+#define RAIN_S_PER_TEXEL_SWEEP 4e-9
+#define RAIN_S_PER_RAY 2e-8
+#define RAIN_BYTES_PER_TEXEL 128.0
 #define RIPPLE_S_PER_RING 1e-7              /* measured 2.2e-7 (32^2, tile 20 m: 0.77 M small rings) */
 #define RIPPLE_S_PER_SAMPLE 2e-8            /* exp, sin, cos of a profile sample */
 #define RIPPLE_S_PER_TEXEL 5e-9             /* measured 1.1-1.5e-8 (64^2 lifetime 5 s, 256^2 rate 50) */
@@ -106,4 +113,22 @@ int bake_ripples_budget(const char *cmd, const soak_ripples_params *p, long fram
              "%.3g texels each (--ring-width, --wavelength, --tile / --width), %ld frames",
              live, flux, p->tile_m * p->tile_m, max_age, texels, frames);
     return check(cmd, "this ripples bake", bytes, seconds, (double)p->size * p->size * frames, counts);
+}
+
+int bake_rain_budget(const char *cmd, const soak_rain_params *p, long width, long height, long frames,
+                     double last_time)
+{
+    double texels = (double)width * height, dt = p->duration / p->steps;
+    /* A sequence runs every whole step up to its last frame plus one cut
+     * step per frame; the single map runs --steps. */
+    double steps = frames > 0 ? floor(fmax(0.0, last_time) / dt) + (double)frames : (double)p->steps;
+    double per_step = RAIN_S_PER_TEXEL_STEP + RAIN_S_PER_TEXEL_SWEEP * p->flow_iterations;
+    double seconds = texels * (steps * per_step + p->rays * RAIN_S_PER_RAY);
+    char counts[320];
+    snprintf(counts, sizeof counts,
+             "%.3g texels (--width x --height) x (%.4g time steps of %g s (--duration / --steps%s) with %d routing "
+             "sweeps each (--flow-iterations) + %d rays (--rays))",
+             texels, steps, dt, frames > 0 ? ", up to the last frame's time" : "", p->flow_iterations, p->rays);
+    double out_texels = texels * (frames > 0 ? (double)frames : 1.0);
+    return check(cmd, "this rain bake", texels * RAIN_BYTES_PER_TEXEL, seconds, out_texels, counts);
 }

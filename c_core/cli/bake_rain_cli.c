@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_budget.h"
 #include "bake_cli.h"
 #include "bake_uv_cli.h"
 #include "cli.h"
@@ -381,6 +382,9 @@ int soak_bake_rain_main(int argc, char **argv)
         cli_error(CMD, "-o with <UDIM> bakes single maps: not with --frames");
         return SOAK_EXIT_USAGE;
     }
+    long frames = o.have_frames ? o.last - o.first + 1 : 0;
+    double last_time = o.have_frames ? fmax(bake_frame_time(&o, o.first), bake_frame_time(&o, o.last)) : 0.0;
+    if ((rc = bake_rain_budget(CMD, &a.p, o.width, o.height, frames, last_time)) != 0) return rc;
     if (o.have_frames) return run_frames(&a, &o);
     const char *paths[4] = {o.output, a.exposure_path, a.water_path, a.film_path};
     if (bake_uv_is_udim(o.output)) return bake_rain_udim(a.mesh_path, &a.p, &o, paths, &a.uvo);

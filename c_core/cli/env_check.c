@@ -36,7 +36,7 @@ static const env_var vars[] = {
     {"SOAK_MAX_MEMORY_MB", ENV_NUMBER, 64, 1e7, 0, "working memory of a bake, MiB (default: see above)"},
     {"SOAK_MESH_MEMORY_MB", ENV_NUMBER, 64, 1e7, 0, "memory of the mesh reader process, MiB"},
     {"SOAK_MAX_BAKE_S", ENV_NUMBER, 0, 1e9, 1,
-     "estimated work of a drops or ripples bake, s on one core\n(default 10 + 2e-6 per output texel)"},
+     "estimated work of a drops, ripples or rain bake, s on one\ncore (default 10 + 2e-6 per output texel)"},
     {"SOAK_MESH_TIMEOUT", ENV_NUMBER, 0, 1e6, 1, "time of the mesh reader process, s"},
     {"SOAK_IMAGE_TIMEOUT", ENV_NUMBER, 0, 1e6, 1, "time of the image reader process, s"},
 };
