@@ -30,10 +30,10 @@
 #define RAIN_S_PER_TEXEL_SWEEP 4e-9
 #define RAIN_S_PER_RAY 2e-8
 #define RAIN_BYTES_PER_TEXEL 128.0
-#define RIPPLE_S_PER_RING 1e-7              /* measured 2.2e-7 (32^2, tile 20 m: 0.77 M small rings) */
-#define RIPPLE_S_PER_SAMPLE 2e-8            /* exp, sin, cos of a profile sample */
-#define RIPPLE_S_PER_TEXEL 5e-9             /* measured 1.1-1.5e-8 (64^2 lifetime 5 s, 256^2 rate 50) */
-#define RIPPLE_BYTES_PER_RING 48.0          /* struct ring */
+#define RIPPLE_S_PER_RING 1e-7     /* measured 2.2e-7 (32^2, tile 20 m: 0.77 M small rings) */
+#define RIPPLE_S_PER_SAMPLE 2e-8   /* exp, sin, cos of a profile sample */
+#define RIPPLE_S_PER_TEXEL 5e-9    /* measured 1.1-1.5e-8 (64^2 lifetime 5 s, 256^2 rate 50) */
+#define RIPPLE_BYTES_PER_RING 48.0 /* struct ring */
 #define RIPPLE_BYTES_PER_SAMPLE 16.0
 #define RIPPLE_PROFILE_STEP 0.25 /* texels, bake_ripples.c */
 #define RIPPLE_ENVELOPE_SIGMAS 3.5
@@ -115,8 +115,7 @@ int bake_ripples_budget(const char *cmd, const soak_ripples_params *p, long fram
     return check(cmd, "this ripples bake", bytes, seconds, (double)p->size * p->size * frames, counts);
 }
 
-int bake_rain_budget(const char *cmd, const soak_rain_params *p, long width, long height, long frames,
-                     double last_time)
+int bake_rain_budget(const char *cmd, const soak_rain_params *p, long width, long height, long frames, double last_time)
 {
     double texels = (double)width * height, dt = p->duration / p->steps;
     /* A sequence runs every whole step up to its last frame plus one cut

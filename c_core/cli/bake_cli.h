@@ -50,6 +50,11 @@ typedef struct bake_opts {
     double time, frame_time;
     long origin; /* --frame-origin: the frame baked at `time` */
     int have_origin;
+    /* 1: the command plans every output together afterwards
+     * (bake_plan_check), so bake_opts_check checks each path but plans
+     * none: a plan of -o alone would sweep a killed run's journal of the
+     * whole set without knowing the set's other outputs. */
+    int plan_later;
 } bake_opts;
 
 /* Defaults: 1024 x 1024, seed 0, time and frame_time as given. */

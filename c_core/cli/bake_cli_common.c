@@ -172,6 +172,7 @@ int bake_opts_check(const bake_opts *o, const char *const *inputs, int n_inputs)
             return st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
         }
     }
+    if (o->plan_later) return 0;
     bake_output outs[1] = {{o->output_option ? o->output_option : "-o", o->output}}, ins[BAKE_MAX_INPUTS];
     int n = n_inputs < BAKE_MAX_INPUTS ? n_inputs : BAKE_MAX_INPUTS;
     for (int k = 0; k < n; ++k) ins[k] = (bake_output){"input", inputs[k]};

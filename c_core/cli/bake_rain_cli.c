@@ -263,6 +263,9 @@ static int check_outputs(const rain_args *a, const bake_opts *o)
 {
     const char *inputs[1] = {a->mesh_path};
     const char *extra[3] = {a->exposure_path, a->water_path, a->film_path};
+    bake_opts planned = *o;
+    planned.plan_later = 1; /* below, all four outputs at once */
+    o = &planned;
     static const char *const names[3] = {"--exposure", "--water", "--film"};
     int rc = bake_opts_check(o, inputs, 1);
     for (int k = 0; k < 3 && !rc; ++k) {

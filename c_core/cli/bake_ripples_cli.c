@@ -136,7 +136,9 @@ int soak_bake_ripples_main(int argc, char **argv)
     }
     j.p.size = (int)o.width;
     j.p.seed = o.seed;
+    o.plan_later = j.far_path != NULL; /* check_far plans -o and --far together */
     if ((rc = bake_opts_check(&o, NULL, 0)) != 0 || (rc = check_far(&j, &o)) != 0) return rc;
+    o.plan_later = 0;
     if ((rc = bake_ripples_budget(CMD, &j.p, o.have_frames ? o.last - o.first + 1 : 1)) != 0) return rc;
     soak_status st = soak_ripples_impacts(&j.p, &j.impacts, &j.count);
     if (st != SOAK_OK) return bake_fail(CMD, st, "invalid ripple settings (too many impacts per loop?)");

@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "bake_cli.h"
+#include "soak/staged.h"
 
 typedef struct plan_entry {
     char *id;
@@ -200,31 +201,81 @@ static int planned_output(plan *p, const char *path)
     return hit;
 }
 
-/* Removes the temporaries a killed earlier run of these outputs left
+/* A journal of ours, ".<name>.journal<pid>" (soak/staged.h). */
+static int our_journal(const char *entry, long *pid)
+{
+    const char *j = strstr(entry, ".journal"), *next;
+    if (entry[0] != '.' || !j || j == entry + 1) return 0;
+    for (next = strstr(j + 1, ".journal"); next; next = strstr(next + 1, ".journal")) j = next;
+    char *end = NULL;
+    *pid = strtol(j + 8, &end, 10);
+    return end != j + 8 && !*end && *pid > 0;
+}
+
+static int gone(long pid) { return pid != getpid() && kill((pid_t)pid, 0) != 0 && errno == ESRCH; }
+
+static int planned_cb(void *ctx, const char *path) { return planned_output(ctx, path); }
+
+/* One folder (dir, with its '/'; "" for the working folder): first the
+ * journals of killed runs, whose renames are completed (a set of outputs
+ * cut between two renames becomes the killed run's, whole), then the
+ * temporaries left, removed. */
+static void sweep_folder(plan *p, const char *dir)
+{
+    DIR *d = opendir(dir[0] ? dir : ".");
+    if (!d) return;
+    for (int pass = 0; pass < 2; ++pass, rewinddir(d)) {
+        for (struct dirent *e = readdir(d); e; e = readdir(d)) {
+            size_t name_len;
+            long pid;
+            char path[PATH_MAX + NAME_MAX + 2], final[PATH_MAX + NAME_MAX + 2];
+            snprintf(path, sizeof path, "%s%s", dir, e->d_name);
+            if (pass == 0 && our_journal(e->d_name, &pid) && gone(pid)) {
+                int n = soak_staged_journal_recover(path, planned_cb, p);
+                if (n >= 0)
+                    fprintf(stderr,
+                            "soak %s: completed %d rename%s of a set of outputs an interrupted run left half "
+                            "renamed (%s)\n",
+                            p->cmd, n, n == 1 ? "" : "s", path);
+            } else if (pass == 1 && our_temporary(e->d_name, &name_len, &pid) && gone(pid)) {
+                snprintf(final, sizeof final, "%s%.*s", dir, (int)name_len, e->d_name + 1);
+                if (planned_output(p, final) && unlink(path) == 0)
+                    fprintf(stderr, "soak %s: removed %s, left by an interrupted run\n", p->cmd, path);
+            }
+        }
+    }
+    closedir(d);
+}
+
+/* The folder part of path with its '/' ("" when it has none). */
+static void folder_of(const char *path, char *dir, size_t n)
+{
+    const char *slash = strrchr(path, '/');
+    snprintf(dir, n, "%.*s", slash ? (int)(slash - path) + 1 : 0, path);
+}
+
+/* Completes or removes what a killed earlier run of these outputs left
  * (issue 51 item 4: a signal between naming and renaming a finished file,
  * or SIGKILL): ours by name, for a planned output, of a process that is
- * gone. One pass over each output folder. */
-static void sweep_stale(plan *p, const bake_output *outs, int n_outs)
+ * gone. Each output folder once; a pattern whose folder holds the frame
+ * number, each frame's folder. */
+static void sweep_stale(plan *p, const bake_opts *o, const bake_output *outs, int n_outs)
 {
     for (int k = 0; k < n_outs; ++k) {
         if (!outs[k].path || !outs[k].path[0]) continue;
-        const char *slash = strrchr(outs[k].path, '/');
-        char dir[PATH_MAX];
-        snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - outs[k].path) + 1 : 1, slash ? outs[k].path : ".");
-        DIR *d = opendir(dir);
-        for (struct dirent *e = d ? readdir(d) : NULL; e; e = readdir(d)) {
-            size_t name_len;
-            long pid;
-            char final[PATH_MAX + NAME_MAX + 2], stale[PATH_MAX + NAME_MAX + 2];
-            if (!our_temporary(e->d_name, &name_len, &pid) || pid == getpid() || kill((pid_t)pid, 0) == 0 ||
-                errno != ESRCH)
-                continue;
-            snprintf(final, sizeof final, "%s%s%.*s", slash ? dir : "", "", (int)name_len, e->d_name + 1);
-            snprintf(stale, sizeof stale, "%s%s", slash ? dir : "", e->d_name);
-            if (planned_output(p, final) && unlink(stale) == 0)
-                fprintf(stderr, "soak %s: removed %s, left by an interrupted run\n", p->cmd, stale);
+        char dir[PATH_MAX], last[PATH_MAX] = "", path[PATH_MAX];
+        folder_of(outs[k].path, dir, sizeof dir);
+        int per_frame = o->have_frames && soak_bake_pattern_kind(outs[k].path) == 1 && soak_bake_pattern_kind(dir) == 1;
+        if (!per_frame) {
+            sweep_folder(p, dir);
+            continue;
         }
-        if (d) closedir(d);
+        for (long fr = o->first; fr <= o->last; ++fr) {
+            if (soak_bake_frame_path(outs[k].path, (int)fr, path, sizeof path) != SOAK_OK) continue;
+            folder_of(path, dir, sizeof dir);
+            if (strcmp(dir, last) != 0) sweep_folder(p, dir);
+            snprintf(last, sizeof last, "%s", dir);
+        }
     }
 }
 
@@ -245,7 +296,7 @@ int bake_plan_check(const bake_opts *o, const bake_output *outs, int n_outs, con
         qsort(p->e, p->n, sizeof *p->e, by_identity);
         rc = report_clash(p, o, outs, ins);
         p->cmd = o->cmd;
-        if (rc == 0) sweep_stale(p, outs, n_outs);
+        if (rc == 0) sweep_stale(p, o, outs, n_outs);
     }
     for (size_t i = 0; p && i < p->n; ++i) free(p->e[i].id);
     if (p) free(p->e);

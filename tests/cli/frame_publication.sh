@@ -9,6 +9,12 @@
 # inode. Before: --film and --water were replaced, -o was not. Then the
 # temporaries a killed run leaves (".<name>.tmp<pid>.<n>" of a process that
 # is gone) are removed by the next run of the same outputs, and no others.
+# SIGKILL between two renames of one frame cannot be waited for: the set's
+# renames are journalled first, and the next run of the same outputs
+# completes a dead run's journal (the frame becomes the killed run's, whole)
+# even when that run then fails; a journal naming a file that is not a
+# temporary of its output moves nothing. Frame patterns in a folder name
+# get each frame's folder swept.
 set -u
 . "$(dirname "$0")/lib.bash"
 D="$SOAK_TMP/frame_publication"
@@ -43,4 +49,32 @@ expect_exit 0 "a rerun of the same outputs" -- "$SOAK" "${RAIN[@]}"
 [ -e ".other.exr.tmp$dead.0" ] && ok "another output's temporary kept" || bad "removed a temporary not of these outputs"
 [ -e ".w0002.tx.tmp$$.0" ] && ok "a live process's temporary kept" || bad "removed a live process's temporary"
 grep -q "left by an interrupted run" "$SOAK_TMP/last.err" && ok "the removal is reported" || bad "removal not reported"
+
+[ -z "$(ls -A | grep '\.journal')" ] && ok "no journal left by finished runs" || bad "journal left: $(ls -A | grep journal)"
+
+# A run killed after renaming w0001.tx, before f0001.png and h0001.png: its
+# finished temporaries and journal are on disk (the bytes stand for frames).
+printf new-w >w0001.tx
+printf new-f >".f0001.png.tmp$dead.1"
+printf new-h >".h0001.png.tmp$dead.2"
+printf keep >victim.txt
+printf 'soak-staged-journal 1\0%s\0%s\0%s\0%s\0%s\0%s\0%s\0%s\0' \
+  "$D/.w0001.tx.tmp$dead.0" "$D/w0001.tx" "$D/.f0001.png.tmp$dead.1" "$D/f0001.png" \
+  "$D/.h0001.png.tmp$dead.2" "$D/h0001.png" "$D/victim.txt" "$D/w0002.tx" >".w0001.tx.journal$dead"
+expect_exit 1 "a rerun of the same outputs that fails (mesh gone)" -- \
+  "$SOAK" bake rain gone.obj --width 64 --height 64 --fps 0.2 --frames 1-2 -o 'w%04d.tx' --film 'f%04d.png' --water 'h%04d.png'
+[ "$(cat w0001.tx f0001.png h0001.png)" = "new-wnew-fnew-h" ] && ok "the killed run's frame 1 completed: all three from it" \
+  || bad "frame 1 mixes runs: $(head -c 20 f0001.png) $(head -c 20 h0001.png)"
+[ ! -e ".w0001.tx.journal$dead" ] && ok "the journal removed" || bad "journal kept"
+[ "$(cat victim.txt)" = keep ] && [ -e victim.txt ] && ok "a journal entry that is not a temporary of its output moves nothing" \
+  || bad "victim.txt moved by a journal"
+grep -q "completed 2 renames" "$SOAK_TMP/last.err" && ok "the completion is reported" \
+  || bad "not reported: $(head -c 300 "$SOAK_TMP/last.err")"
+
+# A frame pattern in the folder's name: each frame's folder is swept.
+mkdir -p d01 d02
+touch "d02/.w.exr.tmp$dead.0"
+expect_exit 0 "frames into per-frame folders" -- "$SOAK" bake rain q.obj --width 16 --height 16 --fps 0.2 --frames 1-2 \
+  -o 'd%02d/w.exr'
+[ ! -e "d02/.w.exr.tmp$dead.0" ] && ok "a dead run's temporary in frame 2's folder removed" || bad "kept: d02/.w.exr.tmp$dead.0"
 finish

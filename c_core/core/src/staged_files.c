@@ -238,19 +238,24 @@ soak_status soak_staged_write(soak_staged *s, const char *dst, const void *data,
     return SOAK_OK;
 }
 
-/* Gives staged file f its final name. */
-static soak_status publish(soak_staged_file *f, int index, char *err, size_t errlen)
+/* Gives an anonymous temporary f a hidden name in its folder. */
+static soak_status name_temporary(soak_staged_file *f, int index, char *err, size_t errlen)
 {
-    if (!f->named) {
-        char *name = named_temp(f->dst, index);
-        if (!name) return SOAK_ERR_NOMEM;
-        if (linkat(AT_FDCWD, f->proc, AT_FDCWD, name, AT_SYMLINK_FOLLOW) != 0) {
-            set_err(err, errlen, "%s: cannot name the finished file: %s", f->dst, strerror(errno));
-            free(name);
-            return SOAK_ERR_IO;
-        }
-        f->named = name;
+    if (f->named) return SOAK_OK;
+    char *name = named_temp(f->dst, index);
+    if (!name) return SOAK_ERR_NOMEM;
+    if (linkat(AT_FDCWD, f->proc, AT_FDCWD, name, AT_SYMLINK_FOLLOW) != 0) {
+        set_err(err, errlen, "%s: cannot name the finished file: %s", f->dst, strerror(errno));
+        free(name);
+        return SOAK_ERR_IO;
     }
+    f->named = name;
+    return SOAK_OK;
+}
+
+/* Gives named temporary f its final name. */
+static soak_status publish(soak_staged_file *f, char *err, size_t errlen)
+{
     if (rename(f->named, f->dst) != 0) {
         set_err(err, errlen, "%s: cannot move into place: %s", f->dst, strerror(errno));
         return SOAK_ERR_IO;
@@ -258,6 +263,27 @@ static soak_status publish(soak_staged_file *f, int index, char *err, size_t err
     free(f->named);
     f->named = NULL;
     return SOAK_OK;
+}
+
+/* A set of several outputs: its renames listed in a journal on disk
+ * first (staged_journal.c), so that a run killed between two renames is
+ * completed by the next run of the same outputs. *journal is "" for one
+ * output. */
+static soak_status journal_renames(const soak_staged *s, char *journal, size_t n, char *err, size_t errlen)
+{
+    journal[0] = '\0';
+    if (s->count < 2) return SOAK_OK;
+    const char **named = malloc(2 * (size_t)s->count * sizeof *named);
+    if (!named) return SOAK_ERR_NOMEM;
+    const char **dst = named + s->count;
+    for (int i = 0; i < s->count; ++i) named[i] = s->files[i].named, dst[i] = s->files[i].dst;
+    soak_status st = soak_staged_journal_name(s->files[0].dst, (long)getpid(), journal, n)
+                         ? soak_staged_journal_write(journal, named, dst, s->count, err, errlen)
+                         : SOAK_ERR_ARG;
+    if (st == SOAK_ERR_ARG) set_err(err, errlen, "%s: the journal's name is too long%s", s->files[0].dst, "");
+    if (st != SOAK_OK) journal[0] = '\0';
+    free(named);
+    return st;
 }
 
 soak_status soak_staged_commit(soak_staged *s, char *err, size_t errlen)
@@ -275,13 +301,18 @@ soak_status soak_staged_commit(soak_staged *s, char *err, size_t errlen)
      * name: between naming a temporary and renaming it, or between two
      * outputs of one set, a signal left a temporary or a mixed set (issue
      * 51 item 4: 5 of 1591 kills). SIGKILL cannot wait: the next run of the
-     * same outputs removes what it leaves (c_core/cli/output_plan.c). */
+     * same outputs removes the temporaries it leaves and completes a
+     * journalled set (c_core/cli/output_plan.c). */
     sigset_t stop, before;
     sigemptyset(&stop);
     sigaddset(&stop, SIGINT), sigaddset(&stop, SIGTERM), sigaddset(&stop, SIGHUP), sigaddset(&stop, SIGQUIT);
     int masked = pthread_sigmask(SIG_BLOCK, &stop, &before) == 0;
     soak_status st = SOAK_OK;
-    for (int i = 0; i < s->count && st == SOAK_OK; ++i) st = publish(&s->files[i], i, err, errlen);
+    char journal[PATH_MAX + NAME_MAX + 32];
+    for (int i = 0; i < s->count && st == SOAK_OK; ++i) st = name_temporary(&s->files[i], i, err, errlen);
+    if (st == SOAK_OK) st = journal_renames(s, journal, sizeof journal, err, errlen);
+    for (int i = 0; i < s->count && st == SOAK_OK; ++i) st = publish(&s->files[i], err, errlen);
+    if (journal[0]) unlink(journal); /* done, or its temporaries go with free_all */
     free_all(s);
     if (masked) pthread_sigmask(SIG_SETMASK, &before, NULL);
     return st;

@@ -52,6 +52,22 @@ soak_status soak_staged_commit(soak_staged *s, char *err, size_t errlen);
 /* Removes every temporary and frees s. */
 void soak_staged_abort(soak_staged *s);
 
+/* The renames of a set of two or more outputs are journalled
+ * (staged_journal.c): ".<first output's name>.journal<pid>" beside the first
+ * output lists each finished temporary and its final name (absolute) until
+ * the last rename. soak_staged_journal_name writes that name for pid into
+ * out (0 when it does not fit); _write creates it (never over an existing
+ * file) and flushes it to disk. */
+int soak_staged_journal_name(const char *dst, long pid, char *out, size_t n);
+soak_status soak_staged_journal_write(const char *journal, const char *const *named, const char *const *dst, int n,
+                                      char *err, size_t errlen);
+/* Completes the renames a killed run's journal lists, each only when its
+ * temporary exists, is a temporary of that output by name, and
+ * planned(ctx, final name) is non-zero; then removes the journal. Returns
+ * the number of files renamed, or -1 when journal is not a journal of
+ * ours (left as it is). */
+int soak_staged_journal_recover(const char *journal, int (*planned)(void *ctx, const char *dst), void *ctx);
+
 /* The checks of soak_staged_add on an output path, without creating
  * anything. */
 soak_status soak_output_path_check(const char *path, char *err, size_t errlen);
