@@ -381,16 +381,12 @@ int soak_bake_rain_main(int argc, char **argv)
     int rc = parse_args(argc, argv, &a, &o);
     if (rc >= 0) return rc;
     if ((rc = check_outputs(&a, &o)) != 0) return rc;
-    if (o.have_frames && bake_uv_is_udim(o.output)) {
-        cli_error(CMD, "-o with <UDIM> bakes single maps: not with --frames");
-        return SOAK_EXIT_USAGE;
-    }
     long frames = o.have_frames ? o.last - o.first + 1 : 0;
     double last_time = o.have_frames ? fmax(bake_frame_time(&o, o.first), bake_frame_time(&o, o.last)) : 0.0;
     if ((rc = bake_rain_budget(CMD, &a.p, o.width, o.height, frames, last_time)) != 0) return rc;
-    if (o.have_frames) return run_frames(&a, &o);
     const char *paths[4] = {o.output, a.exposure_path, a.water_path, a.film_path};
     if (bake_uv_is_udim(o.output)) return bake_rain_udim(a.mesh_path, &a.p, &o, paths, &a.uvo);
+    if (o.have_frames) return run_frames(&a, &o);
     soak_rain_result res;
     if (bake(&a, &o, &res) != SOAK_OK) return SOAK_EXIT_FAIL;
     const soak_image *imgs[4] = {&res.wetness, &res.exposure, &res.water, &res.film};

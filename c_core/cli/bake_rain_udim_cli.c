@@ -1,18 +1,21 @@
 /* soak bake rain MESH -o wet.<UDIM>.exr: one bake per UDIM tile the mesh's
  * faces use (soak/bake_uv.h), every map of every tile written together or
  * none (soak/staged.h). Each tile's exposure sees the whole mesh; water does
- * not flow from one tile's map into another's. */
+ * not flow from one tile's map into another's. With --frames
+ * (-o wet.<UDIM>.%04d.exr) one rain state per tile, and each frame's maps of
+ * every tile written together. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "bake_budget.h"
 #include "bake_cli.h"
 #include "bake_uv_cli.h"
 #include "soak/bake_rain.h"
 #include "soak/staged.h"
 
 #define CMD "bake rain"
-#define UDIM_MAX_TILES 100
+#define UDIM_MAX_TILES BAKE_UDIM_MAX_TILES
 
 /* Bakes tile `tile` and stages its maps (the outputs given, in paths). */
 static soak_status bake_tile(const soak_mesh *mesh, const bake_opts *o, soak_rain_params p, int tile,
@@ -30,14 +33,14 @@ static soak_status bake_tile(const soak_mesh *mesh, const bake_opts *o, soak_rai
         if (!paths[k]) continue;
         st = bake_uv_tile_path(paths[k], tile, path, sizeof path);
         if (st != SOAK_OK) snprintf(err, errlen, "%s: the tile's file name is too long", paths[k]);
-        else st = soak_bake_stage(stage, path, imgs[k], 0, err, errlen);
+        else st = soak_bake_stage(stage, path, imgs[k], o->float_exr, err, errlen);
     }
     soak_uv_stats_add(total, &res.uv);
     soak_rain_result_free(&res);
     return st;
 }
 
-static int tiles_of(const char *mesh_path, const soak_mesh *mesh, int *tiles, int *n)
+int bake_rain_udim_tiles(const char *mesh_path, const soak_mesh *mesh, int *tiles, int *n)
 {
     char err[512] = "";
     if (soak_uv_udim_tiles(mesh, tiles, UDIM_MAX_TILES, n, err, sizeof err) != SOAK_OK) {
@@ -51,19 +54,26 @@ static int tiles_of(const char *mesh_path, const soak_mesh *mesh, int *tiles, in
     return 0;
 }
 
-int bake_rain_udim(const char *mesh_path, const soak_rain_params *p, const bake_opts *o, const char *const *paths,
-                   const bake_uv_opts *u)
+int bake_rain_udim_check_paths(const char *const *paths)
 {
     for (int k = 1; k < 4; ++k)
         if (paths[k] && !bake_uv_is_udim(paths[k])) {
             cli_error(CMD, "-o names UDIM tiles: --exposure, --water and --film must hold <UDIM> too ('%s')", paths[k]);
             return SOAK_EXIT_USAGE;
         }
+    return 0;
+}
+
+int bake_rain_udim(const char *mesh_path, const soak_rain_params *p, const bake_opts *o, const char *const *paths,
+                   const bake_uv_opts *u)
+{
+    if (o->have_frames) return bake_rain_udim_frames(mesh_path, p, o, paths, u);
+    if (bake_rain_udim_check_paths(paths)) return SOAK_EXIT_USAGE;
     char err[4352] = "";
     soak_mesh mesh;
     soak_status st = soak_mesh_load_uv(mesh_path, &u->uv, &mesh, err, sizeof err);
     if (st != SOAK_OK) return bake_fail(CMD, st == SOAK_ERR_ARG ? SOAK_ERR_IO : st, err);
-    int tiles[UDIM_MAX_TILES], n = 0, rc = tiles_of(mesh_path, &mesh, tiles, &n);
+    int tiles[UDIM_MAX_TILES], n = 0, rc = bake_rain_udim_tiles(mesh_path, &mesh, tiles, &n);
     soak_staged stage;
     soak_staged_init(&stage);
     soak_uv_stats total;

@@ -45,6 +45,16 @@ struct bake_opts;
 struct soak_rain_params;
 int bake_rain_udim(const char *mesh_path, const struct soak_rain_params *p, const struct bake_opts *o,
                    const char *const *paths, const bake_uv_opts *u);
+/* The same with --frames (bake_rain_udim_frames_cli.c): -o, --water and
+ * --film hold <UDIM> and a frame number, --exposure <UDIM>. */
+int bake_rain_udim_frames(const char *mesh_path, const struct soak_rain_params *p, const struct bake_opts *o,
+                          const char *const *paths, const bake_uv_opts *u);
+/* 0, or the exit code after naming the output that lacks <UDIM>. */
+int bake_rain_udim_check_paths(const char *const *paths);
+/* Up to this many tiles in one run. */
+#define BAKE_UDIM_MAX_TILES 100
+/* The tiles mesh's faces use, or the exit code after saying why not. */
+int bake_rain_udim_tiles(const char *mesh_path, const struct soak_mesh *mesh, int *tiles, int *n);
 /* The mesh formats for --help. */
 void bake_uv_formats_help(FILE *out);
 

@@ -13,6 +13,7 @@
 #    texels under u < 0.5 are under both copies (2048 shared); skipped:
 #    empty map, a warning, --strict fails and writes nothing; refused;
 #  - UDIM: quads in tiles 1001 and 1002, one map per tile, 2048 texels each;
+#    with --frames, one sequence per tile;
 #  - overlapping UVs: a small square under a larger one on the same UVs;
 #    the larger (more surface per texel) wins in either face order, so the
 #    exposure is ~1 (open sky) and both orders give identical maps;
@@ -83,6 +84,25 @@ expect_exit 0 "a UDIM bake" -- "$SOAK" bake rain "$D/udim.obj" "${B[@]}" -o "$D/
   ok "UDIM: wet.1001, wet.1002 and exp.1002 written, no other tile" || bad "UDIM files: $(ls "$D" | tr '\n' ' ')"
 close "$(covered)" 4096 0 "UDIM: texels covered in both tiles (analytic 2 x 2048)"
 expect_exit 2 "UDIM needs <UDIM> in every output" -- "$SOAK" bake rain "$D/udim.obj" "${B[@]}" -o "$D/wet.<UDIM>.exr" --exposure "$D/e.exr"
+# UDIM with --frames: tile 1001 of the two flat quads is, frame by frame, the
+# sequence of its quad baked alone (a second bake: nothing shades or feeds
+# one quad from the other on a flat ground), bit for bit.
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 0.5 0\nvt 0.5 1\nvt 0 1\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n' >"$D/one.obj"
+F=(--up z --width 32 --height 32 --rays 4 --duration 60 --fps 0.1 --frames 1-3)
+expect_exit 0 "a UDIM frame sequence" -- "$SOAK" bake rain "$D/udim.obj" "${F[@]}" -o "$D/uw.<UDIM>.%04d.exr" \
+  --water "$D/uh.<UDIM>.%04d.exr" --exposure "$D/ue.<UDIM>.exr"
+expect_exit 0 "the first tile's quad alone" -- "$SOAK" bake rain "$D/one.obj" "${F[@]}" -o "$D/ow.%04d.exr" \
+  --water "$D/oh.%04d.exr" --exposure "$D/oe.exr"
+same=0
+for f in 1 2 3; do
+  cmp -s "$D/uw.1001.000$f.exr" "$D/ow.000$f.exr" && cmp -s "$D/uh.1001.000$f.exr" "$D/oh.000$f.exr" && same=$((same + 1))
+done
+cmp -s "$D/ue.1001.exr" "$D/oe.exr" && same=$((same + 1))
+[ $same = 4 ] && [ -f "$D/uw.1002.0003.exr" ] && [ -f "$D/uh.1002.0001.exr" ] \
+  && ok "UDIM frames: tile 1001's 3 frames and exposure equal the quad's own bake; tile 1002's frames written" \
+  || bad "UDIM frames: $same of 4 equal; files: $(ls "$D" | grep '^u' | tr '\n' ' ')"
+expect_exit 2 "UDIM frames need <UDIM> in --water too" -- "$SOAK" bake rain "$D/udim.obj" "${F[@]}" \
+  -o "$D/uw.<UDIM>.%04d.exr" --water "$D/uh.%04d.exr"
 
 # Overlapping UVs: a unit square at z = 0 under a 2 x 2 square at z = 1, both on UVs [0, 1]^2.
 small='v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n' big='v -0.5 -0.5 1\nv 1.5 -0.5 1\nv 1.5 1.5 1\nv -0.5 1.5 1\n'
