@@ -385,7 +385,9 @@ int soak_bake_rain_main(int argc, char **argv)
     double last_time = o.have_frames ? fmax(bake_frame_time(&o, o.first), bake_frame_time(&o, o.last)) : 0.0;
     if ((rc = bake_rain_budget(CMD, &a.p, o.width, o.height, frames, last_time)) != 0) return rc;
     const char *paths[4] = {o.output, a.exposure_path, a.water_path, a.film_path};
-    if (bake_uv_is_udim(o.output)) return bake_rain_udim(a.mesh_path, &a.p, &o, paths, &a.uvo);
+    if (bake_uv_is_udim(o.output))
+        return o.have_frames ? bake_rain_udim_frames(a.mesh_path, &a.p, &o, paths, &a.uvo)
+                             : bake_rain_udim(a.mesh_path, &a.p, &o, paths, &a.uvo);
     if (o.have_frames) return run_frames(&a, &o);
     soak_rain_result res;
     if (bake(&a, &o, &res) != SOAK_OK) return SOAK_EXIT_FAIL;

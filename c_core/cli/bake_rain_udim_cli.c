@@ -67,7 +67,6 @@ int bake_rain_udim_check_paths(const char *const *paths)
 int bake_rain_udim(const char *mesh_path, const soak_rain_params *p, const bake_opts *o, const char *const *paths,
                    const bake_uv_opts *u)
 {
-    if (o->have_frames) return bake_rain_udim_frames(mesh_path, p, o, paths, u);
     if (bake_rain_udim_check_paths(paths)) return SOAK_EXIT_USAGE;
     char err[4352] = "";
     soak_mesh mesh;
