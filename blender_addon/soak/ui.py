@@ -111,6 +111,10 @@ class _Main:
             if osl_available(context):
                 layout.prop(s, "use_osl")
             layout.operator("soak.make_wet", icon="MOD_FLUIDSIM")
+            switch = compat.eevee_reflection_switch(context.scene)
+            if switch is not None and not getattr(switch[0], switch[1]):
+                name = switch[0].bl_rna.properties[switch[1]].name
+                layout.label(text=f"Also turns on EEVEE's {name} (Ctrl-Z undoes)", icon="INFO")
         else:
             row = layout.row(align=True)
             row.operator("soak.key_drying", icon="KEY_HLT")
