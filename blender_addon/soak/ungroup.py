@@ -34,8 +34,9 @@ def holds_principled(ng, seen=None):
 
 
 def groups_to_open(tree):
-    """The group nodes of a tree whose groups hold a Principled BSDF."""
-    return [n for n in tree.nodes if n.type == "GROUP" and holds_principled(n.node_tree)]
+    """The group nodes of a tree whose groups hold a Principled BSDF (a
+    muted group node passes its inputs through: it is left alone)."""
+    return [n for n in tree.nodes if n.type == "GROUP" and not n.mute and holds_principled(n.node_tree)]
 
 
 def _copy_ramp(src, dst):

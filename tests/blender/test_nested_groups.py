@@ -12,8 +12,10 @@ Asserted:
      dry one by more than 10 sigma (the group did wet it);
   2. the groups themselves are unchanged (node by node, values and links)
      and a second material using Outer still uses it;
-  3. all or nothing: a Make Wet that fails (Image source without an image)
-     leaves the nested material's tree and the node-group list as before;
+  3. all or nothing: a Make Wet that fails (Image source without an image,
+     checked first; an error provoked in the insertion, after the groups
+     were opened) leaves the nested material's tree, the node-group list
+     and the groups as before;
   4. Make Dry after it restores the Principled BSDF's values (the opened
      nodes stay, in their labelled frame);
   5. a material linked from a library: Make Wet makes it local (reported)
@@ -204,6 +206,24 @@ def main():
     check(common.tree_state(nested.node_tree) == before, "the failed Make Wet left the nested tree as before")
     check(sorted(g.name for g in bpy.data.node_groups) == g0, "the failed Make Wet left no node group")
     nested.soak.wetness_source = "CONSTANT"
+    # an error after the groups were opened (the insertion made to fail): all put back
+    insertion = soak.insertion
+    real = insertion._insert
+
+    def provoked(*args):
+        raise RuntimeError("provoked after opening the groups")
+    insertion._insert = provoked
+    try:
+        try:
+            r = bpy.ops.soak.make_wet()
+        except RuntimeError as e:
+            r = str(e)
+    finally:
+        insertion._insert = real
+    check(r != {"FINISHED"}, f"Make Wet failing after the groups were opened fails ({r})")
+    check(common.tree_state(nested.node_tree) == before, "... and leaves the nested tree as before")
+    check(sorted(g.name for g in bpy.data.node_groups) == g0 and group_states() == before_groups,
+          "... and the node groups as before")
 
     # 1. nested wets, and renders as the same nodes flat
     for mat in (flat, nested):
