@@ -20,3 +20,16 @@ def ensure_reflections(scene):
     setattr(owner, prop, True)
     label = owner.bl_rna.properties[prop].name
     return f"EEVEE's {label} turned on for the scene (the wet coat reflects the scene, as in Cycles; Ctrl-Z undoes)"
+
+
+def ensure_exact_lookups(scene, settings):
+    """In a scene rendered with EEVEE, Make Wet builds the exact-lookup
+    path: EEVEE's own texture smoothing of the core's tables costs up to
+    8.8 % of the colour against 0.16 % exact (price.json's
+    eevee_colour_error, from the dated benchmark). Cycles gives the same
+    colours either way, faster without, so a Cycles scene keeps the
+    setting. Returns the sentence for the report, or None."""
+    if not compat.is_eevee(scene.render.engine) or settings.exact_lookups or compat.exact_lookups_required():
+        return None
+    settings.exact_lookups = True
+    return "Exact lookups turned on for this material (EEVEE reads the core's colours exactly; Ctrl-Z undoes)"

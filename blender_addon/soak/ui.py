@@ -208,11 +208,17 @@ class NODE_MT_soak_add(bpy.types.Menu):
 
 
 def _switch_note(layout, context):
-    """Under Make Wet: the EEVEE setting it will turn on (eevee_settings)."""
+    """Under Make Wet: the EEVEE settings it will turn on (eevee_settings)."""
+    names = []
     switch = compat.eevee_reflection_switch(context.scene)
     if switch is not None and not getattr(switch[0], switch[1]):
-        name = switch[0].bl_rna.properties[switch[1]].name
-        layout.label(text=f"Make Wet also turns on EEVEE's {name} (Ctrl-Z undoes)", icon="INFO")
+        names.append("EEVEE's " + switch[0].bl_rna.properties[switch[1]].name)
+    mat = _material(context)
+    if (mat is not None and compat.is_eevee(context.scene.render.engine) and not mat.soak.exact_lookups
+            and not compat.exact_lookups_required()):
+        names.append("Exact lookups")
+    if names:
+        layout.label(text=f"Make Wet also turns on {' and '.join(names)} (Ctrl-Z undoes)", icon="INFO")
 
 
 def _slot_header(self, context):

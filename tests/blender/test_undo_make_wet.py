@@ -2,9 +2,11 @@
 (run with SOAK_BLENDER_UI=1: `ed.undo` needs one): Make Wet on the default
 cube's material put inside a node group (as an asset's), then one undo.
 
-Asserted: Make Wet turned EEVEE's reflection switch on (Raytracing in 4.2+,
-Screen Space Reflections before) and opened the group; after the undo the
-switch is off again (EEVEE's default), the material holds its group node
+Asserted: Make Wet (EEVEE the scene's engine) turned EEVEE's reflection
+switch on (Raytracing in 4.2+, Screen Space Reflections before) and the
+material's Exact lookups (where they are not always built: 3.x, 5.x), and
+opened the group; after the undo the switch and Exact lookups are off again
+(the defaults), the material holds its group node
 and nothing else of ours, and the group is unchanged; a redo brings the wet
 material back (the undo step is one step)."""
 import os
@@ -46,7 +48,7 @@ def switch():
 def state():
     mat = bpy.data.objects["Cube"].active_material
     return (getattr(bpy.context.scene.eevee, switch()), common.tree_state(mat.node_tree),
-            common.tree_state(bpy.data.node_groups["Asset"]))
+            common.tree_state(bpy.data.node_groups["Asset"]), mat.soak.exact_lookups)
 
 
 def leave(code):
@@ -70,6 +72,8 @@ def run():
     win = bpy.context.window_manager.windows[0]
     ob = bpy.data.objects["Cube"]
     mat, ng = grouped_material()
+    bpy.context.scene.render.engine = common.eevee_engine()
+    forced = sys.modules["soak"].compat.exact_lookups_required()
     with bpy.context.temp_override(window=win, object=ob, active_object=ob):
         bpy.ops.ed.undo_push(message="grouped material")
         before = state()
@@ -77,11 +81,14 @@ def run():
         check(bpy.ops.soak.make_wet("EXEC_DEFAULT", True) == {"FINISHED"}, "Make Wet finishes")
         wet = state()
         check(wet[0] is True, f"Make Wet turned {switch()} on")
+        check(wet[3] is True or forced, "Make Wet in an EEVEE scene turned Exact lookups on "
+              f"(4.2-4.x build them always: {forced})")
         nodes = bpy.data.objects["Cube"].active_material.node_tree.nodes
         check(not any(n.type == "GROUP" and n.node_tree and n.node_tree.name == "Asset" for n in nodes),
               "Make Wet opened the group")
         bpy.ops.ed.undo()
-    check(state() == before, f"Ctrl-Z: {switch()} off again, the material and the group as before")
+    check(state() == before, f"Ctrl-Z: {switch()} and Exact lookups off again, the material and the group "
+          "as before")
     with bpy.context.temp_override(window=win):
         bpy.ops.ed.redo()
     check(state() == wet, "redo: wet again, the switch on")

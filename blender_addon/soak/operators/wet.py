@@ -63,6 +63,20 @@ class SOAK_OT_make_wet(bpy.types.Operator):
         self.report({"INFO"}, f"{local.name}: made local (was linked from {where})")
         return local
 
+    @staticmethod
+    def _wet(context, mat, settings, opened):
+        """Make Wet proper, exact lookups first in an EEVEE scene (put back
+        when Make Wet fails: all or nothing)."""
+        exact = settings.exact_lookups
+        note = eevee_settings.ensure_exact_lookups(context.scene, settings)
+        try:
+            insertion.make_wet(mat, settings, opened)
+        except BaseException:
+            if settings.exact_lookups != exact:
+                settings.exact_lookups = exact
+            raise
+        return note
+
     def execute(self, context):
         mat = _material(context)
         opened = []
@@ -72,7 +86,7 @@ class SOAK_OT_make_wet(bpy.types.Operator):
             if material_tree.find_group_node(mat.node_tree) is not None:
                 raise RuntimeError(f"material '{mat.name}' is already wet (Make Dry first)")
             settings = mat.soak
-            insertion.make_wet(mat, settings, opened)
+            exact_note = self._wet(context, mat, settings, opened)
         except (RuntimeError, SoakDataError) as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
@@ -84,6 +98,8 @@ class SOAK_OT_make_wet(bpy.types.Operator):
             self.report({"INFO"}, f"{mat.name}: node groups {', '.join(repr(n) for n in opened)} opened in this "
                                   "material to reach their Principled BSDF (the groups themselves are unchanged "
                                   "for their other users)")
+        if exact_note:
+            self.report({"INFO"}, exact_note)
         eevee_note = eevee_settings.ensure_reflections(context.scene)
         if eevee_note:
             self.report({"INFO"}, eevee_note)
