@@ -35,20 +35,36 @@ def check_data(settings):
     data.liquid(settings.liquid)
 
 
-def check_wettable(mat, settings):
+def _check_inputs(bsdfs):
+    for bsdf in bsdfs:
+        missing = [compat.principled_name(r) for r in _REQUIRED_ROLES if compat.principled_input(bsdf, r) is None]
+        if missing:
+            raise RuntimeError(f"'{bsdf.name}' lacks the inputs {', '.join(missing)}")
+
+
+def check_principled(mat):
+    """The material's Principled BSDFs once its groups are opened (raises
+    RuntimeError when there is none)."""
+    bsdfs = principled_nodes(mat.node_tree)
+    if not bsdfs:
+        raise RuntimeError(f"material '{mat.name}' has no Principled BSDF")
+    _check_inputs(bsdfs)
+    return bsdfs
+
+
+def check_wettable(mat, settings, grouped=False):
     """Everything Make Wet needs, checked before the tree is touched.
-    Returns the Principled BSDFs to wet: every one in the material."""
+    Returns the Principled BSDFs to wet: every one in the material (none
+    yet where grouped: those inside node groups, ungroup.open_groups makes
+    them the material's own)."""
     check_editable(mat)
     tree = mat.node_tree
     if find_group_node(tree) is not None:
         raise RuntimeError(f"material '{mat.name}' is already wet (Make Dry first)")
     bsdfs = principled_nodes(tree)
-    if not bsdfs:
-        raise RuntimeError(f"material '{mat.name}' has no Principled BSDF")
-    for bsdf in bsdfs:
-        missing = [compat.principled_name(r) for r in _REQUIRED_ROLES if compat.principled_input(bsdf, r) is None]
-        if missing:
-            raise RuntimeError(f"'{bsdf.name}' lacks the inputs {', '.join(missing)}")
+    if not bsdfs and not grouped:
+        raise RuntimeError(f"material '{mat.name}' has no Principled BSDF (nor a node group holding one)")
+    _check_inputs(bsdfs)
     check_data(settings)
     check_source(settings)
     return bsdfs

@@ -6,8 +6,8 @@ import json
 
 import bpy
 
-from . import compat, data, sources, specialise, translucency, wet_group
-from .checks import check_wettable
+from . import compat, data, sources, specialise, translucency, ungroup, wet_group
+from .checks import check_principled, check_wettable
 from .material_tree import NODE_TAG, RESTORE_KEY, PRIMARY_KEY, socket_record, set_ref
 from .snapshot import atomic
 from .wet_group import GROUP_TAG, INPUTS, metal_preset
@@ -180,7 +180,10 @@ def _insert(mat, bsdf, settings):
     return gn
 
 
-def _insert_all(mat, bsdfs, settings):
+def _insert_all(mat, bsdfs, settings, opened):
+    if opened is not None:
+        opened[:], emptied = ungroup.open_groups(mat.node_tree)
+        bsdfs = check_principled(mat)
     gns = [_insert(mat, bsdf, settings) for bsdf in bsdfs]
     gns[0][PRIMARY_KEY] = True
     made = sources.wire_source(mat.node_tree, gns, settings)
@@ -188,16 +191,22 @@ def _insert_all(mat, bsdfs, settings):
     restore["nodes"] += [n.name for n in made]
     gns[0][RESTORE_KEY] = json.dumps(restore)
     specialise.drop_unused(specialise.specialise_stale(mat.node_tree))     # groups made just now
+    if opened is not None:
+        ungroup.remove_emptied(mat.node_tree, emptied)
     return gns[0]
 
 
-def make_wet(mat, settings):
+def make_wet(mat, settings, opened=None):
     """Inserts a group in front of every Principled BSDF of the material
-    (one wetness source feeds them all); returns the first group node. All
-    or nothing: raises RuntimeError (or data.SoakDataError) with the
-    material unchanged."""
-    bsdfs = check_wettable(mat, settings)
-    gn = atomic(mat.node_tree, _insert_all, mat, bsdfs, settings)
+    (one wetness source feeds them all); returns the first group node. A
+    Principled BSDF inside node groups (nested too) is reached by opening
+    those groups in this material (ungroup.py; the list `opened` receives
+    their names). All or nothing: raises RuntimeError (or
+    data.SoakDataError) with the material unchanged."""
+    opened = [] if opened is None else opened
+    grouped = bool(ungroup.groups_to_open(mat.node_tree))
+    bsdfs = check_wettable(mat, settings, grouped)
+    gn = atomic(mat.node_tree, _insert_all, mat, bsdfs, settings, opened if grouped else None)
     clear_pending(settings)
     if settings.wetness_source == "IMAGE":
         settings.wet_map.colorspace_settings.name = "Non-Color"   # a data map, not a colour

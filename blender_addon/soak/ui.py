@@ -111,6 +111,7 @@ class _Main:
             if osl_available(context):
                 layout.prop(s, "use_osl")
             layout.operator("soak.make_wet", icon="MOD_FLUIDSIM")
+            _switch_note(layout, context)
         else:
             row = layout.row(align=True)
             row.operator("soak.key_drying", icon="KEY_HLT")
@@ -206,19 +207,38 @@ class NODE_MT_soak_add(bpy.types.Menu):
         layout.operator("soak.make_dry", text="Make Dry", icon="CANCEL")
 
 
+def _switch_note(layout, context):
+    """Under Make Wet: the EEVEE settings it will turn on (eevee_settings)."""
+    names = []
+    switch = compat.eevee_reflection_switch(context.scene)
+    if switch is not None and not getattr(switch[0], switch[1]):
+        names.append("EEVEE's " + switch[0].bl_rna.properties[switch[1]].name)
+    mat = _material(context)
+    if (mat is not None and compat.is_eevee(context.scene.render.engine) and not mat.soak.exact_lookups
+            and not compat.exact_lookups_required()):
+        names.append("Exact lookups")
+    if names:
+        layout.label(text=f"Make Wet also turns on {' and '.join(names)} (Ctrl-Z undoes)", icon="INFO")
+
+
 def _slot_header(self, context):
     """A Soak row under the material slots (the top of the Material tab,
     on screen whatever the Surface panel's height): the preset and Make
     Wet, or the wet material's preset and Make Dry; its settings are in
     the Soak panel."""
     mat = _material(context)
-    if mat is None or mat.library is not None:
+    if mat is None:
         return
     gn = material_tree.find_group_node(mat.node_tree) if mat.node_tree is not None else None
     row = self.layout.row(align=True)
-    if gn is None:
+    if mat.library is not None and gn is None:     # an Asset Browser material, linked
+        row.label(text="Soak", icon="MOD_FLUIDSIM")
+        row.operator("soak.make_wet", text="Make Local and Wet")
+    elif gn is None:
         row.prop(mat.soak, "preset", text="Soak", icon="MOD_FLUIDSIM")
         row.operator("soak.make_wet", text="Make Wet")
+        if compat.is_eevee(context.scene.render.engine):
+            _switch_note(self.layout, context)
     else:
         row.label(text=f"Soak: wet ({mat.soak.preset}), settings in the Soak panel", icon="MOD_FLUIDSIM")
         row.operator("soak.make_dry", text="", icon="CANCEL")

@@ -5,7 +5,7 @@ import json
 
 import bpy
 
-from .. import compat, insertion, material_tree, osl_nodes, removal, specialise
+from .. import compat, eevee_settings, insertion, material_tree, osl_nodes, removal, specialise
 from ..data import SoakDataError
 from ..predicates import key_icon, osl_available, poll_editable, poll_message, wet_poll
 
@@ -40,17 +40,53 @@ class SOAK_OT_make_wet(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
+        mat = _material(context)
+        if mat is not None and (mat.library is not None or getattr(mat, "override_library", None) is not None):
+            return True     # an Asset Browser material: made local first (execute)
         if not poll_editable(cls, context):
             return False
         if material_tree.find_group_node(context.object.active_material.node_tree) is not None:
             return poll_message(cls, "The material is already wet (Make Dry first)")
         return True
 
+    def _make_local(self, context, mat):
+        """A linked (or overridden) material, as the Asset Browser's Link
+        import gives, becomes this file's own (its edits would be lost on
+        reload otherwise); the object's slot is pointed at the local copy."""
+        where = mat.library.filepath if mat.library is not None else "a library override"
+        local = mat.make_local()
+        if local is None or local.library is not None:
+            raise RuntimeError(f"material '{mat.name}' from {where} could not be made local")
+        ob = context.object
+        if ob.active_material != local:
+            ob.active_material = local
+        self.report({"INFO"}, f"{local.name}: made local (was linked from {where})")
+        return local
+
+    @staticmethod
+    def _wet(context, mat, settings, opened):
+        """Make Wet proper, exact lookups first in an EEVEE scene (put back
+        when Make Wet fails: all or nothing)."""
+        exact = settings.exact_lookups
+        note = eevee_settings.ensure_exact_lookups(context.scene, settings)
+        try:
+            insertion.make_wet(mat, settings, opened)
+        except BaseException:
+            if settings.exact_lookups != exact:
+                settings.exact_lookups = exact
+            raise
+        return note
+
     def execute(self, context):
         mat = _material(context)
-        settings = mat.soak
+        opened = []
         try:
-            insertion.make_wet(mat, settings)
+            if mat.library is not None or getattr(mat, "override_library", None) is not None:
+                mat = self._make_local(context, mat)
+            if material_tree.find_group_node(mat.node_tree) is not None:
+                raise RuntimeError(f"material '{mat.name}' is already wet (Make Dry first)")
+            settings = mat.soak
+            exact_note = self._wet(context, mat, settings, opened)
         except (RuntimeError, SoakDataError) as e:
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
@@ -58,6 +94,15 @@ class SOAK_OT_make_wet(bpy.types.Operator):
             return internal_error(self, "Make Wet", e)
         if settings.use_osl:
             self._osl(context, mat, settings)
+        if opened:
+            self.report({"INFO"}, f"{mat.name}: node groups {', '.join(repr(n) for n in opened)} opened in this "
+                                  "material to reach their Principled BSDF (the groups themselves are unchanged "
+                                  "for their other users)")
+        if exact_note:
+            self.report({"INFO"}, exact_note)
+        eevee_note = eevee_settings.ensure_reflections(context.scene)
+        if eevee_note:
+            self.report({"INFO"}, eevee_note)
         gns = material_tree.group_nodes(mat.node_tree)
         if len(gns) > 1:
             names = ", ".join(f"'{json.loads(g[material_tree.RESTORE_KEY])['bsdf']}'" for g in gns)
