@@ -57,6 +57,23 @@ cp "$D/obj_inf_vertex.obj" "$D/model.max"
 scene_with "{\"type\": \"mesh\", \"file\": \"$D/model.max\", \"material\": \"m\"}" "$CONST" >"$D/max.json"
 expect_exit 1 "mesh .max" -- "$SOAK" render "$D/max.json" --width 8 --height 8 --spp 1 -o "$D/o.exr"
 expect_stderr "model\.max: unsupported mesh format: .max .*export FBX" "mesh .max: unsupported format named with the reason"
+# The OBJ header check parses plain numbers and indices by hand (mesh_check.c):
+# what strtod/strtoll refused is still refused, what they read still reads.
+tri_obj() { printf 'v %s 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 %s/3\n' "$1" "$2" >"$D/$3.obj"; }
+tri_obj 1e999 3 huge_exp
+expect_exit 1 "OBJ 1e999" -- "$SOAK" bake rain "$D/huge_exp.obj" --width 8 --height 8 --rays 1 -o "$D/r.exr"
+expect_stderr "huge_exp\.obj: .*line 1: '1e999' is not a finite number" "OBJ 1e999: refused as not finite"
+tri_obj 0 0 index_zero
+expect_exit 1 "OBJ index 0" -- "$SOAK" bake rain "$D/index_zero.obj" --width 8 --height 8 --rays 1 -o "$D/r.exr"
+expect_stderr "index_zero\.obj: .*face names vertex '0' of 3" "OBJ index 0: refused"
+tri_obj 0 99999999999999999999 index_huge
+expect_exit 1 "OBJ index 1e20" -- "$SOAK" bake rain "$D/index_huge.obj" --width 8 --height 8 --rays 1 -o "$D/r.exr"
+expect_stderr "index_huge\.obj: .*face names vertex '99999999999999999999' of 3" "OBJ index 1e20: refused"
+tri_obj 0 -4 index_minus4
+expect_exit 1 "OBJ index -4" -- "$SOAK" bake rain "$D/index_minus4.obj" --width 8 --height 8 --rays 1 -o "$D/r.exr"
+expect_stderr "index_minus4\.obj: .*face names vertex '-4' of 3" "OBJ index -4 of 3: refused"
+tri_obj -.5 -1 plain_ok
+expect_exit 0 "OBJ -.5 and index -1 read" -- "$SOAK" bake rain "$D/plain_ok.obj" --width 8 --height 8 --rays 1 --duration 0 -o "$D/r.exr"
 
 # NaN pixels in an environment map were silently read as 0.
 tail -c +2 "$R/image/exr_nan_pixels" >"$D/sky_nan.exr"

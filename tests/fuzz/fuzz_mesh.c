@@ -1,6 +1,9 @@
-/* Mesh input: the first byte picks the format (obj ply stl off gltf glb),
- * the rest is the file. Under libFuzzer (SOAK_FUZZ_INPROCESS) the Assimp
- * import runs in this process so that its coverage guides the search; the
+/* Mesh input: the first byte picks the format (obj ply stl off gltf glb fbx
+ * dae 3ds x lwo ms3d; glTF 1.0 rides on gltf/glb), the rest is the file. The
+ * table is indexed modulo 12, a multiple of the first table's 6, so every
+ * stored input keeps the format it was found with. Under libFuzzer
+ * (SOAK_FUZZ_INPROCESS) the Assimp import runs in this process so that its
+ * coverage guides the search; the
  * replay build goes through soak_mesh_load, the contained path Soak uses, and
  * checks that every stored crash or hang of Assimp becomes an error. */
 #include <math.h>
@@ -12,9 +15,11 @@
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    static const char *const ext[] = {"obj", "ply", "stl", "off", "gltf", "glb"};
+    static const char *const ext[] = {"obj", "ply", "stl", "off", "gltf", "glb",
+                                      "fbx", "dae", "3ds", "x",    "lwo", "ms3d"};
+    enum { n_ext = sizeof ext / sizeof ext[0] };
     if (size < 1 || size > 1 << 20) return 0;
-    const char *path = fuzz_temp_file(data + 1, size - 1, ext[data[0] % 6]);
+    const char *path = fuzz_temp_file(data + 1, size - 1, ext[data[0] % n_ext]);
     if (!path) return 0;
     soak_mesh m = {0};
     char err[1024] = "";

@@ -217,11 +217,33 @@ static soak_status check_stl(const char *path, FILE *f, const char *buf, size_t 
 /* One OBJ face index: non-zero, within +-count. */
 static int obj_index_ok(const char *s, long long count)
 {
-    char *e = NULL;
-    errno = 0;
-    long long k = strtoll(s, &e, 10);
-    if (e == s || errno) return 0;
-    return k != 0 && (k > 0 ? k <= count : -k <= count);
+    /* By hand, not strtoll: this runs for every corner of every face, and
+     * strtoll was a ninth of a 1 M-triangle bake's main thread. The digits
+     * after a sign, as strtoll reads them (k <= count keeps 10 k from
+     * overflowing: count is a number of lines). */
+    if (*s == '-' || *s == '+') ++s;
+    long long k = 0;
+    int digits = 0;
+    for (; *s >= '0' && *s <= '9'; ++s, ++digits) {
+        k = 10 * k + (*s - '0');
+        if (k > count) return 0;
+    }
+    return digits > 0 && k != 0;
+}
+
+/* The end of a plain decimal at s ([+-]digits[.digits], under 300 digits,
+ * followed by a blank, the line's end or '#'): finite without strtod (7 %
+ * of a 1 M-triangle OBJ bake's main thread). NULL for anything else
+ * (exponents, nan, inf): left to strtod. */
+static const char *plain_decimal_end(const char *s)
+{
+    int digits = 0;
+    if (*s == '-' || *s == '+') ++s;
+    for (; *s >= '0' && *s <= '9'; ++s) ++digits;
+    if (*s == '.')
+        for (++s; *s >= '0' && *s <= '9'; ++s) ++digits;
+    int ends = !*s || *s == ' ' || *s == '\t' || *s == '\r' || *s == '\n' || *s == '#';
+    return digits > 0 && digits < 300 && ends ? s : NULL;
 }
 
 /* The numbers of a v, vt or vn line: Assimp reads "nan" and "inf" as 0. */
@@ -231,6 +253,11 @@ static int obj_numbers_finite(const char *s, long long lineno, char *msg, size_t
     for (;;) {
         while (*s == ' ' || *s == '\t') ++s;
         if (!*s || *s == '\r' || *s == '\n' || *s == '#') return 1;
+        const char *plain = plain_decimal_end(s);
+        if (plain) {
+            s = plain;
+            continue;
+        }
         double x = strtod(s, &end);
         if (end == s) return 1; /* not a number: left to Assimp */
         if (!isfinite(x)) {
