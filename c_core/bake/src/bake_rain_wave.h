@@ -19,8 +19,9 @@ double soak_rain_wave_depth(double area, double c, double volume);
  * the routing graph, texels in `order` (highest first): a texel gets
  * depth * area + source * dt + what the texels above it sent it this step;
  * a film texel (kappa > 0) keeps the depth h of soak_rain_wave_depth and
- * passes the rest (dt kappa h^3) on in the routing's shares
- * (soak_rain_flow_shares; off the surface into *dripped, m^3; all of it
+ * passes the rest (dt kappa h^3) on along the descent with the streams'
+ * boxes (bake_rain_stream.h; soak_rain_flow_shares where the texel has no
+ * descent; off the surface into *dripped, m^3; all of it
  * where it faces down); any other texel keeps all it gets (for the sweeps).
  * source may be NULL (no rain); inflow is scratch (w * h). Volume before + sources = volume after +
  * *dripped up to rounding; one pass, so the same bits at any thread count. */
