@@ -133,12 +133,16 @@ static void grow(soak_rain_box *b, soak_rain_box p)
     b->y0 = p.y0 < b->y0 ? p.y0 : b->y0, b->y1 = p.y1 > b->y1 ? p.y1 : b->y1;
 }
 
-double soak_rain_stream_pass(const soak_rain_flow_grid *g, soak_rain_box *boxes, size_t i, int rained, double q,
-                             double *inflow)
+int soak_rain_stream_route(const soak_rain_flow_grid *g, const soak_rain_box *boxes, size_t i, int rained,
+                           double share[9], soak_rain_box piece[8])
 {
-    soak_rain_box in = boxes && !rained ? boxes[i] : SOAK_RAIN_BOX_FULL, piece[8];
-    double share[9];
-    if (!soak_rain_stream_split(g, i, in, share, piece)) return -1.0;
+    soak_rain_box in = boxes && !rained ? boxes[i] : SOAK_RAIN_BOX_FULL;
+    return soak_rain_stream_split(g, i, in, share, piece);
+}
+
+double soak_rain_stream_send(const soak_rain_flow_grid *g, soak_rain_box *boxes, size_t i, double q,
+                             const double share[9], const soak_rain_box piece[8], double *inflow)
+{
     for (int d = 0; d < 8; ++d) {
         if (!(share[d] > 0.0)) continue;
         size_t j = (size_t)((ptrdiff_t)i + (ptrdiff_t)SOAK_RAIN_DY[d] * g->w + SOAK_RAIN_DX[d]);
@@ -146,4 +150,13 @@ double soak_rain_stream_pass(const soak_rain_flow_grid *g, soak_rain_box *boxes,
         if (boxes) grow(&boxes[j], piece[d]);
     }
     return q * share[8];
+}
+
+double soak_rain_stream_pass(const soak_rain_flow_grid *g, soak_rain_box *boxes, size_t i, int rained, double q,
+                             double *inflow)
+{
+    double share[9];
+    soak_rain_box piece[8];
+    if (!soak_rain_stream_route(g, boxes, i, rained, share, piece)) return -1.0;
+    return soak_rain_stream_send(g, boxes, i, q, share, piece, inflow);
 }

@@ -48,4 +48,12 @@ int soak_rain_stream_split(const soak_rain_flow_grid *g, size_t i, soak_rain_box
 double soak_rain_stream_pass(const soak_rain_flow_grid *g, soak_rain_box *boxes, size_t i, int rained, double q,
                              double *inflow);
 
+/* The two halves of soak_rain_stream_pass: the shares and pieces of texel
+ * i (0 where split returns 0), then q sent by them (returns the part that
+ * drips off). */
+int soak_rain_stream_route(const soak_rain_flow_grid *g, const soak_rain_box *boxes, size_t i, int rained,
+                           double share[9], soak_rain_box piece[8]);
+double soak_rain_stream_send(const soak_rain_flow_grid *g, soak_rain_box *boxes, size_t i, double q,
+                             const double share[9], const soak_rain_box piece[8], double *inflow);
+
 #endif

@@ -33,30 +33,33 @@ double soak_rain_wave_depth(double area, double c, double volume)
     return h;
 }
 
+/* Where texel i's outflow goes: 2 along the descent (share, piece), 1 by
+ * the level drops or off a down-facing face (share), 0 nowhere (a pit or
+ * flat). */
+static int wave_route(const soak_rain_flow_grid *g, const soak_rain_box *boxes, size_t i, int rained,
+                      double share[9], soak_rain_box piece[8])
+{
+    if (g->drip[i] >= 0.0f && soak_rain_stream_route(g, boxes, i, rained, share, piece)) return 2;
+    return soak_rain_flow_shares(g, i, share);
+}
+
 /* Texel i of the step: keeps its implicit depth and passes the rest on. */
 static void wave_texel(const soak_rain_flow_grid *g, soak_rain_box *boxes, size_t i, const double *kappa,
                        double rain, double dt, double *depth, double *inflow, double *dripped)
 {
     double a = g->area[i], have = depth[i] * a + rain + inflow[i], share[9];
+    soak_rain_box piece[8];
     if (!(a > 0.0)) return;
-    if (!(kappa[i] > 0.0 || g->drip[i] < 0.0f)) {
-        depth[i] = have / a;
-        return;
-    }
-    if (!soak_rain_flow_shares(g, i, share)) { /* a pit or flat */
+    int how = kappa[i] > 0.0 || g->drip[i] < 0.0f ? wave_route(g, boxes, i, rain > 0.0, share, piece) : 0;
+    if (!how) { /* not a film texel, or a pit or flat */
         depth[i] = have / a;
         return;
     }
     depth[i] = g->drip[i] < 0.0f ? 0.0 : soak_rain_wave_depth(a, dt * kappa[i], have);
     double out = have - depth[i] * a;
     if (!(out > 0.0)) return;
-    if (g->drip[i] < 0.0f) {
-        *dripped += out;
-        return;
-    }
-    double off = soak_rain_stream_pass(g, boxes, i, rain > 0.0, out, inflow);
-    if (off >= 0.0) {
-        *dripped += off;
+    if (how == 2) {
+        *dripped += soak_rain_stream_send(g, boxes, i, out, share, piece, inflow);
         return;
     }
     int x = (int)(i % (size_t)g->w), y = (int)(i / (size_t)g->w);
@@ -66,11 +69,13 @@ static void wave_texel(const soak_rain_flow_grid *g, soak_rain_box *boxes, size_
 }
 
 soak_status soak_rain_wave_step(const soak_rain_flow_grid *g, const size_t *order, size_t count, const double *kappa,
-                                const double *source, double dt, double *depth, double *inflow, double *dripped)
+                                const double *source, double dt, double *depth, double *inflow, soak_rain_box *scratch,
+                                double *dripped)
 {
     if (!g || (!order && count) || !kappa || !depth || !inflow || !dripped) return SOAK_ERR_NULL;
     if (!(dt >= 0.0 && dt < 1e300)) return SOAK_ERR_ARG;
-    soak_rain_box *boxes = g->descent && count ? malloc((size_t)g->w * g->h * sizeof *boxes) : NULL;
+    soak_rain_box *own = g->descent && count && !scratch ? malloc((size_t)g->w * g->h * sizeof *own) : NULL;
+    soak_rain_box *boxes = g->descent && count ? (scratch ? scratch : own) : NULL;
     if (g->descent && count && !boxes) return SOAK_ERR_NOMEM;
     *dripped = 0.0;
     for (size_t k = 0; k < count; ++k) {
@@ -81,6 +86,6 @@ soak_status soak_rain_wave_step(const soak_rain_flow_grid *g, const size_t *orde
         size_t i = order[k];
         wave_texel(g, boxes, i, kappa, source ? source[i] * dt : 0.0, dt, depth, inflow, dripped);
     }
-    free(boxes);
+    free(own);
     return SOAK_OK;
 }
