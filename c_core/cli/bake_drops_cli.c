@@ -51,6 +51,14 @@ static const cli_opt drops_opts[] = {
      .help = "drying: pore emptying time, %R of --dry-time (default 0.2)"},
     {"--no-wrap", NULL, CLI_OPT_FLAG, .flag = 1, F(no_wrap),
      .help = "clip splats at the map's edges (default: wrap, a tiling plane;\nalways clipped with a mesh or --exposure)"},
+    {"--splash", NULL, CLI_OPT_FLAG, .flag = 1, F(p.splash),
+     .help = "drops on wet texels splash when We Oh^-0.4 exceeds Cossali et al.'s (1997)\n"
+             "2100 + 5880 (h/D)^1.44, throwing Marmanis & Thoroddsen's (1996) number of\n"
+             "secondary drops (default: off, every drop one splat)"},
+    {"--splash-fraction", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 1, F(p.splash_fraction), .meta = "F",
+     .help = "--splash: share of a splashing drop's volume thrown, %R (default 0.2)"},
+    {"--splash-speed", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 1, F(p.splash_speed), .meta = "F",
+     .help = "--splash: largest launch speed / impact speed, %R (default 0.2)"},
     {"--fps", NULL, CLI_OPT_DOUBLE, .lo = 1e-6, .hi = DROPS_MAX_FPS, F(fps), CLI_SEEN(drops_job, have_fps), .meta = "N",
      .help = "frames per second: frame f is at t = f / N (default 24)"},
     {"--exposure", NULL, CLI_OPT_STRING, F(exposure_path), .meta = "PATH",

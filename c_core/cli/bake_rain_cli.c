@@ -71,6 +71,10 @@ static const cli_opt rain_opts[] = {
      .help = "also write the falling film thickness while rain falls (m; use .exr;\nwith --frames a pattern: the film of each frame)"},
     {"--no-film", NULL, CLI_OPT_FLAG, .flag = 1, F(no_film),
      .help = "no falling film: slopes keep only the flat film times n.up (walls drain)"},
+    {"--contact-angle", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 90, F(p.contact_angle_deg), .meta = "DEG",
+     .help = "the surface's contact angle with water, %R deg: a film thinner than\n"
+             "Hartley & Murgatroyd's (1964) minimum wetting rate breaks into runnels\n"
+             "(single map only; default 0: the film holds)"},
     {"--rays", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RAIN_MAX_RAYS, F(p.rays), .meta = "N",
      .help = "rays per texel, %R (default 64)"},
     {"--sky", NULL, CLI_OPT_CHOICE, .choices = skies, F(p.sky), .meta = "rain|hemisphere",
@@ -402,6 +406,9 @@ int soak_bake_rain_main(int argc, char **argv)
     if (rc == SOAK_EXIT_OK && r->in > 0.0) /* m^3/s -> L/h */
         printf("steady rain on the mesh %.4g L/h: %.1f %% drips off, %.1f %% collects in puddles, %.1f %% evaporates\n",
                r->in * 3.6e6, 100.0 * r->dripped / r->in, 100.0 * r->held / r->in, 100.0 * r->evaporated / r->in);
+    if (rc == SOAK_EXIT_OK && res.runnel_texels > 0)
+        printf("runnels: the film broke into rivulets on %d texels, %.1f mm apart\n", res.runnel_texels,
+               res.runnel_spacing * 1e3);
     soak_rain_result_free(&res);
     return rc;
 }

@@ -23,6 +23,8 @@ void soak_drops_defaults(soak_drops_params *p)
     p->dry_time = 20;
     p->t_fill = 0.2;
     p->wrap = 1;
+    p->splash_fraction = 0.2;
+    p->splash_speed = 0.2;
 }
 
 soak_status soak_drops_check(const soak_drops_params *p)
@@ -33,7 +35,8 @@ soak_status soak_drops_check(const soak_drops_params *p)
         !(p->spread_factor == 0 || soak_in_range(p->spread_factor, 1, 100)) ||
         !(soak_in_range(p->min_diameter_mm, 0, SOAK_DROP_D_MAX_MM) && p->min_diameter_mm < SOAK_DROP_D_MAX_MM) ||
         !soak_in_range(p->duration, 0, SOAK_DROPS_MAX_TIME) || !soak_in_range(p->dry_time, 1e-9, SOAK_DROPS_MAX_TIME) ||
-        !soak_in_range(p->t_fill, 0, 1) || !(p->wrap == 0 || p->wrap == 1))
+        !soak_in_range(p->t_fill, 0, 1) || !(p->wrap == 0 || p->wrap == 1) || !(p->splash == 0 || p->splash == 1) ||
+        !soak_in_range(p->splash_fraction, 0, 1) || !soak_in_range(p->splash_speed, 0, 1))
         return SOAK_ERR_ARG;
     return SOAK_OK;
 }

@@ -24,7 +24,7 @@ struct soak_drops_state {
     double *depth;
     long next_slab;         /* impacts of earlier slabs are generated */
     soak_drop_impact *pending; /* generated, not applied, in time order */
-    size_t n_pending, applied;
+    size_t n_pending, applied, splashed;
     double time;            /* every impact with t < time is applied */
     splat *splats;
     size_t splat_cap;
@@ -61,25 +61,37 @@ static long disc_span(const soak_drops_state *s, const splat *sp, long j, long *
     return *i1 >= *i0 ? *i1 - *i0 + 1 : 0;
 }
 
-static void make_splat(const soak_drops_state *s, const soak_drop_impact *imp, splat *sp)
-{
-    double d_m = imp->d_mm * 1e-3;
-    double f = s->p.spread_factor > 0 ? s->p.spread_factor : soak_drop_spread_factor(imp->d_mm);
-    sp->cx = imp->x, sp->cy = imp->y, sp->r = 0.5 * f * d_m / s->p.texel_m;
-    long j0, j1, i0, i1, covered = 0;
-    disc_rows(s, sp, &j0, &j1);
-    for (long j = j0; j <= j1; ++j) covered += disc_span(s, sp, j, &i0, &i1);
-    sp->single = covered == 0;
-    sp->sx = (int)fmin(s->width - 1, fmax(0, floor(imp->x)));
-    sp->sy = (int)fmin(s->height - 1, fmax(0, floor(imp->y)));
-    double volume = PI / 6 * d_m * d_m * d_m;
-    sp->dh = volume / ((double)(covered ? covered : 1) * s->p.texel_m * s->p.texel_m);
-}
-
 static long wrap_index(long i, int n)
 {
     long m = i % n;
     return m < 0 ? m + n : m;
+}
+
+/* The splat of volume m^3 of a drop of d_mm spread by factor f about (x, y). */
+static void place_splat(const soak_drops_state *s, double x, double y, double d_mm, double f, double volume, splat *sp)
+{
+    sp->cx = x, sp->cy = y, sp->r = 0.5 * f * d_mm * 1e-3 / s->p.texel_m;
+    long j0, j1, i0, i1, covered = 0;
+    disc_rows(s, sp, &j0, &j1);
+    for (long j = j0; j <= j1; ++j) covered += disc_span(s, sp, j, &i0, &i1);
+    sp->single = covered == 0;
+    long tx = (long)floor(x), ty = (long)floor(y);
+    if (s->p.wrap) tx = wrap_index(tx, s->width), ty = wrap_index(ty, s->height);
+    sp->sx = (int)(tx < 0 ? 0 : (tx > s->width - 1 ? s->width - 1 : tx));
+    sp->sy = (int)(ty < 0 ? 0 : (ty > s->height - 1 ? s->height - 1 : ty));
+    sp->dh = volume / ((double)(covered ? covered : 1) * s->p.texel_m * s->p.texel_m);
+}
+
+static double drop_volume(double d_mm)
+{
+    double d_m = d_mm * 1e-3;
+    return PI / 6 * d_m * d_m * d_m;
+}
+
+static void make_splat(const soak_drops_state *s, const soak_drop_impact *imp, double share, splat *sp)
+{
+    double f = s->p.spread_factor > 0 ? s->p.spread_factor : soak_drop_spread_factor(imp->d_mm);
+    place_splat(s, imp->x, imp->y, imp->d_mm, f, share * drop_volume(imp->d_mm), sp);
 }
 
 typedef struct apply_ctx {
@@ -112,15 +124,84 @@ static void apply_row(void *vctx, int y, int thread)
     }
 }
 
+/* Adds one splat to the depths (the additions apply_row makes). */
+static void add_splat(soak_drops_state *s, const splat *sp)
+{
+    double cap = s->p.capacity_m;
+    if (sp->single) {
+        double *d = &s->depth[(size_t)sp->sy * s->width + sp->sx];
+        *d = fmin(cap, *d + sp->dh);
+        return;
+    }
+    long j0, j1, i0, i1;
+    disc_rows(s, sp, &j0, &j1);
+    for (long j = j0; j <= j1; ++j) {
+        if (disc_span(s, sp, j, &i0, &i1) == 0) continue;
+        double *row = s->depth + (size_t)(s->p.wrap ? wrap_index(j, s->height) : j) * s->width;
+        for (long i = i0; i <= i1; ++i) {
+            long x = s->p.wrap ? wrap_index(i, s->width) : i;
+            row[x] = fmin(cap, row[x] + sp->dh);
+        }
+    }
+}
+
+/* Clanet et al.'s spread factor at speed v (m/s), at least 1. */
+static double spread_at(double d_mm, double v)
+{
+    double we = SOAK_WATER_RHO * v * v * d_mm * 1e-3 / SOAK_WATER_SIGMA, f = 0.9 * pow(we, 0.25);
+    return f > 1.0 ? f : 1.0;
+}
+
+/* Impact imp, splashing where its texel holds water (soak/bake_drops.h):
+ * its splat, then its secondaries' (those landing off a clipped map are
+ * lost, as the excess over capacity is). */
+static void splash_impact(soak_drops_state *s, const soak_drop_impact *imp, soak_splash_drop *sec)
+{
+    splat sp;
+    make_splat(s, imp, 1.0, &sp);
+    int m = soak_splash_throw(&s->p, imp, s->depth[(size_t)sp.sy * s->width + sp.sx], sec);
+    if (m > 0) {
+        make_splat(s, imp, 1.0 - s->p.splash_fraction, &sp);
+        ++s->splashed;
+    }
+    add_splat(s, &sp);
+    for (int k = 0; k < m; ++k) {
+        if (!s->p.wrap && !(sec[k].x >= 0 && sec[k].x < s->width && sec[k].y >= 0 && sec[k].y < s->height)) continue;
+        double d = sec[k].d_mm, volume = PI / 6 * d * d * d * 1e-9;
+        place_splat(s, sec[k].x, sec[k].y, d, spread_at(d, sec[k].v), volume, &sp);
+        add_splat(s, &sp);
+    }
+}
+
+/* With splashes an impact's outcome depends on the water before it, so
+ * impacts go one after another on one thread: the same bits for any
+ * thread count and any cut of the work. */
+static soak_status apply_splashing(soak_drops_state *s, size_t n)
+{
+    soak_splash_drop *sec = malloc(SOAK_SPLASH_MAX_FINGERS * sizeof *sec);
+    if (!sec) return SOAK_ERR_NOMEM;
+    for (size_t k = 0; k < n; ++k) splash_impact(s, &s->pending[k], sec);
+    free(sec);
+    return SOAK_OK;
+}
+
 static soak_status apply_impacts(soak_drops_state *s, size_t n, const soak_bake_exec *exec)
 {
     if (n == 0) return SOAK_OK;
+    if (s->p.splash) {
+        soak_status st = apply_splashing(s, n);
+        if (st != SOAK_OK) return st;
+        memmove(s->pending, s->pending + n, (s->n_pending - n) * sizeof *s->pending);
+        s->n_pending -= n;
+        s->applied += n;
+        return SOAK_OK;
+    }
     if (n > s->splat_cap) {
         splat *v = realloc(s->splats, n * sizeof *v);
         if (!v) return SOAK_ERR_NOMEM;
         s->splats = v, s->splat_cap = n;
     }
-    for (size_t k = 0; k < n; ++k) make_splat(s, &s->pending[k], &s->splats[k]);
+    for (size_t k = 0; k < n; ++k) make_splat(s, &s->pending[k], 1.0, &s->splats[k]);
     soak_bake_exec quiet = {exec ? exec->threads : 0, NULL, NULL};
     apply_ctx a = {s, n};
     soak_status st = soak_parallel_rows(s->height, &quiet, apply_row, &a, 0, 1);
@@ -136,7 +217,7 @@ static void reset(soak_drops_state *s)
     memset(s->depth, 0, sizeof(double) * (size_t)s->width * s->height);
     free(s->pending);
     s->pending = NULL;
-    s->n_pending = s->applied = 0;
+    s->n_pending = s->applied = s->splashed = 0;
     s->next_slab = 0;
     s->time = 0;
 }
@@ -220,6 +301,11 @@ void soak_drops_destroy(soak_drops_state *s)
 size_t soak_drops_applied(const soak_drops_state *s)
 {
     return s ? s->applied : 0;
+}
+
+size_t soak_drops_splashed(const soak_drops_state *s)
+{
+    return s ? s->splashed : 0;
 }
 
 static void wet_map(const soak_drops_state *s, float *out)

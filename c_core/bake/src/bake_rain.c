@@ -10,6 +10,7 @@
 #include "soak/poisson.h"
 
 #include "bake_rain_film.h"
+#include "bake_rain_runnels.h"
 #include "bake_rain_flow.h"
 #include "bake_rain_level.h"
 #include "bake_rain_scene.h"
@@ -61,7 +62,8 @@ soak_status soak_rain_check(const soak_rain_params *p)
         !soak_in_range(p->splat_radius, 0, SOAK_RAIN_MAX_SPLAT) ||
         !soak_in_range(p->evaporation_mm_h, 0, SOAK_RAIN_MAX_RATE) ||
         !soak_in_range(p->retention, 0, SOAK_RAIN_MAX_RETENTION) ||
-        !(p->saturation_depth > 0 && p->saturation_depth <= SOAK_RAIN_MAX_SATURATION))
+        !(p->saturation_depth > 0 && p->saturation_depth <= SOAK_RAIN_MAX_SATURATION) ||
+        !soak_in_range(p->contact_angle_deg, 0, 90))
         return SOAK_ERR_ARG;
     return SOAK_OK;
 }
@@ -270,18 +272,39 @@ static soak_status rain_step(water_job *j, const water_flow *f, int step, const 
     return st;
 }
 
+/* Step 3c: thin films into rivulets; the film's texels keep the larger of
+ * their static retention and the rivulets' depth (they stay fast: the
+ * water between the rivulets runs on). */
+static soak_status add_runnels(const rain_surface *s, const soak_rain_params *p, const water_flow *f, double *retain,
+                               double *film, soak_rain_result *out)
+{
+    if (!(p->contact_angle_deg > 0.0)) return SOAK_OK;
+    soak_rain_runnel_stats rs;
+    soak_status st = soak_rain_runnels(s, f->grid, p->up, p->contact_angle_deg * SOAK_PI / 180.0, p->seed, film, &rs);
+    if (st != SOAK_OK) return st;
+    out->runnel_texels = rs.broken, out->runnel_spacing = rs.spacing;
+    soak_vec3 up = soak_v3_norm(p->up);
+    for (size_t i = 0, n = (size_t)s->w * s->h; i < n; ++i) {
+        if (!f->fast[i]) continue;
+        double flat = p->retention * fmax(0.0, soak_v3_dot(soak_rain_fget(s->nrm, i), up));
+        retain[i] = film[i] > flat ? film[i] : flat;
+    }
+    return SOAK_OK;
+}
+
 /* The film (step 3b) and what the cascade needs, when the film is on and
  * the water flows at all. */
 static soak_status prepare_film(const rain_surface *s, const soak_rain_params *p, const float *exposure,
-                                water_job *j, water_flow *f, double *film, soak_rain_runoff *runoff)
+                                water_job *j, water_flow *f, double *film, soak_rain_result *out)
 {
     if (!p->film) return SOAK_OK;
     size_t n = (size_t)s->w * s->h;
     f->fast = malloc(n);
     if (!f->fast) return SOAK_ERR_NOMEM;
     for (size_t i = 0; i < n; ++i) f->fast[i] = 0; /* the static retention is in j->retain until add_film */
-    soak_status st = add_film(s, p, f->grid, exposure, j->retain, film, runoff);
+    soak_status st = add_film(s, p, f->grid, exposure, j->retain, film, &out->runoff);
     for (size_t i = 0; i < n && st == SOAK_OK; ++i) f->fast[i] = film[i] > 0.0 && film[i] == j->retain[i];
+    if (st == SOAK_OK) st = add_runnels(s, p, f, j->retain, film, out);
     if (st != SOAK_OK || p->flow_iterations == 0) return st;
     f->inflow = malloc(n * sizeof *f->inflow);
     if (!f->inflow) return SOAK_ERR_NOMEM;
@@ -289,7 +312,7 @@ static soak_status prepare_film(const rain_surface *s, const soak_rain_params *p
 }
 
 static soak_status run_water(const rain_surface *s, const soak_rain_params *p, const float *exposure,
-                             const soak_bake_exec *exec, double *depth, double *film, soak_rain_runoff *runoff)
+                             const soak_bake_exec *exec, double *depth, double *film, soak_rain_result *out)
 {
     size_t n = (size_t)s->w * s->h;
     water_job j;
@@ -311,7 +334,7 @@ static soak_status run_water(const rain_surface *s, const soak_rain_params *p, c
         covered[i] = s->tri[i] >= 0;
         j.retain[i] = covered[i] ? p->retention * fmax(0.0, soak_v3_dot(soak_rain_fget(s->nrm, i), up)) : 0.0;
     }
-    if (st == SOAK_OK) st = prepare_film(s, p, exposure, &j, &f, film, runoff);
+    if (st == SOAK_OK) st = prepare_film(s, p, exposure, &j, &f, film, out);
     if (st == SOAK_OK) st = soak_rain_flow_create(&grid, exec, SOAK_RAIN_FLOW_AUTO, &f.plan);
     if (st == SOAK_OK && p->flow_iterations > 0) st = soak_rain_level_create(&grid, &f.puddles);
     double dt = p->duration / p->steps;
@@ -497,7 +520,7 @@ soak_status soak_bake_rain(const soak_mesh *mesh, int width, int height, const s
     double *depth = st == SOAK_OK ? calloc(n, sizeof *depth) : NULL, *film = st == SOAK_OK ? calloc(n, sizeof *film) : NULL;
     if (st == SOAK_OK && (!depth || !film)) st = SOAK_ERR_NOMEM;
     if (st == SOAK_OK && p->duration > 0 && p->rainfall_mm_h > 0)
-        st = run_water(&s, p, r.exposure.pixels, exec, depth, film, &r.runoff);
+        st = run_water(&s, p, r.exposure.pixels, exec, depth, film, &r);
     if (st == SOAK_OK) {
         unsigned char *filled = malloc(n);
         if (!filled) st = SOAK_ERR_NOMEM;

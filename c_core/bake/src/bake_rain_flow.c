@@ -9,6 +9,7 @@
 #include "soak/vec.h"
 
 #include "bake_rain_flow_rows.h"
+#include "bake_rain_stream.h"
 
 #define FLOW_DX_INIT {1, 1, 0, -1, -1, -1, 0, 1}
 #define FLOW_DY_INIT {0, -1, -1, -1, 0, 1, 1, 1}
@@ -290,60 +291,15 @@ static size_t neighbour(const soak_rain_flow_grid *g, size_t i, int d)
     return (size_t)((ptrdiff_t)i + (ptrdiff_t)SOAK_RAIN_DY[d] * g->w + SOAK_RAIN_DX[d]);
 }
 
-/* Shares below this go to the other neighbour: a direction along a grid
- * axis or diagonal sends to one texel, not a rounding error to its side. */
-#define DESCENT_SHARE_MIN 1e-6
-
-/* Whether the surface's edge at texel i faces down the descent (a, b) (water
- * runs off it) rather than along it: the outward direction, the sum of the
- * steps to the neighbours that are not adjacent, within 60 deg of the
- * descent. */
-static int edge_faces_downhill(const soak_rain_flow_grid *g, size_t i, double a, double b)
-{
-    double ox = 0.0, oy = 0.0;
-    for (int d = 0; d < 8; ++d)
-        if (!(g->adj[i] >> d & 1u)) ox += SOAK_RAIN_DX[d], oy += SOAK_RAIN_DY[d];
-    double dot = ox * a + oy * b, len = sqrt((ox * ox + oy * oy) * (a * a + b * b));
-    return !(len > 0.0) || dot > 0.5 * len;
-}
-
-/* The steepest descent's two-neighbour split (the D-infinity routing of
- * Tarboton 1997, Water Resources Research 33(2), 309-319, with the
- * direction from the surface's own gradient instead of a facet fit):
- * direction d points at angle 45 d degrees (x right, y up the image), and
- * what leaves i goes to the two directions bracketing the descent angle in
- * proportion to closeness. A share whose texel is off the surface drips
- * (an open edge, a seam) where the edge faces down the slope; along an edge
- * parallel to the flow it goes to the other texel (the stream stays on the
- * surface). 0 (use the level drops) where the texel is level or a target is
- * not lower. */
+/* The steepest descent's split of a full texel (bake_rain_stream.c: the
+ * line-crossing form of the D-infinity routing of Tarboton 1997, Water
+ * Resources Research 33(2), 309-319, with the direction from the surface's
+ * own gradient instead of a facet fit) as drops summing to 1; 0 (use the
+ * level drops) where the texel is level or a target is not lower. */
 static int descent_drops(const soak_rain_flow_grid *g, size_t i, double diff[9], double *sum)
 {
-    if (!g->descent) return 0;
-    double a = g->descent[2 * i], b = g->descent[2 * i + 1];
-    if (!(a * a + b * b > 0.0)) return 0;
-    double t = atan2(-b, a) / (0.25 * SOAK_PI);
-    t = t < 0.0 ? t + 8.0 : t;
-    int k = (int)t;
-    double f = t - k;
-    k &= 7;
-    int to[2] = {k, (k + 1) & 7};
-    double share[2] = {1.0 - f, f};
-    if (share[1] < DESCENT_SHARE_MIN) share[0] = 1.0, share[1] = 0.0;
-    if (share[0] < DESCENT_SHARE_MIN) share[0] = 0.0, share[1] = 1.0;
-    for (int d = 0; d < 9; ++d) diff[d] = 0.0;
-    int on[2] = {g->adj[i] >> to[0] & 1u, g->adj[i] >> to[1] & 1u};
-    if (on[0] != on[1] && !edge_faces_downhill(g, i, a, b)) /* running along an edge: stays on the surface */
-        share[on[1]] = 1.0, share[!on[1]] = 0.0;
-    for (int s = 0; s < 2; ++s) {
-        if (!(share[s] > 0.0)) continue;
-        if (!on[s]) { /* across an open edge (or a seam): this share drips */
-            diff[8] += share[s];
-            continue;
-        }
-        if (!(g->level[neighbour(g, i, to[s])] < g->level[i])) return 0;
-        diff[to[s]] = share[s];
-    }
+    soak_rain_box piece[8];
+    if (!soak_rain_stream_split(g, i, SOAK_RAIN_BOX_FULL, diff, piece)) return 0;
     *sum = 1.0;
     return 1;
 }
@@ -405,18 +361,25 @@ static void sort_by_level(size_t *idx, size_t *tmp, size_t n, const double *leve
     }
 }
 
-/* Texel i passes on what it receives minus its loss: to its lower
- * neighbours in the routing's shares, off an open edge or a down-facing
+/* Texel i passes on what it receives minus its loss: along the descent
+ * with the streams' boxes (bake_rain_stream.h), else to its lower
+ * neighbours in the level drops' shares, off an open edge or a down-facing
  * face (drips), or nowhere (a pit or flat: held). */
-static void pass_on(const soak_rain_flow_grid *g, size_t i, double got, double loss, double *inflow, double *discharge,
-                    soak_rain_flow_balance *b)
+static void pass_on(const soak_rain_flow_grid *g, soak_rain_box *boxes, size_t i, double source, double loss,
+                    double *inflow, double *discharge, soak_rain_flow_balance *b)
 {
+    double got = source + inflow[i];
     double lost = loss * g->area[i] < got ? loss * g->area[i] : got, q = got - lost;
     b->lost += lost;
     discharge[i] = q;
     if (!(q > 0.0)) return;
     if (g->drip[i] < 0.0f) {
         b->dripped += q;
+        return;
+    }
+    double off = soak_rain_stream_pass(g, boxes, i, source > 0.0, q, inflow);
+    if (off >= 0.0) {
+        b->dripped += off;
         return;
     }
     double diff[9], sum;
@@ -435,20 +398,24 @@ soak_status soak_rain_flow_discharge(const soak_rain_flow_grid *g, const double 
     if (!g->covered || !g->adj || !g->area || !g->drip || !g->level) return SOAK_ERR_NULL;
     size_t n = (size_t)g->w * g->h, m = 0, *idx = NULL;
     double *inflow = calloc(n, sizeof *inflow);
-    soak_status st = inflow ? soak_rain_flow_order(g, &idx, &m) : SOAK_ERR_NOMEM;
+    soak_rain_box *boxes = g->descent ? malloc(n * sizeof *boxes) : NULL;
+    soak_status st = inflow && (boxes || !g->descent) ? soak_rain_flow_order(g, &idx, &m) : SOAK_ERR_NOMEM;
     if (st != SOAK_OK) {
         free(inflow);
+        free(boxes);
         return st;
     }
     memset(balance, 0, sizeof *balance);
     for (size_t i = 0; i < n; ++i) {
         discharge[i] = 0.0;
+        if (boxes) boxes[i] = SOAK_RAIN_BOX_EMPTY;
         if (g->covered[i]) balance->in += source[i];
     }
     for (size_t k = 0; k < m; ++k) /* every share goes strictly downhill: to a texel later in the order */
-        pass_on(g, idx[k], source[idx[k]] + inflow[idx[k]], loss, inflow, discharge, balance);
+        pass_on(g, boxes, idx[k], source[idx[k]], loss, inflow, discharge, balance);
     free(idx);
     free(inflow);
+    free(boxes);
     return SOAK_OK;
 }
 

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "bake_rain_film.h"
+#include "bake_rain_stream.h"
 #include "bake_rain_flow.h"
 #include "bake_rain_level.h"
 #include "bake_rain_scene.h"
@@ -31,6 +32,7 @@ struct soak_rain_frames {
     int plan_threads; /* the most threads plan sweeps with */
     size_t *order, count;
     double *retain, *kappa, *source, *inflow;
+    soak_rain_box *boxes; /* the wave's scratch: the streams' boxes */
     double dt, rain_m_s, evap_m_s;
     rain_state now, cut; /* after whole steps; and cut short at a frame's time */
 };
@@ -46,6 +48,7 @@ void soak_rain_frames_destroy(soak_rain_frames *f)
     free(f->kappa);
     free(f->source);
     free(f->inflow);
+    free(f->boxes);
     free(f->now.depth);
     free(f->cut.depth);
     free(f);
@@ -84,9 +87,11 @@ static soak_status frames_alloc(soak_rain_frames *f, const soak_bake_exec *exec)
     f->kappa = malloc(n * sizeof *f->kappa);
     f->source = malloc(n * sizeof *f->source);
     f->inflow = malloc(n * sizeof *f->inflow);
+    f->boxes = malloc(n * sizeof *f->boxes);
     f->now.depth = calloc(n, sizeof *f->now.depth);
     f->cut.depth = malloc(n * sizeof *f->cut.depth);
-    if (!f->retain || !f->kappa || !f->source || !f->inflow || !f->now.depth || !f->cut.depth) return SOAK_ERR_NOMEM;
+    if (!f->retain || !f->kappa || !f->source || !f->inflow || !f->boxes || !f->now.depth || !f->cut.depth)
+        return SOAK_ERR_NOMEM;
     f->grid = (soak_rain_flow_grid){f->sc.w, f->sc.h, f->sc.covered, f->sc.adj, f->sc.area, f->sc.drip, f->sc.level,
                                     f->retain, f->sc.descent};
     soak_status st = film_faces(f);
@@ -160,7 +165,7 @@ static soak_status advance(soak_rain_frames *f, rain_state *s, double tau, int r
     double dripped = 0.0;
     for (size_t k = 0; k < f->count && raining; ++k) s->bal.in += f->source[f->order[k]] * tau;
     soak_status st = soak_rain_wave_step(&f->grid, f->order, f->count, f->kappa, raining ? f->source : NULL, tau,
-                                         s->depth, f->inflow, &dripped);
+                                         s->depth, f->inflow, f->boxes, &dripped);
     s->bal.dripped += dripped;
     double before = volume(f, s->depth);
     if (st == SOAK_OK && f->puddles) st = soak_rain_level_run(f->puddles, s->depth);

@@ -4,6 +4,7 @@
 #define SOAK_BAKE_RAIN_WAVE_H
 
 #include "bake_rain_flow.h"
+#include "bake_rain_stream.h"
 
 /* kappa (m^3/s per m^3 of h^3) of a film texel carrying a stream `width`
  * wide (soak_rain_flow_width) at sin_theta: its outflow is kappa h^3,
@@ -19,12 +20,15 @@ double soak_rain_wave_depth(double area, double c, double volume);
  * the routing graph, texels in `order` (highest first): a texel gets
  * depth * area + source * dt + what the texels above it sent it this step;
  * a film texel (kappa > 0) keeps the depth h of soak_rain_wave_depth and
- * passes the rest (dt kappa h^3) on in the routing's shares
- * (soak_rain_flow_shares; off the surface into *dripped, m^3; all of it
+ * passes the rest (dt kappa h^3) on along the descent with the streams'
+ * boxes (bake_rain_stream.h; soak_rain_flow_shares where the texel has no
+ * descent; off the surface into *dripped, m^3; all of it
  * where it faces down); any other texel keeps all it gets (for the sweeps).
- * source may be NULL (no rain); inflow is scratch (w * h). Volume before + sources = volume after +
+ * source may be NULL (no rain); inflow and boxes are scratch (w * h; boxes
+ * NULL: allocated here each step). Volume before + sources = volume after +
  * *dripped up to rounding; one pass, so the same bits at any thread count. */
 soak_status soak_rain_wave_step(const soak_rain_flow_grid *g, const size_t *order, size_t count, const double *kappa,
-                                const double *source, double dt, double *depth, double *inflow, double *dripped);
+                                const double *source, double dt, double *depth, double *inflow, soak_rain_box *boxes,
+                                double *dripped);
 
 #endif

@@ -202,7 +202,7 @@ static void test_shock(void)
     double hs = cbrt(3.0 * MU * q / (RHO * G)), U = q / hs, us = RHO * G * hs * hs / (2.0 * MU);
     double t = 0.6 * ROWS * a / U, dt = t / 2000, dripped = 0.0, out = 0.0;
     for (int k = 0; k < 2000; ++k) {
-        soak_rain_wave_step(&g, order, ROWS, kappa, source, dt, depth, inflow, &dripped);
+        soak_rain_wave_step(&g, order, ROWS, kappa, source, dt, depth, inflow, NULL, &dripped);
         out += dripped;
     }
     int front = ROWS;

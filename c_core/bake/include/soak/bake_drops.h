@@ -89,10 +89,14 @@ typedef struct soak_drops_params {
     double dry_time;        /* s for the drying schedule's [0, 1], (0, 1e6] */
     double t_fill;          /* drying schedule's pore emptying time, [0, 1] */
     int wrap;               /* 1: splats wrap across the map's edges (a tiling plane); 0: clipped */
+    int splash;             /* 1: drops on wet texels splash (below); 0: every drop is one splat */
+    double splash_fraction; /* share of a splashing drop's volume thrown as secondaries, [0, 1] */
+    double splash_speed;    /* secondaries' largest launch speed / impact speed, [0, 1] */
 } soak_drops_params;
 
 /* seed 0, 10 mm/h, 1 mm texels, capacity 0.2 mm, Clanet spread, all drops,
- * 10 s of rain, 20 s drying, t_fill 0.2, wrapping. */
+ * 10 s of rain, 20 s drying, t_fill 0.2, wrapping, no splashes (fraction
+ * 0.2, speed 0.2 when turned on). */
 void soak_drops_defaults(soak_drops_params *p);
 soak_status soak_drops_check(const soak_drops_params *p);
 
@@ -121,5 +125,50 @@ void soak_drops_destroy(soak_drops_state *s);
 soak_status soak_drops_frame(soak_drops_state *s, double t, const soak_bake_exec *exec, soak_image *out);
 /* Impacts applied so far (every impact with t_i < the last frame's time). */
 size_t soak_drops_applied(const soak_drops_state *s);
+/* Of those, the impacts that splashed. */
+size_t soak_drops_splashed(const soak_drops_state *s);
+
+/* ---- splashes (bake_drops_splash.c) -------------------------------------
+ * A drop landing on a texel that holds water (depth h > 0) splashes when
+ * K = We Oh^(-0.4) exceeds the crown-splash threshold of a drop on a
+ * liquid film, G. E. Cossali, A. Coghe, M. Marengo, "The impact of a single
+ * drop on a wetted solid surface", Exp. Fluids 22, 463-472 (1997):
+ *   K_c = 2100 + 5880 delta^1.44,  delta = h / D (clamped to [0, 1]),
+ * We = rho v^2 D / sigma, Oh = mu / sqrt(rho sigma D), water at 20 C. (On a
+ * dry solid Mundo, Sommerfeld & Tropea 1995, Int. J. Multiphase Flow 21,
+ * 151-173, put the threshold at Oh Re^1.25 = 57.7; Oh Re^1.25 = (We
+ * Oh^-0.4)^0.625 exactly, so that is K = 57.7^1.6 = 657, not 57.7. Dry
+ * texels are not splashed here.) The crown breaks into N fingers, N =
+ * We^1/2 Re^1/4 / (4 sqrt 3) (Marmanis & Thoroddsen, "Scaling of the
+ * fingering pattern of an impacting drop", Phys. Fluids 8, 1344-1346,
+ * 1996), rounded, at least 1; each throws one secondary drop, at equal
+ * angles with a random phase, of equal volume: splash_fraction of the
+ * drop's volume in all (an assumed share, a setting: no measurement of it
+ * for rain on a film is used), the rest spreading as the drop's splat.
+ * A secondary leaves at 45 deg with a speed uniform in [1/2, 1] of
+ * splash_speed times the impact speed (assumed) and lands ballistically at
+ * r = u^2 / g; it spreads by Clanet's factor at its own Weber number. */
+
+/* K = We Oh^-0.4 of a drop of d_mm at speed v (m/s); 0 for bad input. */
+double soak_splash_k(double d_mm, double v);
+/* Cossali et al.'s threshold K_c for a film of film_m metres under a drop
+ * of d_mm; NaN-free (bad input gives the film-free 2100). */
+double soak_splash_k_critical(double film_m, double d_mm);
+/* Marmanis & Thoroddsen's finger count, >= 1. */
+int soak_splash_fingers(double d_mm, double v);
+
+#define SOAK_SPLASH_MAX_FINGERS 256
+
+/* One secondary drop: landing point (texels), diameter (mm), speed (m/s). */
+typedef struct soak_splash_drop {
+    double x, y, d_mm, v;
+} soak_splash_drop;
+
+/* The secondaries of impact imp on a texel holding film_m of water:
+ * returns their count n (0: no splash) into out[SOAK_SPLASH_MAX_FINGERS];
+ * their volumes sum to splash_fraction of the drop's. Deterministic in
+ * (seed, impact). */
+int soak_splash_throw(const soak_drops_params *p, const soak_drop_impact *imp, double film_m,
+                      soak_splash_drop out[SOAK_SPLASH_MAX_FINGERS]);
 
 #endif

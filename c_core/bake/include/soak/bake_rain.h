@@ -76,9 +76,13 @@
  *      along the surface's steepest descent, drips it off open edges and
  *      down-facing texels, or holds it (pits). The descent is gravity
  *      projected on the surface, -(up - (up.n) n), mapped into texel steps
- *      through the UV Jacobian (least squares on dpdx, dpdy), and split
- *      between the two of the 8 neighbours whose directions bracket it, in
- *      proportion to the angle (the D-infinity routing of D. G. Tarboton,
+ *      through the UV Jacobian (least squares on dpdx, dpdy); the water
+ *      a texel passes on fills a box within it (the whole texel where rain
+ *      falls on it, else the bounding box of what flowed in), moved one
+ *      texel along the descent's major axis and split between the two
+ *      texels it then overlaps by their share of its width (private
+ *      bake_rain_stream.h: a stream keeps its edge; for a full box the
+ *      line-crossing form of the D-infinity routing of D. G. Tarboton,
  *      "A new method for the determination of flow directions and upslope
  *      areas in grid digital elevation models", Water Resour. Res. 33(2)
  *      (1997) 309-319, with the direction from the surface's own gradient);
@@ -104,6 +108,32 @@
  *      sin theta = 0 (flat) has no film; a film over SOAK_RAIN_FILM_MAX is
  *      cut there (the laminar form does not hold: a sheet of water whose
  *      depth the level routing resolves).
+ *    - runnels (contact_angle_deg > 0): a film whose flux per unit width q
+ *      is below the minimum wetting rate cannot keep the face covered and
+ *      gathers into rivulets. D. E. Hartley, W. Murgatroyd, "Criteria for
+ *      the break-up of thin liquid layers flowing isothermally over solid
+ *      surfaces", Int. J. Heat Mass Transfer 7 (1964) 1003-1015, force
+ *      criterion: Gamma_min = 1.69 (mu rho / g')^(1/5) (sigma (1 - cos
+ *      theta_c))^(3/5) kg/(m s), q_min = Gamma_min / rho, with g' = g sin
+ *      theta for a face inclined at theta (their plate is vertical; the
+ *      film's driving gravity is g sin theta: our extension). Spacing: the
+ *      fingering wavelength of a film front, 14 l, l = h (3 Ca)^(-1/3) =
+ *      (h l_c^2 / sin theta)^(1/3), l_c = sqrt(sigma / (rho g)) (S. M.
+ *      Troian, E. Herbolzheimer, S. A. Safran, J. F. Joanny, "Fingering
+ *      instabilities of driven spreading films", Europhys. Lett. 10 (1989)
+ *      25-30), of the median broken film (one spacing per bake: straight
+ *      streaks). Each rivulet carries the flux of its spacing, Q = q
+ *      spacing (water conserved across every line), with the thin-rivulet
+ *      profile h(y) = theta_c (a^2 - y^2) / (2 a) and the lubrication flux
+ *      Q = 4 g sin theta theta_c^3 a^4 / (105 nu) (Nusselt's local flux
+ *      g sin theta h^3 / (3 nu) integrated over the profile; the narrow
+ *      rivulet of B. R. Duffy, H. K. Moffatt, "Flow of a viscous trickle on
+ *      a slowly varying incline", Chem. Eng. J. 60 (1995) 141-146). Rivulet k runs
+ *      along s = (k + phase) spacing, s the position across the slope,
+ *      p . unit(up x n), phase from the seed; a texel's film is the
+ *      rivulets' mean depth over its width across the flow. Where 2 a >=
+ *      spacing the rivulets touch and the film holds. Water, sigma = 0.0728
+ *      N/m. The retention of the time loop follows the rivulets.
  * 4. Output wetness w = 1 - exp(-depth / saturation_depth) in [0,1], and
  *    w = 1 wherever a film runs (film >= SOAK_RAIN_FILM_RUNNING): the film
  *    is supplied continuously, so the pores under it are full and it covers
@@ -211,12 +241,13 @@ typedef struct soak_rain_params {
     int gutter;             /* texels of dilation into empty texels, 0..64 */
     int film;               /* 1: falling film on slopes (step 3b), 0: static retention only */
     soak_uv_options uv;     /* step 1's UV rules (soak/bake_uv.h): wrap outside [0,1]^2, no UDIM */
+    double contact_angle_deg; /* [0, 90]: > 0 breaks thin films into runnels (step 3c); 0 = the film holds */
 } soak_rain_params;
 
 /* seed 0, 64 rays, rain sky, up +z, rain from +z, spread 10 deg, 600 s in
  * 32 steps, 10 mm/h, 2 mm drops, splat 2 mm, evaporation 0.5 mm/h,
  * retention 0.2 mm, saturation 0.2 mm, 16 flow iterations, gutter 4,
- * falling film on. */
+ * falling film on, contact angle 0 (no runnels). */
 void soak_rain_defaults(soak_rain_params *p);
 soak_status soak_rain_check(const soak_rain_params *p);
 
@@ -236,6 +267,8 @@ typedef struct soak_rain_result {
     soak_image film;     /* 1 channel, falling film thickness while rain falls, m (0 with film = 0) */
     soak_rain_runoff runoff;
     soak_uv_stats uv;    /* what step 1 made of the faces (soak/bake_uv.h) */
+    int runnel_texels;   /* step 3c: texels whose film broke into rivulets */
+    double runnel_spacing; /* step 3c: the rivulets' spacing, m (0 where none) */
 } soak_rain_result;
 
 /* Bakes at width x height (soak_bake_check_size). The mesh must have UVs
