@@ -11,12 +11,8 @@
 #include "bake_rain_flow_rows.h"
 #include "bake_rain_stream.h"
 
-#define FLOW_DX_INIT {1, 1, 0, -1, -1, -1, 0, 1}
-#define FLOW_DY_INIT {0, -1, -1, -1, 0, 1, 1, 1}
-const int SOAK_RAIN_DX[8] = FLOW_DX_INIT;
-const int SOAK_RAIN_DY[8] = FLOW_DY_INIT;
-/* The same, as constants the compiler folds into unrolled loops. */
-static const int FLOW_DX[8] = FLOW_DX_INIT, FLOW_DY[8] = FLOW_DY_INIT;
+/* SOAK_RAIN_DX and _DY as constants the compiler folds into unrolled loops. */
+static const int FLOW_DX[8] = SOAK_RAIN_DX_INIT, FLOW_DY[8] = SOAK_RAIN_DY_INIT;
 
 /* Rows per task; each task also computes the outflows of one row either
  * side of its band, so wider bands repeat less work. */

@@ -13,25 +13,10 @@
 #ifndef SOAK_BAKE_RAIN_FLOW_H
 #define SOAK_BAKE_RAIN_FLOW_H
 
+#include "bake_rain_grid.h"
 #include "soak/bake.h"
 #include "soak/status.h"
 
-/* Neighbour d of texel (x, y) is (x + DX[d], y + DY[d]); (d + 4) & 7 is the
- * way back. */
-extern const int SOAK_RAIN_DX[8];
-extern const int SOAK_RAIN_DY[8];
-
-typedef struct soak_rain_flow_grid {
-    int w, h;
-    const unsigned char *covered; /* 1: a triangle covers the texel */
-    const unsigned char *adj;     /* bit d: neighbour d is 3D-adjacent and covered */
-    const float *area;            /* world area of the texel */
-    const float *drip;            /* > 0: level drop toward an open edge; < 0: faces down */
-    const double *level;          /* p.up */
-    const double *retain;         /* film depth kept */
-    const float *descent;         /* 2 per texel, the steepest descent in texel steps (x right, y down) per
-                                     metre run, (0, 0) where level; NULL: route by level drops only */
-} soak_rain_flow_grid;
 
 /* What a run of sweeps needs besides the depths, made once per grid: who
  * pulls from whom, the second depth buffer, the level + depth maps and the

@@ -16,7 +16,8 @@ double soak_rain_runnel_min_flux(double theta, double sin_slope)
     if (!(theta > 0.0 && theta <= SOAK_PI)) return 0.0;
     if (!(sin_slope > 0.0)) return INFINITY;
     double g = SOAK_RAIN_GRAVITY * (sin_slope < 1.0 ? sin_slope : 1.0), rho = SOAK_RAIN_WATER_DENSITY;
-    double gamma = 1.69 * pow(SOAK_RAIN_WATER_VISCOSITY * rho / g, 0.2) * pow(SOAK_WATER_SIGMA * (1.0 - cos(theta)), 0.6);
+    double gamma =
+        1.69 * pow(SOAK_RAIN_WATER_VISCOSITY * rho / g, 0.2) * pow(SOAK_WATER_SIGMA * (1.0 - cos(theta)), 0.6);
     return gamma / rho;
 }
 
@@ -54,10 +55,7 @@ static double across(const rain_surface *s, size_t i, soak_vec3 up, soak_vec3 *d
     return len < 1.0 ? len : 1.0;
 }
 
-static double flux_of(double h, double sin_slope)
-{
-    return SOAK_RAIN_GRAVITY * sin_slope * h * h * h / (3.0 * NU);
-}
+static double flux_of(double h, double sin_slope) { return SOAK_RAIN_GRAVITY * sin_slope * h * h * h / (3.0 * NU); }
 
 static int by_value(const void *a, const void *b)
 {
@@ -86,8 +84,8 @@ static soak_status median_spacing(const rain_surface *s, soak_vec3 up, double th
 }
 
 /* Texel i's mean depth of the rivulets about it. */
-static double runnel_depth(const rain_surface *s, const soak_rain_flow_grid *g, size_t i, soak_vec3 dir,
-                           double sn, double theta, double spacing, double phase, double h)
+static double runnel_depth(const rain_surface *s, const soak_rain_flow_grid *g, size_t i, soak_vec3 dir, double sn,
+                           double theta, double spacing, double phase, double h)
 {
     double a = soak_rain_runnel_half_width(flux_of(h, sn) * spacing, theta, sn);
     if (!(2.0 * a < spacing)) return h; /* the rivulets would touch: the film holds */

@@ -29,8 +29,8 @@ double soak_rain_runnel_half_width(double flux, double theta, double sin_slope);
 double soak_rain_runnel_mean_depth(double a, double theta, double y0, double y1);
 
 typedef struct soak_rain_runnel_stats {
-    int broken;         /* texels whose film broke into rivulets */
-    double spacing;     /* m, the rivulets' spacing (0 where none broke) */
+    int broken;     /* texels whose film broke into rivulets */
+    double spacing; /* m, the rivulets' spacing (0 where none broke) */
 } soak_rain_runnel_stats;
 
 /* Replaces film (m, w x h) by rivulets where its flux is below q_min:

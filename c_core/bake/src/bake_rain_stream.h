@@ -22,7 +22,7 @@
 
 #include <stddef.h>
 
-#include "bake_rain_flow.h"
+#include "bake_rain_grid.h"
 
 /* x0, x1, y0, y1; empty while x0 > x1. */
 typedef struct soak_rain_box {

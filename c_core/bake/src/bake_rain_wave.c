@@ -36,16 +36,16 @@ double soak_rain_wave_depth(double area, double c, double volume)
 /* Where texel i's outflow goes: 2 along the descent (share, piece), 1 by
  * the level drops or off a down-facing face (share), 0 nowhere (a pit or
  * flat). */
-static int wave_route(const soak_rain_flow_grid *g, const soak_rain_box *boxes, size_t i, int rained,
-                      double share[9], soak_rain_box piece[8])
+static int wave_route(const soak_rain_flow_grid *g, const soak_rain_box *boxes, size_t i, int rained, double share[9],
+                      soak_rain_box piece[8])
 {
     if (g->drip[i] >= 0.0f && soak_rain_stream_route(g, boxes, i, rained, share, piece)) return 2;
     return soak_rain_flow_shares(g, i, share);
 }
 
 /* Texel i of the step: keeps its implicit depth and passes the rest on. */
-static void wave_texel(const soak_rain_flow_grid *g, soak_rain_box *boxes, size_t i, const double *kappa,
-                       double rain, double dt, double *depth, double *inflow, double *dripped)
+static void wave_texel(const soak_rain_flow_grid *g, soak_rain_box *boxes, size_t i, const double *kappa, double rain,
+                       double dt, double *depth, double *inflow, double *dripped)
 {
     double a = g->area[i], have = depth[i] * a + rain + inflow[i], share[9];
     soak_rain_box piece[8];
