@@ -8,6 +8,8 @@ centres on texel centres). Pass: every pixel within 1/255 (half-float
 frames; the bilinear look-up at a texel centre is the texel). Then a lit
 plane with Soak_Ripple_Normal renders, shows the rings (pixel spread above
 Amount 0's), and the loop: clock = period renders as clock = 0.
+Soak_Wet_Material_Rippled (rings only on knots of wetness >= From) renders its
+dry half as Soak_Wet_Material_Fn and its wet half as Soak_Wet_Material_Bumped.
 Bad input (fps 0) stops the parse with the macro's message.
 
 usage: rain_over_time.py SOAK ROOT TMPDIR"""
@@ -42,6 +44,38 @@ light_source {{ <-3, 2, 4> rgb 1 }}
 plane {{ z, 0 pigment {{ rgb 0.5 }} finish {{ diffuse 1 }}
   Soak_Ripple_Normal("r.", ".exr", {loop}, {period}, clock, {amount}) }}
 """
+
+# the bottom half (y < 0.5) dry, the top half wet (1): Soak_Wet_Material_Rippled
+# against Soak_Wet_Material_Fn (no normal) and Soak_Wet_Material_Bumped (the normal everywhere)
+RIPPLED = """#version 3.7;
+global_settings {{ assumed_gamma 1.0 }}
+#include "soak.inc"
+camera {{ orthographic location <0.5, 0.5, 5> look_at <0.5, 0.5, 0> right -x up y sky y }}
+light_source {{ <-3, 2, 4> rgb 1 }}
+#declare W = function {{ select(y - 0.5, 0, 1) }}
+#declare Rip = Soak_Ripple_Normal("r.", ".exr", {loop}, {period}, clock, 0.2)
+plane {{ z, 0 {mat} }}
+"""
+MATS = {"plain": 'Soak_Wet_Material_Fn("concrete", "water", W)',
+        "bumped": 'Soak_Wet_Material_Bumped("concrete", "water", W, normal { Rip })',
+        "rippled": 'Soak_Wet_Material_Rippled("concrete", "water", W, normal { Rip }, 0.5)'}
+
+
+def rippled_checks(tmp, lib):
+    """Soak_Wet_Material_Rippled: the dry half renders as the unbumped material
+    (no rings on dry ground), the wet half as the bumped one. Returns the failures."""
+    img = {k: render(tmp, lib, "rip_" + k, RIPPLED.format(loop=LOOP, period=PERIOD, mat=m), 0, RN)
+           for k, m in MATS.items()}
+    wet, dry = slice(0, RN // 2 - 2), slice(RN // 2 + 2, RN)   # image rows top down: y > 0.5 first
+    checks = [("bumped dry half differs from the unbumped (the check can fail)",
+               np.abs(img["bumped"][dry] - img["plain"][dry]).max() > 0.01),
+              ("rippled dry half = the unbumped material (within 1e-4)",
+               np.abs(img["rippled"][dry] - img["plain"][dry]).max() <= 1e-4),
+              ("rippled wet half = the bumped material (within 1e-4)",
+               np.abs(img["rippled"][wet] - img["bumped"][wet]).max() <= 1e-4)]
+    for what, ok in checks:
+        print(f"{'ok  ' if ok else 'FAIL'} {what}")
+    return sum(not ok for _, ok in checks)
 
 
 def run(cmd, cwd):
@@ -106,6 +140,7 @@ def main():
     ok = np.array_equal(lit, looped)
     print(f"{'ok  ' if ok else 'FAIL'} lit ripples at t = period render as at t = 0")
     failures += 0 if ok else 1
+    failures += rippled_checks(tmp, lib)
     pov = os.path.join(tmp, "bad.pov")
     with open(pov, "w") as f:
         f.write(FLAT.format(fn='Soak_Drops_Fn("d.", ".exr", 0, clock, 0, 6, 0)'))
