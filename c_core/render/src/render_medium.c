@@ -173,6 +173,15 @@ typedef struct nee_ctx {
     /* Where the path entered the medium and the face's outward unit normal:
      * the plane the photon gather is clipped by (rt_photons_gather). */
     soak_vec3 entry_p, entry_n;
+    /* The film transmittance last computed for light li < RT_NEE_CACHE and
+     * its inputs: on a planar face under the sun every estimate has the same
+     * cos1 and coverage, and film_shadow would recompute the same value. */
+    int tf_known[RT_NEE_CACHE];
+    double tf_cover[RT_NEE_CACHE], tf_cos1[RT_NEE_CACHE], tf_value[RT_NEE_CACHE];
+    /* The walk's object is the scene's only one and convex (box, sphere):
+     * a ray leaving its surface outward meets nothing, so shadow rays from
+     * exit points are certain to see the light. */
+    int lone_convex;
 } nee_ctx;
 
 /* Distance along d from x to the plane through p with normal n (pointing
@@ -330,6 +339,27 @@ static int find_exit(nee_ctx *c, const soak_light *l, int li, soak_vec3 x, nee_e
     return e->cos1 > 0 && e->cos3 > 0;
 }
 
+/* film_shadow, reused while light li's cos1 and coverage repeat exactly
+ * (same inputs, same value: the estimate is unchanged bit for bit). */
+static double film_shadow_at(nee_ctx *c, int li, double cover, double cos1)
+{
+    if (li >= RT_NEE_CACHE) return film_shadow(c->m, cover, cos1);
+    if (c->tf_known[li] && c->tf_cover[li] == cover && c->tf_cos1[li] == cos1) return c->tf_value[li];
+    c->tf_known[li] = 1;
+    c->tf_cover[li] = cover;
+    c->tf_cos1[li] = cos1;
+    c->tf_value[li] = film_shadow(c->m, cover, cos1);
+    return c->tf_value[li];
+}
+
+/* Whether light l is seen from exit e: always for the lone convex object
+ * (e->wl leaves it outward, cos1 > 0), else by a shadow ray. */
+static int exit_sees_light(const nee_ctx *c, const nee_exit *e, double dist_light)
+{
+    if (c->lone_convex) return 1;
+    return rt_visible(c->t, soak_geometry_offset(e->h.p, e->n, e->wl), e->wl, dist_light);
+}
+
 /* Beer-Lambert in the film on the light's way in, weighted by the share of
  * the film transmittance Tf that crosses a film with thickness (the wet
  * share less the pore water's, which absorbs over none). */
@@ -348,7 +378,7 @@ static soak_rgb film_absorbed(const soak_material *m, double cover, double cos1,
 /* Adds the estimate of light l at x through the exit e (see the top of this
  * file) to the path's radiance, unless the light is blocked or nothing gets
  * through. */
-static void add_delta_light(nee_ctx *c, const soak_light *l, soak_vec3 x, soak_vec3 d_in, soak_rgb beta,
+static void add_delta_light(nee_ctx *c, const soak_light *l, int li, soak_vec3 x, soak_vec3 d_in, soak_rgb beta,
                             const soak_medium_point *local, const nee_exit *e)
 {
     rt_thread *t = c->t;
@@ -363,7 +393,7 @@ static void add_delta_light(nee_ctx *c, const soak_light *l, soak_vec3 x, soak_v
         E = soak_rgb_scale(E, 1.0 / r2);
     }
     double cover = soak_scene_wetness(c->obj, e->h.p, e->h.u, e->h.v) * m->film_coverage;
-    double Tf = film_shadow(m, cover, e->cos1);
+    double Tf = film_shadow_at(c, li, cover, e->cos1);
     if (!(Tf > 0)) return;
     double ph = rt_hg2(&local->phase, soak_v3_dot(d_in, e->d3));
     soak_rgb Tm;
@@ -372,7 +402,7 @@ static void add_delta_light(nee_ctx *c, const soak_light *l, soak_vec3 x, soak_v
     else if (soak_medium_rgb_transmittance(c->med, x, e->d3, e->h.t, &t->rng, &Tm) != SOAK_OK)
         return;
     if (!(rgb_max(Tm) > 0)) return;
-    if (!rt_visible(t, soak_geometry_offset(e->h.p, e->n, e->wl), e->wl, dist_light)) return;
+    if (!exit_sees_light(c, e, dist_light)) return;
     soak_rgb L = soak_rgb_mul(soak_rgb_mul(beta, Tm), E);
     /* 1/n3^2: the radiance factor of entering, left out of beta (rt_cross_stack). */
     L = soak_rgb_scale(L, e->inv_q * ph * Tf * e->cos1 / (e->cos3 * n3 * n3 * c->path->eta_scale)); /* walk weights: see rt_wet_medium */
@@ -411,7 +441,7 @@ static int medium_vertex(void *ctx, soak_vec3 x, soak_vec3 d_in, soak_rgb beta, 
             c->cache_p[li] = e.h.p;
             c->cache_n[li] = e.n;
         }
-        add_delta_light(c, l, x, d_in, beta, local, &e);
+        add_delta_light(c, l, li, x, d_in, beta, local, &e);
     }
     if (c->t->ctx->caustics) c->path->L = soak_rgb_add(c->path->L, caustic_light(c, x, d_in, beta, local));
     return 1;
@@ -521,6 +551,8 @@ void rt_wet_medium(rt_thread *t, const soak_hit *hit, const soak_object *obj, co
     nc.path = path;
     nc.entry_p = hit->p;
     nc.entry_n = soak_v3_norm(n_out);
+    const soak_scene *sc = t->ctx->scene;
+    nc.lone_convex = sc->n_objects == 1 && (obj->shape == SOAK_SHAPE_BOX || obj->shape == SOAK_SHAPE_SPHERE);
     /* The walk's roulette plays on its weight: start it at beta * eta_scale
      * (rt_rr_weight's convention) and undo the scale on what it returns. */
     soak_walk_options opt = rt_walk_options(soak_rgb_scale(path->beta, path->eta_scale));
