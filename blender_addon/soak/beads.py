@@ -96,4 +96,3 @@ def wire(mat, image, repeat=1.0, uv_map="", distance=0.006):
     image.colorspace_settings.name = "Non-Color"
     image.alpha_mode = "STRAIGHT"
     return snapshot.atomic(tree, _wire, mat, gns, image, repeat, uv_map, distance)
-

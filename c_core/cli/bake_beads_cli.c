@@ -39,8 +39,8 @@ static const cli_opt beads_opts[] = {
      .help = "seconds of rain (default 10)"},
     {"--texel", NULL, CLI_OPT_DOUBLE, .lo = 1e-9, .hi = SOAK_DROPS_MAX_SCALE, F(p.texel_m), .meta = "M",
      .help = "metres per texel (default 0.00025)"},
-    {"--min-drop", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = SOAK_DROP_D_MAX_MM * 0.999, F(p.min_diameter_mm),
-     .meta = "MM", .help = "ignore drops below this diameter, mm (default 0: all that land)"},
+    {"--min-drop", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = SOAK_DROP_D_MAX_MM * 0.999, F(p.min_diameter_mm), .meta = "MM",
+     .help = "ignore drops below this diameter, mm (default 0: all that land)"},
     {"--height-range", NULL, CLI_OPT_DOUBLE, .lo = 1e-12, .hi = 1, F(p.height_range_m), .meta = "M",
      .help = "bead height stored as alpha 1, m (default 0.006; a puddle of water\nstands at most 2 l_c = 5.4 mm)"},
     {"--supersample", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_BEADS_MAX_SUPERSAMPLE, F(p.supersample), .meta = "N",
@@ -54,17 +54,16 @@ static const cli_opt float_opt[] = {
 
 static void usage(FILE *out)
 {
-    fprintf(out,
-            "usage: soak bake beads [--preset NAME | --contact-angle DEG] [options] -o beads.exr\n\n"
-            "Rain on a smooth or water-repellent surface (glass, paint, waxed wood, leaves) stands as\n"
-            "beads. The drops of `soak bake drops` (same --seed, --rate, --texel: same drops) land as\n"
-            "spherical caps of their own volume at the contact angle theta: h / r = tan(theta / 2),\n"
-            "V = pi h (3 r^2 + h^2) / 6 (de Gennes, Brochard-Wyart, Quere 2004); beads that touch\n"
-            "coalesce (volume and centre of mass kept). The map tiles. RGBA: RGB = (n + 1) / 2, the\n"
-            "normal in tangent space, v up (Blender/OpenGL); A = height / --height-range. Output:\n"
-            ".exr or .tif (PNG would store colour divided by alpha: refused). Below --bead-above the\n"
-            "water is a film (soak bake drops / rain) and the map is flat, which the bake says.\n\n"
-            "options:\n");
+    fprintf(out, "usage: soak bake beads [--preset NAME | --contact-angle DEG] [options] -o beads.exr\n\n"
+                 "Rain on a smooth or water-repellent surface (glass, paint, waxed wood, leaves) stands as\n"
+                 "beads. The drops of `soak bake drops` (same --seed, --rate, --texel: same drops) land as\n"
+                 "spherical caps of their own volume at the contact angle theta: h / r = tan(theta / 2),\n"
+                 "V = pi h (3 r^2 + h^2) / 6 (de Gennes, Brochard-Wyart, Quere 2004); beads that touch\n"
+                 "coalesce (volume and centre of mass kept). The map tiles. RGBA: RGB = (n + 1) / 2, the\n"
+                 "normal in tangent space, v up (Blender/OpenGL); A = height / --height-range. Output:\n"
+                 ".exr or .tif (PNG would store colour divided by alpha: refused). Below --bead-above the\n"
+                 "water is a film (soak bake drops / rain) and the map is flat, which the bake says.\n\n"
+                 "options:\n");
     cli_opt img[BAKE_SHARED_OPTS_MAX];
     size_t n = bake_table_help(bake_image_opts, bake_image_opts_n, img, "--output",
                                "output map: .exr (half) or .tif (16-bit linear), .tx");
@@ -105,7 +104,8 @@ static int angle_from_preset(beads_job *j)
                   soak_presets_path(db));
         rc = SOAK_EXIT_USAGE;
     } else if (!j->have_angle) {
-        j->p.contact_angle_deg = p->contact_angle_deg < SOAK_BEAD_ANGLE_MIN ? SOAK_BEAD_ANGLE_MIN : p->contact_angle_deg;
+        j->p.contact_angle_deg =
+            p->contact_angle_deg < SOAK_BEAD_ANGLE_MIN ? SOAK_BEAD_ANGLE_MIN : p->contact_angle_deg;
     }
     soak_presets_free(db);
     return rc;
@@ -115,8 +115,9 @@ static int refuse_png(const bake_opts *o)
 {
     const char *dot = o->output ? strrchr(o->output, '.') : NULL;
     if (dot && strcasecmp(dot, ".png") == 0) {
-        cli_error(CMD, "-o %s: a PNG stores colour divided by alpha, which would break the normal under the height; "
-                       "write .exr or .tif",
+        cli_error(CMD,
+                  "-o %s: a PNG stores colour divided by alpha, which would break the normal under the height; "
+                  "write .exr or .tif",
                   o->output);
         return SOAK_EXIT_USAGE;
     }
@@ -126,8 +127,9 @@ static int refuse_png(const bake_opts *o)
 static void report(const beads_job *j)
 {
     if (j->flat) {
-        fprintf(stderr, "soak bake beads: contact angle %g deg is below --bead-above %g deg: water stands as a film "
-                        "here (soak bake drops / rain); the map is flat (no beads)\n",
+        fprintf(stderr,
+                "soak bake beads: contact angle %g deg is below --bead-above %g deg: water stands as a film "
+                "here (soak bake drops / rain); the map is flat (no beads)\n",
                 j->p.contact_angle_deg, j->bead_above);
         return;
     }

@@ -97,7 +97,8 @@ def main():
     print(f"luminance spread: bare {s0:.5f}, beads {sb:.5f}; largest pixel change {diff:.4f}")
     check(diff > 0.01 and sb > 2 * s0, f"beads show: spread {sb:.5f} > 2 x {s0:.5f}, pixels change by {diff:.4f}")
     check(bpy.ops.soak.bake_beads(contact_angle=30.0, **kw) == {"FINISHED"}, "Bake Beads at 30 deg (a film)")
-    check(len([n for n in tree.nodes if n.get("soak_role") == "beads"]) == 4, "the second bake replaced the first's nodes")
+    check(len([n for n in tree.nodes if n.get("soak_role") == "beads"]) == 4,
+          "the second bake replaced the first's nodes")
     film = render(sc, "film")
     d = max(abs(a - b) for a, b in zip(film, bare))
     check(d < 1e-4, f"a film surface's flat map leaves the render as it was (max change {d:.2e})")

@@ -59,8 +59,8 @@ void soak_beads_defaults(soak_beads_params *p)
 soak_status soak_beads_check(const soak_beads_params *p)
 {
     if (!p) return SOAK_ERR_NULL;
-    if (!soak_in_range(p->rate_mm_h, 1e-9, SOAK_DROP_RATE_MAX) || !soak_in_range(p->texel_m, 1e-9, SOAK_DROPS_MAX_SCALE) ||
-        !soak_in_range(p->duration, 0, SOAK_DROPS_MAX_TIME) ||
+    if (!soak_in_range(p->rate_mm_h, 1e-9, SOAK_DROP_RATE_MAX) ||
+        !soak_in_range(p->texel_m, 1e-9, SOAK_DROPS_MAX_SCALE) || !soak_in_range(p->duration, 0, SOAK_DROPS_MAX_TIME) ||
         !(soak_in_range(p->min_diameter_mm, 0, SOAK_DROP_D_MAX_MM) && p->min_diameter_mm < SOAK_DROP_D_MAX_MM) ||
         !soak_in_range(p->contact_angle_deg, SOAK_BEAD_ANGLE_MIN, SOAK_BEAD_ANGLE_MAX) ||
         !soak_in_range(p->height_range_m, 1e-12, 1) ||
@@ -231,7 +231,8 @@ static void encode(const raster *ra, const soak_beads_params *p, soak_image *out
         double len = sqrt(nx * nx + ny * ny + nz * nz);
         if (!(len > 1e-12)) nx = ny = 0, nz = len = 1;
         float *px = out->pixels + 4 * i;
-        px[0] = (float)(0.5 * (nx / len + 1)), px[1] = (float)(0.5 * (ny / len + 1)), px[2] = (float)(0.5 * (nz / len + 1));
+        px[0] = (float)(0.5 * (nx / len + 1)), px[1] = (float)(0.5 * (ny / len + 1)),
+        px[2] = (float)(0.5 * (nz / len + 1));
         double a = ra->h[i] / pts / p->height_range_m;
         if (a > 1) a = 1, ++stats->clipped_texels;
         px[3] = (float)a;
@@ -241,8 +242,14 @@ static void encode(const raster *ra, const soak_beads_params *p, soak_image *out
 static soak_status raster_beads(const bead_set *s, const soak_beads_params *p, soak_image *out, soak_beads_stats *stats)
 {
     const size_t n = (size_t)s->width * s->height;
-    raster ra = {calloc(n, sizeof(double)), calloc(n, sizeof(double)), calloc(n, sizeof(double)),
-                 calloc(n, sizeof(double)), s->width, s->height, p->supersample, p->texel_m};
+    raster ra = {calloc(n, sizeof(double)),
+                 calloc(n, sizeof(double)),
+                 calloc(n, sizeof(double)),
+                 calloc(n, sizeof(double)),
+                 s->width,
+                 s->height,
+                 p->supersample,
+                 p->texel_m};
     soak_status st = ra.h && ra.nx && ra.ny && ra.nz_missing ? SOAK_OK : SOAK_ERR_NOMEM;
     const double l_c = sqrt(SOAK_WATER_SIGMA / (SOAK_WATER_RHO * SOAK_GRAVITY));
     for (size_t k = 0; st == SOAK_OK && k < s->n; ++k) {
@@ -286,8 +293,17 @@ soak_status soak_beads_from_drops(const soak_beads_params *p, int width, int hei
     if (st == SOAK_OK) st = soak_bake_check_size(width, height);
     if (st == SOAK_OK) st = check_drops(drops, n);
     if (st != SOAK_OK) return st;
-    bead_set s = {NULL, 0, 0, NULL, (width + GRID_CELL - 1) / GRID_CELL, (height + GRID_CELL - 1) / GRID_CELL,
-                  width, height, p->contact_angle_deg, p->texel_m, 0};
+    bead_set s = {NULL,
+                  0,
+                  0,
+                  NULL,
+                  (width + GRID_CELL - 1) / GRID_CELL,
+                  (height + GRID_CELL - 1) / GRID_CELL,
+                  width,
+                  height,
+                  p->contact_angle_deg,
+                  p->texel_m,
+                  0};
     s.head = malloc((size_t)s.gx * s.gy * sizeof *s.head);
     if (!s.head) return SOAK_ERR_NOMEM;
     for (size_t c = 0; c < (size_t)s.gx * s.gy; ++c) s.head[c] = -1;

@@ -121,7 +121,8 @@ static void test_coalescence(void)
     check_rel("volume conserved by coalescence", st.bead_volume_m3, 5e-9, 1e-12);
     double mx = 0, w = 0;
     for (int x = 0; x < 128; ++x)
-        for (int y = 20; y < 60; ++y) mx += x * (double)img.pixels[4 * (y * 128 + x) + 3], w += img.pixels[4 * (y * 128 + x) + 3];
+        for (int y = 20; y < 60; ++y)
+            mx += x * (double)img.pixels[4 * (y * 128 + x) + 3], w += img.pixels[4 * (y * 128 + x) + 3];
     check_close("merged bead at the centre of mass (texels)", mx / w + 0.5, 40 + gap / 2, 0.05);
     /* across the wrapping edge: drops at x = 1 and x = 127 - gap + 2 touch through it */
     soak_bead_drop e[2] = {{1, 64, 1e-9}, {129 - gap, 64, 1e-9}};
