@@ -165,6 +165,17 @@ int soak_bake_beads_main(int argc, char **argv)
     j.width = (int)o.width, j.height = (int)o.height;
     j.flat = !(j.p.contact_angle_deg > j.bead_above);
     if (soak_beads_check(&j.p) != SOAK_OK) return bake_fail(CMD, SOAK_ERR_ARG, "invalid bead settings");
+    /* the drops are held in memory: refuse before drawing them */
+    const double area = (double)o.width * j.p.texel_m * (double)o.height * j.p.texel_m;
+    const double expected =
+        soak_drop_flux(j.p.rate_mm_h, j.p.min_diameter_mm, SOAK_DROP_D_MAX_MM) * area * j.p.duration;
+    if (!j.flat && !(expected <= 0.5 * SOAK_BEADS_MAX_DROPS)) {
+        cli_error(CMD,
+                  "about %.3g drops expected (--rate x map area x --duration) is above the %.3g this bake holds; "
+                  "shorten --duration or bake a smaller map",
+                  expected, 0.5 * SOAK_BEADS_MAX_DROPS);
+        return SOAK_EXIT_USAGE;
+    }
     rc = bake_run(&o, frame, &j);
     if (rc == 0) report(&j);
     return rc;
