@@ -126,6 +126,7 @@ static void test_coalescence(void)
     check_close("merged bead at the centre of mass (texels)", mx / w + 0.5, 40 + gap / 2, 0.05);
     /* across the wrapping edge: drops at x = 1 and x = 127 - gap + 2 touch through it */
     soak_bead_drop e[2] = {{1, 64, 1e-9}, {129 - gap, 64, 1e-9}};
+    soak_image_free(&img);
     check_status("wrap", soak_beads_from_drops(&p, 128, 128, e, 2, NULL, &img, &st), SOAK_OK);
     check_true("drops touching across the map's edge coalesce (the map tiles)", st.beads == 1);
     soak_image_free(&img);
