@@ -41,6 +41,7 @@ class _Rain:
                 n.get(material_tree.ROLE_KEY) == "rain" for n in mat.node_tree.nodes):
             col.label(text="Ripples show where the drops reach Puddle Level", icon="INFO")
         layout.operator("soak.bake_rain", icon="OUTLINER_OB_FORCE_FIELD")
+        layout.operator("soak.bake_beads")
 
 
 # SOAK_PT_wetness_rain under the Soak panel, SOAK_PT_node_wetness_rain in the Shader Editor's sidebar

@@ -21,6 +21,8 @@ int soak_bake_rain_main(int argc, char **argv);
 /* Implemented in bake_drops_cli.c and bake_ripples_cli.c: rain over time. */
 int soak_bake_drops_main(int argc, char **argv);
 int soak_bake_ripples_main(int argc, char **argv);
+/* bake_beads_cli.c: beads by the contact angle (soak bake beads). */
+int soak_bake_beads_main(int argc, char **argv);
 
 /* The 2D kinds, each in bake_<kind>_cli.c. */
 int soak_bake_turbulence_main(int argc, char **argv);

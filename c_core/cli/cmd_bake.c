@@ -18,6 +18,7 @@ static const soak_cli_command kinds[] = {
     {"rain", "rain wetting maps", soak_bake_rain_main},
     {"drops", "raindrop impacts wetting a surface over time, then drying (frame sequence)", soak_bake_drops_main},
     {"ripples", "rain rings on puddles: a tiling, looping normal-map flipbook", soak_bake_ripples_main},
+    {"beads", "rain standing as beads by the contact angle: a normal + height map", soak_bake_beads_main},
 };
 static const int n_kinds = (int)(sizeof kinds / sizeof kinds[0]);
 
@@ -44,6 +45,6 @@ int soak_cmd_bake(int argc, char **argv)
     }
     const soak_cli_command *kind = cli_find(kinds, n_kinds, argv[1]);
     if (kind) return kind->run(argc - 1, argv + 1);
-    cli_error("bake", "unknown kind '%s' (expected turbulence, waves, drying, combine, volume, rain, drops or ripples)", argv[1]);
+    cli_error("bake", "unknown kind '%s' (expected turbulence, waves, drying, combine, volume, rain, drops, ripples or beads)", argv[1]);
     return SOAK_EXIT_USAGE;
 }

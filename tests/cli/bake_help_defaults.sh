@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Every default that `soak bake rain`, `bake drops` and `bake ripples` state in
+# Every default that `soak bake rain`, `bake drops`, `bake ripples` and `bake beads` state in
 # --help is the code's: for each option whose help says "(default X)" with X
 # a value, the bake without the option and the bake with "--option X" write
 # the same bytes (every output, 32-bit EXR). The options of one kind are
@@ -34,6 +34,7 @@ BASES = {
                        "--float", "--frames", "30-30", "-o", "{d}/o.%04d.exr"],
     "ripples": ["bake", "ripples", "--width", "32", "--loop-frames", "4", "--period", "0.4", "--rate", "20",
                 "--float", "--frames", "1-1", "-o", "{d}/o.%04d.exr", "--far", "{d}/f.%04d.exr"],
+    "beads": ["bake", "beads", "--width", "64", "--height", "48", "--duration", "60", "--float", "-o", "{d}/o.exr"],
 }
 # Which base checks which options (the sequence options need --frames).
 SEQUENCE_ONLY = {"--fps", "--frame-origin", "--frame-time", "--time"}
@@ -44,7 +45,8 @@ SEQUENCE_ONLY = {"--fps", "--frame-origin", "--frame-time", "--time"}
 LAMBDA = 2 * math.pi / math.sqrt(998.2 * 9.80665 / 0.0728)
 WORDS = {("rain", "--rain-dir"): "0,1,0",                # "up", and --up defaults to y
          ("ripples", "--wavelength"): repr(LAMBDA),       # the help rounds it to 0.01713
-         ("ripples", "--ring-width"): repr(0.5 * LAMBDA)}  # "half a wavelength"
+         ("ripples", "--ring-width"): repr(0.5 * LAMBDA),  # "half a wavelength"
+         ("beads", "--contact-angle"): "90"}               # "90 without --preset"
 # Options that do not apply (refused) or change nothing in the bytes.
 NOT_APPLICABLE = {("ripples", "--time"), ("ripples", "--frame-time"), ("ripples", "--frame-origin"),
                   ("drops", "--time"), ("rain", "--time")}  # drops/rain: --time is given in a base or "above"
@@ -119,7 +121,7 @@ def check(base, items):
         return [(items[0][0], items[0][1], "exit %d / %d: %s %s" % (ra, rb, ea, eb) if ra or rb else "the outputs differ")]
     return [r for item in items for r in check(base, [item])]
 
-for cmd in ("rain", "drops", "ripples"):
+for cmd in ("rain", "drops", "ripples", "beads"):
     groups = {}
     for name, meta, help_text in options(cmd):
         value = stated_default(cmd, name, meta, help_text)

@@ -352,14 +352,27 @@ static soak_status parse_wetting_group(const mat_reader *r, soak_preset *p)
 {
     static const char *const wet_all[] = {"t_fill", "film_thickness_mm", "source", NULL};
     static const char *const wet_film[] = {"film_thickness_mm", "source", NULL};
+    static const char *const wet_all_ca[] = {
+        "t_fill", "film_thickness_mm", "source", "contact_angle_deg", "contact_angle_source", NULL};
+    static const char *const wet_film_ca[] = {"film_thickness_mm", "source", "contact_angle_deg",
+                                              "contact_angle_source", NULL};
+    const cJSON *w = cJSON_GetObjectItemCaseSensitive(r->m, "wetting");
+    const int ca = cJSON_IsObject(w) && (cJSON_GetObjectItemCaseSensitive(w, "contact_angle_deg") ||
+                                         cJSON_GetObjectItemCaseSensitive(w, "contact_angle_source"));
     const cJSON *g = NULL;
     char gp[PATH_MAX_LEN];
-    soak_status st = open_material_group(r, "wetting", r->porous ? wet_all : wet_film, wet_all, &g, gp);
+    soak_status st = open_material_group(
+        r, "wetting", r->porous ? (ca ? wet_all_ca : wet_all) : (ca ? wet_film_ca : wet_film), wet_all_ca, &g, gp);
     if (st == SOAK_OK && r->porous) st = get_number(r->c, g, gp, "t_fill", 0.0, 1e6, &p->t_fill);
     double film_mm = 0.0;
     if (st == SOAK_OK) st = get_number(r->c, g, gp, "film_thickness_mm", 0.0, 1000.0, &film_mm);
     p->film_thickness_m = soak_m_from_mm(film_mm);
     if (st == SOAK_OK) st = get_string(r->c, g, gp, "source", &p->wetting_source);
+    /* Optional pair (soak/preset.h): water's contact angle and its source, both or neither. */
+    p->contact_angle_deg = -1.0;
+    p->contact_angle_source = NULL;
+    if (st == SOAK_OK && ca) st = get_number(r->c, g, gp, "contact_angle_deg", 0.0, 180.0, &p->contact_angle_deg);
+    if (st == SOAK_OK && ca) st = get_string(r->c, g, gp, "contact_angle_source", &p->contact_angle_source);
     return st;
 }
 

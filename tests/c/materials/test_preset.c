@@ -50,6 +50,9 @@ static void check_shipped(void)
         for (int c = 0; c < 3; ++c) ok = ok && soak_in_range(soak_rgb_at(p->albedo, c), 0, 1);
         ok = ok && soak_in_range(p->ggx_alpha_dry, 1e-4, 1) && soak_in_range(p->ggx_alpha_wet, 1e-4, p->ggx_alpha_dry);
         ok = ok && soak_in_range(p->t_fill, 0, 1e6) && soak_in_range(p->film_thickness_m, 0, 1);
+        /* issue 48 item 4: every shipped preset states water's contact angle, with its source */
+        ok = ok && soak_in_range(p->contact_angle_deg, 0, 180) && p->contact_angle_source &&
+             p->contact_angle_source[0];
         if (p->kind == SOAK_KIND_CONDUCTOR) {
             for (int c = 0; c < 3; ++c) {
                 double want = f0(soak_rgb_at(p->ior_n, c), soak_rgb_at(p->ior_k, c));
@@ -212,6 +215,13 @@ static void check_malformed(void)
     expect_failure(dir, "wet rougher than dry", "\"ggx_alpha_wet\": 0.7", "\"ggx_alpha_wet\": 0.9", SOAK_ERR_ARG,
                    "materials[1].roughness.ggx_alpha_wet");
     expect_failure(dir, "unknown kind", "\"porous_dielectric\"", "\"porous\"", SOAK_ERR_ARG, "materials[1].kind");
+    /* the optional contact angle (issue 48 item 4): both keys or neither, in [0, 180] */
+    expect_failure(dir, "contact angle above 180", "\"t_fill\": 0.1, ",
+                   "\"t_fill\": 0.1, \"contact_angle_deg\": 181, \"contact_angle_source\": \"s\", ", SOAK_ERR_ARG,
+                   "materials[1].wetting.contact_angle_deg");
+    expect_failure(dir, "contact angle without its source", "\"t_fill\": 0.1, ",
+                   "\"t_fill\": 0.1, \"contact_angle_deg\": 30, ", SOAK_ERR_PARSE,
+                   "materials[1].wetting.contact_angle_source: missing (required)");
     expect_failure(dir, "porosity on a conductor", "\"wetting\": {\"film_thickness_mm\": 0.5, \"source\": \"s\"}},",
                    "\"wetting\": {\"film_thickness_mm\": 0.5, \"source\": \"s\"}, \"porosity\": {}},", SOAK_ERR_PARSE,
                    "materials[0].porosity: key not used by kind conductor");

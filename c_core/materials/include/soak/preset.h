@@ -23,7 +23,7 @@
  * albedo {rgb, source}, roughness {ggx_alpha_dry, ggx_alpha_wet, source},
  * ior {n, k, source}, porosity {alpha, s_p, source}, medium {sigma_t_per_mm,
  * source}, phase {dry {g1, g2, w}, wet {g1, g2, w}, source}, wetting {t_fill,
- * film_thickness_mm, source}, sheet {thickness_mm, or grammage_g_m2 and
+ * film_thickness_mm, source, contact_angle_deg, contact_angle_source}, sheet {thickness_mm, or grammage_g_m2 and
  * density_kg_m3 (thickness = grammage / density), source}, measured
  * {wet_dry_ratio, spread, dry_albedo, wetness, quantity, source}}; a liquid {name,
  * display_name, ior, sigma_a_per_mm, sigma_s_per_mm, source}.
@@ -96,6 +96,12 @@ typedef struct soak_preset {
     double t_fill;            /* default pore fill time ([Hnat06] relative units), >= 0 */
     double film_thickness_m;  /* default film thickness, m, >= 0 */
     const char *wetting_source;
+    /* Water's static contact angle on the dry solid, deg, [0, 180]: beading
+     * above `soak bake beads --bead-above` (soak/bake_beads.h). Optional key
+     * wetting.contact_angle_deg (with its own contact_angle_source): -1 and
+     * NULL when absent. */
+    double contact_angle_deg;
+    const char *contact_angle_source;
 
     double thickness_m;  /* thin sheets: sheet thickness, m; 0 = semi-infinite */
     const char *sheet_source;
