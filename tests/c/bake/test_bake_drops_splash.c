@@ -75,7 +75,8 @@ static void test_formulas(void)
         check_rel(what, soak_splash_k_critical(3e-4, d[k]), k_crit(3e-4, d[k]), 1e-12);
         double v = fall_speed(d[k]), dm = d[k] * 1e-3;
         double n = sqrt(RHO * v * v * dm / SIGMA) * pow(RHO * v * dm / MU, 0.25) / (4 * sqrt(3.0));
-        snprintf(what, sizeof what, "fingers at D = %g mm: round(We^1/2 Re^1/4 / 4 sqrt 3) = %.0f", d[k], floor(n + 0.5));
+        snprintf(what, sizeof what, "fingers at D = %g mm: round(We^1/2 Re^1/4 / 4 sqrt 3) = %.0f", d[k],
+                 floor(n + 0.5));
         check_true(what, soak_splash_fingers(d[k], v) == (int)fmax(1, floor(n + 0.5)));
     }
     check_close("K of a NaN drop is 0", soak_splash_k(NAN, 5), 0, 0);

@@ -51,7 +51,8 @@ static void test_flux_law(void)
     const int n = 2000;
     double s = 0.0, hstep = 2.0 * a / n;
     for (int k = 0; k <= n; ++k) {
-        double y = -a + k * hstep, h = theta * (a * a - y * y) / (2.0 * a), w = (k == 0 || k == n) ? 1 : (k % 2 ? 4 : 2);
+        double y = -a + k * hstep, h = theta * (a * a - y * y) / (2.0 * a),
+               w = (k == 0 || k == n) ? 1 : (k % 2 ? 4 : 2);
         s += w * G * h * h * h / (3.0 * NU);
     }
     s *= hstep / 3.0;
@@ -92,8 +93,8 @@ static void test_threshold(void)
         if (x < xs - 3 * texel) ++rows_above, gaps_above &= dry > 0;
         if (x > xs + 3 * texel) ++rows_below, film_below &= dry == 0;
     }
-    printf("threshold: x* = %.4f m (q_min %.3g m^2/s); %d rows above all with gaps, %d below: film within %.3f %%\n", xs,
-           q_min(theta), rows_above, rows_below, 100 * worst);
+    printf("threshold: x* = %.4f m (q_min %.3g m^2/s); %d rows above all with gaps, %d below: film within %.3f %%\n",
+           xs, q_min(theta), rows_above, rows_below, 100 * worst);
     check_true("threshold: x* inside the wall with rows either side", rows_above > 20 && rows_below > 20);
     check_true("threshold: every row above x* has dry gaps", gaps_above);
     check_true("threshold: every row below x* is covered", film_below);
@@ -141,7 +142,6 @@ static void test_spacing_and_balance(void)
          * (what leaves row y: the rain on y + 1 rows of texels) */
         double per_width = carried / (centre[n - 2] - centre[1]), q = r * (y + 1) * L / N;
         worst = fmax(worst, fabs(per_width / q - 1.0));
-
     }
     double got = gaps ? gap_sum / gaps : 0.0;
     printf("runnels at 30 deg: spacing %.2f mm (reported %.2f) vs Troian et al. %.2f mm; %d texels broke; "
@@ -165,8 +165,8 @@ static void test_spacing_and_balance(void)
         double worst_film = 0.0;
         for (int y = 2; y < N; ++y)
             for (int c = 0; c < N; ++c)
-                worst_film = fmax(worst_film,
-                                  fabs(none.film.pixels[(size_t)y * N + c] / nusselt(r * (y + 1) * L / N) - 1.0));
+                worst_film =
+                    fmax(worst_film, fabs(none.film.pixels[(size_t)y * N + c] / nusselt(r * (y + 1) * L / N) - 1.0));
         printf("contact angle 0: worst film vs Nusselt %.3g\n", worst_film);
         check_true("contact angle 0: the film holds (Nusselt within 1e-5 everywhere)", worst_film < 1e-5);
         soak_rain_result_free(&none);
