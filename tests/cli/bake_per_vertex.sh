@@ -16,6 +16,8 @@
 #  (d) the PLY reads back: vertex count = the mesh's (9; the STL's 13
 #      distinct positions, counted in the file), values in [0, 1], the grey
 #      colour the sRGB encoding of the value; the CSV holds the same values;
+#      Blender's own PLY import gives a colour attribute whose linear value
+#      is the wetness (Blender's sRGB decoding, a second implementation);
 #  refusals: a map too small for the atlas (the size needed named), -o with
 #  --per-vertex, an output that is not .ply/.csv, the mesh as output.
 set -u
@@ -84,6 +86,20 @@ tail -n +2 "$D/r.txt" | awk '{print $4}' >"$D/ply_w.txt"
 [ "$(head -1 "$D/r.csv")" = "index,x,y,z,wetness" ] && [ "$(wc -l <"$D/csv_w.txt")" = "$(wc -l <"$D/ply_w.txt")" ] &&
   paste "$D/csv_w.txt" "$D/ply_w.txt" | awk '$1 != $2 + 0 { exit 1 }' \
   && ok "the CSV holds the PLY's values (same seed)" || bad "CSV and PLY differ"
+
+# Blender's PLY import reads the colours as a colour attribute whose linear
+# value (the Color Attribute node's) is the file's wetness (tolerance: half
+# an 8-bit sRGB step, 0.005).
+if command -v blender >/dev/null; then
+  if blender -b --factory-startup --python-exit-code 1 --python "$(dirname "$PY")/per_vertex_blender.py" -- "$D/r.ply" \
+    >"$D/blender.log" 2>&1; then
+    ok "Blender reads r.ply's colours as the wetness: $(grep -o 'attribute=.*' "$D/blender.log")"
+  else
+    bad "Blender's PLY import: $(grep -E 'Error|worst' "$D/blender.log" | tail -2)"
+  fi
+else
+  skip "blender not on PATH" "Blender's PLY import of the colours"
+fi
 
 # Refusals.
 expect_exit 2 "a map too small for the atlas" -- "$SOAK" bake rain "$D/roofed.stl" --width 16 --height 16 --rays 1 \
