@@ -406,6 +406,11 @@ static int per_vertex(const rain_args *a, const bake_opts *o)
         cli_error(CMD, "--frames is not taken with --per-vertex (one bake at the rain's end)");
         return SOAK_EXIT_USAGE;
     }
+    if (a->uvo.uv.uv_index != 0 || a->uvo.uv.uv_name[0] || a->uvo.outside != SOAK_UV_WRAP) {
+        cli_error(CMD, "--uv-set and --uv-outside are not taken with --per-vertex: it bakes in a generated atlas, "
+                       "not the mesh's UVs");
+        return SOAK_EXIT_USAGE;
+    }
     int rc = bake_rain_budget(CMD, &a->p, o->width, o->height, 0, 0.0);
     return rc ? rc : bake_rain_vertex(a->mesh_path, &a->p, o, a->vertex_path, &a->uvo);
 }

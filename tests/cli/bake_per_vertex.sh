@@ -18,8 +18,8 @@
 #      colour the sRGB encoding of the value; the CSV holds the same values;
 #      Blender's own PLY import gives a colour attribute whose linear value
 #      is the wetness (Blender's sRGB decoding, a second implementation);
-#  refusals: a map too small for the atlas (the size needed named), -o with
-#  --per-vertex, an output that is not .ply/.csv, the mesh as output.
+#  refusals: a map too small for the atlas (the size needed named), -o or
+#  --uv-set with --per-vertex, an output that is not .ply/.csv, the mesh as output.
 set -u
 . "$(dirname "$0")/lib.bash"
 D="$SOAK_TMP/per_vertex"
@@ -108,6 +108,8 @@ expect_stderr "10 triangles need a map of at least 24 x 24" "the refusal gives t
 [ ! -e "$D/small.ply" ] && ok "nothing written" || bad "small.ply written"
 expect_exit 2 "-o with --per-vertex" -- "$SOAK" bake rain "$D/roofed.stl" --per-vertex "$D/x.ply" -o "$D/x.exr"
 expect_stderr "-o is not taken with --per-vertex" "the refusal names -o"
+expect_exit 2 "--uv-set with --per-vertex" -- "$SOAK" bake rain "$D/ground.ply" --uv-set 1 --per-vertex "$D/x.ply"
+expect_stderr "--uv-set and --uv-outside are not taken with --per-vertex" "the refusal says the mesh's UVs are not used"
 expect_exit 2 "a .txt output" -- "$SOAK" bake rain "$D/roofed.stl" --per-vertex "$D/x.txt"
 expect_stderr "must end in .ply or .csv" "the refusal names the extensions"
 cp "$D/ground.ply" "$D/keep.ply"
