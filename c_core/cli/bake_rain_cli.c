@@ -19,7 +19,7 @@ typedef struct rain_args {
     soak_rain_params p;
     int have_dir, up_axis, no_film, have_fps, have_time, have_frame_time;
     double fps;
-    const char *mesh_path, *exposure_path, *water_path, *film_path;
+    const char *mesh_path, *exposure_path, *water_path, *film_path, *vertex_path;
     int float_exr;                /* the sequence table's --float, for the extra maps */
     soak_rain_frames *frames;     /* --frames: the sequence's state */
     soak_rain_frame last;         /* the last frame's balance */
@@ -63,6 +63,11 @@ static const cli_choice axes[] = {{"x", 0, 0},  {"y", 1, 0},  {"z", 2, 0}, {"-x"
 
 #define F(field) CLI_FIELD(rain_args, field)
 static const cli_opt rain_opts[] = {
+    {"--per-vertex", NULL, CLI_OPT_STRING, F(vertex_path), .meta = "PATH",
+     .help = "wetness per vertex instead of a map (.ply with grey vertex colours, or .csv):\n"
+             "for meshes with or without UVs; each face baked as its own chart, so water\n"
+             "does not flow from face to face (films on slopes under-estimated; exposure\n"
+             "right); -o, --exposure, --water, --film, --frames not taken"},
     {"--exposure", NULL, CLI_OPT_STRING, F(exposure_path), .meta = "PATH",
      .help = "also write the sky exposure (1 = open horizontal surface)"},
     {"--water", NULL, CLI_OPT_STRING, F(water_path), .meta = "PATH",
@@ -116,8 +121,10 @@ static void usage(FILE *out)
 {
     fprintf(out,
             "usage: soak bake rain MESH -o OUT [options]\n"
-            "       soak bake rain MESH --frames A-B -o wet.%%04d.exr [options]\n\n"
-            "Rain wet map of a mesh (FBX, glTF, OBJ, ... listed below; it needs UVs) at a texture\n"
+            "       soak bake rain MESH --frames A-B -o wet.%%04d.exr [options]\n"
+            "       soak bake rain MESH --per-vertex wet.ply [options]\n\n"
+            "Rain wet map of a mesh (FBX, glTF, OBJ, ... listed below) in its UVs, or with\n"
+            "--per-vertex one wetness per vertex (meshes without UVs too), at a texture\n"
             "resolution: per-texel sky exposure by ray casting through the mesh (Embree), drop\n"
             "impacts as a Poisson process with a splat kernel, evaporation, and downhill flow\n"
             "that fills concave upward-facing regions (puddles); inclined, vertical and\n"
@@ -155,7 +162,8 @@ static void usage(FILE *out)
                  "       --exposure exposure.exr -o rain_wet.exr\n"
                  "  soak bake rain character.fbx --uv-set UVMap --strict -o wet.<UDIM>.exr\n"
                  "  soak bake rain wall.obj --up z --duration 600 --steps 60 --fps 0.04 --frames 0-23 \\\n"
-                 "       --film film.%%04d.exr -o wet.%%04d.exr\n");
+                 "       --film film.%%04d.exr -o wet.%%04d.exr\n"
+                 "  soak bake rain part.stl --up z --width 1024 --height 1024 --per-vertex wet.ply\n");
 }
 
 static int mesh_arg(void *ctx, const char *arg)
@@ -290,6 +298,12 @@ static int check_outputs(const rain_args *a, const bake_opts *o)
     return rc ? rc : bake_plan_check(o, outs, 4, mesh, 1);
 }
 
+/* The way on for a mesh without UVs. */
+static const char *no_uv_hint(const char *err)
+{
+    return strstr(err, "mesh has no UVs") ? " (--per-vertex OUT.ply bakes one wetness per vertex without them)" : "";
+}
+
 /* Loads the mesh and bakes it into res. */
 static soak_status bake(const rain_args *a, const bake_opts *o, soak_rain_result *res)
 {
@@ -297,7 +311,7 @@ static soak_status bake(const rain_args *a, const bake_opts *o, soak_rain_result
     soak_mesh mesh;
     soak_status st = soak_mesh_load_uv(a->mesh_path, &a->uvo.uv, &mesh, err, sizeof err);
     if (st != SOAK_OK) {
-        cli_error(CMD, "%s", err[0] ? err : soak_status_str(st));
+        cli_error(CMD, "%s%s", err[0] ? err : soak_status_str(st), no_uv_hint(err));
         return st;
     }
     cli_progress bar;
@@ -345,7 +359,10 @@ static int run_frames(rain_args *a, const bake_opts *o)
     char err[4352] = "";
     soak_mesh mesh;
     soak_status st = soak_mesh_load_uv(a->mesh_path, &a->uvo.uv, &mesh, err, sizeof err);
-    if (st != SOAK_OK) return bake_fail(CMD, st == SOAK_ERR_ARG ? SOAK_ERR_IO : st, err);
+    if (st != SOAK_OK) {
+        cli_error(CMD, "%s%s", err[0] ? err : soak_status_str(st), no_uv_hint(err));
+        return SOAK_EXIT_FAIL;
+    }
     cli_progress bar;
     cli_progress_start(&bar, CMD " (exposure)", 1.0);
     soak_bake_exec exec = {(int)o->threads, on_progress, &bar};
@@ -378,12 +395,37 @@ static int run_frames(rain_args *a, const bake_opts *o)
     return rc;
 }
 
+/* --per-vertex: no map outputs, no sequence. */
+static int per_vertex(const rain_args *a, const bake_opts *o)
+{
+    const char *maps[4] = {o->output, a->exposure_path, a->water_path, a->film_path};
+    static const char *const names[4] = {"-o", "--exposure", "--water", "--film"};
+    for (int k = 0; k < 4; ++k)
+        if (maps[k]) {
+            cli_error(CMD, "%s is not taken with --per-vertex: its map would be in the generated atlas, which no UV "
+                      "set of the mesh matches", names[k]);
+            return SOAK_EXIT_USAGE;
+        }
+    if (o->have_frames) {
+        cli_error(CMD, "--frames is not taken with --per-vertex (one bake at the rain's end)");
+        return SOAK_EXIT_USAGE;
+    }
+    if (a->uvo.uv.uv_index != 0 || a->uvo.uv.uv_name[0] || a->uvo.outside != SOAK_UV_WRAP) {
+        cli_error(CMD, "--uv-set and --uv-outside are not taken with --per-vertex: it bakes in a generated atlas, "
+                       "not the mesh's UVs");
+        return SOAK_EXIT_USAGE;
+    }
+    int rc = bake_rain_budget(CMD, &a->p, o->width, o->height, 0, 0.0);
+    return rc ? rc : bake_rain_vertex(a->mesh_path, &a->p, o, a->vertex_path, &a->uvo);
+}
+
 int soak_bake_rain_main(int argc, char **argv)
 {
     rain_args a;
     bake_opts o;
     int rc = parse_args(argc, argv, &a, &o);
     if (rc >= 0) return rc;
+    if (a.vertex_path) return per_vertex(&a, &o);
     if ((rc = check_outputs(&a, &o)) != 0) return rc;
     long frames = o.have_frames ? o.last - o.first + 1 : 0;
     double last_time = o.have_frames ? fmax(bake_frame_time(&o, o.first), bake_frame_time(&o, o.last)) : 0.0;

@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# soak bake rain MESH --per-vertex OUT (issue 47 item 3), against
+# independent references:
+#  (a) an open flat ground of shared vertices (ground.ply, 9 vertices, UVs):
+#      every vertex's value equals the UV-map bake of the same mesh sampled
+#      at its UV (a second method) and the analytic wetness of the rain that
+#      fell, w = 1 - exp(-r t / s) (r t = 10 mm/h x 60 s = 0.1667 mm,
+#      s = 0.2 mm: 0.5654); tolerance 0.01 = about 5 sd of the drop count
+#      (0.2 mm drops: ~45,000 per texel, sd 0.5 % of the depth, 0.002 in w);
+#  (b) the same ground without UVs under a roof (roofed.stl): the vertex
+#      under the roof (0, 0, 0: 0.45 m inside its edge at 0.3 m height, past
+#      the 10 degree rain cone) is dry (< 0.02), the 8 open ground vertices
+#      and the 4 roof vertices have the open value;
+#  (c) the STL bakes with --per-vertex and is refused without it, the
+#      message pointing at --per-vertex;
+#  (d) the PLY reads back: vertex count = the mesh's (9; the STL's 13
+#      distinct positions, counted in the file), values in [0, 1], the grey
+#      colour the sRGB encoding of the value; the CSV holds the same values;
+#      Blender's own PLY import gives a colour attribute whose linear value
+#      is the wetness (Blender's sRGB decoding, a second implementation);
+#  refusals: a map too small for the atlas (the size needed named), -o or
+#  --uv-set with --per-vertex, an output that is not .ply/.csv, the mesh as output.
+set -u
+. "$(dirname "$0")/lib.bash"
+D="$SOAK_TMP/per_vertex"
+rm -rf "$D" && mkdir -p "$D"
+PY="$(cd "$(dirname "$0")" && pwd)/meshes/per_vertex_models.py"
+python3 "$PY" make "$D" || { bad "per_vertex_models.py make failed"; finish; }
+R=(--width 64 --height 64 --rays 16 --duration 60 --steps 4 --rainfall 10 --evaporation 0 --saturation 0.0002
+   --drop-size 0.0002)
+W_OPEN=$(awk 'BEGIN { printf "%.4f", 1 - exp(-(10 / 3.6e6 * 60) / 0.0002) }')
+
+# (a) + (d) on the ground with UVs.
+expect_exit 0 "ground.ply --per-vertex bakes" -- "$SOAK" bake rain "$D/ground.ply" "${R[@]}" --per-vertex "$D/g.ply"
+grep -q "wetness of 9 vertices (8 faces)" "$SOAK_TMP/last.out" && ok "the report counts 9 vertices, 8 faces" \
+  || bad "report: $(cat "$SOAK_TMP/last.out")"
+if python3 "$PY" read "$D/g.ply" >"$D/g.txt" 2>"$D/g.err"; then
+  ok "g.ply reads back (header, colours the sRGB grey of the wetness, faces)"
+  [ "$(head -1 "$D/g.txt")" = "9 8" ] && ok "g.ply: the mesh's 9 vertices, 8 faces" \
+    || bad "g.ply counts '$(head -1 "$D/g.txt")', want '9 8'"
+else
+  bad "g.ply does not read back: $(cat "$D/g.err")"
+fi
+if command -v oiiotool >/dev/null; then
+  expect_exit 0 "ground.ply UV-map bake" -- "$SOAK" bake rain "$D/ground.ply" "${R[@]}" -o "$D/g.exr"
+  oiiotool --dumpdata "$D/g.exr" >"$D/g.dump"
+  python3 "$PY" uvmap "$D/g.dump" "$D/ground.ply" 64 64 >"$D/uv.txt"
+  i=0
+  while read -r uvw; do
+    i=$((i + 1))
+    pv=$(sed -n "$((i + 1))p" "$D/g.txt" | awk '{print $4}')
+    close "$pv" "$uvw" 0.01 "vertex $i: per-vertex vs the UV map at its UV"
+  done <"$D/uv.txt"
+  [ "$i" = 9 ] || bad "UV map sampled at $i vertices, want 9"
+else
+  skip "oiiotool not on PATH" "per-vertex vs the UV-map bake"
+fi
+while read -r x y z w; do
+  close "$w" "$W_OPEN" 0.01 "open ground ($x, $z): analytic 1 - exp(-r t / s)"
+done < <(tail -n +2 "$D/g.txt")
+
+# (c) the STL without UVs.
+expect_exit 1 "roofed.stl without --per-vertex is refused" -- "$SOAK" bake rain "$D/roofed.stl" "${R[@]}" -o "$D/r.exr"
+expect_stderr "roofed.stl: mesh has no UVs.*--per-vertex" "the refusal points at --per-vertex"
+expect_exit 0 "roofed.stl --per-vertex bakes" -- "$SOAK" bake rain "$D/roofed.stl" "${R[@]}" --per-vertex "$D/r.ply"
+
+# (b) rain shadow, (d) counts.
+if python3 "$PY" read "$D/r.ply" >"$D/r.txt" 2>"$D/r.err"; then
+  want=$(python3 "$PY" unique "$D/roofed.stl")
+  [ "$(head -1 "$D/r.txt")" = "$want 10" ] && ok "r.ply: $want vertices (the STL's distinct positions), 10 faces" \
+    || bad "r.ply counts '$(head -1 "$D/r.txt")', want '$want 10'"
+  while read -r x y z w; do
+    if [ "$x $y $z" = "0 0 0" ]; then
+      awk -v w="$w" 'BEGIN { exit !(w < 0.02) }' && ok "under the roof (0, 0, 0): dry, w = $w" \
+        || bad "under the roof (0, 0, 0): w = $w, want < 0.02"
+    else
+      close "$w" "$W_OPEN" 0.01 "in the open ($x, $y, $z)"
+    fi
+  done < <(tail -n +2 "$D/r.txt")
+else
+  bad "r.ply does not read back: $(cat "$D/r.err")"
+fi
+expect_exit 0 "roofed.stl --per-vertex to CSV" -- "$SOAK" bake rain "$D/roofed.stl" "${R[@]}" --per-vertex "$D/r.csv"
+tail -n +2 "$D/r.csv" | cut -d, -f5 >"$D/csv_w.txt"
+tail -n +2 "$D/r.txt" | awk '{print $4}' >"$D/ply_w.txt"
+[ "$(head -1 "$D/r.csv")" = "index,x,y,z,wetness" ] && [ "$(wc -l <"$D/csv_w.txt")" = "$(wc -l <"$D/ply_w.txt")" ] &&
+  paste "$D/csv_w.txt" "$D/ply_w.txt" | awk '$1 != $2 + 0 { exit 1 }' \
+  && ok "the CSV holds the PLY's values (same seed)" || bad "CSV and PLY differ"
+
+# Blender's PLY import reads the colours as a colour attribute whose linear
+# value (the Color Attribute node's) is the file's wetness (tolerance: half
+# an 8-bit sRGB step, 0.005).
+if command -v blender >/dev/null; then
+  if blender -b --factory-startup --python-exit-code 1 --python "$(dirname "$PY")/per_vertex_blender.py" -- "$D/r.ply" \
+    >"$D/blender.log" 2>&1; then
+    ok "Blender reads r.ply's colours as the wetness: $(grep -o 'attribute=.*' "$D/blender.log")"
+  else
+    bad "Blender's PLY import: $(grep -E 'Error|worst' "$D/blender.log" | tail -2)"
+  fi
+else
+  skip "blender not on PATH" "Blender's PLY import of the colours"
+fi
+
+# Refusals.
+expect_exit 2 "a map too small for the atlas" -- "$SOAK" bake rain "$D/roofed.stl" --width 16 --height 16 --rays 1 \
+  --duration 0 --per-vertex "$D/small.ply"
+expect_stderr "10 triangles need a map of at least 24 x 24" "the refusal gives the size needed (ceil(sqrt(5)) x 8)"
+[ ! -e "$D/small.ply" ] && ok "nothing written" || bad "small.ply written"
+expect_exit 2 "-o with --per-vertex" -- "$SOAK" bake rain "$D/roofed.stl" --per-vertex "$D/x.ply" -o "$D/x.exr"
+expect_stderr "-o is not taken with --per-vertex" "the refusal names -o"
+expect_exit 2 "--uv-set with --per-vertex" -- "$SOAK" bake rain "$D/ground.ply" --uv-set 1 --per-vertex "$D/x.ply"
+expect_stderr "--uv-set and --uv-outside are not taken with --per-vertex" "the refusal says the mesh's UVs are not used"
+expect_exit 2 "a .txt output" -- "$SOAK" bake rain "$D/roofed.stl" --per-vertex "$D/x.txt"
+expect_stderr "must end in .ply or .csv" "the refusal names the extensions"
+cp "$D/ground.ply" "$D/keep.ply"
+expect_exit 2 "the mesh as its own output" -- "$SOAK" bake rain "$D/keep.ply" --rays 1 --duration 0 --per-vertex "$D/keep.ply"
+cmp -s "$D/keep.ply" "$D/ground.ply" && ok "the input is untouched" || bad "the input was overwritten"
+finish
