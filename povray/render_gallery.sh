@@ -15,7 +15,7 @@ mkdir -p "$OUT"
 HDRI_SRC=${SOAK_HDRI_DIR:-/usr/share/blender/datafiles/studiolights/world}
 HDRI=${SOAK_HDRI_CACHE:-$ROOT/build/hdri}
 mkdir -p "$HDRI"
-for h in courtyard:0.3 courtyard:0.45 forest:0.5 forest:0.45; do
+for h in courtyard:0.15 courtyard:0.45 forest:0.5 forest:0.45; do
   n=${h%%:*} s=${h#*:}
   [ -f "$HDRI_SRC/$n.exr" ] || { echo "FAIL: $HDRI_SRC/$n.exr not found (Blender's HDRIs: Debian's blender-data, installed by the README's set-up; or set SOAK_HDRI_DIR)"; exit 1; }
   if [ ! "$HDRI/${n}_x$s.hdr" -nt "$HDRI_SRC/$n.exr" ]; then

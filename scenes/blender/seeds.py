@@ -618,7 +618,7 @@ def build_cognac_table():
     bb = b.node("ShaderNodeBsdfGlass", IOR=1.5, Roughness=0.02, Color=(0.8, 0.45, 0.15, 1))
     b.link(bb.outputs[0], b.nt.nodes["Material Output"].inputs["Surface"])
     _assign(bottle, b.mat)
-    _hdri(sc, "courtyard", 0.3, 95)   # as scenes/gallery/cognac_table.json
+    _hdri(sc, "courtyard", 0.15, 38)   # as scenes/gallery/cognac_table.json
     # the sun low behind the spill, mirrored by the liquid towards the camera
     _sun(sc, 25, 40, strength=3.0, angle=2.0)
     _camera(sc, (-0.02, -0.42, 0.25), (0.13, 0.27, 0.0), lens=45, focus=0.72, fstop=2.8)

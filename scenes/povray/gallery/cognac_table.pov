@@ -36,7 +36,7 @@ union {
 plane { z, -0.75 pigment { rgb <0.2, 0.16, 0.13> } finish { ambient 0.2 diffuse 0.4 } }
 // the courtyard HDRI the other two columns reflect (hdri_sky.inc), seen through the window
 #include "hdri_sky.inc"
-Soak_HDRI_Sky("courtyard_x0.3.hdr", 95)
+Soak_HDRI_Sky("courtyard_x0.15.hdr", 38)
 // the table: oak boards 15 cm wide, the user's own pigment: POV-Ray's wood rings around
 // an axis along each board, a little below its face and tilted (the arches of flat-sawn oak)
 #declare Board_W = 0.15;
