@@ -9,13 +9,27 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 SCN=$ROOT/scenes/povray/gallery
 command -v povray >/dev/null || { echo "FAIL: povray not found (installed by the README's set-up)"; exit 1; }
 mkdir -p "$OUT"
+# Blender's CC0 world HDRIs (Debian's blender-data), as .hdr for POV-Ray 3.7 (it reads no
+# EXR), scaled by the scenes' strengths (a sky_sphere's pigment cannot be scaled): made
+# once into build/hdri/, never into the repository (scenes/povray/gallery/hdri_sky.inc)
+HDRI_SRC=${SOAK_HDRI_DIR:-/usr/share/blender/datafiles/studiolights/world}
+HDRI=${SOAK_HDRI_CACHE:-$ROOT/build/hdri}
+mkdir -p "$HDRI"
+for h in courtyard:0.15 courtyard:0.45 forest:0.5 forest:0.45; do
+  n=${h%%:*} s=${h#*:}
+  [ -f "$HDRI_SRC/$n.exr" ] || { echo "FAIL: $HDRI_SRC/$n.exr not found (Blender's HDRIs: Debian's blender-data, installed by the README's set-up; or set SOAK_HDRI_DIR)"; exit 1; }
+  if [ ! "$HDRI/${n}_x$s.hdr" -nt "$HDRI_SRC/$n.exr" ]; then
+    oiiotool "$HDRI_SRC/$n.exr" --clamp:min=0 --mulc "$s" -o "$HDRI/${n}_x$s.tmp.hdr"
+    mv "$HDRI/${n}_x$s.tmp.hdr" "$HDRI/${n}_x$s.hdr"
+  fi
+done
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 pov() { # scene output width height [options...]: a linear EXR in WORK, then the sRGB PNG in OUT
   # (run in POV_DIR, default WORK: a soak_materials.inc there comes before povray/'s)
   local scene=$1 out=$2 w=$3 h=$4; shift 4
   local t0=$(date +%s)
-  ( cd "${POV_DIR:-$WORK}" && povray "+I$SCN/$scene" "+O$WORK/$out.exr" +FE "+W$w" "+H$h" -D -V +WT2 "+L$ROOT/povray" "+L$WORK" \
+  ( cd "${POV_DIR:-$WORK}" && povray "+I$SCN/$scene" "+O$WORK/$out.exr" +FE "+W$w" "+H$h" -D -V +WT2 "+L$ROOT/povray" "+L$WORK" "+L$HDRI" "+L$SCN" \
       Output_Alpha=off +A0.05 +AM2 +R2 "$@" >"$WORK/$out.log" 2>&1 ) \
     || { echo "FAIL: povray $scene (exit $?), see $WORK/$out.log"; tail -5 "$WORK/$out.log"; exit 1; }
   echo "$out: $((`date +%s` - t0)) s"

@@ -15,7 +15,7 @@ build=(
   libopenimageio-dev libembree-dev libassimp-dev libcjson-dev libopenvdb-dev libboost-dev
 )
 package=(dpkg-dev file)
-demo=(povray blender xvfb python3 openimageio-tools)
+demo=(povray blender blender-data xvfb python3 openimageio-tools)  # blender-data: the world HDRIs of the gallery
 test=(
   git python3-numpy python3-jsonschema python3-matplotlib valgrind debootstrap hyperfine
   slurm-wlm munge nodejs man-db clang-format flake8 povray-examples

@@ -32,7 +32,7 @@ static void on_sigint(int sig)
 typedef struct render_args {
     const char *scene_path, *out_path;
     long spp, threads, seed, width, height, max_depth;
-    double time_limit, auto_tol;
+    double time_limit, auto_tol, target_error;
     int quiet;
 } render_args;
 
@@ -51,6 +51,11 @@ static const cli_opt render_opts[] = {
      .help = "random seed (default 1); same seed + spp -> identical pixels"},
     {"--time", NULL, CLI_OPT_DOUBLE, .lo = RENDER_MIN_TIME, .hi = SOAK_RENDER_MAX_TIME, F(time_limit), .meta = "T",
      .help = "stop after T seconds and keep what is done"},
+    {"--target-error", NULL, CLI_OPT_DOUBLE, .lo = 1e-4, .hi = 1, F(target_error), .meta = "E",
+     .help = "render to an error: each 16x16 tile stops once every pixel has 16\n"
+             "samples and the standard error of its mean luminance is below\n"
+             "E x max(mean, 0.01) (e.g. 0.02); --spp is then the cap. For\n"
+             "pictures: a test's numbers want a fixed, stated sample count"},
     {"--width", NULL, CLI_OPT_SIZE, .ihi = SOAK_RENDER_MAX_SIZE, F(width), .meta = "W",
      .help = "image width, %R (default: the scene's render.width)"},
     {"--height", NULL, CLI_OPT_SIZE, .ihi = SOAK_RENDER_MAX_SIZE, F(height), .meta = "H",
@@ -229,6 +234,7 @@ static soak_status trace(const render_args *a, soak_scene *scene, soak_image *im
     opt.threads = (int)a->threads;
     opt.seed = (uint64_t)a->seed;
     opt.time_limit = a->time_limit;
+    opt.target_error = a->target_error;
     opt.max_depth = (int)a->max_depth;
     opt.cancel = &interrupted;
     char label[96], err[4096] = "";

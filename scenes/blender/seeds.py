@@ -19,6 +19,7 @@ Each build function empties the file, builds its scene and returns a list of
 renders: (name, [frames]); several frames are tiled 2 x 2 into one picture
 by render_all.py. Run through render_all.py."""
 import math
+import os
 
 import bmesh
 import bpy
@@ -98,6 +99,34 @@ def _sky(sc, zenith=(0.06, 0.17, 0.55), horizon=(0.75, 0.78, 0.8), ground=(0.12,
     e.color = (*[0.5 * h + 0.5 * z for h, z in zip(horizon, zenith)], 1)
     bg = nt.nodes["Background"]
     nt.links.new(ramp.outputs["Color"], bg.inputs["Color"])
+    bg.inputs["Strength"].default_value = strength
+    sc.world = w
+    return w
+
+
+def _hdri(sc, name, strength=1.0, rotation=0.0):
+    """One of Blender's own CC0 world HDRIs (Poly Haven; datafiles/studiolights/world,
+    Debian's blender-data) as the world, oriented as soak render's "environment"
+    map with "hdri": NAME (scenes/README.md): Cycles' equirectangular mapping, the
+    image's centre at azimuth `rotation` degrees, so the vector is turned by
+    -rotation about Z. SOAK_HDRI_DIR names another folder, as for soak render."""
+    folder = os.environ.get("SOAK_HDRI_DIR") or bpy.utils.system_resource("DATAFILES", path="studiolights/world")
+    path = os.path.join(folder or "", name + ".exr")
+    if not os.path.isfile(path):
+        raise RuntimeError(f"HDRI {path} not found: Blender's world HDRIs come with Debian's blender-data "
+                           "package (installed by the README's set-up), or set SOAK_HDRI_DIR")
+    w = bpy.data.worlds.new("HDRI " + name)
+    w.use_nodes = True
+    nt = w.node_tree
+    coord = nt.nodes.new("ShaderNodeTexCoord")
+    mapping = nt.nodes.new("ShaderNodeMapping")
+    mapping.inputs["Rotation"].default_value = (0.0, 0.0, math.radians(-rotation))
+    env = nt.nodes.new("ShaderNodeTexEnvironment")
+    env.image = bpy.data.images.load(path, check_existing=True)
+    nt.links.new(coord.outputs["Generated"], mapping.inputs["Vector"])
+    nt.links.new(mapping.outputs["Vector"], env.inputs["Vector"])
+    bg = nt.nodes["Background"]
+    nt.links.new(env.outputs["Color"], bg.inputs["Color"])
     bg.inputs["Strength"].default_value = strength
     sc.world = w
     return w
@@ -517,7 +546,7 @@ def build_beach_rock():
         else:
             make_wet(rock, "limestone", wetness=1.0)
     del rock_tree
-    _sky(sc)
+    _hdri(sc, "forest", 0.45, -60)    # as scenes/gallery/beach_rock.json
     _sun(sc, 30, 150, strength=3.0, angle=1.5)
     _camera(sc, (0.0, -8.0, 3.4), (0.0, 0.6, 0.0), lens=34)
     return [("beach_rock", [1])]
@@ -589,7 +618,7 @@ def build_cognac_table():
     bb = b.node("ShaderNodeBsdfGlass", IOR=1.5, Roughness=0.02, Color=(0.8, 0.45, 0.15, 1))
     b.link(bb.outputs[0], b.nt.nodes["Material Output"].inputs["Surface"])
     _assign(bottle, b.mat)
-    _sky(sc)
+    _hdri(sc, "courtyard", 0.15, 38)   # as scenes/gallery/cognac_table.json
     # the sun low behind the spill, mirrored by the liquid towards the camera
     _sun(sc, 25, 40, strength=3.0, angle=2.0)
     _camera(sc, (-0.02, -0.42, 0.25), (0.13, 0.27, 0.0), lens=45, focus=0.72, fstop=2.8)
@@ -639,7 +668,7 @@ def build_bricks_drying():
     p.set(Roughness=0.8)
     _assign(ground, p.mat)
     del mat
-    _sky(sc)
+    _hdri(sc, "forest", 0.5, -60)     # as scenes/gallery/bricks_drying.json
     _sun(sc, 30, 255, strength=3.0, angle=1.0)
     _camera(sc, (0.8, -2.0, 1.05), (0.0, 0.0, 0.9), lens=50)
     return [("bricks_drying", [1, 14, 27, 40])]
@@ -774,7 +803,7 @@ def build_flowerpot_porosity():
            w.bsdf.inputs["Base Color"])
     w.set(Roughness=0.9)
     _assign(wall, w.mat)
-    _sky(sc)
+    _hdri(sc, "courtyard", 0.45, 18)  # as scenes/gallery/flowerpot_porosity.json
     _sun(sc, 55, 215, strength=2.5, angle=2.0)
     lamp = bpy.data.lights.new("Lamp", "POINT")     # near the camera: its highlight on the pore water
     lamp.energy, lamp.shadow_soft_size = 2500.0, 0.3

@@ -31,7 +31,7 @@ render() { # scene-name output.png (16-bit sRGB, the camera's exposure applied)
   local json=$WORK/$1.json t0=$(date +%s)
   "$SOAK" render "$json" -o "$2" --threads 2 --seed 1 $(opts_of "$json") --time "$LIMIT" >"$WORK/$1.log" 2>&1 \
     || { echo "FAIL: soak render $1.json, see the log:"; tail -5 "$WORK/$1.log"; exit 1; }
-  echo "soak render $1: $(( $(date +%s) - t0 )) s"
+  echo "soak render $1: $(( $(date +%s) - t0 )) s, $(grep -m1 'samples per pixel' "$WORK/$1.log")"
 }
 small_png() { # 16-bit sRGB PNG -> OUT/soak_NAME.png, sRGB, palette-optimised when Pillow is there
   local img=$1 name=$2

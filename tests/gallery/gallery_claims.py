@@ -14,6 +14,20 @@ A pass needs the difference beyond 4 standard errors of the pixel means.
 has alpha_poro = 0, so position and lighting cancel; alpha_poro 0.5 must come out
 darker than alpha_poro 0 beyond 4 standard errors.
 
+[JLD99] §4.3, Fig. 7: the spilled pool is glossy: it mirrors the room (here the
+courtyard HDRI) where the dry oak round it does not. The pool's pixels (the spill
+map's function, scenes/gallery/meshes.py `spill`, at 1) must come out brighter than
+the dry table's (map 0) within 0.3 m of it, left of the glass and its shadow,
+beyond 4 standard errors; rendered without the caustic photons (they light only the
+glass's shadow, which neither set of pixels touches).
+
+[Hnat06] §5 (pore schedule): a splash on a brick wall dries from its border inwards.
+The gallery's four frames (soak bake drying at t = 0, 0.2, 0.4, 0.6 of the same
+splash, render.sh) are rendered at reduced size with a fifth, dry, render; a pixel is
+wet where it is darker than 0.85 x the dry render (2 x 2 blocks). The wet area must
+fall frame by frame, and at least 90 % of each frame's wet pixels must have been wet
+in the frame before (the patch shrinks, it does not move or fade as one).
+
 usage: gallery_claims.py SOAK ROOT TMP   (exit 77 and SKIPPED: when oiiotool is missing)
 """
 import json
@@ -130,6 +144,82 @@ def render(soak, scene, path, width, height, spp):
     return luminance_map(path + ".exr")
 
 
+def table_pixels(scene, spill, width, height):
+    """Pool (map 1) and dry (map 0, within 0.3 m of the pool's centre, x < 0) pixels
+    of the table top (meshes.py: z = 0, u = x + 0.5, v = (y + 0.4) / 0.9)."""
+    project = projector(scene["camera"], width, height)
+    classes = {}
+    for i in range(-100, 101):
+        for j in range(-80, 101):
+            x, y = i * 0.004, j * 0.004
+            w = spill(x + 0.5, (y + 0.4) / 0.9)
+            near = math.hypot(x + 0.05, y + 0.02) < 0.3 and x < 0
+            c = "pool" if w >= 1 else "dry" if (w <= 0 and near) else "other"
+            classes.setdefault(project((x, y, 0.0)), set()).add(c)
+    inside = {p: c for p, c in classes.items() if 0 <= p[0] < width and 0 <= p[1] < height}
+    return ([p for p, c in inside.items() if c == {"pool"}], [p for p, c in inside.items() if c == {"dry"}])
+
+
+def check_cognac(soak, gallery, tmp):
+    """[JLD99] Fig. 7: the pool brighter than the dry table near it (it mirrors the sky)."""
+    width, height, spp = 160, 90, 8
+    with open(os.path.join(gallery, "cognac_table.json")) as f:
+        scene = json.load(f)
+    for k in ("caustic_photons", "caustic_radius"):
+        scene["render"].pop(k, None)
+    subprocess.run(["oiiotool", os.path.join(tmp, "spill.pgm"), "-d", "uint16", "-o",
+                    os.path.join(tmp, "spill.png")], check=True)
+    from meshes import spill
+    lum = render(soak, scene, os.path.join(tmp, "cognac"), width, height, spp)
+    pool, dry = table_pixels(scene, spill, width, height)
+    if len(pool) < 30 or len(dry) < 30:
+        print(f"FAIL cognac_table: {len(pool)} pool and {len(dry)} dry pixels, want 30 each")
+        return 1
+    mp, vp = stats([lum[p] for p in pool])
+    md, vd = stats([lum[p] for p in dry])
+    margin, se = mp - md, math.sqrt(vp + vd)
+    ok = margin > 4 * se
+    print(f"{'ok' if ok else 'FAIL'} cognac_table: pool {mp:.4f} ({len(pool)} px), dry table {md:.4f}"
+          f" ({len(dry)} px), ratio {mp / md:.2f}; [JLD99] Fig. 7: the pool mirrors the room,"
+          f" margin {margin:.4f} vs 4 SE {4 * se:.4f}")
+    return 0 if ok else 1
+
+
+def check_bricks(soak, gallery, tmp):
+    """[Hnat06]: the wet patches shrink from their borders, frame by frame."""
+    width, height, spp = 120, 68, 4
+    with open(os.path.join(gallery, "bricks_drying.json")) as f:
+        scene = json.load(f)
+    splash = os.path.join(tmp, "splash.png")
+    subprocess.run([soak, "bake", "turbulence", "--width", "320", "--height", "180", "--frequency", "3",
+                    "--threshold", "-0.05", "--softness", "0.25", "--seed", "11", "--threads", "2", "-o",
+                    splash], check=True, stdout=subprocess.DEVNULL)
+    export = os.path.join(tmp, "export.json")
+    subprocess.run([soak, "export", "--target", "json", "-o", export], check=True, stdout=subprocess.DEVNULL)
+    with open(export) as f:
+        t_fill = next(m["t_fill"] for m in json.load(f)["materials"] if m["name"] == "brick")
+    wet_map = os.path.join(tmp, "brick_wet.png")
+
+    def blocks(lum):
+        return {(i, j): sum(lum[(2 * i + a, 2 * j + b)] for a in (0, 1) for b in (0, 1))
+                for i in range(width // 2) for j in range(height // 2)}
+    subprocess.run(["oiiotool", "--pattern", "constant:color=0", "320x180", "1", "-d", "uint16", "-o",
+                    wet_map], check=True)
+    dry = blocks(render(soak, scene, os.path.join(tmp, "bricks_dry"), width, height, spp))
+    wet_sets = []
+    for k in (0, 2, 4, 6):
+        subprocess.run([soak, "bake", "drying", splash, "--t-fill", str(t_fill), "--time", f"0.{k}",
+                        "-o", wet_map], check=True, stdout=subprocess.DEVNULL)
+        lum = blocks(render(soak, scene, os.path.join(tmp, f"bricks_{k}"), width, height, spp))
+        wet_sets.append({p for p in lum if lum[p] < 0.85 * dry[p]})
+    areas = [len(s) for s in wet_sets]
+    kept = [len(wet_sets[k + 1] & wet_sets[k]) / max(1, len(wet_sets[k + 1])) for k in range(3)]
+    ok = all(areas[k + 1] < areas[k] for k in range(3)) and areas[0] >= 30 and min(kept) >= 0.9
+    print(f"{'ok' if ok else 'FAIL'} bricks_drying: wet blocks {areas} at t = 0, 0.2, 0.4, 0.6; wet before"
+          f" {', '.join(f'{x:.2f}' for x in kept)}; [Hnat06]: shrinking from the border")
+    return 0 if ok else 1
+
+
 def check_flowerpots(soak, gallery, tmp):
     """[Hnat06] Fig. 5: the larger alpha_poro, the darker the wet pot. The front row's
     pots are each divided by the same pot at the same place rendered with alpha_poro = 0
@@ -210,6 +300,8 @@ def main():
               f"({len(dry)} px), ratio {mw / md:.3f}; [JLD99] Fig. 5: blot {word}, "
               f"margin {diff:.4f} vs 4 SE {4 * se:.4f}")
     failures += check_flowerpots(soak, gallery, tmp)
+    failures += check_cognac(soak, gallery, tmp)
+    failures += check_bricks(soak, gallery, tmp)
     return 1 if failures else 0
 
 

@@ -10,6 +10,7 @@
 #include <time.h>
 
 #include "rt_ctx.h"
+#include "render_adaptive.h"
 #include "render_lights.h"
 #include "render_surface.h"
 #include "render_bsdfs.h"
@@ -143,11 +144,14 @@ typedef struct render_job {
     atomic_int stop;
     atomic_int workers_left;
     atomic_int out_of_memory;
-    double *sum;   /* 3 per pixel */
-    int *count;    /* samples per pixel */
-    int *tile_pass; /* passes merged per tile */
-    worker_arg *args; /* threads entries */
-    pthread_t *th;    /* threads entries */
+    double *sum;            /* 3 per pixel */
+    double *sum_y, *sum_y2; /* luminance and its square per pixel: target_error only */
+    double target_error;
+    atomic_int *tile_done; /* target_error reached: later passes are skipped */
+    int *count;            /* samples per pixel */
+    int *tile_pass;        /* passes merged per tile */
+    worker_arg *args;      /* threads entries */
+    pthread_t *th;         /* threads entries */
     pthread_mutex_t lock;
     pthread_cond_t merged;
 } render_job;
@@ -182,7 +186,8 @@ static void trace_tile(rt_thread *t, worker_arg *a, const tile_item *it, double 
 {
     render_job *j = a->job;
     int tw = it->x1 - it->x0;
-    memset(local, 0, (size_t)TILE * TILE * 3 * sizeof(double));
+    double *local_y2 = local + TILE * TILE * 3;
+    memset(local, 0, (size_t)TILE * TILE * 4 * sizeof(double));
     memset(lcount, 0, (size_t)TILE * TILE * sizeof(int));
     for (int y = it->y0; y < it->y1 && !atomic_load(&j->stop); ++y)
         for (int x = it->x0; x < it->x1; ++x) {
@@ -196,10 +201,22 @@ static void trace_tile(rt_thread *t, worker_arg *a, const tile_item *it, double 
                 acc[0] += L.r;
                 acc[1] += L.g;
                 acc[2] += L.b;
+                double lum = soak_rgb_luminance(L);
+                local_y2[(y - it->y0) * tw + (x - it->x0)] += lum * lum;
                 a->paths++;
             }
             lcount[(y - it->y0) * tw + (x - it->x0)] = it->s1 - it->s0;
         }
+}
+
+static int tile_converged(const render_job *j, const tile_item *it)
+{
+    for (int y = it->y0; y < it->y1; ++y) {
+        size_t row = (size_t)y * j->W + it->x0;
+        if (!rt_adaptive_converged(j->sum_y + row, j->sum_y2 + row, j->count + row, it->x1 - it->x0, j->target_error))
+            return 0;
+    }
+    return 1;
 }
 
 /* Merges passes of a tile in order so sums do not depend on scheduling;
@@ -209,13 +226,21 @@ static void merge_tile(render_job *j, const tile_item *it, const double *local, 
     int tw = it->x1 - it->x0;
     pthread_mutex_lock(&j->lock);
     while (j->tile_pass[it->tile] != it->pass) pthread_cond_wait(&j->merged, &j->lock);
-    if (local)
+    /* A tile found converged at an earlier pass takes nothing more, whatever
+     * a worker traced meanwhile: the image does not depend on scheduling. */
+    if (local && !atomic_load(&j->tile_done[it->tile])) {
         for (int y = it->y0; y < it->y1; ++y)
             for (int x = it->x0; x < it->x1; ++x) {
                 size_t pi = (size_t)y * j->W + x, li = (size_t)(y - it->y0) * tw + (x - it->x0);
                 for (int ch = 0; ch < 3; ++ch) j->sum[3 * pi + ch] += local[3 * li + ch];
                 j->count[pi] += lcount[li];
+                if (j->sum_y) {
+                    j->sum_y[pi] += soak_rgb_luminance(soak_rgb3(local[3 * li], local[3 * li + 1], local[3 * li + 2]));
+                    j->sum_y2[pi] += local[TILE * TILE * 3 + li];
+                }
             }
+        if (j->sum_y && tile_converged(j, it)) atomic_store(&j->tile_done[it->tile], 1);
+    }
     j->tile_pass[it->tile]++;
     pthread_cond_broadcast(&j->merged);
     pthread_mutex_unlock(&j->lock);
@@ -228,7 +253,7 @@ static void *worker(void *argp)
     rt_thread t;
     memset(&t, 0, sizeof t);
     t.ctx = &j->ctx;
-    double *local = malloc((size_t)TILE * TILE * 3 * sizeof(double));
+    double *local = malloc((size_t)TILE * TILE * 4 * sizeof(double)); /* RGB, then luminance^2 */
     int *lcount = malloc((size_t)TILE * TILE * sizeof(int));
     int have_memory = local && lcount;
     if (!have_memory) {
@@ -239,7 +264,7 @@ static void *worker(void *argp)
         long item = atomic_fetch_add(&j->next_item, 1);
         if (item >= j->total_items) break;
         tile_item it = tile_item_of(j, item);
-        if (have_memory) trace_tile(&t, a, &it, local, lcount);
+        if (have_memory && !atomic_load(&j->tile_done[it.tile])) trace_tile(&t, a, &it, local, lcount);
         merge_tile(j, &it, have_memory ? local : NULL, lcount);
         atomic_fetch_add(&j->done_items, 1);
     }
@@ -269,7 +294,8 @@ static soak_status check_options(const soak_scene *scene, const soak_render_opti
     *spp = n;
     if (!(w >= 1 && w <= SOAK_RENDER_MAX_SIZE && h >= 1 && h <= SOAK_RENDER_MAX_SIZE && n >= 1 &&
           n <= SOAK_RENDER_MAX_SPP && threads >= 1 && threads <= SOAK_RENDER_MAX_THREADS) ||
-        !soak_in_range(opt->time_limit, 0, SOAK_RENDER_MAX_TIME) || opt->max_depth < 0) {
+        !soak_in_range(opt->time_limit, 0, SOAK_RENDER_MAX_TIME) || !soak_in_range(opt->target_error, 0, 1) ||
+        opt->max_depth < 0) {
         if (err && errlen) snprintf(err, errlen, "render options out of range");
         return SOAK_ERR_ARG;
     }
@@ -350,10 +376,17 @@ static soak_status alloc_buffers(render_job *j, soak_image *out)
     j->sum = calloc(W * H * 3, sizeof(double));
     j->count = calloc(W * H, sizeof(int));
     j->tile_pass = calloc((size_t)j->n_tiles, sizeof(int));
+    j->tile_done = calloc((size_t)j->n_tiles, sizeof *j->tile_done);
+    for (int i = 0; j->tile_done && i < j->n_tiles; ++i) atomic_init(&j->tile_done[i], 0);
+    if (j->target_error > 0) {
+        j->sum_y = calloc(W * H, sizeof(double));
+        j->sum_y2 = calloc(W * H, sizeof(double));
+        if (!j->sum_y || !j->sum_y2) return SOAK_ERR_NOMEM;
+    }
     j->args = calloc((size_t)j->threads, sizeof *j->args);
     j->th = calloc((size_t)j->threads, sizeof *j->th);
     soak_status st = soak_image_alloc(out, j->W, j->H, 3);
-    if (!j->sum || !j->count || !j->tile_pass || !j->args || !j->th || st != SOAK_OK) {
+    if (!j->sum || !j->count || !j->tile_pass || !j->tile_done || !j->args || !j->th || st != SOAK_OK) {
         if (st == SOAK_OK) soak_image_free(out);
         return SOAK_ERR_NOMEM;
     }
@@ -455,6 +488,9 @@ static void job_free(render_job *j)
     free(j->sum);
     free(j->count);
     free(j->tile_pass);
+    free(j->tile_done);
+    free(j->sum_y);
+    free(j->sum_y2);
     free(j->pass_start);
     free(j->args);
     free(j->th);
@@ -478,6 +514,7 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
     j->spp = spp;
     j->threads = opt->threads;
     j->seed = opt->seed;
+    j->target_error = opt->target_error;
     st = prepare_scene(j, scene, opt, t_start, err, errlen);
     if (st == SOAK_OK) {
         prepare_camera(&j->cam, &scene->camera, W, H);

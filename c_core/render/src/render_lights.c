@@ -49,11 +49,15 @@ void rt_env_free(rt_env *env)
     memset(env, 0, sizeof *env);
 }
 
-/* Direction -> map coordinates (u right, v down from the zenith) in [0,1). */
+/* Direction -> map coordinates (u right, v down from the zenith) in [0,1).
+ * Cycles' orientation (direction_to_equirectangular, kernel/geom/geom.h:
+ * u = 0.5 - azimuth / 2 pi): the map's centre column at azimuth `rotation`,
+ * columns running clockwise seen from above, so a panorama seen from inside
+ * is not mirrored and the same file lights soak render and Blender alike. */
 static void env_uv(const soak_environment *e, soak_vec3 d, double *u, double *v)
 {
     double phi = atan2(d.y, d.x) - e->rotation_deg * SOAK_PI / 180.0;
-    double x = phi / (2 * SOAK_PI);
+    double x = 0.5 - phi / (2 * SOAK_PI);
     x -= floor(x);
     *u = x;
     *v = acos(fmax(-1.0, fmin(1.0, d.z))) / SOAK_PI;
@@ -121,7 +125,7 @@ static int env_sample(rt_thread *t, rt_light_sample *s)
     /* Uniform in cos(theta) over the pixel's band = uniform in solid angle. */
     double z0 = cos(SOAK_PI * i / H), z1 = cos(SOAK_PI * (i + 1) / H);
     double z = z0 + (z1 - z0) * u_z;
-    double phi = 2 * SOAK_PI * u + e->rotation_deg * SOAK_PI / 180.0, r = sqrt(fmax(0.0, 1 - z * z));
+    double phi = 2 * SOAK_PI * (0.5 - u) + e->rotation_deg * SOAK_PI / 180.0, r = sqrt(fmax(0.0, 1 - z * z));
     s->wi = soak_v3(r * cos(phi), r * sin(phi), z);
     s->L = rt_env_eval(c, s->wi);
     s->dist = INFINITY;

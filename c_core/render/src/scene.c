@@ -95,6 +95,32 @@ static soak_status parse_camera(scene_ctx *c, const cJSON *j)
     return SOAK_OK;
 }
 
+/* Blender's CC0 world HDRIs (Poly Haven), where Debian's blender-data
+ * package puts them; SOAK_HDRI_DIR points elsewhere. */
+#define SOAK_HDRI_DIR_DEFAULT "/usr/share/blender/datafiles/studiolights/world"
+
+/* "hdri": NAME -> DIR/NAME.exr, checked here so a missing package is named. */
+static soak_status hdri_file(scene_ctx *c, const char *name, char *out, size_t n)
+{
+    if (!name[0] || strspn(name, "abcdefghijklmnopqrstuvwxyz0123456789_-") != strlen(name))
+        return sj_fail(c, SOAK_ERR_ARG, "environment.hdri",
+                       "'%s' is not a name (letters, digits, '_', '-'; e.g. courtyard)", name);
+    const char *dir = getenv("SOAK_HDRI_DIR");
+    int from_env = dir && dir[0];
+    char path[2048];
+    int w = snprintf(path, sizeof path, "%s/%s.exr", from_env ? dir : SOAK_HDRI_DIR_DEFAULT, name);
+    if (w < 0 || (size_t)w >= sizeof path) return sj_fail(c, SOAK_ERR_ARG, "environment.hdri", "file name too long");
+    FILE *f = fopen(path, "rb");
+    if (f) {
+        fclose(f);
+        return sj_file(c, path, "environment.hdri", out, n);
+    }
+    return sj_fail(c, SOAK_ERR_IO, "environment.hdri", "%s: %s (%s)", path, strerror(errno),
+                   from_env ? "set by SOAK_HDRI_DIR"
+                            : "Blender's HDRIs come with Debian's blender-data package, installed by the README's "
+                              "set-up; or set SOAK_HDRI_DIR to a folder of NAME.exr files");
+}
+
 static soak_status parse_environment(scene_ctx *c, const cJSON *j)
 {
     soak_environment *e = &c->scene->env;
@@ -111,22 +137,29 @@ static soak_status parse_environment(scene_ctx *c, const cJSON *j)
         return st;
     }
     if (strcmp(type, "map") == 0) {
-        static const char *const keys[] = {"type", "file", "scale", "rotation", NULL};
-        const char *file;
+        static const char *const keys[] = {"type", "file", "hdri", "scale", "rotation", NULL};
+        const char *file = NULL, *hdri = NULL;
         st = sj_keys(c, j, "environment", keys);
-        if (st == SOAK_OK) st = sj_str(c, j, "file", "environment", 1, &file);
+        if (st == SOAK_OK) st = sj_str(c, j, "file", "environment", 0, &file);
+        if (st == SOAK_OK) st = sj_str(c, j, "hdri", "environment", 0, &hdri);
+        if (st == SOAK_OK && !file == !hdri)
+            st = sj_fail(c, SOAK_ERR_ARG, "environment", "a map needs exactly one of \"file\" and \"hdri\"");
         if (st == SOAK_OK) st = sj_num(c, j, "scale", "environment", 0, 1e9, 0, 1, &e->scale);
         if (st == SOAK_OK) st = sj_num(c, j, "rotation", "environment", -360, 360, 0, 0, &e->rotation_deg);
         if (st != SOAK_OK) return st;
         char full[2048], msg[1024];
-        st = sj_file(c, file, "environment.file", full, sizeof full);
+        st = file ? sj_file(c, file, "environment.file", full, sizeof full) : hdri_file(c, hdri, full, sizeof full);
         if (st != SOAK_OK) return st;
         st = soak_image_read(full, &e->map, msg, sizeof msg);
         if (st != SOAK_OK) return sj_fail(c, st, "environment.file", "%s", msg);
         e->type = SOAK_ENV_MAP;
-        for (size_t i = 0; i < (size_t)e->map.width * e->map.height * e->map.channels; ++i)
-            if (!(e->map.pixels[i] >= 0 && e->map.pixels[i] < 3e38f))
-                return sj_fail(c, SOAK_ERR_ARG, "environment.file", "%s: negative or non-finite pixel", full);
+        /* Lossy EXR compression leaves slightly negative pixels (down to -0.003
+         * in Blender's HDRIs): radiance cannot be negative, so they read as 0. */
+        for (size_t i = 0; i < (size_t)e->map.width * e->map.height * e->map.channels; ++i) {
+            if (!(e->map.pixels[i] > -3e38f && e->map.pixels[i] < 3e38f))
+                return sj_fail(c, SOAK_ERR_ARG, "environment.file", "%s: non-finite pixel", full);
+            if (e->map.pixels[i] < 0) e->map.pixels[i] = 0;
+        }
         return SOAK_OK;
     }
     return sj_fail(c, SOAK_ERR_PARSE, "environment.type", "unknown type '%s' (accepted: constant, map)", type);

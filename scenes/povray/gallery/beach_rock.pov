@@ -7,7 +7,8 @@ global_settings { assumed_gamma 1.0 ambient_light 1 }
 #include "soak.inc"
 camera { location <0, -9.5, 2.6> look_at <0, 0, 0.5> sky z up z right -x * image_width / image_height angle 50 }
 light_source { <-0.7, -0.35, 0.35> * 1e4 rgb <1.25, 1.1, 0.9> parallel point_at 0 }
-sky_sphere { pigment { gradient z color_map { [0 rgb <0.55, 0.55, 0.55>] [0.4 rgb <0.35, 0.47, 0.7>] } } }
+#include "hdri_sky.inc"
+Soak_HDRI_Sky("forest_x0.45.hdr", -60)     // as scenes/gallery/beach_rock.json
 // sand: wet towards the sea (far side, y > 1.5) with a soft edge
 #declare Sea = function { 0.45 * min(max((y - 1.2) / 0.6, 0), 1) }   // up to pores full and a thin film
 plane { z, 0 Soak_Wet_Material_Bumped("sand", "water", Sea, normal { bumps 0.05 scale 0.2 }) }

@@ -8,7 +8,8 @@ global_settings { assumed_gamma 1.0 ambient_light 1 }
 #include "soak.inc"
 camera { location <0.8, -1.62, 0.5> look_at <0.8, 0, 0.45> sky z up z right -x * image_width / image_height angle 50 }
 light_source { <-0.8, -1, 0.9> * 1e4 rgb 1.1 parallel point_at 0 }
-sky_sphere { pigment { gradient z color_map { [0 rgb 0.8] [1 rgb <0.45, 0.55, 0.75>] } } }
+#include "hdri_sky.inc"
+Soak_HDRI_Sky("forest_x0.5.hdr", -60)      // as scenes/gallery/bricks_drying.json
 #declare D = Soak_Drying_Map_Fn("brick_start.png", Soak_T_Fill("brick"), clock)
 #declare W = function { D(x / 1.6, z / 0.9, 0) }   // the map over the wall's face
 #declare Rows = 12;

@@ -33,9 +33,10 @@ union {
   #for (I, 1, 3) box { <Win_X0 + I * (Win_X1 - Win_X0) / 4 - 0.02, Wall_Y + 0.02, Win_Z0>, <Win_X0 + I * (Win_X1 - Win_X0) / 4 + 0.02, Wall_Y + 0.08, Win_Z1> } #end
   pigment { rgb <0.3, 0.24, 0.19> } finish { ambient 0.15 diffuse 0.3 }
 }
-plane { y, 6 pigment { gradient z color_map { [0 rgb <1.8, 1.55, 1.2>] [0.6 rgb <1.2, 1.2, 1.25>] } scale 6 } finish { emission 1 ambient 0 diffuse 0 } no_shadow }
 plane { z, -0.75 pigment { rgb <0.2, 0.16, 0.13> } finish { ambient 0.2 diffuse 0.4 } }
-sky_sphere { pigment { rgb 0.15 } }
+// the courtyard HDRI the other two columns reflect (hdri_sky.inc), seen through the window
+#include "hdri_sky.inc"
+Soak_HDRI_Sky("courtyard_x0.15.hdr", 38)
 // the table: oak boards 15 cm wide, the user's own pigment: POV-Ray's wood rings around
 // an axis along each board, a little below its face and tilted (the arches of flat-sawn oak)
 #declare Board_W = 0.15;

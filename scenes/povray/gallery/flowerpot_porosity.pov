@@ -13,7 +13,8 @@ global_settings { assumed_gamma 1.0 ambient_light 1 }
 camera { location <0, -14.5, 7.5> look_at <0, 1.0, 0.7> sky z up z right -x * image_width / image_height angle 40 }
 light_source { <-0.5, -0.35, 1.0> * 1e4 rgb 0.8 parallel point_at 0 }
 light_source { <-3, -10, 9> rgb 0.9 }   // the lamp near the camera
-sky_sphere { pigment { gradient z color_map { [0 rgb 0.7] [1 rgb <0.35, 0.45, 0.7>] } } }
+#include "hdri_sky.inc"
+Soak_HDRI_Sky("courtyard_x0.45.hdr", 18)   // as scenes/gallery/flowerpot_porosity.json
 plane { z, 0 pigment { rgb 0.5 } finish { ambient 0.15 diffuse 1 } }
 plane { y, 6 pigment { rgb 0.6 } finish { ambient 0.15 diffuse 1 } }
 #declare Terracotta = pigment { rgb <0.555, 0.212, 0.11> }

@@ -49,6 +49,47 @@ static void check_estimate(const char *what, double m, double se, double ref)
     check_close(what, m, ref, 4 * se + 2e-3 * ref);
 }
 
+/* The map's orientation (Cycles': u = 0.5 - (azimuth - rotation) / 2 pi, so a
+ * panorama seen from inside is not mirrored), read through "hdri" from
+ * SOAK_HDRI_DIR: an 8x4 map lit only in column 2 (u in [0.25, 0.375]) is
+ * seen at azimuth 30 + 360 (0.5 - 0.3125) = 97.5 degrees, and not at the
+ * mirror image's 30 + 360 * 0.3125 = 142.5. A missing name fails naming
+ * SOAK_HDRI_DIR. */
+#define ENV_LOOK(az)                                                                                                 \
+    "{\"render\": {\"width\": 1, \"height\": 1}, \"camera\": {\"position\": [0, 0, 0], \"look_at\": "            \
+    "[" az "], \"fov\": 2}, \"environment\": {\"type\": \"map\", \"hdri\": \"col\", \"rotation\": 30},"             \
+    " \"materials\": {\"m\": {\"type\": \"lambert\", \"albedo\": 0.6}},"                                              \
+    " \"objects\": [{\"type\": \"sphere\", \"center\": [0, 0, -50], \"radius\": 0.1, \"material\": \"m\"}]}"
+
+static void test_env_orientation(const char *dir)
+{
+    soak_image col;
+    if (!check_status("column map", soak_image_alloc(&col, 8, 4, 3), SOAK_OK)) return;
+    for (int i = 0; i < 4; ++i)
+        for (int ch = 0; ch < 3; ++ch) col.pixels[((size_t)i * 8 + 2) * 3 + ch] = 1.0f;
+    char path[300], err[512];
+    snprintf(path, sizeof path, "%s/col.exr", dir);
+    soak_image_write_opts wo = {SOAK_TONE_LINEAR, SOAK_PIXEL_FLOAT};
+    check_status("write column map", soak_image_write(path, &col, &wo, err, sizeof err), SOAK_OK);
+    soak_image_free(&col);
+    setenv("SOAK_HDRI_DIR", dir, 1);
+    double m, se;
+    /* cos/sin of 97.5 and 142.5 degrees */
+    if (render_mean("map column 2 seen", ENV_LOOK("-0.130526, 0.991445, 0"), dir, 64, &m, &se))
+        check_close("the lit column at azimuth 97.5", m, 1.0, 1e-6);
+    if (render_mean("map mirror image", ENV_LOOK("-0.793353, 0.608761, 0"), dir, 64, &m, &se))
+        check_close("nothing at its mirror image, 142.5", m, 0.0, 1e-6);
+    soak_scene sc;
+    const char *missing = "{\"camera\": {\"position\": [0, 0, 0], \"look_at\": [1, 0, 0]},"
+                          " \"environment\": {\"type\": \"map\", \"hdri\": \"nosuch\"},"
+                          " \"materials\": {}, \"objects\": []}";
+    check_true("a missing hdri is an error",
+               soak_scene_parse(missing, "hdri scene", dir, &sc, err, sizeof err) != SOAK_OK &&
+                   strstr(err, "environment.hdri") && strstr(err, "SOAK_HDRI_DIR"));
+    unsetenv("SOAK_HDRI_DIR");
+    unlink(path);
+}
+
 static void test_conductor(void)
 {
     const double alpha = 0.3, eta = 0.2, k = 3.0, theta_v = 45.0 * SOAK_PI / 180.0;
@@ -147,6 +188,7 @@ int main(void)
                         4096, &m, &se))
             check_estimate("environment map: albedo/pi * sum L_i pi (z0^2 - z1^2)", m, se, albedo / SOAK_PI * ref);
         unlink(path);
+        test_env_orientation(dir);
 
         /* Wet map over a mesh quad: 4x2 image, column j value j/4, top row 1. */
         soak_image wet;

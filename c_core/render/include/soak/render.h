@@ -54,6 +54,10 @@ typedef struct soak_render_options {
      * closed-form expectation; for validation, the image's expectation is
      * the same. */
     int trace_films;
+    /* > 0: render to an error. A tile stops taking samples (spp is then the
+     * cap) once each pixel has 16 samples and the standard error of its mean
+     * luminance is below target_error x max(mean, 0.01) (render_adaptive.h). */
+    double target_error;
 } soak_render_options;
 
 typedef struct soak_render_stats {
