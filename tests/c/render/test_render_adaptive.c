@@ -54,11 +54,12 @@ static void test_rule(void)
     check_true("dark pixel: the bound is absolute", rt_adaptive_converged(sy, sy2, n, 1, 0.02));
 }
 
-#define FLOOR_SCENE(objects)                                                                                         \
-    "{\"render\": {\"width\": 16, \"height\": 16, \"max_depth\": 4},"                                               \
-    " \"camera\": {\"position\": [0, 0, 1], \"look_at\": [0, 0, 0], \"up\": [0, 1, 0], \"fov\": 11.4},"             \
-    " \"environment\": {\"type\": \"constant\", \"radiance\": 1},"                                                  \
-    " \"materials\": {\"m\": {\"type\": \"lambert\", \"albedo\": 0.5}, \"k\": {\"type\": \"lambert\", \"albedo\": 0}}," \
+#define FLOOR_SCENE(objects)                                                                                           \
+    "{\"render\": {\"width\": 16, \"height\": 16, \"max_depth\": 4},"                                                  \
+    " \"camera\": {\"position\": [0, 0, 1], \"look_at\": [0, 0, 0], \"up\": [0, 1, 0], \"fov\": 11.4},"                \
+    " \"environment\": {\"type\": \"constant\", \"radiance\": 1},"                                                     \
+    " \"materials\": {\"m\": {\"type\": \"lambert\", \"albedo\": 0.5}, \"k\": {\"type\": \"lambert\", \"albedo\": "    \
+    "0}},"                                                                                                             \
     " \"objects\": [{\"type\": \"plane\", \"size\": [1000, 1000], \"material\": \"m\"}" objects "]}"
 
 static int render(const char *text, uint64_t seed, int spp, double target, soak_image *img, soak_render_stats *st)
@@ -90,7 +91,8 @@ static void test_zero_variance(void)
 
 static void test_noisy(double target, int *max_spp_out)
 {
-    const char *text = FLOOR_SCENE(", {\"type\": \"sphere\", \"center\": [0.6, 0, 0.3], \"radius\": 0.45, \"material\": \"k\"}");
+    const char *text =
+        FLOOR_SCENE(", {\"type\": \"sphere\", \"center\": [0.6, 0, 0.3], \"radius\": 0.45, \"material\": \"k\"}");
     double sum[N_PIX] = {0}, sum2[N_PIX] = {0};
     int min_spp = 1 << 30, max_spp = 0;
     for (int r = 0; r < REPS; ++r) {
