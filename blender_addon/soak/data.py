@@ -107,7 +107,11 @@ class LookupImages:
     params  the per-row parameters (RGB pixels as exported);
     view    the preset's view factor per row (columns: the view cosines);
     linear  per channel c, the albedo table with channel c's function in
-            channel c and zeros in the others (Linear lookups, summed);
+            channel c and zeros in the others (Linear lookups, summed), and
+            in alpha params pixel 3's channel c of the row (the same in every
+            column): the three colour reads also give the base specular
+            factor, the mirror area and the roughness ratio, so no
+            parameter read is needed (one image lookup fewer per point);
     cells   per channel c, one texel per table cell holding its corners
             (f01, f10, f11) in RGB and f00 in alpha (f01 the next column,
             f10 the next row; EEVEE Next keeps alpha within [0, 1], as the
@@ -134,10 +138,12 @@ def lookup_images(preset, liquid_name, exact=False):
                   [v for row in _rgb_rows("view_factor", t["view_factor"], nv, 3) for p in row for v in (*p, 1.0)], tag)
     alb = _rgb_rows("albedo", t["albedo"], na, 3)
     linear, cells = [], []
+    shared = [row[9:12] for row in t["params"]]      # params pixel 3, one value per row
     for c in range(3):
         if not exact:
-            px = [v for row in alb for p in row for v in [p[c] if k == c else 0.0 for k in range(3)] + [1.0]]
-            linear.append(_image(f"Soak LUT {base} {'RGB'[c]}", na, rows, px, tag))
+            px = [v for row, sh in zip(alb, shared) for p in row
+                  for v in [p[c] if k == c else 0.0 for k in range(3)] + [sh[c]]]
+            linear.append(_image(f"Soak LUT {base} {'RGB'[c]}", na, rows, px, tag + ":p3", alpha=True))
             continue
         px = []
         for r in range(rows - 1):

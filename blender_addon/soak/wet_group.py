@@ -173,12 +173,14 @@ def _wet_colour(b, colour, t, images, rows):
     b.role = "Column of each dry channel in the tables"
     if not rows.exact:
         us = separate(b, run_program_vector(b, affine_program(t["column_program"], (na - 1) / na, 0.5 / na), colour))
-        out = None
+        out, shared = None, []
         for c in range(3):   # image c holds channel c's function in channel c, zeros elsewhere
             b.role = f"Wet {'red green blue'.split()[c]}: the core's table"
-            tc = lookup(b, images.linear[c], us[c], rows.v, "Linear").outputs["Color"]
+            tex = lookup(b, images.linear[c], us[c], rows.v, "Linear")
+            tc = tex.outputs["Color"]
+            shared.append(tex.outputs["Alpha"])
             out = tc if out is None else vec(b, "ADD", out, tc)
-        return out
+        return out, shared
     top = (na - 1) * EDGE
     x = run_program_vector(b, affine_program(t["column_program"], top, 0.0), colour)
     x = vec_num(b, "MINIMUM", vec_num(b, "MAXIMUM", x, 0.0), top)
@@ -206,7 +208,7 @@ def _wet_colour(b, colour, t, images, rows):
         w00 = b.math("MULTIPLY_ADD", fxs[c], neg_gy, rows.gy)
         dot_value = dot.node.outputs["Value"]
         values.append(b.math("MULTIPLY_ADD", tex.outputs["Alpha"], w00, dot_value))
-    return combine(b, *values)
+    return combine(b, *values), None
 
 
 
@@ -223,9 +225,11 @@ def _wet_path(b, gin, L, preset, liquid_name, exact, normal, stages=(2, 3), view
     images = data.lookup_images(preset, liquid_name, exact)
     b.stage = STAGES[stages[0]]
     rows = _Rows(b, L, t, exact, film)
-    colour = _wet_colour(b, gin.outputs["Base Color"], t, images, rows)
+    colour, shared = _wet_colour(b, gin.outputs["Base Color"], t, images, rows)
     b.role = "Specular left, mirror area, roughness ratio"
-    if constant_L is None:
+    if shared is not None and constant_L is None:
+        factor, area, ratio = shared      # the colour reads' alpha (data.LookupImages.linear)
+    elif constant_L is None:
         spec = b.node("ShaderNodeSeparateXYZ")   # (base specular factor, interface area, roughness ratio)
         b.link(_param(b, images.params, t, rows, 3), spec.inputs[0])
         factor, area, ratio = spec.outputs[0], spec.outputs[1], spec.outputs[2]
