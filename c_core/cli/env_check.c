@@ -24,6 +24,9 @@ static const env_var vars[] = {
     {"SOAK_DATA_DIR", ENV_PATH, 0, 0, 0, "the data folder (above)"},
     {"SOAK_MATERIALS", ENV_PATH, 0, 0, 0, "the presets file (default: materials.json of the data folder)"},
     {"SOAK_PLUGIN_DIR", ENV_PATH, 0, 0, 0, "the folder of the I/O modules (default: beside soak, or PREFIX/lib/soak)"},
+    {"SOAK_HDRI_DIR", ENV_PATH, 0, 0, 0,
+     "the folder of a scene's named environments (\"hdri\": \"NAME\" reads NAME.exr;\ndefault: Blender's "
+     "/usr/share/blender/datafiles/studiolights/world)"},
     {"SOAK_PROGRESS", ENV_FLAG, 0, 1, 0, "1: progress bars even when stderr is not a terminal"},
     {"SOAK_IMAGE_IN_PROCESS", ENV_FLAG, 0, 1, 0,
      "1: decode images inside soak, without the contained reader process\n"
