@@ -21,16 +21,11 @@ BUMP_LABEL = "Soak Beads: bump"
 
 
 def _node(tree, kind, x, y, label):
-    n = tree.nodes.new(kind)
-    n[material_tree.NODE_TAG] = True
-    n[material_tree.ROLE_KEY] = BEADS_ROLE
-    n.label = label
-    n.location = (x, y)
-    return n
+    return material_tree.new_node(tree, kind, x, y, label, BEADS_ROLE)
 
 
 def bead_nodes(tree):
-    return [n for n in tree.nodes if n.get(material_tree.NODE_TAG) and n.get(material_tree.ROLE_KEY) == BEADS_ROLE]
+    return material_tree.role_nodes(tree, BEADS_ROLE)
 
 
 def _base_normal(gn):

@@ -114,6 +114,18 @@ def tag(n, role=None):
     return n
 
 
+def new_node(tree, kind, x, y, label, role):
+    """A node of ours with its role and the label the user sees."""
+    n = tag(tree.nodes.new(kind), role)
+    n.label = label
+    n.location = (x, y)
+    return n
+
+
+def role_nodes(tree, role):
+    return [n for n in tree.nodes if n.get(NODE_TAG) and n.get(ROLE_KEY) == role]
+
+
 def set_ref(n, key):
     n[REF_KEY] = key
     return key

@@ -79,16 +79,11 @@ def ripples_user(iu, frames, scene_start):
 
 
 def _node(tree, kind, x, y, label):
-    n = tree.nodes.new(kind)
-    n[material_tree.NODE_TAG] = True
-    n[material_tree.ROLE_KEY] = RAIN_ROLE
-    n.label = label
-    n.location = (x, y)
-    return n
+    return material_tree.new_node(tree, kind, x, y, label, RAIN_ROLE)
 
 
 def rain_nodes(tree):
-    return [n for n in tree.nodes if n.get(material_tree.NODE_TAG) and n.get(material_tree.ROLE_KEY) == RAIN_ROLE]
+    return material_tree.role_nodes(tree, RAIN_ROLE)
 
 
 def _base_normal(tree, gn):

@@ -14,39 +14,14 @@ OSL has no Debian package: without oslc/testshade/oiiotool on PATH this
 exits 77 (SKIPPED), never a pass. usage: osl_beads.py SOAK ROOT TMPDIR"""
 import math
 import os
-import re
 import shutil
-import subprocess
 import sys
+
+from osl_tools import dump, run, skip
 
 G = 32
 TOL = 1e-5
 HR = 0.006
-
-
-def skip(reason):
-    print("SKIPPED: " + reason)
-    sys.exit(77)
-
-
-def run(cmd, cwd):
-    r = subprocess.run(cmd, capture_output=True, text=True, cwd=cwd)
-    if r.returncode != 0:
-        print("FAIL: %s: %s" % (" ".join(cmd), (r.stderr or r.stdout).strip()[-400:]))
-        sys.exit(1)
-    return r.stdout
-
-
-def dump(path, tmp):
-    """Pixels of an image as rows of RGB, top row first (oiiotool --dumpdata)."""
-    out = run(["oiiotool", "--dumpdata", path], tmp)
-    px = {}
-    for m in re.finditer(r"Pixel \((\d+), (\d+)\):\s*([-0-9.e+ ]+)", out):
-        px[(int(m.group(1)), int(m.group(2)))] = [float(v) for v in m.group(3).split()]
-    if len(px) != G * G:
-        print("FAIL: %s: %d pixels read, expected %d" % (path, len(px), G * G))
-        sys.exit(1)
-    return px
 
 
 def shade(tmp, params, name, output):
@@ -56,7 +31,7 @@ def shade(tmp, params, name, output):
         cmd += ["--param:type=" + ("float" if isinstance(v, float) else "string"), k, str(v)]
     cmd += ["soak_beads", "-o", output, out, "-d", "float"]
     run(cmd, tmp)
-    return dump(out, tmp)
+    return dump(out, tmp, G * G)
 
 
 def main(soak, root, tmp):
@@ -68,7 +43,7 @@ def main(soak, root, tmp):
     run(["oslc", "-o", os.path.join(tmp, "soak_beads.oso"), os.path.join(root, "osl", "soak_beads.osl")], tmp)
     run([soak, "bake", "beads", "--contact-angle", "90", "--rate", "25", "--duration", "60", "--texel", "0.001",
          "--width", str(G), "--height", str(G), "--height-range", str(HR), "--float", "-o", "b.exr"], tmp)
-    ref = dump(os.path.join(tmp, "b.exr"), tmp)
+    ref = dump(os.path.join(tmp, "b.exr"), tmp, G * G)
     params = [("BeadFile", "b.exr"), ("HeightRange", HR)]
     nrm, hgt = shade(tmp, params, "b", "BeadNormal"), shade(tmp, params, "b", "Height")
     fails, worst_n, worst_h, tilt, top = [], 0.0, 0.0, 0.0, 0.0

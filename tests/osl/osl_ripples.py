@@ -19,39 +19,14 @@ OSL has no Debian package: without oslc/testshade/oiiotool on PATH this
 exits 77 (SKIPPED), never a pass. usage: osl_ripples.py SOAK ROOT TMPDIR"""
 import math
 import os
-import re
 import shutil
-import subprocess
 import sys
+
+from osl_tools import dump, run, skip
 
 G = 32
 LOOP = 8
 TOL = 2e-3
-
-
-def skip(reason):
-    print("SKIPPED: " + reason)
-    sys.exit(77)
-
-
-def run(cmd, cwd):
-    r = subprocess.run(cmd, capture_output=True, text=True, cwd=cwd)
-    if r.returncode != 0:
-        print("FAIL: %s: %s" % (" ".join(cmd), (r.stderr or r.stdout).strip()[-400:]))
-        sys.exit(1)
-    return r.stdout
-
-
-def dump(path, tmp):
-    """Pixels of an image as rows of RGB, top row first (oiiotool --dumpdata)."""
-    out = run(["oiiotool", "--dumpdata", path], tmp)
-    px = {}
-    for m in re.finditer(r"Pixel \((\d+), (\d+)\):\s*([-0-9.e+ ]+)", out):
-        px[(int(m.group(1)), int(m.group(2)))] = [float(v) for v in m.group(3).split()]
-    if len(px) != G * G:
-        print("FAIL: %s: %d pixels read, expected %d" % (path, len(px), G * G))
-        sys.exit(1)
-    return px
 
 
 def shade(tmp, params, name):
@@ -62,7 +37,7 @@ def shade(tmp, params, name):
                 k, str(v)]
     cmd += ["soak_wetmap", "-o", "RippleNormal", out, "-d", "float"]
     run(cmd, tmp)
-    return dump(out, tmp)
+    return dump(out, tmp, G * G)
 
 
 def main(soak, root, tmp):
@@ -74,7 +49,7 @@ def main(soak, root, tmp):
     run(["oslc", "-o", os.path.join(tmp, "soak_wetmap.oso"), os.path.join(root, "osl", "soak_wetmap.osl")], tmp)
     run([soak, "bake", "ripples", "--rate", "50", "--tile", "0.1", "--width", str(G), "--loop-frames", str(LOOP),
          "--period", "0.4", "--seed", "3", "--frames", "0-%d" % (LOOP - 1), "-o", "rip.%04d.exr"], tmp)
-    ref = dump(os.path.join(tmp, "rip.0003.exr"), tmp)
+    ref = dump(os.path.join(tmp, "rip.0003.exr"), tmp, G * G)
     fails, worst_tilt = [], 0.0
     for frame in (11, -5):
         params = [("RippleFile", "rip."), ("RippleExtension", ".exr"), ("Frame", frame), ("LoopFrames", LOOP)]
