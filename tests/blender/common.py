@@ -85,13 +85,19 @@ def tree_state(tree):
     return json.dumps({"nodes": nodes, "links": links}, sort_keys=True)
 
 
+def load_pixels(path):
+    """An image file's pixels as Blender gives them (RGBA rows, bottom row first)."""
+    img = bpy.data.images.load(path, check_existing=False)
+    px = list(img.pixels)
+    bpy.data.images.remove(img)
+    return px
+
+
 def render_lum(sc, path):
     """Renders scene sc to path (EXR) and returns the image's mean Rec. 709 luminance."""
     sc.render.filepath = path
     bpy.ops.render.render(write_still=True)
-    img = bpy.data.images.load(path, check_existing=False)
-    px = list(img.pixels)
-    bpy.data.images.remove(img)
+    px = load_pixels(path)
     n = len(px) // 4
     return sum(0.2126 * px[4 * i] + 0.7152 * px[4 * i + 1] + 0.0722 * px[4 * i + 2] for i in range(n)) / n
 

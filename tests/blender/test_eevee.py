@@ -81,13 +81,6 @@ W = (0.2126, 0.7152, 0.0722)
 os.makedirs(TMP, exist_ok=True)
 
 
-def load(path):
-    img = bpy.data.images.load(path, check_existing=False)
-    px = list(img.pixels)
-    bpy.data.images.remove(img)
-    return px
-
-
 def luminance(px):
     return [W[0] * px[i] + W[1] * px[i + 1] + W[2] * px[i + 2] for i in range(0, len(px), 4)]
 
@@ -152,7 +145,7 @@ def render(sc, engine, tag):
         path = os.path.join(TMP, f"{tag}_{engine}_{seed}.exr")
         sc.render.filepath = path
         bpy.ops.render.render(write_still=True)
-        px = load(path)
+        px = common.load_pixels(path)
         quant[tag, engine] = half_buffer_term(px)
         rounding[tag, engine] = half_rounding(px)
         images.append(luminance(px))

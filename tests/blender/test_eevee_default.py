@@ -52,13 +52,6 @@ V4 = bpy.app.version >= (4, 0, 0)
 os.makedirs(TMP, exist_ok=True)
 
 
-def load(path):
-    img = bpy.data.images.load(path, check_existing=False)
-    px = list(img.pixels)
-    bpy.data.images.remove(img)
-    return px
-
-
 def half_exact(v):
     return struct.unpack("e", struct.pack("e", v))[0] == v
 
@@ -138,7 +131,7 @@ def masks(sc):
     sc.render.engine = "CYCLES"
     sc.render.filepath = os.path.join(TMP, "mask.exr")
     bpy.ops.render.render(write_still=True)
-    px = load(sc.render.filepath)
+    px = common.load_pixels(sc.render.filepath)
     sc.world = world
     for n in OBJECTS:
         bpy.data.objects[n].data.materials[0] = saved[n]
@@ -176,7 +169,7 @@ def render(sc, engine, tag, mask):
         sc.cycles.seed = seed
         sc.render.filepath = os.path.join(TMP, f"{tag}_{engine}_{seed}.exr")
         bpy.ops.render.render(write_still=True)
-        images.append(load(sc.render.filepath))
+        images.append(common.load_pixels(sc.render.filepath))
     lums = [lum(px) for px in images]
     out = {}
     for n, idx in mask.items():
