@@ -34,7 +34,8 @@ class SOAK_OT_bake_beads(bpy.types.Operator):
                                     min=1e-3, max=1e4)
     resolution: bpy.props.IntProperty(name="Resolution", description="Texels across the map", default=512,
                                       min=8, max=8192)
-    seed: bpy.props.IntProperty(name="Seed", default=0, min=0)
+    seed: bpy.props.IntProperty(name="Seed", description="Which random drops fall: another seed, another bead "
+                                "pattern with the same statistics", default=0, min=0)
 
     @classmethod
     def poll(cls, context):
