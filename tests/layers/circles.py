@@ -30,12 +30,7 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 # units starts with one of an entry's prefixes (so a branch merged later that
 # adds or removes a file of the same module does not fail). An entry whose
 # circle is gone is reported: delete it.
-ALLOWED = {
-    # The rain flow and its AVX2/AVX-512 kernels through the rows they share
-    # (bake_rain_flow_rows.h); issue 44 gives bake_rain_flow.c to "rain".
-    ("bake/bake_rain_flow",):
-        "the rain flow's dispatch to its vector kernels (rain's, issue 44)",
-}
+ALLOWED = {}
 
 
 def unit_of(path):

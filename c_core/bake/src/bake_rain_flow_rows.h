@@ -6,7 +6,7 @@
 
 #include <stddef.h>
 
-#include "bake_rain_flow.h"
+#include "bake_rain_grid.h"
 
 /* What the texels of one row send: o[d][x] to neighbour d (float, as the
  * two-pass scheme stores it) and out[x], the sum of its nine outflows (drip
