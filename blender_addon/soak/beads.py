@@ -12,7 +12,6 @@ Make Wet's, so Make Dry removes them) and never changes the group:
 The bump comes after the rain's ripple mix when both are wired (a bead sits
 on whatever the surface does). All or nothing through snapshot.atomic."""
 
-import json
 
 from . import checks, material_tree, snapshot
 
@@ -69,10 +68,7 @@ def _wire(mat, gns, image, repeat, uv_map, distance):
         tree.links.new(bump.outputs["Normal"], g.inputs["Normal"])
     for n in old:
         tree.nodes.remove(n)
-    for g in gns:
-        restore = json.loads(g[material_tree.RESTORE_KEY])
-        restore["nodes"] = [n.name for n in tree.nodes if n.get(material_tree.NODE_TAG) and n.type != "GROUP"]
-        g[material_tree.RESTORE_KEY] = json.dumps(restore)
+    material_tree.record_our_nodes(tree, gns)
     return bump
 
 

@@ -126,6 +126,16 @@ def role_nodes(tree, role):
     return [n for n in tree.nodes if n.get(NODE_TAG) and n.get(ROLE_KEY) == role]
 
 
+def record_our_nodes(tree, gns):
+    """Rewrites each group node's restore record with the names of every
+    node of ours now in the tree (Make Dry removes exactly these)."""
+    ours = [n.name for n in tree.nodes if n.get(NODE_TAG) and n.type != "GROUP"]
+    for g in gns:
+        restore = json.loads(g[RESTORE_KEY])
+        restore["nodes"] = ours
+        g[RESTORE_KEY] = json.dumps(restore)
+
+
 def set_ref(n, key):
     n[REF_KEY] = key
     return key

@@ -42,7 +42,6 @@ Image sequences (Blender's image user, ``BKE_image_user_frame_get``): the
 file number is clamp(scene frame - frame_start + 1, 0, duration) +
 frame_offset, or with cycling the same modulo duration (0 -> duration)."""
 
-import json
 import math
 
 import bpy
@@ -344,10 +343,7 @@ def _wire(mat, gns, drops, first, last, ripples, frames, scene_start, repeat, uv
     # nothing below can fail: the old nodes go last (a snapshot cannot bring them back)
     for n in old:
         tree.nodes.remove(n)
-    for g in gns:
-        restore = json.loads(g[material_tree.RESTORE_KEY])
-        restore["nodes"] = [n.name for n in tree.nodes if n.get(material_tree.NODE_TAG) and n.type != "GROUP"]
-        g[material_tree.RESTORE_KEY] = json.dumps(restore)
+    material_tree.record_our_nodes(tree, gns)
     return src
 
 

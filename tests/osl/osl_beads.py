@@ -14,10 +14,9 @@ OSL has no Debian package: without oslc/testshade/oiiotool on PATH this
 exits 77 (SKIPPED), never a pass. usage: osl_beads.py SOAK ROOT TMPDIR"""
 import math
 import os
-import shutil
 import sys
 
-from osl_tools import dump, run, skip
+from osl_tools import decode_normal, dump, prepare, run
 
 G = 32
 TOL = 1e-5
@@ -35,12 +34,7 @@ def shade(tmp, params, name, output):
 
 
 def main(soak, root, tmp):
-    missing = [t for t in ("oslc", "testshade", "oiiotool") if not shutil.which(t)]
-    if missing:
-        skip("OSL tools not on PATH: " + ", ".join(missing))
-    shutil.rmtree(tmp, ignore_errors=True)
-    os.makedirs(tmp)
-    run(["oslc", "-o", os.path.join(tmp, "soak_beads.oso"), os.path.join(root, "osl", "soak_beads.osl")], tmp)
+    prepare(tmp, root, "soak_beads")
     run([soak, "bake", "beads", "--contact-angle", "90", "--rate", "25", "--duration", "60", "--texel", "0.001",
          "--width", str(G), "--height", str(G), "--height-range", str(HR), "--float", "-o", "b.exr"], tmp)
     ref = dump(os.path.join(tmp, "b.exr"), tmp, G * G)
@@ -49,9 +43,7 @@ def main(soak, root, tmp):
     fails, worst_n, worst_h, tilt, top = [], 0.0, 0.0, 0.0, 0.0
     for (x, y), g in nrm.items():
         c = ref[(x, G - 1 - y)]   # testshade's row y is v = (y + 0.5) / G; the file's row G-1-y holds it
-        n = [2.0 * c[i] - 1.0 for i in range(3)]
-        ln = math.sqrt(sum(a * a for a in n))
-        n = [a / ln for a in n]
+        n = decode_normal(c)
         tilt = max(tilt, math.degrees(math.acos(max(-1.0, min(1.0, n[2])))))
         worst_n = max(worst_n, max(abs(a - b) for a, b in zip(g, n)))
         worst_h = max(worst_h, abs(hgt[(x, y)][0] - c[3] * HR))

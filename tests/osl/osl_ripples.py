@@ -19,10 +19,9 @@ OSL has no Debian package: without oslc/testshade/oiiotool on PATH this
 exits 77 (SKIPPED), never a pass. usage: osl_ripples.py SOAK ROOT TMPDIR"""
 import math
 import os
-import shutil
 import sys
 
-from osl_tools import dump, run, skip
+from osl_tools import decode_normal, dump, prepare, run
 
 G = 32
 LOOP = 8
@@ -41,12 +40,7 @@ def shade(tmp, params, name):
 
 
 def main(soak, root, tmp):
-    missing = [t for t in ("oslc", "testshade", "oiiotool") if not shutil.which(t)]
-    if missing:
-        skip("OSL tools not on PATH: " + ", ".join(missing))
-    shutil.rmtree(tmp, ignore_errors=True)
-    os.makedirs(tmp)
-    run(["oslc", "-o", os.path.join(tmp, "soak_wetmap.oso"), os.path.join(root, "osl", "soak_wetmap.osl")], tmp)
+    prepare(tmp, root, "soak_wetmap")
     run([soak, "bake", "ripples", "--rate", "50", "--tile", "0.1", "--width", str(G), "--loop-frames", str(LOOP),
          "--period", "0.4", "--seed", "3", "--frames", "0-%d" % (LOOP - 1), "-o", "rip.%04d.exr"], tmp)
     ref = dump(os.path.join(tmp, "rip.0003.exr"), tmp, G * G)
@@ -58,9 +52,7 @@ def main(soak, root, tmp):
         for (x, y), g in got.items():
             # testshade's row y is v = (y + 0.5) / G; the file's row G-1-y holds that v
             c = ref[(x, G - 1 - y)]
-            n = [2.0 * c[i] - 1.0 for i in range(3)]
-            ln = math.sqrt(sum(a * a for a in n))
-            n = [a / ln for a in n]
+            n = decode_normal(c)
             worst_tilt = max(worst_tilt, math.degrees(math.acos(max(-1.0, min(1.0, n[2])))))
             worst = max(worst, max(abs(a - b) for a, b in zip(g, n)))
         ok = worst < TOL

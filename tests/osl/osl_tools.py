@@ -1,7 +1,10 @@
 """What the testshade checks of the OSL shaders share: skip with ctest's 77,
 run a tool or fail with its message, and read an image's pixels through
 oiiotool (osl_beads.py, osl_ripples.py)."""
+import math
+import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -30,3 +33,21 @@ def dump(path, tmp, count):
         print("FAIL: %s: %d pixels read, expected %d" % (path, len(px), count))
         sys.exit(1)
     return px
+
+
+def prepare(tmp, root, shader):
+    """Skips without the OSL tools, empties tmp and compiles osl/SHADER.osl
+    into it."""
+    missing = [t for t in ("oslc", "testshade", "oiiotool") if not shutil.which(t)]
+    if missing:
+        skip("OSL tools not on PATH: " + ", ".join(missing))
+    shutil.rmtree(tmp, ignore_errors=True)
+    os.makedirs(tmp)
+    run(["oslc", "-o", os.path.join(tmp, shader + ".oso"), os.path.join(root, "osl", shader + ".osl")], tmp)
+
+
+def decode_normal(c):
+    """A normal map texel (RGB in [0, 1]) as the unit vector normalize(2 c - 1)."""
+    n = [2.0 * c[i] - 1.0 for i in range(3)]
+    ln = math.sqrt(sum(a * a for a in n))
+    return [a / ln for a in n]
