@@ -18,7 +18,15 @@ over each pixel's footprint, a second method).
   far one; Soak_Ripple_Far_Distance(0.01713, 67.38, 960) = 0.01713 / (2 p),
   p = 2 tan(33.69 deg) / 960, computed here.
 
-usage: ripples_far.py SOAK ROOT TMPDIR"""
+With --images it renders instead the README's rain picture,
+povray/images/rain_pair.png: the README's "Rain over time" set-up at its
+camera, before (Soak_Wet_Material_Fn, the ripple normal with POV-Ray's default
+finite-difference step), after (Soak_Wet_Drops_Material, the overlay through
+Soak_Ripple_Normal_Far) and after with the ring slopes x 5 (a 1.5 mm
+--amplitude), the middle of each at twice the scale below; the sky is blender-data's
+courtyard HDRI (CC0).
+
+usage: ripples_far.py SOAK ROOT TMPDIR [--images]"""
 import math
 import os
 import re
@@ -59,8 +67,70 @@ def render(tmp, lib, name, normal, extra=()):
     return read_image(out)[:, :, 0]
 
 
+HDRI = "/usr/share/blender/datafiles/studiolights/world/courtyard.exr"
+PICTURE = """#version 3.7;
+global_settings {{ assumed_gamma 1.0 }}
+#include "soak.inc"
+#declare Cam = <0.5, -0.6, 0.35>;
+camera {{ location Cam look_at <0.5, 0.5, 0> sky z right -x*image_width/image_height }}
+light_source {{ <3, -2, 5> rgb 1 }}
+sky_sphere {{ pigment {{ image_map {{ exr "{hdri}" gamma 1.0 map_type 1 interpolate 2 }} }} rotate 90*x }}
+box {{ <0.2, 0.8, 0>, <0.4, 1.0, 0.3> pigment {{ rgb <0.8, 0.2, 0.1> }} }}
+#declare Wet = Soak_Drops_Fn("drops.", ".exr", 4, 0.6, 0, 3, 1)
+#if ({after})
+  plane {{ z, 0 Soak_Wet_Drops_Material("concrete", "water", Wet, 0.1) }}
+  #declare Rip = Soak_Ripple_Normal_Far("rip.", "far.", ".exr", 4, 1, 0, {gain} * 4 * 0.0003 / 0.5, 0.5, Cam,
+                                        Soak_Ripple_Far_Distance(0.01713, 67.38, image_width))
+#else
+  plane {{ z, 0 Soak_Wet_Material_Fn("concrete", "water", Wet) }}
+  #declare H = Soak_Ripple_Height_Fn("rip.", ".exr", 4, 1, 0)
+  #declare Rip = normal {{ function {{ H(x, y, z) }} 4 * 0.0003 / 0.5 scale 0.5 }}
+#end
+plane {{ z, 0.001 texture {{ pigment {{ rgbf 1 }} finish {{ reflection {{ 0.02, 1 fresnel on }} }} normal {{ Rip }} }}
+  interior {{ ior 1.33 }} }}
+"""
+
+
+def images(soak, root, tmp, lib):
+    """The README's before/after rain picture (not a test)."""
+    if not os.path.exists(HDRI):
+        fail(f"{HDRI} missing (Debian's blender-data)")
+    for cmd in ([soak, "bake", "drops", "--rate", "10", "--map-size", "1", "--duration", "2", "--fps", "4",
+                 "--frames", "0-3", "-o", "drops.%04d.exr"],
+                [soak, "bake", "ripples", "--rate", "10", "--tile", "0.5", "--loop-frames", "4", "--period", "1",
+                 "--frames", "0-0", "-o", "rip.%04d.exr", "--far", "far.%04d.exr"]):
+        r = subprocess.run(cmd, capture_output=True, text=True, cwd=tmp)
+        if r.returncode != 0:
+            fail(f"{' '.join(cmd)}: exit {r.returncode}\n{r.stderr[-1500:]}")
+    w, h = 600, 450
+    tiles = []
+    for name, after, gain in (("before", 0, 1), ("after", 1, 1), ("after_x5", 1, 5)):
+        pov = os.path.join(tmp, f"pic_{name}.pov")
+        with open(pov, "w") as f:
+            f.write(PICTURE.format(hdri=HDRI, after=after, gain=gain))
+        png = os.path.join(tmp, f"pic_{name}.png")
+        r = subprocess.run(["povray", f"+I{pov}", f"+O{png}", f"+W{w}", f"+H{h}", "-D", "+WT2", f"+L{lib}",
+                            "+A0.1", "+AM2", "+R2"], capture_output=True, text=True, cwd=tmp)
+        if r.returncode != 0:
+            fail(f"{pov}: exit {r.returncode}\n{r.stderr[-1500:]}")
+        print(f"{name}:", " ".join(re.findall(r"Trace Time:.*", r.stdout + r.stderr)))
+        small, crop = os.path.join(tmp, f"small_{name}.png"), os.path.join(tmp, f"crop_{name}.png")
+        subprocess.run(["oiiotool", png, "--resize", f"{w // 2}x{h // 2}", "-o", small], check=True)
+        # the middle of the frame at full resolution: twice the scale of the frame above it
+        subprocess.run(["oiiotool", png, "--cut", f"{w // 2}x{h // 2}+{w // 4}+{h // 4}", "--origin", "+0+0",
+                        "-o", crop], check=True)
+        tiles.append((small, crop))
+    out = os.path.join(root, "povray", "images", "rain_pair.png")
+    subprocess.run(["oiiotool"] + [t[0] for t in tiles] + [t[1] for t in tiles] + ["--mosaic", "3x2",
+                    "-d", "uint8", "--attrib", "png:compressionLevel", "9", "-o", out], check=True)
+    print("wrote", out)
+
+
 def main():
     soak, _root, tmp, lib = setup_args(__doc__)
+    if "--images" in sys.argv:
+        images(soak, _root, tmp, lib)
+        return
     r = subprocess.run([soak, "bake", "ripples", "--rate", "30", "--width", str(WIDTH), "--tile", str(TILE),
                         "--loop-frames", str(LOOP), "--period", str(PERIOD), "--frames", f"0-{LOOP - 1}",
                         "-o", "r.%04d.exr", "--far", "f.%04d.exr"], capture_output=True, text=True, cwd=tmp)
