@@ -10,9 +10,9 @@ References, from the JSON export (`soak export --target json`, another writer
 of the core's tables) and Fresnel's equation written here:
 - inside the drop: albedo(w = 1) x view factor(w = 1, view along the normal);
 - dry ground: albedo(0) x view factor(0);
-- Spot = 0.48 (the drop covers half of each texel): the mean of the two
-  textures, the water's and the core's reading at w = 0.24 (the knots'
-  albedo x factor lerped in wetness, as POV-Ray's texture_map does);
+- Spot between 0.24 and the next knot above it: the map's stated law, the
+  knots' albedo x factor below Spot and the water's at Spot, lerped in the
+  wet-map value (0.24 then lies on the stretch blending into the water);
 - gloss: a white sky (radiance 1) minus a black one gives inside the drop the
   film's reflection at w = 1 times Fresnel at normal incidence,
   ((n - 1)/(n + 1))^2 with the liquid's n, and 0 on the dry ground.
@@ -59,6 +59,15 @@ def seen(exp, preset, w):
     j = exp["view_cos"].index(1.0)
     rows = np.array([np.array(a) * np.array(v[j]) for a, v in zip(k["albedo"], k["view_factor"])])
     return np.array([np.interp(w, k["wetness"], rows[:, c]) for c in range(3)])
+
+
+def drops_law(exp, preset, w, spot):
+    """Soak_Wet_Drops_Material's map as its comment states it: the knots below Spot,
+    then the last knot (wetness 1) at Spot, lerped at w."""
+    k = knots(exp, preset)
+    xs = [x for x in k["wetness"][:-1] if x < spot] + [spot]
+    rows = np.array([seen(exp, preset, x) for x in xs[:-1]] + [seen(exp, preset, 1.0)])
+    return np.array([np.interp(w, xs, rows[:, c]) for c in range(3)])
 
 
 def render(tmp, lib, name, material, sky):
@@ -114,9 +123,14 @@ def main():
         black = render(tmp, lib, f"{preset}_black", mat.format(spot=0.1), 0)
         bad = check(f"{preset}: drop = the wet entry, albedo(1) x factor(1)", black[inside], wet, bad)
         bad = check(f"{preset}: dry ground = albedo(0) x factor(0)", black[dry], dry_ref, bad)
-        half = render(tmp, lib, f"{preset}_half", mat.format(spot=2 * W_DROP), 0)
-        bad = check(f"{preset}: Spot = 2 w: half water, half the core's reading at w = {W_DROP}",
-                    half[inside], 0.5 * (wet + seen(exp, preset, W_DROP)), bad)
+        spot = 0.5 * (W_DROP + min(x for x in k["wetness"] if x > W_DROP))
+        below = max(x for x in k["wetness"] if x < W_DROP)
+        edge = render(tmp, lib, f"{preset}_edge", mat.format(spot=spot), 0)
+        share = (W_DROP - below) / (spot - below)
+        bad = check(f"{preset}: Spot = {spot:.4f}: {share:.3f} water over the knot at {below}",
+                    edge[inside], drops_law(exp, preset, W_DROP, spot), bad)
+        if not np.all(np.abs(drops_law(exp, preset, W_DROP, spot) - wet) > 0.01 * wet):
+            fail(f"{preset}: the edge case does not differ from the water: nothing checked")
         white = render(tmp, lib, f"{preset}_white", mat.format(spot=0.1), 1)
         if k["wetness"][-1] != 1 or k["film_coverage"][-1] != 1:
             fail(f"{preset}: the last knot is not a full film (wetness {k['wetness'][-1]}, cover {k['film_coverage'][-1]})")
