@@ -133,7 +133,8 @@ def main():
             fail(f"{preset}: the edge case does not differ from the water: nothing checked")
         white = render(tmp, lib, f"{preset}_white", mat.format(spot=0.1), 1)
         if k["wetness"][-1] != 1 or k["film_coverage"][-1] != 1:
-            fail(f"{preset}: the last knot is not a full film (wetness {k['wetness'][-1]}, cover {k['film_coverage'][-1]})")
+            fail(f"{preset}: the last knot is not a full film "
+                 f"(wetness {k['wetness'][-1]}, cover {k['film_coverage'][-1]})")
         film_r = 1.0 * fresnel0   # film reflection c + (1 - c) a = 1 at full cover
         bad = check(f"{preset}: drop's gloss = film reflection x F(0) = {film_r:.5f}",
                     (white - black)[inside], np.full(3, film_r), bad,

@@ -121,8 +121,8 @@ def images(soak, root, tmp, lib):
                         "-o", crop], check=True)
         tiles.append((small, crop))
     out = os.path.join(root, "povray", "images", "rain_pair.png")
-    subprocess.run(["oiiotool"] + [t[0] for t in tiles] + [t[1] for t in tiles] + ["--mosaic", "3x2",
-                    "-d", "uint8", "--attrib", "png:compressionLevel", "9", "-o", out], check=True)
+    mosaic = ["--mosaic", "3x2", "-d", "uint8", "--attrib", "png:compressionLevel", "9", "-o", out]
+    subprocess.run(["oiiotool"] + [t[0] for t in tiles] + [t[1] for t in tiles] + mosaic, check=True)
     print("wrote", out)
 
 
