@@ -61,6 +61,16 @@ BAD = [  # (snippet, the argument the message must name)
     ('#declare F = Soak_Drying_Map_Fn("s.png", -0.1, 0.5)', "T_Fill = -0.1"),
     ('#declare Soak_Media_Lobes_Max = 1;\n'
      'box { 0, 1 hollow Soak_Clear_Texture() interior { Soak_Media_Raw(1, 0, 0, 0, 1) } }', "Soak_Media_Lobes_Max = 1"),
+    # rain: drops as water, far ripples (the checks run before any file is opened)
+    ('#declare W = function { x }\nbox { <0,0,-1>, <1,1,0> Soak_Wet_Drops_Material("brick", "water", W, 0) }',
+     "Spot = 0"),
+    ('#declare W = function { x }\nbox { <0,0,-1>, <1,1,0> Soak_Wet_Drops_Material("brick", "water", W, 1.5) }',
+     "Spot = 1.5"),
+    ('#declare D = Soak_Ripple_Far_Distance(0, 67.38, 640);', "Wavelength = 0"),
+    ('#declare D = Soak_Ripple_Far_Distance(0.017, 180, 640);', "Angle = 180"),
+    ('#declare D = Soak_Ripple_Far_Distance(0.017, 67.38, 0);', "Width = 0"),
+    ('#declare N = Soak_Ripple_Normal_Far("r.", "f.", ".exr", 4, 1, 0, 0.01, 0, <0, 0, 1>, 3);', "Tile = 0"),
+    ('#declare N = Soak_Ripple_Normal_Far("r.", "f.", ".exr", 4, 1, 0, 0.01, 0.5, <0, 0, 1>, -1);', "Far = -1"),
 ]
 
 SSS_HEAD = """#version 3.7;

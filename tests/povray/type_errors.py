@@ -42,6 +42,10 @@ CASES = [  # (what, object line, macro, argument)
      '"oak", "water", function { x }, <0.3, 0.2, 0.1>)', "Soak_Wet_Existing_Fn", "Texture"),
     ("material { } around a material macro", 'material { Soak_Wet_Material("sand", "water", 0.5) }',
      "Soak_Wet_Material", "material { }"),
+    ("pigment for the drops' map", 'Soak_Wet_Drops_Material("brick", "water", pigment { rgb 1 }, 0.1)',
+     "Soak_Wet_Drops_Material", "Drops_Fn"),
+    ("string for the drops' Spot", 'Soak_Wet_Drops_Material("brick", "water", function { x }, "0.1")',
+     "Soak_Wet_Drops_Material", "Spot"),
 ]
 
 
