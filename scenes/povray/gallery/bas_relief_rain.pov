@@ -3,21 +3,20 @@
 // relief.inc by relief_mesh.py; render_gallery.sh bakes it): ten minutes of fine rain
 // from the viewer's side and steeply above, no runoff (the stone takes the water where
 // it lands), so the faces open to the rain are wet, the tops of the cornice and the
-// string course wettest, and the strips sheltered under them stay dry. A low sun from
-// the left for the carving; render_gallery.sh pastes the baked map (white = wet) into
-// the lower right corner.
+// string course wettest, and the strips sheltered under them stay dry. The camera, the
+// sun from the left and the uniform sky (radiance 0.55; 0.3 of it as the diffuse light's
+// ambient, a vertical face seeing half the sky) are the soak render column's
+// (scenes/gallery/bas_relief_rain.json). Declare=Dry=1 renders the panel, its wall and
+// the paving before the shower: render_gallery.sh puts that render's left half beside
+// this one's right half and pastes the baked map (white = wet) into the lower right corner.
 #version 3.7;
 global_settings { assumed_gamma 1.0 ambient_light 1 }
 #declare Soak_Ambient = 0.3;
 #include "soak.inc"
 #include "relief.inc"
-#ifndef(Cam) #declare Cam = <1.3, -4.6, 0.95>; #end
-#ifndef(Look) #declare Look = <1.3, 0, 0.62>; #end
-#ifndef(Ang) #declare Ang = 42; #end
-#ifndef(Sun) #declare Sun = <-1.6, -1, 0.8>; #end
 #ifndef(Dry) #declare Dry = 0; #end
-camera { location Cam look_at Look sky z up z right -x * image_width / image_height angle Ang }
-light_source { Sun * 1e4 rgb <1.35, 1.2, 1.0> parallel point_at 0 }
+camera { location <1.3, -4.6, 0.95> look_at <1.3, 0, 0.62> sky z up z right -x * image_width / image_height angle 42 }
+light_source { <-1.6, -1, 0.8> * 1e4 rgb <3.6, 3.2, 2.7> / pi parallel point_at 0 }
 sky_sphere { pigment { rgb 0.55 } }
 #declare Wet = #if (Dry) function { 0 } #else Soak_Map_Fn("relief_wet.png") #end
 object { Relief Soak_Wet_Material_UV_Fn("limestone", "water", Wet) }
