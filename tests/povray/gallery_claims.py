@@ -22,10 +22,23 @@ With the forest HDRI (the gallery's picture) the soaked rock (d) must stay withi
 same upper bound: its film's sky does not undo the darkening (the issue's "glossy rather
 than darker"), and (d) < (c) < 1.
 
+[Hnat06] sec. 3.3.1, Fig. 7: the relief goes from dry to wet as the rain map says, and
+the strips the mouldings shelter stay dry. scenes/povray/gallery/bas_relief_rain.pov is
+rendered (highlights off) with the gallery's rain bake, made smaller (relief_mesh.py at
+120 cells a metre, a 400 x 200 map, 16 rays), and with Declare=Dry=1. Pixels: points of
+the panel's flat face projected through the camera, chosen where the map (read at the
+points' UVs) is 1 (wet: between the medallions and below the string course) or 0 (dry:
+under the cornice's cove). Wet over the same pixels dry must be the core's limestone
+albedo ratio at wetness 1 within the channels' spread and the view factor at these
+angles (cos 0.9 .. 1), plus, above, water's Fresnel reflectance at 20 deg times the
+sky's radiance 0.55 over the dry pixels' (the film mirrors the uniform sky); the dry
+strip must stay within 3 % of dry and, in the wet render, lighter than the wet faces.
+
 usage: gallery_claims.py SOAK ROOT TMP   (exit 77 and SKIPPED: when Blender's HDRIs are missing)
 """
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -50,9 +63,9 @@ def fresnel_water(theta_deg, n=1.333):
     return 0.5 * (rs * rs + rp * rp)
 
 
-def project(p):
-    """Pixel (column, row) of world point p through beach_rock.pov's camera (z up, 50 deg across)."""
-    loc, look, angle = CAMERA
+def project(p, camera=CAMERA):
+    """Pixel (column, row) of world point p through a camera (location, look_at, degrees across; z up)."""
+    loc, look, angle = camera
     f = (look - loc) / np.linalg.norm(look - loc)
     r = np.array([1.0, 0.0, 0.0])
     u = np.cross(r, f)
@@ -98,14 +111,18 @@ def main():
     kn = k["liquids"]["water"]["knots"]
     dry_albedo = np.array(kn["albedo"][0])
 
-    def bounds(w):
+    def bounds(w, cos_range=COS_RANGE):
         i = kn["wetness"].index(w)
         ratio = np.array(kn["albedo"][i]) / dry_albedo
-        vf = [np.interp(c, cos, [v[j] for v in kn["view_factor"][i]]) for c in np.linspace(*COS_RANGE, 33)
+        vf = [np.interp(c, cos, [v[j] for v in kn["view_factor"][i]]) for c in np.linspace(*cos_range, 33)
               for j in range(3)]
-        mirror = fresnel_water(60) * kn["film_coverage"][i]
         core = (np.array(kn["albedo"][i]) @ LUM) / (dry_albedo @ LUM)
-        return ratio.min() * min(vf), ratio.max() * max(vf) + mirror, core
+        return ratio.min() * min(vf), ratio.max() * max(vf), core, kn["film_coverage"][i]
+
+    def beach_bounds(w):
+        """bounds(w) with the film's mirror image of the sand and the rocks above."""
+        lo, hi, core, coverage = bounds(w)
+        return lo, hi + fresnel_water(60) * coverage, core
 
     radius = 0.4 * project(np.array([1.0, 0.0, 0.6]))[0] - 0.4 * project(np.array([0.0, 0.0, 0.6]))[0]
     failures = 0
@@ -125,10 +142,10 @@ def main():
           f"with the HDRI: {[round(v, 3) for v in r_sky]}")
     check(abs(r_bare[0] - 1) < 1e-3, f"(a) dry in both renders: {r_bare[0]:.4f} = 1")
     for label, i, w in (("(c) pores full", 2, sat), ("(d) soaked", 3, 1.0)):
-        lo, hi, core = bounds(w)
+        lo, hi, core = beach_bounds(w)
         check(lo <= r_bare[i] <= hi, f"{label}: {r_bare[i]:.3f} in [{lo:.3f}, {hi:.3f}] "
               f"(the core's luminance ratio {core:.3f} at wetness {w:g})")
-    lo_d, hi_d, _ = bounds(1.0)
+    lo_d, hi_d, _ = beach_bounds(1.0)
     check(r_sky[3] <= hi_d, f"(d) with the forest HDRI {r_sky[3]:.3f} <= {hi_d:.3f}: darker, not only glossier")
     check(r_sky[3] < r_sky[2] < 0.95, f"with the HDRI (d) {r_sky[3]:.3f} < (c) {r_sky[2]:.3f} < 0.95")
     # (b): below the wave line (z < 0.55) soaked, above it dry
@@ -137,9 +154,80 @@ def main():
     top = ratio("wet_bare", disc(np.array([ROCK_X[1], -0.5, 1.05]), small))
     check(lo_d <= low <= hi_d, f"(b) below the wave line {low:.3f} in [{lo_d:.3f}, {hi_d:.3f}]")
     check(top > 0.97, f"(b) above the wave line {top:.3f} > 0.97 (dry)")
+    relief(soak, root, tmp, lib, bounds, check)
     if failures:
-        fail(f"{failures} claim(s) of the POV-Ray beach rock not shown")
-    print("PASS: the POV-Ray beach rock shows (b) wet below its wave line and (c), (d) darker by the core's ratios")
+        fail(f"{failures} claim(s) of the POV-Ray gallery not shown")
+    print("PASS: the POV-Ray beach rock shows (b) wet below its wave line and (c), (d) darker by the core's "
+          "ratios; the relief's wet faces are darker by the core's ratio and its sheltered strips dry")
+
+
+RELIEF_CAMERA = (np.array([1.3, -4.6, 0.95]), np.array([1.3, 0.0, 0.62]), 42.0)   # bas_relief_rain.pov
+PIXEL = re.compile(r"Pixel \((\d+), (\d+)\):\s+(\d+)")
+
+
+def read_map(path):
+    """The 16-bit grey map as floats in [0, 1], row 0 at the top (v = 1)."""
+    out = subprocess.run(["oiiotool", "--dumpdata", path], check=True, capture_output=True, text=True).stdout
+    px = [(int(a), int(b), int(c)) for a, b, c in PIXEL.findall(out)]
+    m = np.zeros((max(p[1] for p in px) + 1, max(p[0] for p in px) + 1))
+    for x, y, v in px:
+        m[y, x] = v / 65535.0
+    return m
+
+
+def relief(soak, root, tmp, lib, bounds, check):
+    """The bas-relief claims (see the module's docstring), through check(ok, message)."""
+    gal = os.path.join(root, "scenes", "povray", "gallery")
+    subprocess.run(["/usr/bin/python3", os.path.join(gal, "relief_mesh.py"), tmp, "120"], check=True,
+                   capture_output=True)
+    wet_png = os.path.join(tmp, "relief_wet.png")
+    subprocess.run([soak, "bake", "rain", os.path.join(tmp, "relief.obj"), "-o", wet_png, "--up", "z",
+                    "--rain-dir", "0,-0.55,1", "--spread", "15", "--rainfall", "6", "--duration", "600",
+                    "--drop-size", "0.0005", "--splat", "0.004", "--flow-iterations", "0", "--width", "400",
+                    "--height", "200", "--rays", "16", "--threads", "2"], check=True, capture_output=True)
+    wmap = read_map(wet_png)
+    lum = {}
+    for name, extra in (("relief_wet", []), ("relief_dry", ["Declare=Dry=1"])):
+        out = os.path.join(tmp, name + ".exr")
+        rc, log = povray(os.path.join(gal, "bas_relief_rain.pov"), out, W, H, lib,
+                         extra=[f"+L{tmp}", "Declare=Soak_Highlights=0"] + extra, cwd=tmp)
+        if rc != 0:
+            fail(f"povray bas_relief_rain.pov {' '.join(extra)}: exit {rc}\n{log[-800:]}")
+        lum[name] = (read_image(out) * LUM).sum(-1)
+
+    def pixels(xs, zs, want):
+        """Pixels of the flat face's points (x, 0, z) whose map texel and its neighbours are all `want`."""
+        mh, mw = wmap.shape
+        sel = set()
+        for x in xs:
+            for z in zs:
+                i, j = int(x / 2.6 * mw), int((1 - z / 1.3) * mh)
+                if np.all(np.abs(wmap[max(j - 2, 0):j + 3, max(i - 2, 0):i + 3] - want) < 0.02):
+                    c, r = project(np.array([x, 0.0, z]), RELIEF_CAMERA)
+                    sel.add((int(r), int(c)))
+        mask = np.zeros((H, W), bool)
+        for r, c in sel:
+            mask[r, c] = True
+        return mask
+
+    wet = pixels(np.linspace(0.85, 1.0, 12), np.linspace(0.5, 0.85, 24), 1.0) | \
+        pixels(np.linspace(0.3, 2.3, 80), np.linspace(0.05, 0.2, 12), 1.0)
+    dry = pixels(np.linspace(0.2, 2.4, 120), np.linspace(0.95, 0.99, 6), 0.0)
+    if wet.sum() < 20 or dry.sum() < 20:
+        check(False, f"relief: too few pixels (wet {wet.sum()}, dry {dry.sum()}): has the map or the camera moved?")
+        return
+    r_wet = float(lum["relief_wet"][wet].mean() / lum["relief_dry"][wet].mean())
+    r_dry = float(lum["relief_wet"][dry].mean() / lum["relief_dry"][dry].mean())
+    lo, hi, core, coverage = bounds(1.0, (0.9, 1.0))
+    mirror = fresnel_water(20) * coverage * 0.55 / float(lum["relief_dry"][wet].mean())
+    for ok, msg in ((lo <= r_wet <= hi + mirror,
+                     f"relief, wet faces ({wet.sum()} px): {r_wet:.3f} x dry in [{lo:.3f}, {hi + mirror:.3f}] "
+                     f"(the core's {core:.3f})"),
+                    (abs(r_dry - 1) < 0.03, f"relief, strip under the cornice ({dry.sum()} px): {r_dry:.3f} x dry"),
+                    (lum["relief_wet"][dry].mean() > lum["relief_wet"][wet].mean(),
+                     f"relief, wet render: the dry strip {lum['relief_wet'][dry].mean():.3f} lighter than the wet "
+                     f"faces {lum['relief_wet'][wet].mean():.3f}")):
+        check(ok, msg)
 
 
 if __name__ == "__main__":
