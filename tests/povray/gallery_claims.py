@@ -10,14 +10,15 @@ round each rock's centre projected through the scene's camera (never found in th
 
 Without the sky and highlights (Declare=No_Sky=1 Declare=Soak_Highlights=0) the ratio is
 the core's diffuse albedo ratio (soak export --target json: limestone/water knots at the
-saturation wetness and at 1 over the dry knot), within named terms:
+saturation wetness, which (c) draws under a clear water film, and at 1 over the dry
+knot), within named terms:
   - the light's tint weighs the channels: the bounds take the lowest and highest
     channel's ratio;
   - the liquid interface's view factor (knots.view_factor) over the discs' view angles,
     cos 0.34 .. 1 (the ellipsoid's curvature and its granite bumps);
   - above only: the film's mirror image of the sand and the other rocks, at most water's
-    Fresnel reflectance at 60 deg (0.059) times the film's coverage, of surfaces no
-    brighter than the dry rock in those pixels.
+    Fresnel reflectance at 60 deg (0.059) times the film's coverage (1 for (c)'s clear
+    film), of surfaces no brighter than the dry rock in those pixels.
 With the forest HDRI (the gallery's picture) the soaked rock (d) must stay within the
 same upper bound: its film's sky does not undo the darkening (the issue's "glossy rather
 than darker"), and (d) < (c) < 1.
@@ -119,10 +120,11 @@ def main():
         core = (np.array(kn["albedo"][i]) @ LUM) / (dry_albedo @ LUM)
         return ratio.min() * min(vf), ratio.max() * max(vf), core, kn["film_coverage"][i]
 
-    def beach_bounds(w):
-        """bounds(w) with the film's mirror image of the sand and the rocks above."""
-        lo, hi, core, coverage = bounds(w)
-        return lo, hi + fresnel_water(60) * coverage, core
+    def beach_bounds(w, coverage=None):
+        """bounds(w) with the film's mirror image of the sand and the rocks above (coverage: the
+        film's, the knot's unless given)."""
+        lo, hi, core, knot_coverage = bounds(w)
+        return lo, hi + fresnel_water(60) * (knot_coverage if coverage is None else coverage), core
 
     radius = 0.4 * project(np.array([1.0, 0.0, 0.6]))[0] - 0.4 * project(np.array([0.0, 0.0, 0.6]))[0]
     failures = 0
@@ -141,8 +143,8 @@ def main():
     print(f"discs of {radius:.1f} px; wet / dry, bare: {[round(v, 3) for v in r_bare]}; "
           f"with the HDRI: {[round(v, 3) for v in r_sky]}")
     check(abs(r_bare[0] - 1) < 1e-3, f"(a) dry in both renders: {r_bare[0]:.4f} = 1")
-    for label, i, w in (("(c) pores full", 2, sat), ("(d) soaked", 3, 1.0)):
-        lo, hi, core = beach_bounds(w)
+    for label, i, w, cover in (("(c) pores full under a clear water film", 2, sat, 1.0), ("(d) soaked", 3, 1.0, None)):
+        lo, hi, core = beach_bounds(w, cover)
         check(lo <= r_bare[i] <= hi, f"{label}: {r_bare[i]:.3f} in [{lo:.3f}, {hi:.3f}] "
               f"(the core's luminance ratio {core:.3f} at wetness {w:g})")
     lo_d, hi_d, _ = beach_bounds(1.0)

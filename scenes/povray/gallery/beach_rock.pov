@@ -30,11 +30,30 @@ plane { z, 0 Soak_Wet_Material_Bumped("sand", "water", Sea, normal { bumps 0.05 
 #declare States[1] = function { Wave(x, y, z) * (1 - Dry_Rocks) }
 #declare States[2] = function { Sat * (1 - Dry_Rocks) }
 #declare States[3] = function { 1 - Dry_Rocks }
+// (c), water over the whole rock: the preset at its saturation (albedo 0.62x dry; the
+// core's film over the dry rock, limestone's albedo_film at pore fill 0, is 0.61x) under a
+// clear layer of water: Fresnel reflection at water's index and the sun's glint, on a
+// surface smoother than the rock's (the film fills its grain)
+#declare Water = Soak_Liquid_Index("water");
+#declare Glaze = texture {
+  pigment { rgbt 1 }
+  finish { ambient 0 diffuse 0 reflection { 0, 1 fresnel on }
+    #if (Soak_Highlights) specular albedo Soak_Liquid_F0[Water] roughness 0.003 #end }
+  normal { granite 0.06 scale 0.5 }
+}
 #declare I = 0;
 #while (I < 4)
   #declare F = function { States[I](x, y, z) }
   sphere { 0, 1 scale <1, 0.9, 0.7> rotate z * (25 * I - 30) translate <(I - 1.5) * 2.4, 0, 0.6>
-    Soak_Wet_Material_Bumped("limestone", "water", F, normal { granite 0.3 scale 0.5 }) }
+    #if (I = 2 & !Dry_Rocks)
+      #declare Pores_Full = Soak_Wet_Texture("limestone", "water", Sat);
+      texture { Pores_Full normal { granite 0.3 scale 0.5 } }
+      texture { Glaze }
+      Soak_Wet_Interior("water")
+    #else
+      Soak_Wet_Material_Bumped("limestone", "water", F, normal { granite 0.3 scale 0.5 })
+    #end
+  }
   #undef F
   #declare I = I + 1;
 #end
