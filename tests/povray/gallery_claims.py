@@ -35,8 +35,17 @@ angles (cos 0.9 .. 1), plus, above, water's Fresnel reflectance at 20 deg times 
 sky's radiance 0.55 over the dry pixels' (the film mirrors the uniform sky); the dry
 strip must stay within 3 % of dry and, in the wet render, lighter than the wet faces.
 
+[Hnat06] sec. 3.3 and the pore schedule: a splash on a brick wall dries from its border
+inwards. scenes/povray/gallery/bricks_drying.pov at the gallery's clock 0, 0.2, 0.4, 0.6
+from the gallery's splash and start map, and at clock 1 (dry), 120 x 68: a 2 x 2 block is
+wet where darker than 0.85 x the dry frame (as tests/gallery/gallery_claims.py does for
+soak render's frames). The wet area must fall frame by frame and at least 90 % of each
+frame's wet blocks must have been wet in the frame before (the patch shrinks; it does
+not move).
+
 usage: gallery_claims.py SOAK ROOT TMP   (exit 77 and SKIPPED: when Blender's HDRIs are missing)
 """
+import json
 import math
 import os
 import re
@@ -91,8 +100,9 @@ def main():
     if not os.path.isfile(forest):
         print(f"SKIPPED: {forest} not found (Blender's HDRIs: Debian's blender-data, or set SOAK_HDRI_DIR)")
         sys.exit(77)
-    hdr = os.path.join(tmp, "forest_x0.45.hdr")
-    subprocess.run(["oiiotool", forest, "--clamp:min=0", "--mulc", "0.45", "-o", hdr], check=True)
+    for scale in ("0.45", "0.5"):
+        subprocess.run(["oiiotool", forest, "--clamp:min=0", "--mulc", scale, "-o",
+                        os.path.join(tmp, f"forest_x{scale}.hdr")], check=True)
     scene = os.path.join(root, "scenes", "povray", "gallery", "beach_rock.pov")
     runs = {"wet": [], "dry": ["Declare=Dry_Rocks=1"],
             "wet_bare": ["Declare=No_Sky=1", "Declare=Soak_Highlights=0"],
@@ -157,10 +167,41 @@ def main():
     check(lo_d <= low <= hi_d, f"(b) below the wave line {low:.3f} in [{lo_d:.3f}, {hi_d:.3f}]")
     check(top > 0.97, f"(b) above the wave line {top:.3f} > 0.97 (dry)")
     relief(soak, root, tmp, lib, bounds, check)
+    bricks(soak, root, tmp, lib, check)
     if failures:
         fail(f"{failures} claim(s) of the POV-Ray gallery not shown")
     print("PASS: the POV-Ray beach rock shows (b) wet below its wave line and (c), (d) darker by the core's "
           "ratios; the relief's wet faces are darker by the core's ratio and its sheltered strips dry")
+
+
+def bricks(soak, root, tmp, lib, check):
+    """The drying bricks' claim (see the module's docstring), through check(ok, message)."""
+    splash = os.path.join(tmp, "splash.png")
+    subprocess.run([soak, "bake", "turbulence", "--width", "320", "--height", "180", "--frequency", "3",
+                    "--threshold", "-0.05", "--softness", "0.25", "--seed", "11", "--threads", "2", "-o",
+                    splash], check=True, capture_output=True)
+    with open(os.path.join(tmp, "export.json")) as f:
+        t_fill = next(m["t_fill"] for m in json.load(f)["materials"] if m["name"] == "brick")
+    subprocess.run([soak, "bake", "drying", splash, "--start-map", "--t-fill", str(t_fill), "-o",
+                    os.path.join(tmp, "brick_start.png")], check=True, capture_output=True)
+    w, h = 120, 68
+
+    def frame(clock):
+        out = os.path.join(tmp, f"bricks_{clock}.exr")
+        rc, log = povray(os.path.join(root, "scenes", "povray", "gallery", "bricks_drying.pov"), out, w, h, lib,
+                         extra=[f"+L{tmp}", f"+L{os.path.join(root, 'scenes', 'povray', 'gallery')}",
+                                f"+K{clock}"], cwd=tmp)
+        if rc != 0:
+            fail(f"povray bricks_drying.pov +K{clock}: exit {rc}\n{log[-800:]}")
+        y = (read_image(out) * LUM).sum(-1)
+        return y.reshape(h // 2, 2, w // 2, 2).sum(axis=(1, 3))
+    dry = frame("1.0")
+    wet_sets = [set(zip(*np.nonzero(frame(c) < 0.85 * dry))) for c in ("0.0", "0.2", "0.4", "0.6")]
+    areas = [len(x) for x in wet_sets]
+    kept = [len(wet_sets[k + 1] & wet_sets[k]) / max(1, len(wet_sets[k + 1])) for k in range(3)]
+    check(areas[0] >= 30 and all(areas[k + 1] < areas[k] for k in range(3)) and min(kept) >= 0.9,
+          f"bricks: wet blocks {areas} at clock 0, 0.2, 0.4, 0.6; wet in the frame before "
+          f"{', '.join(f'{x:.2f}' for x in kept)}: the patches shrink from their borders")
 
 
 RELIEF_CAMERA = (np.array([1.3, -4.6, 0.95]), np.array([1.3, 0.0, 0.62]), 42.0)   # bas_relief_rain.pov
