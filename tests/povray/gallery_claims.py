@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""povray_gallery_claims: the measurable part of the source's description, asserted on
-the POV-Ray gallery's own scene (scenes/povray/gallery/beach_rock.pov) at reduced size.
+"""povray_gallery_claims: the measurable part of the sources' descriptions, asserted on
+the POV-Ray gallery's own scenes (scenes/povray/gallery/: the beach rock, the bas-relief
+and the drying bricks) at reduced size.
 
 [JLD99] sec. 4.2, Fig. 6: (b) the rock's lower part below the last wave's line much
 darker; (c) pores full; (d) rock soaked: much darker. The scene is rendered twice more
