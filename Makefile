@@ -108,6 +108,7 @@ gallery: build addon $(if $(filter 5.2,$(GALLERY_BLENDER)),blender52) $(if $(fil
 # The POV-Ray gallery of povray/README.md: the seven situations of the physics
 # sources (scenes/povray/gallery/), 960x540, beside soak render where it can render
 # them, into povray/images/gallery_*.png (about 10 minutes on two shared cores).
+# POVRAY_GALLERY_SCENES picks scenes by name (e.g. "beach_rock bas_relief_rain").
 povray-gallery: build
 	@bash povray/render_gallery.sh $(BUILD)/bin/soak povray/images
 

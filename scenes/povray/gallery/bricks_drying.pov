@@ -21,7 +21,7 @@ Soak_HDRI_Sky("forest_x0.5.hdr", -60)      // as scenes/gallery/bricks_drying.js
     #declare X0 = I * 0.23 + mod(J, 2) * 0.115;
     #if (X0 < 1.6 & X0 + 0.22 > 0)
       box { <max(X0, 0), -0.004, J * 0.075 + 0.005>, <min(X0 + 0.22, 1.6), 0.1, J * 0.075 + 0.07>
-        Soak_Wet_Material_Bumped("brick", "water", W, normal { granite 0.12 scale 0.03 }) }
+        Soak_Wet_Material_Bumped("brick", "water", W, normal { granite 0.05 scale 0.03 }) }
     #end
     #declare I = I + 1;
   #end
