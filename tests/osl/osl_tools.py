@@ -36,8 +36,8 @@ def dump(path, tmp, count):
 
 
 def prepare(tmp, root, shader):
-    """Skips without the OSL tools, empties tmp and compiles osl/SHADER.osl
-    into it."""
+    """Skips without the OSL tools, empties tmp and compiles the named shader
+    into it (osl/<shader>.osl)."""
     missing = [t for t in ("oslc", "testshade", "oiiotool") if not shutil.which(t)]
     if missing:
         skip("OSL tools not on PATH: " + ", ".join(missing))
