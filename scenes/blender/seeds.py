@@ -77,6 +77,8 @@ def _reset():
             if getattr(item, "type", "") != "RENDER_RESULT":
                 coll.remove(item)
     sc = bpy.context.scene
+    if "soak_inset" in sc:             # render_all.py's inset belongs to the scene that set it
+        del sc["soak_inset"]
     sc.render.engine = "CYCLES"
     cy = sc.cycles
     cy.use_denoising = False          # Debian's Blender has no OpenImageDenoise
@@ -812,6 +814,7 @@ def build_bas_relief_rain():
     img.colorspace_settings.name = "Non-Color"
     img.pack()
     make_wet(panel, "limestone", wetness=1.0, source="IMAGE", wet_map=img)
+    sc["soak_inset"] = wet_path       # render_all.py pastes the map in a corner, as the other columns
     wall = _box("Wall", (6.0, 0.399, 1.8), (1.0, 0.2005, 0.7))
     stone = Tree("Wall stone")
     stone.link(stone.ramp(stone.noise(5.0, 6.0, 0.6), [(0.3, (0.50, 0.46, 0.40)), (0.7, (0.56, 0.52, 0.45))]),
