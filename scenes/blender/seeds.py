@@ -1,7 +1,10 @@
 """The seed scenes of the physics sources as a Blender gallery, built from
 scratch (no .blend) with the Soak add-on's operators, as an artist would:
-build a dry material, set the Wetness panel, Make Wet (Key Drying, Bake Wet
-Map where the scene needs them).
+build a dry material, set the Wetness panel, Make Wet. Where the other two
+columns of docs/gallery.md (scenes/gallery/*.json, POV-Ray) share geometry or a
+baked map (the relief, the pot, the glass, the drying splash, the relief's
+rain), the scene takes the same: the same profile, helper (_module) or `soak`
+command (_soak), so the three columns show one scene.
 
   wet_paper_front / wet_paper_back  [JLD99] sec. 4.1, Fig. 5
   beach_rock                        [JLD99] sec. 4.2, Fig. 6 (four states in one picture)
