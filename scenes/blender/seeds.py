@@ -21,6 +21,7 @@ adds: install the zip scenes/blender/variant_addon.py makes (make gallery does).
 Each build function empties the file, builds its scene and returns a list of
 renders: (name, [frames]); several frames are tiled 2 x 2 into one picture
 by render_all.py. Run through render_all.py."""
+import atexit
 import importlib.util
 import json
 import math
@@ -67,8 +68,11 @@ def _soak(*args):
 
 def _workdir():
     """A folder for the bakes and meshes a scene reads from disk while it
-    renders (kept until Blender exits: image sequences are read per frame)."""
-    return tempfile.mkdtemp(prefix="soak_seeds_")
+    renders (kept until Blender exits, then removed: image sequences are read
+    per frame)."""
+    path = tempfile.mkdtemp(prefix="soak_seeds_")
+    atexit.register(shutil.rmtree, path, True)
+    return path
 
 # ---------------------------------------------------------------- scene set-up
 
