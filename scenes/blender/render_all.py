@@ -5,12 +5,14 @@ blender -b --factory-startup --python-exit-code 1 --python render_all.py -- \\
     [--size 320x180] [--samples 16] [--prefix NAME_] [--only NAME[,NAME...]] [--max-kb 400]
 
 A scene with several frames (bricks drying) is rendered at half size per
-frame and tiled 2 x 2 into one picture of the full size. Prints the render
-time of every picture. --soak sets the add-on's path to the soak executable
-(Bake Wet Map, bas-relief scene); without it the add-on looks on PATH.
---max-kb: a picture whose PNG is larger (Monte Carlo noise does not
-compress) is smoothed with a 3 x 3 binomial filter, up to
-three times, until it fits (Debian's Blender has no denoiser)."""
+frame and tiled 2 x 2 into one picture of the full size, white between the
+frames. Prints the render time of every picture. --soak sets the add-on's
+path to the soak executable (Bake Wet Map, the bakes of the bricks and
+bas-relief scenes); without it the add-on looks on PATH. A scene that sets
+the scene property soak_inset (a wet map's path) gets that map pasted into
+its lower right corner (white = wet). --max-kb: a picture whose PNG is
+larger (Monte Carlo noise does not compress) is smoothed with a 3 x 3
+binomial filter, up to three times, until it fits (Debian's Blender has no denoiser)."""
 import os
 import sys
 import time
@@ -69,12 +71,40 @@ def _save(a, target):
     bpy.data.images.remove(img)
 
 
-def _tile(paths, target):
-    """2 x 2 tiling of four equal renders (first at the top left)."""
+def _tile(paths, target, w, h, pad):
+    """2 x 2 tiling of four equal renders (first at the top left), `pad`
+    pixels of white between them and round them, on a w x h picture."""
     imgs = [_load(p) for p in paths]
-    top = np.concatenate(imgs[:2], axis=1)       # pixels rows run bottom to top
-    bottom = np.concatenate(imgs[2:4], axis=1)
-    _save(np.concatenate([bottom, top], axis=0), target)
+    fh, fw = imgs[0].shape[:2]
+    out = np.ones((h, w, 4), dtype=np.float32)
+    x0, y0 = (w - 2 * fw - pad) // 2, (h - 2 * fh - pad) // 2
+    for k, im in enumerate(imgs[:4]):               # pixels rows run bottom to top
+        x = x0 + (k % 2) * (fw + pad)
+        y = y0 + (1 - k // 2) * (fh + pad)
+        out[y:y + fh, x:x + fw] = im
+    _save(out, target)
+
+
+def _inset(target, map_path):
+    """The scene's wet map (white = wet) pasted into the lower right corner,
+    a quarter of the picture's width, in a pale 2-pixel frame 16 pixels
+    from the edges, as the POV-Ray and soak columns show it."""
+    a = _load(target)
+    h, w = a.shape[:2]
+    im = bpy.data.images.load(map_path, check_existing=False)
+    im.colorspace_settings.name = "Non-Color"
+    m = np.array(im.pixels[:], dtype=np.float32).reshape(im.size[1], im.size[0], 4)[..., 0]
+    bpy.data.images.remove(im)
+    iw, ih = w // 4, w // 8
+    r0 = (np.arange(ih) * m.shape[0]) // ih       # each inset pixel: the mean of its block
+    c0 = (np.arange(iw) * m.shape[1]) // iw
+    counts = np.outer(np.diff(np.append(r0, m.shape[0])), np.diff(np.append(c0, m.shape[1])))
+    m = np.add.reduceat(np.add.reduceat(m, r0, axis=0), c0, axis=1) / counts
+    pad, edge = max(2, w // 60), 2
+    x, y = w - pad - iw - edge, pad                 # rows run bottom to top
+    a[y:y + ih + 2 * edge, x:x + iw + 2 * edge, :3] = 0.92
+    a[y + edge:y + edge + ih, x + edge:x + edge + iw, :3] = m[..., None]
+    _save(a, target)
 
 
 def _fit(target, kb):
@@ -110,15 +140,18 @@ for name, build in seeds.SCENES.items():
         if len(frames) == 1:
             sc.render.resolution_x, sc.render.resolution_y = w, h
             secs = _render(sc, target, frames[0])
+            if sc.get("soak_inset") and np is not None:
+                _inset(target, sc["soak_inset"])
         else:
-            sc.render.resolution_x, sc.render.resolution_y = w // 2, h // 2
+            pad = max(2, w // 120)                 # 8 px of white between the frames at 960
+            sc.render.resolution_x, sc.render.resolution_y = (w - 3 * pad) // 2, (h - 3 * pad) // 2
             parts = [os.path.join(out, f"{prefix}{fname}_{f:02d}.png") for f in frames]
             secs = sum(_render(sc, p, f) for p, f in zip(parts, frames))
             if np is None:
                 print(f"no numpy: {fname}'s frames left as {len(parts)} pictures, not tiled")
                 total += secs
                 continue
-            _tile(parts, target)
+            _tile(parts, target, w, h, pad)
             for p in parts:
                 os.remove(p)
         if max_kb > 0 and np is not None:

@@ -1,7 +1,10 @@
 """The seed scenes of the physics sources as a Blender gallery, built from
 scratch (no .blend) with the Soak add-on's operators, as an artist would:
-build a dry material, set the Wetness panel, Make Wet (Key Drying, Bake Wet
-Map where the scene needs them).
+build a dry material, set the Wetness panel, Make Wet. Where the other two
+columns of docs/gallery.md (scenes/gallery/*.json, POV-Ray) share geometry or a
+baked map (the relief, the pot, the glass, the drying splash, the relief's
+rain), the scene takes the same: the same profile, helper (_module) or `soak`
+command (_soak), so the three columns show one scene.
 
   wet_paper_front / wet_paper_back  [JLD99] sec. 4.1, Fig. 5
   beach_rock                        [JLD99] sec. 4.2, Fig. 6 (four states in one picture)
@@ -18,8 +21,15 @@ adds: install the zip scenes/blender/variant_addon.py makes (make gallery does).
 Each build function empties the file, builds its scene and returns a list of
 renders: (name, [frames]); several frames are tiled 2 x 2 into one picture
 by render_all.py. Run through render_all.py."""
+import atexit
+import importlib.util
+import json
 import math
 import os
+import shutil
+import subprocess
+import sys
+import tempfile
 
 import bmesh
 import bpy
@@ -30,7 +40,39 @@ try:
 except ImportError:   # Debian 13's blender package has no numpy (Blender's own builds bundle it)
     np = None
 
-NUMPY_SCENES = ("wet_paper_front", "wet_paper_back", "beach_rock", "cognac_table", "bas_relief_rain")
+NUMPY_SCENES = ("wet_paper_front", "wet_paper_back", "beach_rock", "cognac_table")
+REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+
+
+def _module(relpath):
+    """A helper of the other columns (scenes/gallery/meshes.py, the POV-Ray
+    gallery's relief_mesh.py): the same geometry and maps in all three."""
+    spec = importlib.util.spec_from_file_location(os.path.basename(relpath)[:-3], os.path.join(REPO, relpath))
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def _soak(*args):
+    """Runs the soak tool (the add-on's preference, then PATH), as the other
+    columns' scripts do for their bakes."""
+    prefs = next((m for k, m in sys.modules.items() if k.endswith("soak.preferences")), None)
+    exe = prefs.find_soak() if prefs else shutil.which("soak")
+    if not exe:
+        raise RuntimeError("soak executable not found: render_all.py --soak PATH, or put it on PATH")
+    r = subprocess.run([exe, *map(str, args)], capture_output=True, text=True)
+    if r.returncode != 0:
+        raise RuntimeError(f"soak {args[0]} {args[1]} failed (exit {r.returncode}): {r.stderr.strip()[-400:]}")
+    return r.stdout
+
+
+def _workdir():
+    """A folder for the bakes and meshes a scene reads from disk while it
+    renders (kept until Blender exits, then removed: image sequences are read
+    per frame)."""
+    path = tempfile.mkdtemp(prefix="soak_seeds_")
+    atexit.register(shutil.rmtree, path, True)
+    return path
 
 # ---------------------------------------------------------------- scene set-up
 
@@ -42,6 +84,8 @@ def _reset():
             if getattr(item, "type", "") != "RENDER_RESULT":
                 coll.remove(item)
     sc = bpy.context.scene
+    if "soak_inset" in sc:             # render_all.py's inset belongs to the scene that set it
+        del sc["soak_inset"]
     sc.render.engine = "CYCLES"
     cy = sc.cycles
     cy.use_denoising = False          # Debian's Blender has no OpenImageDenoise
@@ -147,9 +191,28 @@ def _sun(sc, elevation, azimuth, strength=3.0, angle=2.0, colour=(1.0, 0.96, 0.9
     return lo
 
 
-def _camera(sc, loc, target, lens=50, focus=None, fstop=None):
+def _sun_to(sc, direction, irradiance, angle=1.0):
+    """soak render's sun: `direction` towards the sun, `irradiance` W/m^2
+    (a number or RGB) on a surface facing it, which is a Cycles sun's
+    strength (docs: environment notes)."""
+    rgb = irradiance if isinstance(irradiance, (tuple, list)) else (irradiance,) * 3
+    d = Vector(direction).normalized()
+    el = math.degrees(math.asin(d.z))
+    az = math.degrees(math.atan2(d.x, d.y))
+    top = max(rgb)
+    return _sun(sc, el, az, strength=top, angle=angle, colour=tuple(c / top for c in rgb))
+
+
+def _camera(sc, loc, target, lens=50, focus=None, fstop=None, vfov=None, aperture=None):
+    """vfov: soak render's vertical field of view, degrees (instead of lens);
+    aperture: its thin lens's radius, metres (instead of fstop)."""
     cd = bpy.data.cameras.new("Cam")
     cd.lens = lens
+    if vfov is not None:
+        cd.sensor_fit = "VERTICAL"
+        cd.lens = 0.5 * cd.sensor_height / math.tan(math.radians(vfov) / 2)
+    if aperture is not None:
+        fstop = cd.lens / 1000.0 / (2.0 * aperture)    # N = focal length / aperture diameter
     cd.clip_start = 0.01
     if focus is not None:
         cd.dof.use_dof = True
@@ -169,6 +232,13 @@ def _shade_smooth(ob, angle=60):
     if hasattr(ob.data, "use_auto_smooth"):   # 3.x; 4.1+ smooths by angle through a modifier
         ob.data.use_auto_smooth = True
         ob.data.auto_smooth_angle = math.radians(angle)
+    elif angle < 180:
+        # 4.1+: without it every edge is smoothed, and a lathe's wall of one
+        # face row takes the normals of its corners (a glass tilted 45 degrees
+        # inside: black by total internal reflection)
+        m = ob.modifiers.new("Sharp edges", "EDGE_SPLIT")
+        m.split_angle = math.radians(angle)
+        m.use_edge_angle, m.use_edge_sharp = True, False
 
 
 # ------------------------------------------------------------------ materials
@@ -313,19 +383,6 @@ def blot_map(n, centres, seed, warp=0.35, edge=0.03, rect=(0.0, 0.0, 1.0, 1.0)):
         d = np.hypot(X + warp * r * 2 * wu - cx, Y + warp * r * 2 * wv - cy)
         f = np.maximum(f, r - d)
     return smoothstep(0.0, edge, f)
-
-
-def spill_map(n, balls, seed, rect, warp=0.02, edge=0.06):
-    """A liquid spill: metaballs ((x, y, radius), ...) merged where their
-    Gaussian sum passes 0.5, the outline warped by noise (warp in the rect's
-    units), over the UV square mapped onto rect = (x0, y0, x1, y1)."""
-    U, V = _grid(n)
-    X = rect[0] + (rect[2] - rect[0]) * U + warp * (fbm(n, seed, base=6) - 0.5) * 2
-    Y = rect[1] + (rect[3] - rect[1]) * V + warp * (fbm(n, seed + 1, base=6) - 0.5) * 2
-    f = np.zeros((n, n))
-    for cx, cy, r in balls:
-        f += np.exp(-((X - cx) ** 2 + (Y - cy) ** 2) / (r * r))
-    return smoothstep(0.5 - edge, 0.5 + edge, f)
 
 
 # ---------------------------------------------------------------- geometry
@@ -580,189 +637,217 @@ def _wood(name, scale=1.0, rough=0.2):
 
 
 def build_cognac_table():
-    """[JLD99] Fig. 7: cognac spilled from a tipped glass on a polished wood
-    table. Cognac: the add-on's nearest liquid is cola (a caramel-coloured
-    clear liquid, index 1.3325; the core has no measured cognac)."""
+    """[JLD99] Fig. 7, arranged as the other columns (scenes/gallery/
+    cognac_table.json, meshes.py): a tumbler standing on an oak table with
+    5 cm of liquid in it, a pool spilled in front of it (meshes.py's spill
+    map over the table top), the same low sun behind, the courtyard HDRI and
+    a lens focused on the pool. Liquid: the add-on's nearest is cola (a
+    caramel-coloured clear liquid, index 1.3325; the core has no measured
+    cognac); the liquid in the glass takes the soak column's cognac."""
+    _need_numpy()
     sc = _reset()
-    rect = (-1.2, -0.5, 1.2, 0.9)
-    top = _plane("Table top", (2.4, 1.4), loc=(0, 0.2, 0.0))
+    meshes = _module("scenes/gallery/meshes.py")
+    top = _plane("Table top", (1.0, 0.9), loc=(0.0, 0.05, 0.0))     # UVs over (-0.5, -0.4) .. (0.5, 0.5)
     _assign(top, _wood("Oak table", rough=0.3))
-    # the spill's shape, in metres on the table (UVs cover rect)
-    spill = spill_map(1024, [(0.19, 0.36, 0.07), (0.14, 0.29, 0.08), (0.21, 0.23, 0.06), (0.08, 0.21, 0.06),
-                             (0.03, 0.15, 0.045), (0.25, 0.15, 0.035), (0.28, 0.10, 0.02), (-0.03, 0.10, 0.03),
-                             (0.11, 0.11, 0.03), (0.33, 0.26, 0.015), (-0.09, 0.05, 0.012),
-                             (0.06, 0.02, 0.01), (0.31, 0.05, 0.009)],
-                      seed=21, rect=rect, warp=0.012, edge=0.05)
+    nu, nv = 400, 360
+    spill = np.array([[meshes.spill((i + 0.5) / nu, (j + 0.5) / nv) for i in range(nu)] for j in range(nv)])
     mat = make_wet(top, "oak", liquid="cola", wetness=1.0, source="IMAGE", wet_map=wet_image("cognac spill", spill),
                    colours="MATERIAL")
     group_node(mat).inputs["Spill Edge"].default_value = 1.0
-    # the table's thickness, dry oak
-    slab = _box("Table edge", (2.4, 1.4, 0.05), (0, 0.2, -0.0255), bevel=0.006)
+    slab = _box("Table edge", (1.0, 0.9, 0.04), (0.0, 0.05, -0.0201), bevel=0.004)
     _assign(slab, _wood("Oak edge"))
-    # the tipped glass, lying on its side where the spill starts
-    profile = [(0.0, 0.0), (0.034, 0.0), (0.038, 0.006), (0.036, 0.10), (0.033, 0.10), (0.031, 0.007),
-               (0.0, 0.008)]
-    glass = _lathe("Glass", profile, steps=64)
-    glass.rotation_euler = (math.radians(90), 0, math.radians(25))
-    glass.location = (0.24, 0.47, 0.038)
+    glass = _lathe("Glass", [(0, 0), (0.035, 0), (0.036, 0.16), (0.034, 0.16), (0.033, 0.008), (0, 0.008)],
+                   loc=(0.04, 0.23, 0.0), steps=128)
     g = Tree("Glass")
     g.nt.nodes.remove(g.bsdf)
     gb = g.node("ShaderNodeBsdfGlass", IOR=1.5, Roughness=0.0)
     g.link(gb.outputs[0], g.nt.nodes["Material Output"].inputs["Surface"])
     _assign(glass, g.mat)
-    # a bottle behind, out of focus
-    bottle = _lathe("Bottle", [(0.0, 0.0), (0.045, 0.0), (0.048, 0.01), (0.048, 0.17), (0.02, 0.22),
-                               (0.014, 0.25), (0.014, 0.29), (0.0, 0.29)], loc=(-0.25, 0.75, 0.0))
-    b = Tree("Bottle")
-    b.nt.nodes.remove(b.bsdf)
-    bb = b.node("ShaderNodeBsdfGlass", IOR=1.5, Roughness=0.02, Color=(0.8, 0.45, 0.15, 1))
-    b.link(bb.outputs[0], b.nt.nodes["Material Output"].inputs["Surface"])
-    _assign(bottle, b.mat)
+    liquid = _lathe("Cognac", [(0, 0.0083), (0.0327, 0.0083), (0.0327, 0.058), (0, 0.058)],
+                    loc=(0.04, 0.23, 0.0), steps=128)
+    c = Tree("Cognac")
+    c.nt.nodes.remove(c.bsdf)
+    cb = c.node("ShaderNodeBsdfGlass", IOR=1.36, Roughness=0.0)
+    out = c.nt.nodes["Material Output"]
+    c.link(cb.outputs[0], out.inputs["Surface"])
+    # the soak column's cognac: absorption (3.4, 12.3, 32.6) per metre; Cycles'
+    # Volume Absorption is density x (1 - colour)
+    va = c.node("ShaderNodeVolumeAbsorption", Density=32.6)
+    va.inputs["Color"].default_value = (1 - 3.4 / 32.6, 1 - 12.3 / 32.6, 0.0, 1)
+    c.link(va.outputs[0], out.inputs["Volume"])
+    _assign(liquid, c.mat)
+    floor = _plane("Floor", 20.0, loc=(0, 0, -0.75))
+    fl = Tree("Floor")
+    fl.set(Base_Color=(0.2, 0.16, 0.13, 1), Roughness=0.9)
+    _assign(floor, fl.mat)
     _hdri(sc, "courtyard", 0.15, 38)   # as scenes/gallery/cognac_table.json
-    # the sun low behind the spill, mirrored by the liquid towards the camera
-    _sun(sc, 25, 40, strength=3.0, angle=2.0)
-    _camera(sc, (-0.02, -0.42, 0.25), (0.13, 0.27, 0.0), lens=45, focus=0.72, fstop=2.8)
+    sun = _sun_to(sc, (-0.4359, 0.7268, 0.5299), (3.6, 3.1, 2.5), angle=2.0)
+    # the caustic the glass throws on the table: Cycles' shadow caustics
+    # (manifold next-event estimation, 3.2+) from the sun through the glass
+    if hasattr(sun.data, "cycles") and hasattr(sun.data.cycles, "is_caustics_light"):
+        sun.data.cycles.is_caustics_light = True
+        for ob in (glass, liquid):
+            ob.cycles.is_caustics_caster = True
+        top.cycles.is_caustics_receiver = True
+    _camera(sc, (-0.05, -0.6, 0.13), (0.0, 0.12, 0.02), vfov=30, focus=0.62, aperture=0.003)
     return [("cognac_table", [1])]
 
 
 # ------------------------------------------------------ 5: bricks drying
 
 
+DRYING_TIMES = (0.0, 0.2, 0.4, 0.6)   # as the soak column (scenes/gallery/render.sh)
+
+
+def _drying_maps(work):
+    """The other columns' splash (soak bake turbulence, 320 x 180 over the
+    wall) dried by `soak bake drying` with the brick preset's fill time at
+    DRYING_TIMES: the pore schedule run as emptying, each texel starting to
+    dry by its distance to the patch's border, so the patches shrink from
+    their borders. Written as the sequence brick_wet.0001.png ... (frame k)."""
+    splash = os.path.join(work, "splash.png")
+    _soak("bake", "turbulence", "--width", 320, "--height", 180, "--frequency", 3, "--threshold", -0.05,
+          "--softness", 0.25, "--seed", 11, "--threads", 2, "-o", splash)
+    export = os.path.join(work, "export.json")
+    _soak("export", "--target", "json", "-o", export)
+    with open(export) as f:
+        t_fill = next(m["t_fill"] for m in json.load(f)["materials"] if m["name"] == "brick")
+    for k, t in enumerate(DRYING_TIMES, 1):
+        _soak("bake", "drying", splash, "--t-fill", t_fill, "--time", t, "-o",
+              os.path.join(work, f"brick_wet.{k:04d}.png"))
+    return os.path.join(work, "brick_wet.0001.png")
+
+
 def build_bricks_drying():
-    """[Hnat06] Fig. 6: a brick wall splashed with water (noise patches),
-    drying over 40 frames (Key Drying), frames 1, 14, 27 and 40."""
+    """[Hnat06] Fig. 6: a brick wall 1.6 x 0.9 m splashed with water, drying:
+    the soak column's four maps (t = 0, 0.2, 0.4, 0.6 of the pore schedule)
+    as an image sequence over frames 1-4, one map per frame. The bricks'
+    own colour varies little, so that the wet patches are the darkest thing
+    on the wall."""
     sc = _reset()
-    wall = _plane("Wall", (3.2, 1.8), loc=(0, 0, 0.9), rot=(math.radians(90), 0, 0))
+    wall = _plane("Wall", (1.6, 0.9), loc=(0.8, 0, 0.45), rot=(math.radians(90), 0, 0))
     t = Tree("Bricks")
     co = t.node("ShaderNodeTexCoord").outputs["Object"]
-    tint = t.noise(4.0, 2.0, 0.5, vector=co)
-    c1 = t.ramp(tint, [(0.3, (0.30, 0.10, 0.06)), (0.7, (0.42, 0.16, 0.09))])
-    brick = t.node("ShaderNodeTexBrick", Scale=3.2, Bias=0.0)
-    brick.inputs["Mortar Size"].default_value = 0.015
-    brick.inputs["Brick Width"].default_value = 0.5
-    brick.inputs["Row Height"].default_value = 0.21
-    brick.inputs["Mortar Smooth"].default_value = 0.1
-    brick.offset = 0.5
-    brick.squash = 1.0
+    tint = t.noise(3.0, 2.0, 0.5, vector=co)
+    brick = t.node("ShaderNodeTexBrick", Scale=1.0, Bias=0.0)
+    brick.inputs["Mortar Size"].default_value = 0.008
+    brick.inputs["Brick Width"].default_value = 0.23
+    brick.inputs["Row Height"].default_value = 0.075
+    brick.inputs["Mortar Smooth"].default_value = 0.2
+    brick.offset, brick.squash = 0.5, 1.0
     t.link(co, brick.inputs["Vector"])
-    t.link(c1, brick.inputs["Color1"])
-    brick.inputs["Color2"].default_value = (0.22, 0.075, 0.05, 1)
-    brick.inputs["Mortar"].default_value = (0.45, 0.43, 0.40, 1)
+    t.link(t.ramp(tint, [(0.3, (0.42, 0.15, 0.08)), (0.7, (0.47, 0.18, 0.10))]), brick.inputs["Color1"])
+    brick.inputs["Color2"].default_value = (0.44, 0.16, 0.09, 1)
+    brick.inputs["Mortar"].default_value = (0.50, 0.48, 0.44, 1)
     t.link(brick.outputs["Color"], t.bsdf.inputs["Base Color"])
-    grit = t.noise(40.0, 4.0, 0.6, vector=co)
+    grit = t.noise(60.0, 4.0, 0.6, vector=co)
     h = t.node("ShaderNodeMath", operation="MULTIPLY_ADD", Value=1.0)
     t.link(brick.outputs["Fac"], h.inputs[0])
     h.inputs[1].default_value = -1.0
     t.link(grit, h.inputs[2])
-    t.bump(h.outputs[0], 0.5, 0.02)
+    t.bump(h.outputs[0], 0.3, 0.004)
     t.set(Roughness=0.85)
     _assign(wall, t.mat)
-    mat = make_wet(wall, "brick", wetness=1.0, source="NOISE", noise_scale=1.2)
-    group_node(mat).inputs["Puddle Level"].default_value = 0.6   # the splashes soaked through
-    sc.frame_start, sc.frame_end = 1, 40
-    bpy.ops.soak.key_drying(frame_start=1, frame_end=40)
-    ground = _plane("Pavement", 8.0, loc=(0, 1.5, 0))
-    p = Tree("Pavement")
+    first = _drying_maps(_workdir())
+    img = bpy.data.images.load(first, check_existing=False)
+    img.source = "SEQUENCE"
+    img.colorspace_settings.name = "Non-Color"
+    mat = make_wet(wall, "brick", wetness=1.0, source="IMAGE", wet_map=img)
+    tex = next(n for n in mat.node_tree.nodes if n.type == "TEX_IMAGE" and n.image == img)
+    iu = tex.image_user            # file k at scene frame k (rain.py's drops_user convention)
+    iu.frame_duration, iu.frame_start, iu.frame_offset = len(DRYING_TIMES), 1, 0
+    iu.use_cyclic, iu.use_auto_refresh = False, True
+    sc.frame_start, sc.frame_end = 1, len(DRYING_TIMES)
+    ground = _plane("Paving", 20.0, loc=(0.8, 0, 0))
+    p = Tree("Paving")
     p.link(p.ramp(p.noise(20.0, 4.0, 0.6), [(0.3, (0.25, 0.25, 0.24)), (0.7, (0.33, 0.32, 0.30))]),
            p.bsdf.inputs["Base Color"])
     p.set(Roughness=0.8)
     _assign(ground, p.mat)
-    del mat
+    make_wet(ground, "concrete", wetness=0.1)
     _hdri(sc, "forest", 0.5, -60)     # as scenes/gallery/bricks_drying.json
-    _sun(sc, 30, 255, strength=3.0, angle=1.0)
-    _camera(sc, (0.8, -2.0, 1.05), (0.0, 0.0, 0.9), lens=50)
-    return [("bricks_drying", [1, 14, 27, 40])]
+    _sun_to(sc, (-0.8, -1.0, 0.9), 3.0)
+    _camera(sc, (0.8, -1.62, 0.5), (0.8, 0.0, 0.45), vfov=29.4)
+    return [("bricks_drying", list(range(1, len(DRYING_TIMES) + 1)))]
 
 
 # ----------------------------------------------- 6: bas-relief under rain
 
 
-def _relief_heights(n):
-    """A carved panel: a raised frame, moulded bands (ledges that catch the
-    rain), three medallions with a rosette, weathering noise."""
-    U, V = _grid(n)
-    h = np.zeros((n, n))
-    frame = np.minimum(np.minimum(U, 1 - U), np.minimum(V, 1 - V))
-    h += 0.8 * smoothstep(0.07, 0.06, frame)
-    for v0 in (0.33, 0.67):                         # horizontal moulded bands
-        h = np.maximum(h, 0.6 * smoothstep(0.035, 0.0, np.abs(V - v0)) ** 0.5)
-    for cu in (0.2, 0.5, 0.8):                      # medallions between the bands
-        for cv in (0.17, 0.5, 0.83):
-            r = np.hypot(U - cu, (V - cv) * 1.0)
-            dome = np.clip(1 - (r / 0.11) ** 2, 0, 1) ** 0.5
-            theta = np.arctan2(V - cv, U - cu)
-            petals = 0.5 + 0.5 * np.cos(6 * theta + (cu * 7))
-            rosette = dome * (0.55 + 0.45 * smoothstep(0.3, 0.9, petals * (1.2 - r / 0.11)))
-            ring = 0.35 * smoothstep(0.012, 0.0, np.abs(r - 0.125))
-            h = np.maximum(h, np.maximum(rosette, ring))
-    h += 0.08 * (fbm(n, 31, base=8) - 0.5)
-    return np.clip(h, 0, 1)
+def _relief(work):
+    """The other columns' carved panel (scenes/povray/gallery/relief_mesh.py at
+    240 cells a metre: 2.6 x 1.3 m from x = 0, z = 0, carved towards -y) and
+    their rain bake on it (povray/render_gallery.sh, scenes/gallery/render.sh:
+    ten minutes of 6 mm/h rain from the front and steeply above, no runoff),
+    imported with its UVs; returns (object, wet map path)."""
+    mesh = _module("scenes/povray/gallery/relief_mesh.py")
+    argv = sys.argv
+    try:
+        sys.argv = ["relief_mesh.py", work, "240"]
+        mesh.main()
+    finally:
+        sys.argv = argv
+    path, wet = os.path.join(work, "relief.obj"), os.path.join(work, "relief_wet.png")
+    _soak("bake", "rain", path, "-o", wet, "--up", "z", "--rain-dir", "0,-0.55,1", "--spread", 15, "--rainfall", 6,
+          "--duration", 600, "--drop-size", 0.0005, "--splat", 0.004, "--flow-iterations", 0, "--width", 800,
+          "--height", 400, "--rays", 32, "--threads", 2)
+    if hasattr(bpy.ops.wm, "obj_import"):
+        bpy.ops.wm.obj_import(filepath=path, forward_axis="Y", up_axis="Z")
+    else:
+        bpy.ops.import_scene.obj(filepath=path, axis_forward="Y", axis_up="Z")
+    ob = bpy.context.selected_objects[0]
+    ob.name = "Relief"
+    for p in ob.data.polygons:
+        p.use_smooth = True
+    return ob, wet
 
 
 def build_bas_relief_rain():
-    """[Hnat06] Fig. 7: rain on a carved stone panel under a cornice; the wet
-    map is the add-on's Bake Wet Map (soak bake rain, sheltered by the whole
-    visible scene): ledges and the tops of the carvings catch the rain, the
-    strip under the cornice stays dry."""
+    """[Hnat06] Fig. 7: rain on a carved limestone panel, the relief and the
+    wet map of the other columns (scenes/gallery/bas_relief_rain.json): the
+    faces open to the rain wet, the strips sheltered under the cornice and
+    the string course dry. The panel stands on the paving, against a wall of
+    the same stone; the same sun, grey sky and camera."""
     sc = _reset()
-    bpy.ops.mesh.primitive_grid_add(x_subdivisions=200, y_subdivisions=200, size=1.0)
-    panel = bpy.context.object
-    panel.name = "Relief"
-    panel.scale = (1.6, 1.6, 1)
-    bpy.ops.object.transform_apply(location=False, rotation=False, scale=True)
-    n = 512
-    hh = _relief_heights(n)
-    for v in panel.data.vertices:    # carve: the height field along the panel's normal
-        i = min(n - 1, int((v.co.y / 1.6 + 0.5) * n))
-        j = min(n - 1, int((v.co.x / 1.6 + 0.5) * n))
-        v.co.z = 0.09 * hh[i, j]
-    panel.data.update()
-    panel.rotation_euler = (math.radians(78), 0, 0)   # a stele leaning back a little
-    panel.location = (0, 0, 0.95)
-    _shade_smooth(panel, 180)
-    t = Tree("Sandstone")
+    panel, wet_path = _relief(_workdir())
+    t = Tree("Limestone")
     co = t.node("ShaderNodeTexCoord").outputs["Object"]
-    t.link(t.ramp(t.noise(6.0, 8.0, 0.6, vector=co), [(0.3, (0.50, 0.42, 0.33)), (0.7, (0.62, 0.54, 0.43))]),
+    t.link(t.ramp(t.noise(6.0, 8.0, 0.6, vector=co), [(0.3, (0.52, 0.48, 0.41)), (0.7, (0.58, 0.54, 0.46))]),
            t.bsdf.inputs["Base Color"])
-    t.bump(t.noise(60.0, 4.0, 0.7, vector=co), 0.2, 0.01)
+    t.bump(t.noise(80.0, 4.0, 0.7, vector=co), 0.1, 0.002)
     t.set(Roughness=0.8)
     _assign(panel, t.mat)
-    make_wet(panel, "limestone", wetness=1.0)
-    # the cornice over it and the wall around it shelter the top
-    cornice = _box("Cornice", (2.2, 0.4, 0.16), (0, 0.25, 1.86), bevel=0.02)
+    img = bpy.data.images.load(wet_path, check_existing=False)
+    img.colorspace_settings.name = "Non-Color"
+    img.pack()
+    make_wet(panel, "limestone", wetness=1.0, source="IMAGE", wet_map=img)
+    sc["soak_inset"] = wet_path       # render_all.py pastes the map in a corner, as the other columns
+    wall = _box("Wall", (6.0, 0.399, 1.8), (1.0, 0.2005, 0.7))
     stone = Tree("Wall stone")
-    stone.link(stone.ramp(stone.noise(5.0, 6.0, 0.6), [(0.3, (0.40, 0.36, 0.30)), (0.7, (0.50, 0.45, 0.38))]),
+    stone.link(stone.ramp(stone.noise(5.0, 6.0, 0.6), [(0.3, (0.50, 0.46, 0.40)), (0.7, (0.56, 0.52, 0.45))]),
                stone.bsdf.inputs["Base Color"])
     stone.set(Roughness=0.85)
-    _assign(cornice, stone.mat)
-    ground = _plane("Ground", 40.0, loc=(0, 0, 0))
+    _assign(wall, stone.mat)
+    make_wet(wall, "limestone", wetness=0.5)
+    ground = _plane("Paving", 40.0, loc=(1.3, -3.0, 0))
     gr = Tree("Paving")
     gr.link(gr.ramp(gr.noise(8.0, 6.0, 0.6), [(0.3, (0.22, 0.21, 0.2)), (0.7, (0.30, 0.29, 0.27))]),
             gr.bsdf.inputs["Base Color"])
     gr.set(Roughness=0.5)
     _assign(ground, gr.mat)
-    make_wet(ground, "concrete", wetness=0.6)   # the paving after the rain, with a film
-    bpy.ops.object.select_all(action="DESELECT")
-    panel.select_set(True)
-    bpy.context.view_layer.objects.active = panel
-    r = bpy.ops.soak.bake_wetmap(size=512, rays=32, duration=3600.0, occluders="SCENE")
-    if r != {"FINISHED"}:
-        raise RuntimeError(f"Bake Wet Map: {r}")
-    # the artist's tweak: a third of the baked map's value already reads as soaked
-    group_node(panel.active_material).inputs["Puddle Level"].default_value = 0.35
-    # overcast: a bright grey sky, a weak hazy sun
-    _sky(sc, zenith=(0.42, 0.46, 0.52), horizon=(0.62, 0.64, 0.66), ground=(0.12, 0.12, 0.12), strength=1.2)
-    _sun(sc, 35, 250, strength=1.5, angle=6.0)
-    _camera(sc, (0.6, -4.7, 1.2), (0.0, 0.0, 0.95), lens=45)
+    make_wet(ground, "concrete", wetness=0.99)   # the paving after the rain, with a film
+    w = bpy.data.worlds.new("Overcast")
+    w.use_nodes = True
+    w.node_tree.nodes["Background"].inputs["Color"].default_value = (0.55, 0.55, 0.55, 1)
+    sc.world = w
+    _sun_to(sc, (-1.6, -1.0, 0.8), (3.6, 3.2, 2.7), angle=3.0)
+    _camera(sc, (1.3, -4.6, 0.95), (1.3, 0.0, 0.62), vfov=24.4)
     return [("bas_relief_rain", [1])]
 
 
 # ------------------------------------------- 7: flowerpot porosity sweep
 
 
-POT_PROFILE = [(0.0, 0.0), (0.36, 0.0), (0.38, 0.015), (0.50, 0.86), (0.56, 0.87), (0.57, 0.88),
-               (0.575, 1.02), (0.565, 1.04), (0.53, 1.04), (0.515, 1.0), (0.49, 0.89), (0.33, 0.07),
-               (0.0, 0.07)]
 # clay at the open porosities alpha_poro of [Hnat06] Fig. 5's sweep: presets the
 # core adds with `soak export --variant` (scenes/gallery/variants.txt, in the add-on
 # zip scenes/blender/variant_addon.py makes; `make gallery` installs that one)
@@ -773,104 +858,87 @@ POROSITY_SWEEP = (("clay_p00", 0.0), ("clay_p10", 0.1), ("clay_p20", 0.2), ("cla
 def _terracotta(name):
     t = Tree(name)
     co = t.node("ShaderNodeTexCoord").outputs["Object"]
-    t.link(t.ramp(t.noise(5.0, 6.0, 0.55, vector=co), [(0.3, (0.53, 0.20, 0.105)), (0.7, (0.57, 0.22, 0.115))]),
+    t.link(t.ramp(t.noise(30.0, 6.0, 0.55, vector=co), [(0.3, (0.53, 0.20, 0.105)), (0.7, (0.57, 0.22, 0.115))]),
            t.bsdf.inputs["Base Color"])
-    t.bump(t.noise(50.0, 3.0, 0.6, vector=co), 0.15, 0.01)
+    t.bump(t.noise(300.0, 3.0, 0.6, vector=co), 0.15, 0.0015)
     t.set(Roughness=0.8)
     return t
 
 
+POT_PROFILE = [(0, 0), (0.055, 0), (0.08, 0.14), (0.088, 0.142), (0.088, 0.16), (0.072, 0.16), (0.072, 0.145),
+               (0.05, 0.012), (0, 0.012)]   # scenes/gallery/meshes.py's pot, 0.16 m high
+
+
 def build_flowerpot_porosity():
-    """[Hnat06] Fig. 5: the same terracotta pot on the clay class with its open
-    porosity alpha_poro = 0, 0.1 ... 0.5 (left to right). Front row: the pores
-    just full (Wetness = the porosity, no film yet); back row: dry. The more
-    porous, the darker and glossier; a lamp near the camera gives the pore
-    water a highlight to show."""
+    """[Hnat06] Fig. 5, arranged as the other columns (scenes/gallery/
+    flowerpot_porosity.json): the same terracotta pot on the clay class with
+    its open porosity alpha_poro = 0, 0.1 ... 0.5 (left to right). Front row:
+    the pores just full (Wetness = the porosity, no film yet); back row:
+    dry. The same sun, courtyard HDRI, round lamp near the camera (whose
+    highlight the pore water shows), oak shelf, pale wall and camera."""
     sc = _reset()
-    k = len(POROSITY_SWEEP)
     for i, (preset, porosity) in enumerate(POROSITY_SWEEP):
-        for row, wetness in ((0, porosity), (1, 0.0)):
-            pot = _lathe(f"Pot {preset} {'wet' if row == 0 else 'dry'}", POT_PROFILE,
-                         loc=((i - (k - 1) / 2) * 1.3, row * 2.0, 0))
-            t = _terracotta(f"Terracotta ({preset}, {'wet' if row == 0 else 'dry'})")
+        for y, wetness in ((0.0, porosity), (0.3, 0.0)):
+            state = "wet" if y == 0.0 else "dry"
+            pot = _lathe(f"Pot {preset} {state}", POT_PROFILE, loc=(-0.525 + 0.21 * i, y, 0), steps=96)
+            t = _terracotta(f"Terracotta ({preset}, {state})")
             _assign(pot, t.mat)
             make_wet(pot, preset, wetness=wetness)
-    shelf = _box("Table", (12.0, 7.0, 0.12), (0, 0.0, -0.06), bevel=0.02)
-    _assign(shelf, _wood("Shelf oak", scale=0.4, rough=0.5))
-    wall = _plane("Wall", (14.0, 6.0), loc=(0, 3.4, 2.0), rot=(math.radians(90), 0, 0))
+    shelf = _plane("Shelf", (6.0, 2.8), loc=(0, -0.6, 0))
+    _assign(shelf, _wood("Shelf oak", scale=4.0, rough=0.5))
+    make_wet(shelf, "oak", wetness=0.0)
+    wall = _plane("Wall", (4.0, 1.2), loc=(0, 0.8, 0.6), rot=(math.radians(90), 0, 0))
     w = Tree("Plaster")
-    w.link(w.ramp(w.noise(3.0, 6.0, 0.6), [(0.3, (0.55, 0.55, 0.52)), (0.7, (0.62, 0.61, 0.58))]),
-           w.bsdf.inputs["Base Color"])
-    w.set(Roughness=0.9)
+    w.set(Base_Color=(0.6, 0.6, 0.6, 1), Roughness=1.0)
     _assign(wall, w.mat)
     _hdri(sc, "courtyard", 0.45, 18)  # as scenes/gallery/flowerpot_porosity.json
-    _sun(sc, 55, 215, strength=2.5, angle=2.0)
-    lamp = bpy.data.lights.new("Lamp", "POINT")     # near the camera: its highlight on the pore water
-    lamp.energy, lamp.shadow_soft_size = 2500.0, 0.3
+    _sun_to(sc, (-0.4, -0.8, 0.8), 3.0, angle=2.0)
+    # the round lamp near the camera, radius 0.25 m, radiance 40: a Cycles point
+    # light's power is radiance x 4 pi^2 r^2
+    lamp = bpy.data.lights.new("Lamp", "POINT")
+    lamp.shadow_soft_size = 0.25
+    lamp.energy = 40.0 * 4 * math.pi ** 2 * 0.25 ** 2
     lo = bpy.data.objects.new("Lamp", lamp)
-    lo.location = (-2.5, -8.0, 5.5)
+    lo.location = (-0.9, -2.2, 0.9)
     sc.collection.objects.link(lo)
-    _camera(sc, (0.0, -9.5, 4.4), (0.0, 0.8, 0.45), lens=45)
+    _camera(sc, (0.0, -1.6, 0.55), (0.0, 0.2, 0.08), vfov=24)
     return [("flowerpot_porosity", [1])]
 
 
 # ------------------------------ 8: films of increasing thickness, copper
 
 
-FILM_STEPS = (0.0, 0.25, 0.5, 0.75, 1.0)
+FILM_STEPS = (0.0, 0.2857, 0.5714, 0.8571, 1.0)   # as scenes/gallery/film_copper.json
 
 
 def build_film_copper():
-    """[Lag13]: the same ground dry, with pores full, and under a growing
-    water film (concrete tiles, back row; Wetness 0, 0.25 = concrete's
-    porosity, then film coverage 1/3, 2/3, 1), and polished copper under the
-    same wetness (front row; copper has no pores: the film grows from 0)."""
+    """[Lag13], arranged as the other columns (scenes/gallery/film_copper.json):
+    a concrete slab 1 x 1 x 0.1 m of five strips wetting from left to right
+    (Wetness 0, 0.29, 0.57, 0.86, 1: the pores fill, then the film's coverage
+    grows to the preset's depth), two polished copper balls on it (the core's
+    copper preset and colour), the left one dry, the right one under water,
+    on dry asphalt; the same sun, grey sky and camera."""
     sc = _reset()
     for i, w in enumerate(FILM_STEPS):
-        x = (i - 2) * 0.62
-        tile = _box(f"Concrete {w}", (0.56, 0.56, 0.04), (x, 0.35, 0.02), bevel=0.004)
-        t = Tree(f"Concrete {w}")
-        co = t.node("ShaderNodeTexCoord").outputs["Object"]
-        t.link(t.ramp(t.noise(12.0, 6.0, 0.6, vector=co), [(0.3, (0.40, 0.39, 0.37)), (0.7, (0.55, 0.54, 0.51))]),
-               t.bsdf.inputs["Base Color"])
-        t.bump(t.noise(80.0, 3.0, 0.6, vector=co), 0.12, 0.01)
-        t.set(Roughness=0.7)
-        _assign(tile, t.mat)
-        make_wet(tile, "concrete", wetness=w)
-        plate = _box(f"Copper {w}", (0.56, 0.40, 0.02), (x, -0.22, 0.01), bevel=0.003)
-        c = Tree(f"Copper {w}")
-        _assign(plate, c.mat)
-        make_wet(plate, "copper", wetness=w, colours="PRESET")
-    ground = _plane("Ground", 12.0, loc=(0, 0, -0.001))
-    g = Tree("Slate")
-    g.link(g.ramp(g.noise(6.0, 4.0, 0.6), [(0.3, (0.05, 0.05, 0.055)), (0.7, (0.08, 0.08, 0.085))]),
-           g.bsdf.inputs["Base Color"])
-    g.set(Roughness=0.6)
-    _assign(ground, g.mat)
-    # something for the films and the copper to mirror: the balls, and behind
-    # them a pale wall with dark window bays (a mirror shows its edges sharply,
-    # a rough dry tile only their average)
-    for j, (x, col) in enumerate(((-1.0, (0.7, 0.15, 0.1)), (0.1, (0.85, 0.8, 0.7)), (1.1, (0.1, 0.3, 0.7)))):
-        bpy.ops.mesh.primitive_uv_sphere_add(radius=0.18, location=(x, 0.95, 0.18), segments=48,
-                                             ring_count=24)
-        s = bpy.context.object
-        _shade_smooth(s, 180)
-        m = Tree(f"Ball {j}")
-        m.set(Base_Color=(*col, 1), Roughness=0.4)
-        _assign(s, m.mat)
-    wall = _box("Wall", (8.0, 0.2, 3.0), (0.0, 2.6, 1.5))
-    wm = Tree("Wall")
-    wm.set(Base_Color=(0.8, 0.78, 0.72, 1), Roughness=0.8)
-    _assign(wall, wm.mat)
-    bay = Tree("Window bay")
-    bay.set(Base_Color=(0.02, 0.02, 0.025, 1), Roughness=0.3)
-    for k in range(-3, 4):
-        win = _box(f"Window {k}", (0.5, 0.05, 1.4), (k * 1.1, 2.48, 1.3))
-        _assign(win, bay.mat)
-    _sky(sc, zenith=(0.03, 0.08, 0.3), horizon=(1.0, 0.85, 0.65), strength=0.7)
-    _sun(sc, 35, 150, strength=3.0, angle=2.0)
-    # low: the films and the copper mirror the wall, its windows and the balls
-    _camera(sc, (0.0, -3.0, 0.95), (0.0, 0.3, 0.08), lens=40)
+        strip = _box(f"Concrete {w:.2f}", (0.2, 1.0, 0.1), (0.1 + 0.2 * i, 0.5, -0.05))
+        _assign(strip, Tree(f"Concrete {w:.2f}").mat)
+        make_wet(strip, "concrete", wetness=w, colours="PRESET")
+    for state, x, w in (("dry", 0.25, 0.0), ("wet", 0.84, 1.0)):
+        bpy.ops.mesh.primitive_uv_sphere_add(radius=0.12, location=(x, 0.6, 0.12), segments=96, ring_count=48)
+        ball = bpy.context.object
+        ball.name = f"Copper ball {state}"
+        _shade_smooth(ball, 180)
+        _assign(ball, Tree(f"Copper {state}").mat)
+        make_wet(ball, "copper", wetness=w, colours="PRESET")
+    ground = _plane("Paving", 40.0, loc=(0.5, 0.5, -0.1))
+    _assign(ground, Tree("Asphalt").mat)
+    make_wet(ground, "asphalt", wetness=0.0, colours="PRESET")
+    w = bpy.data.worlds.new("Grey sky")
+    w.use_nodes = True
+    w.node_tree.nodes["Background"].inputs["Color"].default_value = (0.5, 0.5, 0.5, 1)
+    sc.world = w
+    _sun_to(sc, (-0.8, 0.45, 0.5), (4.7124, 3.927, 2.9845), angle=1.0)
+    _camera(sc, (0.5, -0.95, 0.85), (0.5, 0.42, 0.02), vfov=30.683)
     return [("film_copper", [1])]
 
 
