@@ -64,7 +64,8 @@ static const cli_choice axes[] = {{"x", 0, 0},  {"y", 1, 0},  {"z", 2, 0}, {"-x"
 #define F(field) CLI_FIELD(rain_args, field)
 static const cli_opt rain_opts[] = {
     {"--per-vertex", NULL, CLI_OPT_STRING, F(vertex_path), .meta = "PATH",
-     .help = "wetness per vertex instead of a map (.ply with grey vertex colours, or .csv):\n"
+     .help = "wetness per vertex instead of a map: .ply (grey vertex colours), .csv,\n"
+             ".gltf/.glb (COLOR_0 = linear wetness grey, float attribute _WETNESS);\n"
              "for meshes with or without UVs; each face baked as its own chart, so water\n"
              "does not flow from face to face (films on slopes under-estimated; exposure\n"
              "right); -o, --exposure, --water, --film, --frames not taken"},

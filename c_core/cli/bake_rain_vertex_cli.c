@@ -16,13 +16,13 @@
 
 static void on_progress(void *user, double fraction) { cli_progress_update(user, fraction); }
 
-/* OUT: .ply or .csv, writable, not the mesh. 0 or the exit code. */
+/* OUT: .ply, .csv, .gltf or .glb, writable, not the mesh. 0 or the exit code. */
 static int check_out(const char *mesh_path, const char *out)
 {
     char err[4352] = "";
     const char *inputs[1] = {mesh_path};
     if (!soak_vertex_path_ok(out)) {
-        cli_error(CMD, "--per-vertex '%s': the output must end in .ply or .csv", out);
+        cli_error(CMD, "--per-vertex '%s': the output must end in .ply, .csv, .gltf or .glb", out);
         return SOAK_EXIT_USAGE;
     }
     soak_status st = soak_output_path_check(out, err, sizeof err);
