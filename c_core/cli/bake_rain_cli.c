@@ -19,7 +19,7 @@ typedef struct rain_args {
     soak_rain_params p;
     int have_dir, up_axis, no_film, have_fps, have_time, have_frame_time;
     double fps;
-    const char *mesh_path, *exposure_path, *water_path, *film_path, *vertex_path;
+    const char *mesh_path, *exposure_path, *water_path, *film_path, *vertex_path, *pov_name;
     int float_exr;                /* the sequence table's --float, for the extra maps */
     soak_rain_frames *frames;     /* --frames: the sequence's state */
     soak_rain_frame last;         /* the last frame's balance */
@@ -65,10 +65,13 @@ static const cli_choice axes[] = {{"x", 0, 0},  {"y", 1, 0},  {"z", 2, 0}, {"-x"
 static const cli_opt rain_opts[] = {
     {"--per-vertex", NULL, CLI_OPT_STRING, F(vertex_path), .meta = "PATH",
      .help = "wetness per vertex instead of a map: .ply (grey vertex colours), .csv,\n"
-             ".gltf/.glb (COLOR_0 = linear wetness grey, float attribute _WETNESS);\n"
+             ".gltf/.glb (COLOR_0 = linear wetness grey, float attribute _WETNESS), .inc\n"
+             "(a POV-Ray mesh2 with a Soak_Mesh_Texture per vertex: povray/soak_mesh.inc);\n"
              "for meshes with or without UVs; each face baked as its own chart, so water\n"
              "does not flow from face to face (films on slopes under-estimated; exposure\n"
              "right); -o, --exposure, --water, --film, --frames not taken"},
+    {"--pov-name", NULL, CLI_OPT_STRING, F(pov_name), .meta = "NAME",
+     .help = "--per-vertex OUT.inc: the mesh2's identifier (default Soak_Wet_Mesh)"},
     {"--exposure", NULL, CLI_OPT_STRING, F(exposure_path), .meta = "PATH",
      .help = "also write the sky exposure (1 = open horizontal surface)"},
     {"--water", NULL, CLI_OPT_STRING, F(water_path), .meta = "PATH",
@@ -417,7 +420,7 @@ static int per_vertex(const rain_args *a, const bake_opts *o)
         return SOAK_EXIT_USAGE;
     }
     int rc = bake_rain_budget(CMD, &a->p, o->width, o->height, 0, 0.0);
-    return rc ? rc : bake_rain_vertex(a->mesh_path, &a->p, o, a->vertex_path, &a->uvo);
+    return rc ? rc : bake_rain_vertex(a->mesh_path, &a->p, o, a->vertex_path, a->pov_name, &a->uvo);
 }
 
 int soak_bake_rain_main(int argc, char **argv)
@@ -427,6 +430,10 @@ int soak_bake_rain_main(int argc, char **argv)
     int rc = parse_args(argc, argv, &a, &o);
     if (rc >= 0) return rc;
     if (a.vertex_path) return per_vertex(&a, &o);
+    if (a.pov_name) {
+        cli_error(CMD, "--pov-name is for --per-vertex OUT.inc (the POV-Ray mesh2's name)");
+        return SOAK_EXIT_USAGE;
+    }
     if ((rc = check_outputs(&a, &o)) != 0) return rc;
     long frames = o.have_frames ? o.last - o.first + 1 : 0;
     double last_time = o.have_frames ? fmax(bake_frame_time(&o, o.first), bake_frame_time(&o, o.last)) : 0.0;

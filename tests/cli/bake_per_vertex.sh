@@ -25,6 +25,12 @@
 #      contained Assimp reader with the STL's vertex and face counts, and
 #      Blender's glTF importer (3.4 host; 4.3 and 5.2 roots where made)
 #      giving a colour attribute equal to the CSV's wetness;
+#  (f) POV-Ray (.inc, a mesh2 with a texture per vertex, povray/soak_mesh.inc):
+#      rendered, the pixels next to the dry and the wet vertices equal the
+#      core's exported colours within named terms (per_vertex_povray.py);
+#      a mesh file name with quotes, '#' directives, newlines and a
+#      backslash reaches the .inc only escaped: one #declare (--pov-name),
+#      POV-Ray parses it and writes no file;
 #  refusals: a map too small for the atlas (the size needed named), -o or
 #  --uv-set with --per-vertex, an output that is not .ply/.csv, the mesh as output.
 set -u
@@ -151,6 +157,44 @@ for v in 4.3 5.2; do
   else skip "no Blender $v root at $root (scripts/setup-blender-root.sh $v)" "Blender $v glTF import"; fi
 done
 
+# (f) POV-Ray mesh2.
+expect_exit 0 "roofed.stl --per-vertex to .inc" -- "$SOAK" bake rain "$D/roofed.stl" "${R[@]}" --per-vertex "$D/r.inc"
+grep -q '^#declare Soak_Wet_Mesh = mesh2 {$' "$D/r.inc" && ok "r.inc declares Soak_Wet_Mesh, a mesh2" \
+  || bad "r.inc: no '#declare Soak_Wet_Mesh = mesh2 {'"
+if command -v povray >/dev/null && command -v oiiotool >/dev/null; then
+  mkdir -p "$D/pov"
+  if python3 "$(dirname "$PY")/per_vertex_povray.py" "$SOAK" "$SOAK_ROOT" "$D/pov" "$D/r.inc" "$D/r.csv" \
+    "$D/roofed.stl" >"$D/pov.log" 2>&1; then
+    ok "POV-Ray renders r.inc: the dry and wet vertices' pixels are the core's colours ($(grep -c '^ok' "$D/pov.log") checks)"
+  else
+    bad "POV-Ray render of r.inc: $(grep -E 'FAIL' "$D/pov.log" | head -3)"
+  fi
+else
+  skip "povray or oiiotool not on PATH" "POV-Ray render of the mesh2"
+fi
+evil="$D/q\";#fopen P \"pwned.txt\" write #declare Z=\"y"$'\n'"#declare Soak_Wet_Mesh = 0"$'\n'"\\.stl"
+cp "$D/roofed.stl" "$evil"
+expect_exit 0 "a mesh named with quotes, directives, newlines" -- "$SOAK" bake rain "$evil" --width 32 --height 32 \
+  --rays 1 --duration 0 --per-vertex "$D/evil.inc" --pov-name My_Mesh
+[ "$(grep -c '^#declare' "$D/evil.inc")" = 1 ] && grep -q '^#declare My_Mesh = mesh2 {$' "$D/evil.inc" \
+  && ok "evil.inc: one #declare, --pov-name's My_Mesh; the file name only escaped" \
+  || bad "evil.inc: $(grep -n '^#' "$D/evil.inc" | head -5)"
+if command -v povray >/dev/null; then
+  printf '#version 3.7;\n#include "soak.inc"\n#include "soak_mesh.inc"\n#include "evil.inc"\nobject { My_Mesh }\n' \
+    >"$D/evil.pov"
+  (cd "$D" && povray +Ievil.pov +Oevil.png +W8 +H8 -D -V "+L$SOAK_ROOT/povray" >"$D/evil.log" 2>&1)
+  rc=$?
+  [ $rc = 0 ] && [ ! -e "$D/pwned.txt" ] && ok "POV-Ray parses evil.inc and writes no file" \
+    || bad "evil.inc in POV-Ray: exit $rc, pwned.txt $( [ -e "$D/pwned.txt" ] && echo written || echo absent)"
+fi
+expect_exit 2 "--pov-name not an identifier" -- "$SOAK" bake rain "$D/roofed.stl" --per-vertex "$D/x.inc" \
+  --pov-name 'a"b'
+expect_stderr "--pov-name 'a\"b': a POV-Ray identifier" "the refusal says what an identifier is"
+expect_exit 2 "--pov-name with a .ply" -- "$SOAK" bake rain "$D/roofed.stl" --per-vertex "$D/x.ply" --pov-name Wet
+expect_stderr "--pov-name is for --per-vertex OUT.inc" "the refusal names the .inc output"
+expect_exit 2 "--pov-name without --per-vertex" -- "$SOAK" bake rain "$D/ground.ply" -o "$D/x.exr" --pov-name Wet
+[ ! -e "$D/x.inc" ] && [ ! -e "$D/x.ply" ] && ok "nothing written by the refusals" || bad "a refused run wrote"
+
 # Refusals.
 expect_exit 2 "a map too small for the atlas" -- "$SOAK" bake rain "$D/roofed.stl" --width 16 --height 16 --rays 1 \
   --duration 0 --per-vertex "$D/small.ply"
@@ -161,7 +205,7 @@ expect_stderr "-o is not taken with --per-vertex" "the refusal names -o"
 expect_exit 2 "--uv-set with --per-vertex" -- "$SOAK" bake rain "$D/ground.ply" --uv-set 1 --per-vertex "$D/x.ply"
 expect_stderr "--uv-set and --uv-outside are not taken with --per-vertex" "the refusal says the mesh's UVs are not used"
 expect_exit 2 "a .txt output" -- "$SOAK" bake rain "$D/roofed.stl" --per-vertex "$D/x.txt"
-expect_stderr "must end in .ply, .csv, .gltf or .glb" "the refusal names the extensions"
+expect_stderr "must end in .ply, .csv, .gltf, .glb or .inc" "the refusal names the extensions"
 cp "$D/ground.ply" "$D/keep.ply"
 expect_exit 2 "the mesh as its own output" -- "$SOAK" bake rain "$D/keep.ply" --rays 1 --duration 0 --per-vertex "$D/keep.ply"
 cmp -s "$D/keep.ply" "$D/ground.ply" && ok "the input is untouched" || bad "the input was overwritten"

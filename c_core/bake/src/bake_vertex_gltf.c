@@ -198,8 +198,8 @@ static char *data_uri(const unsigned char *data, size_t len)
     if (!out) return NULL;
     memcpy(out, prefix, sizeof prefix - 1);
     for (size_t i = 0; i < len; i += 3) {
-        uint32_t v = (uint32_t)data[i] << 16 | (i + 1 < len ? (uint32_t)data[i + 1] << 8 : 0) |
-                     (i + 2 < len ? data[i + 2] : 0);
+        uint32_t v =
+            (uint32_t)data[i] << 16 | (i + 1 < len ? (uint32_t)data[i + 1] << 8 : 0) | (i + 2 < len ? data[i + 2] : 0);
         *o++ = digits[v >> 18 & 63], *o++ = digits[v >> 12 & 63];
         *o++ = i + 1 < len ? digits[v >> 6 & 63] : '=';
         *o++ = i + 2 < len ? digits[v & 63] : '=';

@@ -157,6 +157,10 @@ def gltf_accessor(doc, binary, k, fmt, width):
     return [flat[i * width:(i + 1) * width] for i in range(n)]
 
 
+def f32(v):  # the bounds compare as the float32 values they describe
+    return list(struct.unpack("<3f", struct.pack("<3f", *v)))
+
+
 def gltf(path):
     doc, binary = gltf_load(path)
     assert doc["asset"]["version"] == "2.0", "asset.version"
@@ -169,8 +173,8 @@ def gltf(path):
     acc = doc["accessors"][at["POSITION"]]
     lo = [min(p[c] for p in pos) for c in range(3)]
     hi = [max(p[c] for p in pos) for c in range(3)]
-    f32 = lambda v: list(struct.unpack("<3f", struct.pack("<3f", *v)))  # the bounds are float32 values
-    assert f32(acc["min"]) == lo and f32(acc["max"]) == hi, f"POSITION min/max {acc['min']} {acc['max']}, data {lo} {hi}"
+    assert f32(acc["min"]) == lo and f32(acc["max"]) == hi, \
+        f"POSITION min/max {acc['min']} {acc['max']}, data {lo} {hi}"
     col = gltf_accessor(doc, binary, at["COLOR_0"], "f", 4)
     wet = [w[0] for w in gltf_accessor(doc, binary, at["_WETNESS"], "f", 1)]
     if "NORMAL" in at:
