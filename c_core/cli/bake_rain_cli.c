@@ -126,7 +126,7 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: soak bake rain MESH -o OUT [options]\n"
             "       soak bake rain MESH --frames A-B -o wet.%%04d.exr [options]\n"
-            "       soak bake rain MESH --per-vertex wet.ply [options]\n\n"
+            "       soak bake rain MESH --per-vertex wet.ply|.csv|.gltf|.glb|.inc [options]\n\n"
             "Rain wet map of a mesh (FBX, glTF, OBJ, ... listed below) in its UVs, or with\n"
             "--per-vertex one wetness per vertex (meshes without UVs too), at a texture\n"
             "resolution: per-texel sky exposure by ray casting through the mesh (Embree), drop\n"
@@ -167,7 +167,9 @@ static void usage(FILE *out)
                  "  soak bake rain character.fbx --uv-set UVMap --strict -o wet.<UDIM>.exr\n"
                  "  soak bake rain wall.obj --up z --duration 600 --steps 60 --fps 0.04 --frames 0-23 \\\n"
                  "       --film film.%%04d.exr -o wet.%%04d.exr\n"
-                 "  soak bake rain part.stl --up z --width 1024 --height 1024 --per-vertex wet.ply\n");
+                 "  soak bake rain part.stl --up z --width 1024 --height 1024 --per-vertex wet.ply\n"
+                 "  soak bake rain scan.glb --width 1024 --height 1024 --per-vertex wet.glb\n"
+                 "  soak bake rain rock.obj --per-vertex rock_wet.inc --pov-name Rock_Wet\n");
 }
 
 static int mesh_arg(void *ctx, const char *arg)

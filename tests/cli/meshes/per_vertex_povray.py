@@ -23,6 +23,9 @@ Checks, per channel:
 - at pixels between the dry vertex and its wet neighbours, the render
   equals the barycentric blend sum_j b_j E(w_j) within the rounding and
   output terms (POV-Ray interpolates the three shaded textures);
+- Soak_Mesh_Pigment (a user pigment, Soak_Wet_User_Texture's two layers
+  in one texture) at a wet corner equals a plane of Soak_Wet_User_Material
+  at that vertex's wetness, and differs from the preset's colour;
 - E(dry) and E(wet) differ by more than 20 times those terms (the check
   can tell them apart).
 
@@ -98,8 +101,8 @@ def at_pixel(faces, px, py):
     fail(f"pixel ({px}, {py}) at ({x}, {z}) is on no ground face")
 
 
-def render(soak, root, d, inc):
-    pov = os.path.join(d, "mesh2.pov")
+def render(soak, root, d, inc, name="mesh2", settings="", scene=None):
+    pov = os.path.join(d, f"{name}.pov")
     with open(pov, "w") as f:
         f.write(f"""#version 3.7;
 global_settings {{ assumed_gamma 1.0 ambient_light 1 }}
@@ -107,19 +110,39 @@ global_settings {{ assumed_gamma 1.0 ambient_light 1 }}
 #declare Soak_Highlights = 0;
 #include "soak.inc"
 #declare Soak_Mesh_Preset = "{PRESET}";
+{settings}
 #include "soak_mesh.inc"
 #include "{os.path.basename(inc)}"
 camera {{ orthographic location <0, 0.2, 0> direction <0, -1, 0> right <2, 0, 0> up <0, 0, 2> }}
 background {{ rgb 0 }}
-object {{ Soak_Wet_Mesh Soak_Wet_Interior(Soak_Mesh_Liquid) }}
+{scene or "object { Soak_Wet_Mesh Soak_Wet_Interior(Soak_Mesh_Liquid) }"}
 """)
-    out = os.path.join(d, "mesh2.exr")
+    out = os.path.join(d, f"{name}.exr")
     cmd = ["povray", f"+I{pov}", f"+O{out}", "+FE", f"+W{W}", f"+H{H}", "-D", "-V", "+WT1", "+Q7",
            f"+L{os.path.join(root, 'povray')}", f"+L{os.path.dirname(os.path.abspath(inc))}", "Output_Alpha=off"]
     r = subprocess.run(cmd, capture_output=True, text=True, cwd=d)
     if r.returncode != 0:
         fail(f"povray exit {r.returncode}: {(r.stdout + r.stderr)[-1500:]}")
     return read_exr(out)
+
+
+def user_pigment(soak, root, d, inc, wet, img, rounding, output):
+    """Soak_Mesh_Pigment (Soak_Wet_User_Texture, two layers wrapped into one
+    texture) at the corner vertex (-1, 0, 1), pixel (0, 0), against a plane
+    of Soak_Wet_User_Material at that vertex's wetness; the preset's render
+    differs there (a check that can fail)."""
+    pig = "pigment { rgb <0.5, 0.3, 0.2> }"
+    w = wet[(-1.0, 0.0, 1.0)]
+    mesh = render(soak, root, d, inc, "user_mesh", f"#declare Soak_Mesh_Pigment = {pig};")
+    flat = render(soak, root, d, inc, "user_plane", "",
+                  f'plane {{ y, 0 Soak_Wet_User_Material("{PRESET}", "water", {w}, {pig}) }}')
+    got, ref = mesh[(0, 0)], flat[(0, 0)]
+    tol = [rounding + 2 * output(v) for v in ref]
+    ok = all(abs(a - b) <= t for a, b, t in zip(got, ref, tol))
+    ok = ok and max(abs(a - b) for a, b in zip(img[(0, 0)], ref)) > 0.01
+    print(f"{'ok  ' if ok else 'FAIL'} Soak_Mesh_Pigment at (-1, 1) w={w:.4f}: {[round(v, 5) for v in got]} vs "
+          f"Soak_Wet_User_Material {[round(v, 5) for v in ref]} (the preset's {[round(v, 5) for v in img[(0, 0)]]})")
+    return not ok
 
 
 def main():
@@ -165,7 +188,8 @@ def main():
                       f"{got[c]:.5f} vs E(w) {ref[c]:.5f}, tolerance {tol:.5f} (interpolation "
                       f"{(1 - b[i]) * spread:.5f} + rounding {rounding:.5f} + output {output(ref[c]):.5f})")
     # between the dry centre and its wet neighbours: the barycentric blend
-    for px, py in [(W // 2 + 8, H // 2 - 1), (W // 2 - 9, H // 2), (W // 2 + 16, H // 2 + 16), (W // 2 - 5, H // 2 - 12)]:
+    inside = [(W // 2 + 8, H // 2 - 1), (W // 2 - 9, H // 2), (W // 2 + 16, H // 2 + 16), (W // 2 - 5, H // 2 - 12)]
+    for px, py in inside:
         face, b = at_pixel(faces, px, py)
         ref = [sum(b[j] * E(wet[face[j]])[c] for j in range(3)) for c in range(3)]
         got = img[(px, py)]
@@ -173,6 +197,7 @@ def main():
         bad += not ok
         print(f"{'ok  ' if ok else 'FAIL'} blend at pixel ({px}, {py}), weights "
               f"{', '.join(f'{v:.3f}' for v in b)}: {[round(v, 5) for v in got]} vs {[round(v, 5) for v in ref]}")
+    bad += user_pigment(soak, root, d, inc, wet, img, rounding, output)
     dry, wetc = E(0.0), E(max(wet.values()))
     gap = max(abs(a - b) for a, b in zip(dry, wetc))
     ok = gap > 20 * (rounding + output(max(dry)))
