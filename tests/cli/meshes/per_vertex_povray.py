@@ -26,6 +26,8 @@ Checks, per channel:
 - Soak_Mesh_Pigment (a user pigment, Soak_Wet_User_Texture's two layers
   in one texture) at a wet corner equals a plane of Soak_Wet_User_Material
   at that vertex's wetness, and differs from the preset's colour;
+- a Soak_Mesh_Texture macro of the user's replaces soak_mesh.inc's: grey
+  W gives the CSV's wetness at the wet corners within the rounding;
 - E(dry) and E(wet) differ by more than 20 times those terms (the check
   can tell them apart).
 
@@ -145,6 +147,22 @@ def user_pigment(soak, root, d, inc, wet, img, rounding, output):
     return not ok
 
 
+def own_macro(soak, root, d, inc, wet, output):
+    """A Soak_Mesh_Texture(W) of the user's, declared before soak_mesh.inc,
+    replaces its own: with grey W emitted, the pixel at each wet corner is
+    that vertex's wetness in the CSV within the 0.0005 rounding."""
+    mine = "#macro Soak_Mesh_Texture(W) texture { pigment { rgb W } finish { ambient 1 diffuse 0 } } #end"
+    img = render(soak, root, d, inc, "own_macro", mine, "object { Soak_Wet_Mesh }")
+    bad = 0
+    for (x, z), (px, py) in {(-1.0, 1.0): (0, 0), (1.0, -1.0): (W - 1, H - 1)}.items():
+        w, got = wet[(x, 0.0, z)], img[(px, py)][0]
+        ok = abs(got - w) <= 0.0005 + output(w)
+        bad += not ok
+        print(f"{'ok  ' if ok else 'FAIL'} own Soak_Mesh_Texture: pixel ({px}, {py}) = {got:.5f}, "
+              f"the CSV's w = {w:.5f}")
+    return bad
+
+
 def main():
     if len(sys.argv) != 7:
         fail(__doc__)
@@ -198,6 +216,7 @@ def main():
         print(f"{'ok  ' if ok else 'FAIL'} blend at pixel ({px}, {py}), weights "
               f"{', '.join(f'{v:.3f}' for v in b)}: {[round(v, 5) for v in got]} vs {[round(v, 5) for v in ref]}")
     bad += user_pigment(soak, root, d, inc, wet, img, rounding, output)
+    bad += own_macro(soak, root, d, inc, wet, output)
     dry, wetc = E(0.0), E(max(wet.values()))
     gap = max(abs(a - b) for a, b in zip(dry, wetc))
     ok = gap > 20 * (rounding + output(max(dry)))
