@@ -3,7 +3,7 @@
 #   PREFIX/lib/soak/libsoak_*.so         its I/O modules (soak/plugin.h)
 #   PREFIX/share/soak/                   the data folder (soak/data_dir.h):
 #       materials.json, export.schema.json, measured/, scenes/default_wet_dry.json,
-#       povray/soak.inc, povray/soak_materials.inc, soak_blender.zip
+#       povray/soak.inc, povray/soak_materials.inc, povray/soak_mesh.inc, soak_blender.zip
 #   PREFIX/share/man/man1/soak.1.gz      the manual page, made by `soak --man`
 # The executable finds lib/soak and share/soak relative to its own folder, so
 # an installed tree works wherever it is moved. These folder names are also
@@ -21,7 +21,7 @@ set(SOAK_SHARE share/soak)
 install(FILES c_core/data/materials.json c_core/data/export.schema.json DESTINATION ${SOAK_SHARE})
 install(DIRECTORY c_core/data/measured DESTINATION ${SOAK_SHARE})
 install(FILES scenes/default_wet_dry.json scenes/README.md DESTINATION ${SOAK_SHARE}/scenes)
-install(FILES povray/soak.inc povray/soak_materials.inc DESTINATION ${SOAK_SHARE}/povray)
+install(FILES povray/soak.inc povray/soak_materials.inc povray/soak_mesh.inc DESTINATION ${SOAK_SHARE}/povray)
 install(FILES README.md DESTINATION share/doc/soak)
 
 # The manual page: `soak --man` prints --help's texts with every command's

@@ -19,7 +19,7 @@ typedef struct rain_args {
     soak_rain_params p;
     int have_dir, up_axis, no_film, have_fps, have_time, have_frame_time;
     double fps;
-    const char *mesh_path, *exposure_path, *water_path, *film_path, *vertex_path;
+    const char *mesh_path, *exposure_path, *water_path, *film_path, *vertex_path, *pov_name;
     int float_exr;                /* the sequence table's --float, for the extra maps */
     soak_rain_frames *frames;     /* --frames: the sequence's state */
     soak_rain_frame last;         /* the last frame's balance */
@@ -64,10 +64,14 @@ static const cli_choice axes[] = {{"x", 0, 0},  {"y", 1, 0},  {"z", 2, 0}, {"-x"
 #define F(field) CLI_FIELD(rain_args, field)
 static const cli_opt rain_opts[] = {
     {"--per-vertex", NULL, CLI_OPT_STRING, F(vertex_path), .meta = "PATH",
-     .help = "wetness per vertex instead of a map (.ply with grey vertex colours, or .csv):\n"
+     .help = "wetness per vertex instead of a map: .ply (grey vertex colours), .csv,\n"
+             ".gltf/.glb (COLOR_0 = linear wetness grey, float attribute _WETNESS), .inc\n"
+             "(a POV-Ray mesh2 with a Soak_Mesh_Texture per vertex: povray/soak_mesh.inc);\n"
              "for meshes with or without UVs; each face baked as its own chart, so water\n"
              "does not flow from face to face (films on slopes under-estimated; exposure\n"
              "right); -o, --exposure, --water, --film, --frames not taken"},
+    {"--pov-name", NULL, CLI_OPT_STRING, F(pov_name), .meta = "NAME",
+     .help = "--per-vertex OUT.inc: the mesh2's identifier (default Soak_Wet_Mesh)"},
     {"--exposure", NULL, CLI_OPT_STRING, F(exposure_path), .meta = "PATH",
      .help = "also write the sky exposure (1 = open horizontal surface)"},
     {"--water", NULL, CLI_OPT_STRING, F(water_path), .meta = "PATH",
@@ -122,7 +126,7 @@ static void usage(FILE *out)
     fprintf(out,
             "usage: soak bake rain MESH -o OUT [options]\n"
             "       soak bake rain MESH --frames A-B -o wet.%%04d.exr [options]\n"
-            "       soak bake rain MESH --per-vertex wet.ply [options]\n\n"
+            "       soak bake rain MESH --per-vertex wet.ply|.csv|.gltf|.glb|.inc [options]\n\n"
             "Rain wet map of a mesh (FBX, glTF, OBJ, ... listed below) in its UVs, or with\n"
             "--per-vertex one wetness per vertex (meshes without UVs too), at a texture\n"
             "resolution: per-texel sky exposure by ray casting through the mesh (Embree), drop\n"
@@ -163,7 +167,9 @@ static void usage(FILE *out)
                  "  soak bake rain character.fbx --uv-set UVMap --strict -o wet.<UDIM>.exr\n"
                  "  soak bake rain wall.obj --up z --duration 600 --steps 60 --fps 0.04 --frames 0-23 \\\n"
                  "       --film film.%%04d.exr -o wet.%%04d.exr\n"
-                 "  soak bake rain part.stl --up z --width 1024 --height 1024 --per-vertex wet.ply\n");
+                 "  soak bake rain part.stl --up z --width 1024 --height 1024 --per-vertex wet.ply\n"
+                 "  soak bake rain scan.glb --width 1024 --height 1024 --per-vertex wet.glb\n"
+                 "  soak bake rain rock.obj --per-vertex rock_wet.inc --pov-name Rock_Wet\n");
 }
 
 static int mesh_arg(void *ctx, const char *arg)
@@ -416,7 +422,7 @@ static int per_vertex(const rain_args *a, const bake_opts *o)
         return SOAK_EXIT_USAGE;
     }
     int rc = bake_rain_budget(CMD, &a->p, o->width, o->height, 0, 0.0);
-    return rc ? rc : bake_rain_vertex(a->mesh_path, &a->p, o, a->vertex_path, &a->uvo);
+    return rc ? rc : bake_rain_vertex(a->mesh_path, &a->p, o, a->vertex_path, a->pov_name, &a->uvo);
 }
 
 int soak_bake_rain_main(int argc, char **argv)
@@ -426,6 +432,10 @@ int soak_bake_rain_main(int argc, char **argv)
     int rc = parse_args(argc, argv, &a, &o);
     if (rc >= 0) return rc;
     if (a.vertex_path) return per_vertex(&a, &o);
+    if (a.pov_name) {
+        cli_error(CMD, "--pov-name is for --per-vertex OUT.inc (the POV-Ray mesh2's name)");
+        return SOAK_EXIT_USAGE;
+    }
     if ((rc = check_outputs(&a, &o)) != 0) return rc;
     long frames = o.have_frames ? o.last - o.first + 1 : 0;
     double last_time = o.have_frames ? fmax(bake_frame_time(&o, o.first), bake_frame_time(&o, o.last)) : 0.0;

@@ -7,6 +7,7 @@
 
 #include "bake_cli.h"
 #include "bake_uv_cli.h"
+#include "bake_vertex_pov.h"
 #include "soak/bake_rain.h"
 #include "soak/bake_vertex.h"
 #include "soak/io_guard.h"
@@ -16,13 +17,25 @@
 
 static void on_progress(void *user, double fraction) { cli_progress_update(user, fraction); }
 
-/* OUT: .ply or .csv, writable, not the mesh. 0 or the exit code. */
-static int check_out(const char *mesh_path, const char *out)
+/* OUT: .ply, .csv, .gltf, .glb or .inc, writable, not the mesh; --pov-name
+ * only with .inc, a POV-Ray identifier. 0 or the exit code. */
+static int check_out(const char *mesh_path, const char *out, const char *pov_name)
 {
     char err[4352] = "";
     const char *inputs[1] = {mesh_path};
-    if (!soak_vertex_path_ok(out)) {
-        cli_error(CMD, "--per-vertex '%s': the output must end in .ply or .csv", out);
+    if (!soak_vertex_path_ok(out) && !bake_vertex_pov_path(out)) {
+        cli_error(CMD, "--per-vertex '%s': the output must end in .ply, .csv, .gltf, .glb or .inc", out);
+        return SOAK_EXIT_USAGE;
+    }
+    if (pov_name && !bake_vertex_pov_path(out)) {
+        cli_error(CMD, "--pov-name is for --per-vertex OUT.inc (the POV-Ray mesh2's name), not '%s'", out);
+        return SOAK_EXIT_USAGE;
+    }
+    if (pov_name && !bake_vertex_pov_name_ok(pov_name)) {
+        cli_error(CMD,
+                  "--pov-name '%s': a POV-Ray identifier is a capital letter, then letters, digits or _ "
+                  "(at most %d)",
+                  pov_name, BAKE_VERTEX_POV_NAME_MAX);
         return SOAK_EXIT_USAGE;
     }
     soak_status st = soak_output_path_check(out, err, sizeof err);
@@ -58,7 +71,7 @@ static soak_status bake_atlas(const char *mesh_path, const soak_mesh *mesh, cons
 
 /* The values, the warning when every one is 0, the file, the report. */
 static int gather_and_write(const char *mesh_path, const soak_mesh *mesh, const soak_rain_result *res, const char *out,
-                            const bake_uv_opts *u)
+                            const char *pov_name, const bake_uv_opts *u)
 {
     char err[4352] = "";
     size_t unreached = 0, wet = 0;
@@ -81,7 +94,10 @@ static int gather_and_write(const char *mesh_path, const soak_mesh *mesh, const 
     if (st == SOAK_OK && unreached)
         fprintf(stderr, "soak %s: warning: %s: %zu of %zu vertices are on no face with area (wetness 0)\n", CMD,
                 mesh_path, unreached, mesh->n_vertices);
-    if (st == SOAK_OK) st = soak_vertex_write(out, mesh, values, err, sizeof err);
+    if (st == SOAK_OK && bake_vertex_pov_path(out))
+        st = bake_vertex_pov_write(out, mesh, values, mesh_path, pov_name ? pov_name : BAKE_VERTEX_POV_DEFAULT_NAME,
+                                   err, sizeof err);
+    else if (st == SOAK_OK) st = soak_vertex_write(out, mesh, values, err, sizeof err);
     free(values);
     if (st != SOAK_OK) return bake_fail(CMD, st, err);
     printf("%s: wetness of %zu vertices (%zu faces) from %s: mean %.4g, min %.4g, max %.4g\n", out, mesh->n_vertices,
@@ -90,9 +106,9 @@ static int gather_and_write(const char *mesh_path, const soak_mesh *mesh, const 
 }
 
 int bake_rain_vertex(const char *mesh_path, const soak_rain_params *p, const bake_opts *o, const char *out,
-                     const bake_uv_opts *u)
+                     const char *pov_name, const bake_uv_opts *u)
 {
-    int rc = check_out(mesh_path, out);
+    int rc = check_out(mesh_path, out, pov_name);
     if (rc) return rc;
     char err[4352] = "";
     soak_mesh mesh;
@@ -112,7 +128,7 @@ int bake_rain_vertex(const char *mesh_path, const soak_rain_params *p, const bak
     }
     rc = bake_uv_dry_verdict(CMD, mesh_path, &res.exposure, &res.uv, u)
              ? SOAK_EXIT_FAIL
-             : gather_and_write(mesh_path, &mesh, &res, out, u);
+             : gather_and_write(mesh_path, &mesh, &res, out, pov_name, u);
     soak_rain_result_free(&res);
     soak_mesh_free(&mesh);
     return rc;

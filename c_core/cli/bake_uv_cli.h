@@ -50,9 +50,10 @@ int bake_rain_udim(const char *mesh_path, const struct soak_rain_params *p, cons
 int bake_rain_udim_frames(const char *mesh_path, const struct soak_rain_params *p, const struct bake_opts *o,
                           const char *const *paths, const bake_uv_opts *u);
 /* soak bake rain MESH --per-vertex OUT (bake_rain_vertex_cli.c): the
- * wetness per vertex through a generated atlas (soak/bake_vertex.h). */
+ * wetness per vertex through a generated atlas (soak/bake_vertex.h);
+ * pov_name: the mesh2's identifier of an OUT.inc (NULL: the default). */
 int bake_rain_vertex(const char *mesh_path, const struct soak_rain_params *p, const struct bake_opts *o,
-                     const char *out, const bake_uv_opts *u);
+                     const char *out, const char *pov_name, const bake_uv_opts *u);
 /* 0, or the exit code after naming the output that lacks <UDIM>. */
 int bake_rain_udim_check_paths(const char *const *paths);
 /* Up to this many tiles in one run. */

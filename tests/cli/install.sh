@@ -50,7 +50,7 @@ mv "$t/prefix" "$t/moved"
 p=$t/moved
 for f in bin/soak lib/soak/libsoak_image.so lib/soak/libsoak_mesh.so share/soak/materials.json \
          share/soak/export.schema.json share/soak/scenes/default_wet_dry.json share/soak/povray/soak.inc \
-         share/soak/povray/soak_materials.inc share/man/man1/soak.1.gz; do
+         share/soak/povray/soak_materials.inc share/soak/povray/soak_mesh.inc share/man/man1/soak.1.gz; do
   [ -s "$p/$f" ] && ok "installed $f" || bad "not installed: $f"
 done
 if [ -f "$build/soak_blender.zip" ]; then

@@ -160,7 +160,10 @@ static const char *extension(const char *path)
 
 int soak_vertex_path_ok(const char *path)
 {
-    return path && (!strcasecmp(extension(path), ".ply") || !strcasecmp(extension(path), ".csv"));
+    static const char *const ok[] = {".ply", ".csv", ".gltf", ".glb"};
+    for (size_t k = 0; path && k < sizeof ok / sizeof ok[0]; ++k)
+        if (!strcasecmp(extension(path), ok[k])) return 1;
+    return 0;
 }
 
 /* IEC 61966-2-1:1999 sRGB encoding of a linear value in [0, 1], as a byte. */
@@ -200,12 +203,15 @@ soak_status soak_vertex_write(const char *path, const soak_mesh *m, const float 
 {
     if (!path || !m || !values) return SOAK_ERR_NULL;
     if (!soak_vertex_path_ok(path)) {
-        if (err && errlen) snprintf(err, errlen, "%s: per-vertex output must end in .ply or .csv", path);
+        if (err && errlen) snprintf(err, errlen, "%s: per-vertex output must end in .ply, .csv, .gltf or .glb", path);
         return SOAK_ERR_ARG;
     }
     for (size_t i = 0; i < m->n_vertices; ++i)
         if (!(values[i] >= 0.0f && values[i] <= 1.0f))
             return fail(err, errlen, SOAK_ERR_NUMERIC, "wetness out of [0, 1]");
+    const char *ext = extension(path);
+    if (!strcasecmp(ext, ".gltf") || !strcasecmp(ext, ".glb"))
+        return soak_vertex_write_gltf(path, m, values, !strcasecmp(ext, ".glb"), err, errlen);
     soak_staged stage;
     soak_staged_init(&stage);
     FILE *f = NULL;

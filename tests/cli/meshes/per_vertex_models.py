@@ -14,8 +14,17 @@ read OUT.ply: checks an output PLY (header, counts, values in [0, 1], the
 grey = the sRGB encoding of the wetness) and prints "nv nf" then one
 "x y z wetness" line per vertex.
 
-unique MESH.stl: the number of distinct vertex positions of an ASCII STL."""
+unique MESH.stl: the number of distinct vertex positions of an ASCII STL.
+
+gltf OUT.gltf|OUT.glb: checks the structure by hand against the glTF 2.0
+specification (Khronos): GLB header and chunks, bufferViews inside the
+buffer and 4-byte aligned, accessors' types, POSITION's min/max equal to its
+data, COLOR_0 = (w, w, w, 1) with w in [0, 1] equal to _WETNESS, indices in
+range; prints "nv nf" then one "x y z wetness" line per vertex."""
+import base64
+import json
 import re
+import struct
 import sys
 
 GRID = [(x, z) for z in (-1.0, 0.0, 1.0) for x in (-1.0, 0.0, 1.0)]  # index 3 * row + column
@@ -112,6 +121,75 @@ def unique(path):
     print(len({l.split(None, 1)[1] for l in open(path) if l.strip().startswith("vertex")}))
 
 
+def gltf_load(path):
+    data = open(path, "rb").read()
+    if not path.lower().endswith(".glb"):
+        doc = json.loads(data)
+        uri = doc["buffers"][0]["uri"]
+        prefix = "data:application/octet-stream;base64,"
+        assert uri.startswith(prefix), f"buffer uri {uri[:40]}"
+        return doc, base64.b64decode(uri[len(prefix):], validate=True)
+    magic, version, length = struct.unpack_from("<III", data, 0)
+    assert (magic, version) == (0x46546C67, 2), f"GLB header {magic:#x} {version}"
+    assert length == len(data), f"GLB length {length}, file {len(data)}"
+    jl, jt = struct.unpack_from("<II", data, 12)
+    assert jt == 0x4E4F534A and jl % 4 == 0, f"first chunk type {jt:#x} length {jl}"
+    doc = json.loads(data[20:20 + jl])
+    bl, bt = struct.unpack_from("<II", data, 20 + jl)
+    assert bt == 0x004E4942 and bl % 4 == 0, f"second chunk type {bt:#x} length {bl}"
+    assert 28 + jl + bl == len(data), "bytes after the BIN chunk"
+    assert "uri" not in doc["buffers"][0], "a GLB buffer 0 has no uri"
+    binary = data[28 + jl:28 + jl + bl]
+    assert 0 <= bl - doc["buffers"][0]["byteLength"] < 4, "BIN chunk padding"
+    return doc, binary[:doc["buffers"][0]["byteLength"]]
+
+
+def gltf_accessor(doc, binary, k, fmt, width):
+    a = doc["accessors"][k]
+    v = doc["bufferViews"][a["bufferView"]]
+    want = {"f": 5126, "I": 5125}[fmt]
+    assert a["componentType"] == want, f"accessor {k}: componentType {a['componentType']}"
+    assert a["type"] == {1: "SCALAR", 3: "VEC3", 4: "VEC4"}[width], f"accessor {k}: type {a['type']}"
+    off, n = v.get("byteOffset", 0) + a.get("byteOffset", 0), a["count"]
+    assert off % 4 == 0 and v["byteLength"] % 4 == 0, f"bufferView of accessor {k} not 4-byte aligned"
+    assert off + 4 * width * n <= v.get("byteOffset", 0) + v["byteLength"] <= len(binary), f"accessor {k} overruns"
+    flat = struct.unpack_from(f"<{width * n}{fmt}", binary, off)
+    return [flat[i * width:(i + 1) * width] for i in range(n)]
+
+
+def f32(v):  # the bounds compare as the float32 values they describe
+    return list(struct.unpack("<3f", struct.pack("<3f", *v)))
+
+
+def gltf(path):
+    doc, binary = gltf_load(path)
+    assert doc["asset"]["version"] == "2.0", "asset.version"
+    assert len(binary) == doc["buffers"][0]["byteLength"], "buffer byteLength"
+    prim = doc["meshes"][doc["nodes"][doc["scenes"][doc["scene"]]["nodes"][0]]["mesh"]]["primitives"][0]
+    assert prim.get("mode", 4) == 4, "not triangles"
+    at = prim["attributes"]
+    assert all(k in ("POSITION", "NORMAL", "COLOR_0") or k.startswith("_") for k in at), f"attributes {list(at)}"
+    pos = gltf_accessor(doc, binary, at["POSITION"], "f", 3)
+    acc = doc["accessors"][at["POSITION"]]
+    lo = [min(p[c] for p in pos) for c in range(3)]
+    hi = [max(p[c] for p in pos) for c in range(3)]
+    assert f32(acc["min"]) == lo and f32(acc["max"]) == hi, \
+        f"POSITION min/max {acc['min']} {acc['max']}, data {lo} {hi}"
+    col = gltf_accessor(doc, binary, at["COLOR_0"], "f", 4)
+    wet = [w[0] for w in gltf_accessor(doc, binary, at["_WETNESS"], "f", 1)]
+    if "NORMAL" in at:
+        for n in gltf_accessor(doc, binary, at["NORMAL"], "f", 3):
+            assert abs(sum(c * c for c in n) - 1) < 1e-5, f"normal {n} not unit"
+    for c, w in zip(col, wet):
+        assert c[0] == c[1] == c[2] == w and c[3] == 1.0 and 0.0 <= w <= 1.0, f"COLOR_0 {c}, _WETNESS {w}"
+    idx = gltf_accessor(doc, binary, prim["indices"], "I", 1)
+    assert len(col) == len(wet) == len(pos) and len(idx) % 3 == 0, "counts"
+    assert all(i[0] < len(pos) for i in idx), "index out of range"
+    print(len(pos), len(idx) // 3)
+    for p, w in zip(pos, wet):
+        print("%.9g %.9g %.9g %.9g" % (p[0], p[1], p[2], w))
+
+
 if __name__ == "__main__":
     cmd = sys.argv[1]
     if cmd == "make":
@@ -122,3 +200,8 @@ if __name__ == "__main__":
         read(sys.argv[2])
     elif cmd == "unique":
         unique(sys.argv[2])
+    elif cmd == "gltf":
+        try:
+            gltf(sys.argv[2])
+        except (AssertionError, KeyError, IndexError, ValueError, struct.error) as e:
+            sys.exit(f"{sys.argv[2]}: {type(e).__name__}: {e}")

@@ -54,10 +54,19 @@ soak_status soak_vertex_gather(const soak_mesh *m, const soak_image *map, float 
  * extension, ".ply" an ASCII PLY of the vertices (x y z, float wetness,
  * uchar red green blue = the sRGB encoding of the wetness as a grey, so
  * that a colour attribute read back as linear gives the wetness) and the
- * faces, ".csv" the lines "index,x,y,z,wetness". SOAK_ERR_ARG for another
- * extension; every write checked. */
+ * faces, ".csv" the lines "index,x,y,z,wetness", ".gltf" / ".glb" as
+ * soak_vertex_write_gltf. SOAK_ERR_ARG for another extension; every write
+ * checked. */
 soak_status soak_vertex_write(const char *path, const soak_mesh *m, const float *values, char *err, size_t errlen);
-/* 1 when path ends in .ply or .csv (any case). */
+/* glTF 2.0 (bake_vertex_gltf.c): one mesh, one triangle primitive of the
+ * vertices as loaded, POSITION (float, with min/max), NORMAL when every
+ * normal of m is usable (written unit), COLOR_0 = (w, w, w, 1) as linear
+ * float RGBA (the specification's COLOR_0 is linear: no sRGB encoding), the
+ * application-specific float attribute _WETNESS = w, uint32 indices; glb 0:
+ * JSON with the buffer as a base64 data URI, 1: binary glTF. Staged. */
+soak_status soak_vertex_write_gltf(const char *path, const soak_mesh *m, const float *values, int glb, char *err,
+                                   size_t errlen);
+/* 1 when path ends in .ply, .csv, .gltf or .glb (any case). */
 int soak_vertex_path_ok(const char *path);
 
 #endif
