@@ -3,8 +3,9 @@
 # Debian's Blender VERSION and Xvfb, so that the add-on is tested in the
 # Blenders artists use beside the host's Debian 12 Blender 3.4:
 #
-#   4.3  Debian 13 "trixie": blender xvfb xauth
-#   5.2  Debian sid:         the same + python3-numpy (the gallery scripts) and
+#   4.3  Debian 13 "trixie": blender xvfb xauth python3-numpy (the glTF importer
+#        needs it: cli_bake_per_vertex imports a baked .glb)
+#   5.2  Debian sid:         the same (numpy also for the gallery scripts) and
 #        python3-cattr python3-requests (5.2's bundled extensions add-on
 #        imports them at every start; Debian's blender does not depend on them)
 #
@@ -25,7 +26,8 @@ me="setup-blender-root $version"
 packages="blender xvfb xauth"
 apt_opts=""
 case "$version" in
-  4.3) suite=trixie ;;
+  4.3) suite=trixie
+       packages="$packages python3-numpy" ;;
   5.2) suite=sid
        packages="$packages python3-numpy python3-cattr python3-requests"
        apt_opts="-o Acquire::Check-Valid-Until=false" ;;
