@@ -141,8 +141,8 @@ static int header(native_text *t, ply_file *f)
                 : !strcmp(w[1], "binary_big_endian") ? PLY_BE : -1;
     if (f->format < 0) return decline(f, "an unknown format");
     for (;;) {
-        const char *line = t->p;
-        if (t->p < t->end && (!strncmp(line, "comment", 7) || !strncmp(line, "obj_info", 8))) {
+        size_t left = (size_t)(t->end - t->p);
+        if ((left >= 7 && !memcmp(t->p, "comment", 7)) || (left >= 8 && !memcmp(t->p, "obj_info", 8))) {
             const char *nl = memchr(t->p, '\n', (size_t)(t->end - t->p));
             if (!nl) return decline(f, "no end_header");
             t->p = nl + 1;
