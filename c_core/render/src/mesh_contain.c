@@ -5,7 +5,9 @@
  * end_header never returns). The import therefore runs in a forked child
  * that sends the finished arrays back through a pipe; the parent turns a
  * crash, a hang past the limit or a short message into a clear error naming
- * the file. Only the formats listed in soak/geometry.h are accepted.
+ * the file. Only the formats listed in soak/geometry.h are accepted. The
+ * child reads plain OBJ and PLY with soak's own reader (mesh_native.h) and
+ * everything that reader declines with Assimp.
  *
  * Before the child starts, the parent refuses what is not a regular file (a
  * FIFO would block its open forever, a folder reads as garbage) and checks
