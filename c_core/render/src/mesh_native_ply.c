@@ -207,11 +207,17 @@ static void store(native_mesh *m, size_t v, int sem, float x)
     else m->uv[2 * v + (size_t)(sem - S_U)] = x;
 }
 
-static int binary_vertices(native_text *t, const ply_file *f, native_mesh *m)
+/* Bytes of a vertex in a binary file (each value at least 2 bytes in an
+ * ASCII one: a digit and a blank). */
+static size_t vertex_bytes(const ply_file *f)
 {
     size_t rec = 0;
-    for (int i = 0; i < f->vertex.n; ++i) rec += (size_t)size_of(f->vertex.prop[i].type);
-    if (f->vertex.count > (size_t)(t->end - t->p) / rec) return 0;
+    for (int i = 0; i < f->vertex.n; ++i) rec += f->format == PLY_ASCII ? 2 : (size_t)size_of(f->vertex.prop[i].type);
+    return rec ? rec : 1;
+}
+
+static int binary_vertices(native_text *t, const ply_file *f, native_mesh *m)
+{
     const unsigned char *b = (const unsigned char *)t->p;
     for (size_t v = 0; v < f->vertex.count; ++v)
         for (int i = 0; i < f->vertex.n; ++i) {
@@ -293,7 +299,6 @@ static int ascii_line_end(native_text *t)
 
 static int ascii_vertices(native_text *t, const ply_file *f, native_mesh *m)
 {
-    if (f->vertex.count > (size_t)(t->end - t->p) / 2) return 0;
     for (size_t v = 0; v < f->vertex.count; ++v) {
         for (int i = 0; i < f->vertex.n; ++i) {
             const ply_prop *p = &f->vertex.prop[i];
@@ -334,6 +339,8 @@ int native_read_ply(native_text t, native_mesh *m, char *why, size_t whylen)
     for (int s = 0; s < S_COUNT; ++s) f.sem_at[s] = -1;
     f.why = why, f.whylen = whylen;
     if (!header(&t, &f)) return 0;
+    if (f.vertex.count > (size_t)(t.end - t.p) / vertex_bytes(&f))
+        return decline(&f, "more vertices than the file holds");
     if (!alloc_vertices(m, &f)) return decline(&f, "out of memory");
     int ascii = f.format == PLY_ASCII;
     if (!(ascii ? ascii_vertices(&t, &f, m) : binary_vertices(&t, &f, m)))
