@@ -24,14 +24,17 @@ typedef struct env_var {
 static const env_var vars[] = {
     {"SOAK_DATA_DIR", ENV_PATH, 0, 0, 0, "the data folder (above)", NULL},
     {"SOAK_MATERIALS", ENV_PATH, 0, 0, 0, "the presets file (default: materials.json of the data folder)", NULL},
-    {"SOAK_PLUGIN_DIR", ENV_PATH, 0, 0, 0, "the folder of the I/O modules (default: beside soak, or PREFIX/lib/soak)", NULL},
+    {"SOAK_PLUGIN_DIR", ENV_PATH, 0, 0, 0, "the folder of the I/O modules (default: beside soak, or PREFIX/lib/soak)",
+     NULL},
     {"SOAK_HDRI_DIR", ENV_PATH, 0, 0, 0,
      "the folder of a scene's named environments (\"hdri\": \"NAME\" reads NAME.exr;\ndefault: Blender's "
-     "/usr/share/blender/datafiles/studiolights/world)", NULL},
+     "/usr/share/blender/datafiles/studiolights/world)",
+     NULL},
     {"SOAK_PROGRESS", ENV_FLAG, 0, 1, 0, "1: progress bars even when stderr is not a terminal", NULL},
     {"SOAK_IMAGE_IN_PROCESS", ENV_FLAG, 0, 1, 0,
      "1: decode images inside soak, without the contained reader process\n"
-     "(faster; a decoder crash or hang then takes soak with it)", NULL},
+     "(faster; a decoder crash or hang then takes soak with it)",
+     NULL},
     {"SOAK_MAX_SCENE_MB", ENV_NUMBER, 1, 1e7, 0, "cap on a scene file, MiB (default 16)", NULL},
     {"SOAK_MAX_PRESETS_MB", ENV_NUMBER, 1, 1e7, 0, "cap on a presets file, MiB (default 16)", NULL},
     {"SOAK_MAX_IMAGE_MB", ENV_NUMBER, 1, 1e7, 0, "cap on an image file, MiB (default 2048)", NULL},

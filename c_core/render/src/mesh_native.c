@@ -19,8 +19,8 @@
 
 /* The table fast_atof.h multiplies the decimals by: 10^-k as the double
  * nearest each decimal literal. */
-static const double decimal_scale[16] = {0.0,   0.1,   0.01,  1e-3,  1e-4,  1e-5,  1e-6,  1e-7,
-                                         1e-8,  1e-9,  1e-10, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15};
+static const double decimal_scale[16] = {0.0,  0.1,  0.01,  1e-3,  1e-4,  1e-5,  1e-6,  1e-7,
+                                         1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15};
 #define MAX_DECIMALS 15
 
 void native_mesh_free(native_mesh *m)
@@ -44,10 +44,7 @@ int native_grow_floats(float **a, size_t *cap, size_t used, size_t k)
     return 1;
 }
 
-static int is_digit(char c)
-{
-    return c >= '0' && c <= '9';
-}
+static int is_digit(char c) { return c >= '0' && c <= '9'; }
 
 void native_skip_blanks(native_text *t)
 {

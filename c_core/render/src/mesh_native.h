@@ -29,13 +29,13 @@ int soak_mesh_native_enabled(void);
 /* A file as read, before vertices are made: float like Assimp's arrays.
  * Corners are (position, uv, normal) index triples, UINT32_MAX for none. */
 typedef struct native_mesh {
-    float *pos, *uv, *nrm;  /* 3, 2, 3 floats per entry */
+    float *pos, *uv, *nrm; /* 3, 2, 3 floats per entry */
     size_t n_pos, n_uv, n_nrm, cap_pos, cap_uv, cap_nrm;
-    uint32_t *corner;       /* 9 per triangle */
-    unsigned char *kind;    /* per triangle: 0 a triangle face, 1 and 2 the halves of a quad */
+    uint32_t *corner;    /* 9 per triangle */
+    unsigned char *kind; /* per triangle: 0 a triangle face, 1 and 2 the halves of a quad */
     size_t n_tri, cap_tri;
-    int any_quad;           /* Assimp triangulates (and re-encodes, see native_encode_ngons) only then */
-    int indexed;            /* PLY: corners share vertices (Assimp keeps PLY's vertex list) */
+    int any_quad; /* Assimp triangulates (and re-encodes, see native_encode_ngons) only then */
+    int indexed;  /* PLY: corners share vertices (Assimp keeps PLY's vertex list) */
 } native_mesh;
 
 /* The bytes of a file, read-only. */

@@ -20,8 +20,8 @@ typedef struct id_table {
 
 static uint64_t mix3(uint32_t a, uint32_t b, uint32_t c)
 {
-    uint64_t h = (uint64_t)a * 0x9E3779B97F4A7C15ull ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Full ^
-                 (uint64_t)c * 0x165667B19E3779F9ull;
+    uint64_t h =
+        (uint64_t)a * 0x9E3779B97F4A7C15ull ^ (uint64_t)b * 0xC2B2AE3D27D4EB4Full ^ (uint64_t)c * 0x165667B19E3779F9ull;
     return h ^ (h >> 29);
 }
 
@@ -97,7 +97,8 @@ static void face_normals(const native_mesh *m, double *val, unsigned char *used)
         const float *a = m->pos + 3 * (size_t)c[0], *b = m->pos + 3 * (size_t)c[3], *d = m->pos + 3 * (size_t)c[6];
         double e1[3], e2[3], n[3];
         for (int k = 0; k < 3; ++k) e1[k] = (double)b[k] - a[k], e2[k] = (double)d[k] - a[k];
-        n[0] = e1[1] * e2[2] - e1[2] * e2[1], n[1] = e1[2] * e2[0] - e1[0] * e2[2], n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        n[0] = e1[1] * e2[2] - e1[2] * e2[1], n[1] = e1[2] * e2[0] - e1[0] * e2[2],
+        n[2] = e1[0] * e2[1] - e1[1] * e2[0];
         double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         for (int k = 0; k < 3; ++k) n[k] = l > 0 ? n[k] / l : 0;
         for (int j = 0; j < 3; ++j) {
@@ -260,15 +261,20 @@ static void identity_set(const native_mesh *m, vertex_set *s)
     s->n = m->n_pos;
     s->index = NULL;
     s->vkey = malloc(3 * (m->n_pos + 1) * sizeof *s->vkey);
-    for (size_t v = 0; s->vkey && v < m->n_pos; ++v) s->vkey[3 * v] = s->vkey[3 * v + 1] = s->vkey[3 * v + 2] = (uint32_t)v;
+    for (size_t v = 0; s->vkey && v < m->n_pos; ++v)
+        s->vkey[3 * v] = s->vkey[3 * v + 1] = s->vkey[3 * v + 2] = (uint32_t)v;
 }
 
 int native_finish(native_mesh *m, const soak_mesh_request *rq, soak_mesh *mesh, char *why, size_t whylen)
 {
     int has_uv = corners_have(m, 1, m->n_uv), has_nrm = corners_have(m, 2, m->n_nrm);
-    const char *no = m->n_tri == 0 ? "no triangles" : corners_have(m, 0, m->n_pos) != 1 ? "a corner without a position"
-                     : has_uv < 0 ? "some faces with UVs and some without" : has_nrm < 0 ? "some faces with normals and some without"
-                     : rq->require_uvs && !has_uv ? "no UVs" : m->n_pos > 0xFFFFFFFEu ? "too many vertices" : NULL;
+    const char *no = m->n_tri == 0                       ? "no triangles"
+                     : corners_have(m, 0, m->n_pos) != 1 ? "a corner without a position"
+                     : has_uv < 0                        ? "some faces with UVs and some without"
+                     : has_nrm < 0                       ? "some faces with normals and some without"
+                     : rq->require_uvs && !has_uv        ? "no UVs"
+                     : m->n_pos > 0xFFFFFFFEu            ? "too many vertices"
+                                                         : NULL;
     for (size_t i = 0; !no && i < 3 * m->n_pos; ++i)
         if (!isfinite(m->pos[i])) no = "a non-finite coordinate";
     for (size_t i = 0; !no && has_uv && i < 2 * m->n_uv; ++i)

@@ -56,8 +56,10 @@ static int vertex_line(obj_state *s, int kind)
     float v[6];
     native_mesh *m = s->m;
     int n = numbers(&s->t, v, 6);
-    if (kind == 'p' && (n == 3 || n == 6)) return add_floats(&m->pos, &m->cap_pos, &m->n_pos, 3, v) || decline(s, "out of memory");
-    if (kind == 't' && (n == 2 || n == 3)) return add_floats(&m->uv, &m->cap_uv, &m->n_uv, 2, v) || decline(s, "out of memory");
+    if (kind == 'p' && (n == 3 || n == 6))
+        return add_floats(&m->pos, &m->cap_pos, &m->n_pos, 3, v) || decline(s, "out of memory");
+    if (kind == 't' && (n == 2 || n == 3))
+        return add_floats(&m->uv, &m->cap_uv, &m->n_uv, 2, v) || decline(s, "out of memory");
     if (kind == 'n' && n == 3) return add_floats(&m->nrm, &m->cap_nrm, &m->n_nrm, 3, v) || decline(s, "out of memory");
     return decline(s, "a vertex line of another shape (w, nan, a comma, ...)");
 }

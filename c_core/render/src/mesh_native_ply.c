@@ -48,24 +48,20 @@ static int type_of(const char *w)
     static const struct {
         const char *name;
         int type;
-    } types[] = {{"char", -1},    {"int8", -1},   {"uchar", 1},  {"uint8", 1},  {"short", -2},
-                 {"int16", -2},   {"ushort", 2},  {"uint16", 2}, {"int", -4},   {"int32", -4},
-                 {"uint", 4},     {"uint32", 4},  {"float", 5},  {"float32", 5}, {"double", 9},
-                 {"float64", 9},  {"double64", 9}};
+    } types[] = {{"char", -1},  {"int8", -1},   {"uchar", 1},  {"uint8", 1},   {"short", -2},  {"int16", -2},
+                 {"ushort", 2}, {"uint16", 2},  {"int", -4},   {"int32", -4},  {"uint", 4},    {"uint32", 4},
+                 {"float", 5},  {"float32", 5}, {"double", 9}, {"float64", 9}, {"double64", 9}};
     for (size_t i = 0; i < sizeof types / sizeof *types; ++i)
         if (!strcmp(w, types[i].name)) return types[i].type;
     return 0;
 }
 
-static int size_of(int type)
-{
-    return type == 5 ? 4 : type == 9 ? 8 : abs(type);
-}
+static int size_of(int type) { return type == 5 ? 4 : type == 9 ? 8 : abs(type); }
 
 static int semantic_of(const char *w)
 {
-    static const char *const names[][4] = {{"x"}, {"y"}, {"z"}, {"nx"}, {"ny"}, {"nz"},
-                                           {"u", "s", "tx", "texture_u"}, {"v", "t", "ty", "texture_v"}};
+    static const char *const names[][4] = {
+        {"x"}, {"y"}, {"z"}, {"nx"}, {"ny"}, {"nz"}, {"u", "s", "tx", "texture_u"}, {"v", "t", "ty", "texture_v"}};
     for (int s = 0; s < S_COUNT; ++s)
         for (int k = 0; k < 4 && names[s][k]; ++k)
             if (!strcmp(w, names[s][k])) return s;
@@ -105,12 +101,14 @@ static int add_property(ply_file *f, ply_element *e, char w[6][32], int n)
     const char *name = w[n - 1];
     if (e == &f->face) {
         int is_index = !strcmp(name, "vertex_indices") || !strcmp(name, "vertex_index");
-        if (p->is_list != is_index || (is_index && p->type > 4)) return decline(f, "a face property other than scalars and vertex_indices");
+        if (p->is_list != is_index || (is_index && p->type > 4))
+            return decline(f, "a face property other than scalars and vertex_indices");
         p->sem = is_index ? 0 : -1;
     } else {
         p->sem = semantic_of(name);
         if (p->is_list) return decline(f, "a list in the vertices");
-        if (p->sem >= 0 && (p->type < 5 || f->sem_at[p->sem] >= 0)) return decline(f, "an integer or repeated coordinate");
+        if (p->sem >= 0 && (p->type < 5 || f->sem_at[p->sem] >= 0))
+            return decline(f, "an integer or repeated coordinate");
         if (p->sem >= 0) f->sem_at[p->sem] = e->n;
     }
     e->n++;
@@ -121,7 +119,8 @@ static int element_line(ply_file *f, char w[6][32], int n, ply_element **cur)
 {
     char *end = NULL;
     unsigned long long count = n == 3 ? strtoull(w[2], &end, 10) : 0;
-    if (n != 3 || !end || *end || w[2][0] == '-' || count > 0xFFFFFFFEull) return decline(f, "a malformed element line");
+    if (n != 3 || !end || *end || w[2][0] == '-' || count > 0xFFFFFFFEull)
+        return decline(f, "a malformed element line");
     if (!strcmp(w[1], "vertex") && !*cur) *cur = &f->vertex;
     else if (!strcmp(w[1], "face") && *cur == &f->vertex) *cur = &f->face, f->have_face = 1;
     else return decline(f, "elements other than vertex then face");
@@ -137,8 +136,10 @@ static int header(native_text *t, ply_file *f)
     if (!header_words(t, w, &n) || n != 1 || strcmp(w[0], "ply")) return decline(f, "no ply line");
     if (!header_words(t, w, &n) || n != 3 || strcmp(w[0], "format") || strcmp(w[2], "1.0"))
         return decline(f, "no format line");
-    f->format = !strcmp(w[1], "ascii") ? PLY_ASCII : !strcmp(w[1], "binary_little_endian") ? PLY_LE
-                : !strcmp(w[1], "binary_big_endian") ? PLY_BE : -1;
+    f->format = !strcmp(w[1], "ascii")                  ? PLY_ASCII
+                : !strcmp(w[1], "binary_little_endian") ? PLY_LE
+                : !strcmp(w[1], "binary_big_endian")    ? PLY_BE
+                                                        : -1;
     if (f->format < 0) return decline(f, "an unknown format");
     for (;;) {
         size_t left = (size_t)(t->end - t->p);
@@ -151,7 +152,8 @@ static int header(native_text *t, ply_file *f)
         if (!header_words(t, w, &n) || n == 0) return decline(f, "a malformed header");
         if (!strcmp(w[0], "end_header") && n == 1) break;
         if (!strcmp(w[0], "element") && !element_line(f, w, n, &cur)) return 0;
-        if (!strcmp(w[0], "property") && (!cur || !add_property(f, cur, w, n))) return cur ? 0 : decline(f, "a property before any element");
+        if (!strcmp(w[0], "property") && (!cur || !add_property(f, cur, w, n)))
+            return cur ? 0 : decline(f, "a property before any element");
         if (strcmp(w[0], "element") && strcmp(w[0], "property")) return decline(f, "an unknown header line");
     }
     if (!f->have_face || f->face.n == 0 || f->sem_at[S_X] < 0 || f->sem_at[S_Y] < 0 || f->sem_at[S_Z] < 0)
@@ -160,7 +162,8 @@ static int header(native_text *t, ply_file *f)
     int nuv = (f->sem_at[S_U] >= 0) + (f->sem_at[S_V] >= 0);
     int lists = 0;
     for (int i = 0; i < f->face.n; ++i) lists += f->face.prop[i].is_list;
-    if ((nn != 0 && nn != 3) || nuv == 1 || lists != 1) return decline(f, "partial normals or UVs, or no vertex_indices");
+    if ((nn != 0 && nn != 3) || nuv == 1 || lists != 1)
+        return decline(f, "partial normals or UVs, or no vertex_indices");
     return 1;
 }
 

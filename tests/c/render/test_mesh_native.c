@@ -55,7 +55,8 @@ static diff compare(const soak_mesh *a, const soak_mesh *b)
                 d.pos = fmax(d.pos, fabs(a->positions[3 * ia + c] - b->positions[3 * ib + c]));
                 d.nrm = fmax(d.nrm, fabs(a->normals[3 * ia + c] - b->normals[3 * ib + c]));
             }
-            for (int c = 0; c < 2 && a->uvs && b->uvs; ++c) d.uv = fmax(d.uv, fabs(a->uvs[2 * ia + c] - b->uvs[2 * ib + c]));
+            for (int c = 0; c < 2 && a->uvs && b->uvs; ++c)
+                d.uv = fmax(d.uv, fabs(a->uvs[2 * ia + c] - b->uvs[2 * ib + c]));
             if (d.order < 0 && d.pos > 0) d.order = (long)t;
         }
     return d;
@@ -96,10 +97,7 @@ static int equal_to_assimp(const char *path, int req, int strict_normals)
 
 /* --- meshes written here --- */
 
-static double height(int i, int j)
-{
-    return 0.3 * sin(0.37 * i) * cos(0.23 * j) + 0.001 * ((i * 7 + j * 13) % 11);
-}
+static double height(int i, int j) { return 0.3 * sin(0.37 * i) * cos(0.23 * j) + 0.001 * ((i * 7 + j * 13) % 11); }
 
 /* An N x N grid: normals (vn) or not, quads or triangles, UV indices
  * numbered backwards (v and vt apart), coordinates in a few styles. */
@@ -114,7 +112,8 @@ static void write_obj_grid(const char *name, int n, int normals, int quads)
             if ((i + j) % 3 == 0) fprintf(f, "v %.6f %.17g %.4e\n", x, y, z);
             else fprintf(f, "v  %.9f\t%.6f %.12f\r\n", x, y, z);
         }
-    for (int k = nv - 1; k >= 0; --k) fprintf(f, "vt %.7f %.5f\n", (k % (n + 1)) / (double)n, (k / (n + 1)) / (double)n);
+    for (int k = nv - 1; k >= 0; --k)
+        fprintf(f, "vt %.7f %.5f\n", (k % (n + 1)) / (double)n, (k / (n + 1)) / (double)n);
     if (normals)
         for (int k = 0; k < nv; ++k) fprintf(f, "vn %.4f %.4f %.4f\n", 0.1 * sin(k), 1.0, 0.1 * cos(k));
     fprintf(f, "# faces\ns off\n");
@@ -122,7 +121,8 @@ static void write_obj_grid(const char *name, int n, int normals, int quads)
         for (int i = 0; i < n; ++i) {
             int a = j * (n + 1) + i + 1, b = a + 1, c = a + n + 1, d = c + 1;
             int ta = nv + 1 - a, tb = nv + 1 - b, tc = nv + 1 - c, td = nv + 1 - d;
-            if (quads && normals) fprintf(f, "f %d/%d/%d %d/%d/%d %d/%d/%d %d/%d/%d\n", a, ta, a, b, tb, b, d, td, d, c, tc, c);
+            if (quads && normals)
+                fprintf(f, "f %d/%d/%d %d/%d/%d %d/%d/%d %d/%d/%d\n", a, ta, a, b, tb, b, d, td, d, c, tc, c);
             else if (quads) fprintf(f, "f %d/%d %d/%d %d/%d %d/%d\n", a, ta, b, tb, d, td, c, tc);
             else fprintf(f, "f %d/%d %d/%d %d/%d\nf %d/%d %d/%d %d/%d\n", a, ta, b, tb, d, td, a, ta, d, td, c, tc);
         }
@@ -159,16 +159,20 @@ static void write_ply_grid(const char *name, int n, int big, int with_uv, long c
     if (!f) return;
     int nv = (n + 1) * (n + 1), nf = n * n + n * n / 2;
     const char *ct = big ? "double" : "float";
-    fprintf(f, "ply\nformat binary_%s_endian 1.0\ncomment written by test_mesh_native\nelement vertex %d\n"
-               "property %s x\nproperty %s y\nproperty %s z\nproperty float nx\nproperty float ny\nproperty float nz\n",
+    fprintf(f,
+            "ply\nformat binary_%s_endian 1.0\ncomment written by test_mesh_native\nelement vertex %d\n"
+            "property %s x\nproperty %s y\nproperty %s z\nproperty float nx\nproperty float ny\nproperty float nz\n",
             big ? "big" : "little", nv, ct, ct, ct);
     if (with_uv) fprintf(f, "property float texture_u\nproperty float texture_v\n");
-    fprintf(f, "property uchar red\nelement face %d\nproperty list uchar %s vertex_indices\nproperty uchar flags\n"
-               "end_header\n", nf, big ? "uint" : "int");
+    fprintf(f,
+            "property uchar red\nelement face %d\nproperty list uchar %s vertex_indices\nproperty uchar flags\n"
+            "end_header\n",
+            nf, big ? "uint" : "int");
     for (int j = 0; j <= n; ++j)
         for (int i = 0; i <= n; ++i) {
             double p[3] = {-1 + 2.0 * i / n, height(i, j), 1 - 2.0 * j / n};
-            float fp[3] = {(float)p[0], (float)p[1], (float)p[2]}, nr[3] = {0.1f * i, 1, 0}, uv[2] = {(float)i / n, (float)j / n};
+            float fp[3] = {(float)p[0], (float)p[1], (float)p[2]}, nr[3] = {0.1f * i, 1, 0},
+                  uv[2] = {(float)i / n, (float)j / n};
             for (int k = 0; k < 3; ++k) big ? put(f, &p[k], 8, 1) : put(f, &fp[k], 4, 0);
             for (int k = 0; k < 3; ++k) put(f, &nr[k], 4, big);
             for (int k = 0; with_uv && k < 2; ++k) put(f, &uv[k], 4, big);
@@ -230,7 +234,8 @@ static void test_written(void)
     write_ply_grid("grid_le.ply", 24, 0, 1, 0);
     write_ply_grid("grid_be.ply", 24, 1, 0, 0);
     write_ply_ascii("ascii.ply");
-    const char *uv[] = {"grid_vn.obj", "grid_quads.obj", "grid_tris.obj", "grid_quads_vn.obj", "grid_le.ply", "ascii.ply"};
+    const char *uv[] = {"grid_vn.obj",       "grid_quads.obj", "grid_tris.obj",
+                        "grid_quads_vn.obj", "grid_le.ply",    "ascii.ply"};
     const char *no_uv[] = {"darts.obj", "grid_be.ply"};
     char what[300];
     for (size_t i = 0; i < sizeof uv / sizeof *uv; ++i) {
@@ -266,17 +271,21 @@ static void test_hostile(void)
 {
     write_ply_grid("cut.ply", 8, 0, 1, 37);
     write_text("index_range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", 32);
-    write_text("index_range.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    write_text("index_range.ply",
+               "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n"
-               "0 1 0\n3 0 1 7\n", 162);
-    static const char huge_count[] = "ply\nformat binary_little_endian 1.0\nelement vertex 2147483648\nproperty float x\n"
-                                     "property float y\nproperty float z\nelement face 1\nproperty list uchar int "
-                                     "vertex_indices\nend_header\n0123456789abcdef";
+               "0 1 0\n3 0 1 7\n",
+               162);
+    static const char huge_count[] =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 2147483648\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 1\nproperty list uchar int "
+        "vertex_indices\nend_header\n0123456789abcdef";
     write_text("huge_count.ply", huge_count, sizeof huge_count - 1);
     write_text("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", 34);
     float nanv[9] = {0, 0, 0, 1, 0, 0, 0, NAN, 0};
     char nan_ply[400];
-    int h = snprintf(nan_ply, sizeof nan_ply, "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+    int h = snprintf(nan_ply, sizeof nan_ply,
+                     "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
                      "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                      "end_header\n");
     memcpy(nan_ply + h, nanv, sizeof nanv);
@@ -293,8 +302,8 @@ static void test_hostile(void)
         write_text("huge_line.obj", line, (size_t)k + big + 13);
         free(line);
     }
-    const char *names[] = {"cut.ply", "index_range.obj", "index_range.ply", "huge_count.ply", "nan.obj", "nan.ply",
-                           "huge_line.obj"};
+    const char *names[] = {"cut.ply", "index_range.obj", "index_range.ply", "huge_count.ply",
+                           "nan.obj", "nan.ply",         "huge_line.obj"};
     for (size_t i = 0; i < sizeof names / sizeof *names; ++i) same_end(names[i], 0);
 }
 
