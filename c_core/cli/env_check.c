@@ -18,46 +18,44 @@ typedef struct env_var {
     double lo, hi; /* ENV_NUMBER: lo < value <= hi when lo_open, else lo <= value <= hi */
     int lo_open;
     const char *help;
-    const char *words; /* ENV_WORD: the values it takes, "a|b" */
 } env_var;
 
 static const env_var vars[] = {
-    {"SOAK_DATA_DIR", ENV_PATH, 0, 0, 0, "the data folder (above)", NULL},
-    {"SOAK_MATERIALS", ENV_PATH, 0, 0, 0, "the presets file (default: materials.json of the data folder)", NULL},
-    {"SOAK_PLUGIN_DIR", ENV_PATH, 0, 0, 0, "the folder of the I/O modules (default: beside soak, or PREFIX/lib/soak)",
-     NULL},
+    {"SOAK_DATA_DIR", ENV_PATH, 0, 0, 0, "the data folder (above)"},
+    {"SOAK_MATERIALS", ENV_PATH, 0, 0, 0, "the presets file (default: materials.json of the data folder)"},
+    {"SOAK_PLUGIN_DIR", ENV_PATH, 0, 0, 0, "the folder of the I/O modules (default: beside soak, or PREFIX/lib/soak)"},
     {"SOAK_HDRI_DIR", ENV_PATH, 0, 0, 0,
      "the folder of a scene's named environments (\"hdri\": \"NAME\" reads NAME.exr;\ndefault: Blender's "
-     "/usr/share/blender/datafiles/studiolights/world)",
-     NULL},
-    {"SOAK_PROGRESS", ENV_FLAG, 0, 1, 0, "1: progress bars even when stderr is not a terminal", NULL},
+     "/usr/share/blender/datafiles/studiolights/world)"},
+    {"SOAK_PROGRESS", ENV_FLAG, 0, 1, 0, "1: progress bars even when stderr is not a terminal"},
     {"SOAK_IMAGE_IN_PROCESS", ENV_FLAG, 0, 1, 0,
      "1: decode images inside soak, without the contained reader process\n"
-     "(faster; a decoder crash or hang then takes soak with it)",
-     NULL},
-    {"SOAK_MAX_SCENE_MB", ENV_NUMBER, 1, 1e7, 0, "cap on a scene file, MiB (default 16)", NULL},
-    {"SOAK_MAX_PRESETS_MB", ENV_NUMBER, 1, 1e7, 0, "cap on a presets file, MiB (default 16)", NULL},
-    {"SOAK_MAX_IMAGE_MB", ENV_NUMBER, 1, 1e7, 0, "cap on an image file, MiB (default 2048)", NULL},
-    {"SOAK_MAX_MESH_MB", ENV_NUMBER, 1, 1e7, 0, "cap on a mesh and its files, MiB (default 2048)", NULL},
-    {"SOAK_MAX_VOLUME_MB", ENV_NUMBER, 1, 1e7, 0, "cap on a volume file, MiB (default 8192)", NULL},
-    {"SOAK_MAX_MEMORY_MB", ENV_NUMBER, 64, 1e7, 0, "working memory of a bake, MiB (default: see above)", NULL},
-    {"SOAK_MESH_MEMORY_MB", ENV_NUMBER, 64, 1e7, 0, "memory of the mesh reader process, MiB", NULL},
+     "(faster; a decoder crash or hang then takes soak with it)"},
+    {"SOAK_MAX_SCENE_MB", ENV_NUMBER, 1, 1e7, 0, "cap on a scene file, MiB (default 16)"},
+    {"SOAK_MAX_PRESETS_MB", ENV_NUMBER, 1, 1e7, 0, "cap on a presets file, MiB (default 16)"},
+    {"SOAK_MAX_IMAGE_MB", ENV_NUMBER, 1, 1e7, 0, "cap on an image file, MiB (default 2048)"},
+    {"SOAK_MAX_MESH_MB", ENV_NUMBER, 1, 1e7, 0, "cap on a mesh and its files, MiB (default 2048)"},
+    {"SOAK_MAX_VOLUME_MB", ENV_NUMBER, 1, 1e7, 0, "cap on a volume file, MiB (default 8192)"},
+    {"SOAK_MAX_MEMORY_MB", ENV_NUMBER, 64, 1e7, 0, "working memory of a bake, MiB (default: see above)"},
+    {"SOAK_MESH_MEMORY_MB", ENV_NUMBER, 64, 1e7, 0, "memory of the mesh reader process, MiB"},
     {"SOAK_MAX_BAKE_S", ENV_NUMBER, 0, 1e9, 1,
-     "estimated work of a drops, ripples or rain bake, s on one\ncore (default 10 + 2e-6 per output texel)", NULL},
-    {"SOAK_MESH_TIMEOUT", ENV_NUMBER, 0, 1e6, 1, "time of the mesh reader process, s", NULL},
+     "estimated work of a drops, ripples or rain bake, s on one\ncore (default 10 + 2e-6 per output texel)"},
+    {"SOAK_MESH_TIMEOUT", ENV_NUMBER, 0, 1e6, 1, "time of the mesh reader process, s"},
     {"SOAK_MESH_READER", ENV_WORD, 0, 0, 0,
      "auto (default): plain OBJ and PLY read by soak's own reader, the rest by\n"
-     "Assimp; assimp: every mesh by Assimp (both in the contained reader)",
-     "auto|assimp"},
-    {"SOAK_IMAGE_TIMEOUT", ENV_NUMBER, 0, 1e6, 1, "time of the image reader process, s", NULL},
+     "Assimp; assimp: every mesh by Assimp (both in the contained reader)"},
+    {"SOAK_IMAGE_TIMEOUT", ENV_NUMBER, 0, 1e6, 1, "time of the image reader process, s"},
 };
+
+/* The values an ENV_WORD variable takes, "a|b". */
+static const char *words_of(const env_var *v) { return !strcmp(v->name, "SOAK_MESH_READER") ? "auto|assimp" : ""; }
 
 static int valid(const env_var *v, const char *value)
 {
     if (v->kind == ENV_PATH) return 1;
     if (v->kind == ENV_WORD) {
         size_t n = strlen(value);
-        for (const char *w = v->words; w; w = strchr(w, '|') ? strchr(w, '|') + 1 : NULL)
+        for (const char *w = words_of(v); w && !strchr(value, '|'); w = strchr(w, '|') ? strchr(w, '|') + 1 : NULL)
             if (!strncmp(w, value, n) && (w[n] == '|' || w[n] == '\0')) return 1;
         return 0;
     }
@@ -81,7 +79,8 @@ int cli_check_environment(void)
         if (v->kind == ENV_FLAG)
             fprintf(stderr, "soak: %s='%s': expected 0 or 1 (unset it for the default)\n", v->name, shown);
         else if (v->kind == ENV_WORD)
-            fprintf(stderr, "soak: %s='%s': expected one of %s (unset it for the default)\n", v->name, shown, v->words);
+            fprintf(stderr, "soak: %s='%s': expected one of %s (unset it for the default)\n", v->name, shown,
+                    words_of(v));
         else
             fprintf(stderr, "soak: %s='%s': expected a plain number in %s%g, %g] (no unit; unset it for the default)\n",
                     v->name, shown, v->lo_open ? "(" : "[", v->lo, v->hi);
@@ -97,7 +96,7 @@ void cli_environment_help(FILE *out)
         const env_var *v = &vars[i];
         char range[64] = "";
         if (v->kind == ENV_NUMBER) snprintf(range, sizeof range, " %s%g, %g]", v->lo_open ? "(" : "[", v->lo, v->hi);
-        if (v->kind == ENV_WORD) snprintf(range, sizeof range, " %s", v->words);
+        if (v->kind == ENV_WORD) snprintf(range, sizeof range, " %s", words_of(v));
         fprintf(out, "  %s%s\n", v->name, range);
         for (const char *line = v->help; *line;) {
             const char *nl = strchr(line, '\n');
