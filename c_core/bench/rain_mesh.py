@@ -2,9 +2,12 @@
 """Writes the benchmark mesh for bench_rain_vs_cycles.sh: a 2 m x 2 m plane
 subdivided into N x N quads (2 N^2 triangles; N = 224 gives 100,352), displaced
 by a sum of Gaussian bumps and dimples, Y up (OBJ convention), with UVs over
-[0,1]^2 and per-vertex normals. Usage: rain_mesh.py OUT.obj [N]"""
+[0,1]^2 and per-vertex normals. Usage: rain_mesh.py OUT.obj [N]; OUT.ply
+writes the same surface as binary little-endian PLY (Turk 1994: float x y
+z nx ny nz u v, uchar/int vertex_indices)."""
 import math
 import random
+import struct
 import sys
 
 
@@ -24,6 +27,9 @@ def main():
         l = math.sqrt(dx * dx + 1 + dz * dz)
         return -dx / l, 1 / l, -dz / l
 
+    if out.endswith(".ply"):
+        write_ply(out, n, height, normal)
+        return
     with open(out, "w") as f:
         f.write("# soak rain benchmark mesh: %d triangles\n" % (2 * n * n))
         for j in range(n + 1):
@@ -44,6 +50,24 @@ def main():
                 # counter-clockwise seen from +y (front faces up)
                 f.write("f %d/%d/%d %d/%d/%d %d/%d/%d\n" % (a, a, a, b, b, b, d, d, d))
                 f.write("f %d/%d/%d %d/%d/%d %d/%d/%d\n" % (a, a, a, d, d, d, c, c, c))
+
+
+def write_ply(out, n, height, normal):
+    nv, nf = (n + 1) ** 2, 2 * n * n
+    with open(out, "wb") as f:
+        f.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
+                 "property float z\nproperty float nx\nproperty float ny\nproperty float nz\nproperty float u\n"
+                 "property float v\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n"
+                 % (nv, nf)).encode())
+        for j in range(n + 1):
+            for i in range(n + 1):
+                x, z = -1 + 2 * i / n, 1 - 2 * j / n
+                f.write(struct.pack("<8f", x, height(x, z), z, *normal(x, z), i / n, j / n))
+        for j in range(n):
+            for i in range(n):
+                a = j * (n + 1) + i
+                b, c, d = a + 1, a + n + 1, a + n + 2
+                f.write(struct.pack("<B3iB3i", 3, a, b, d, 3, a, d, c))
 
 
 if __name__ == "__main__":

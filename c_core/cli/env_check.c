@@ -10,7 +10,7 @@
 
 #include "cli.h"
 
-typedef enum { ENV_NUMBER, ENV_FLAG, ENV_PATH } env_kind;
+typedef enum { ENV_NUMBER, ENV_FLAG, ENV_PATH, ENV_WORD } env_kind;
 
 typedef struct env_var {
     const char *name;
@@ -41,12 +41,24 @@ static const env_var vars[] = {
     {"SOAK_MAX_BAKE_S", ENV_NUMBER, 0, 1e9, 1,
      "estimated work of a drops, ripples or rain bake, s on one\ncore (default 10 + 2e-6 per output texel)"},
     {"SOAK_MESH_TIMEOUT", ENV_NUMBER, 0, 1e6, 1, "time of the mesh reader process, s"},
+    {"SOAK_MESH_READER", ENV_WORD, 0, 0, 0,
+     "auto (default): plain OBJ and PLY read by soak's own reader, the rest by\n"
+     "Assimp; assimp: every mesh by Assimp (both in the contained reader)"},
     {"SOAK_IMAGE_TIMEOUT", ENV_NUMBER, 0, 1e6, 1, "time of the image reader process, s"},
 };
+
+/* The values an ENV_WORD variable takes, "a|b". */
+static const char *words_of(const env_var *v) { return !strcmp(v->name, "SOAK_MESH_READER") ? "auto|assimp" : ""; }
 
 static int valid(const env_var *v, const char *value)
 {
     if (v->kind == ENV_PATH) return 1;
+    if (v->kind == ENV_WORD) {
+        size_t n = strlen(value);
+        for (const char *w = words_of(v); w && !strchr(value, '|'); w = strchr(w, '|') ? strchr(w, '|') + 1 : NULL)
+            if (!strncmp(w, value, n) && (w[n] == '|' || w[n] == '\0')) return 1;
+        return 0;
+    }
     if (v->kind == ENV_FLAG) return !strcmp(value, "0") || !strcmp(value, "1");
     char *end = NULL;
     double x = strtod(value, &end);
@@ -66,6 +78,9 @@ int cli_check_environment(void)
             if ((unsigned char)*c < 0x20 || *c == 0x7f) *c = '?';
         if (v->kind == ENV_FLAG)
             fprintf(stderr, "soak: %s='%s': expected 0 or 1 (unset it for the default)\n", v->name, shown);
+        else if (v->kind == ENV_WORD)
+            fprintf(stderr, "soak: %s='%s': expected one of %s (unset it for the default)\n", v->name, shown,
+                    words_of(v));
         else
             fprintf(stderr, "soak: %s='%s': expected a plain number in %s%g, %g] (no unit; unset it for the default)\n",
                     v->name, shown, v->lo_open ? "(" : "[", v->lo, v->hi);
@@ -81,6 +96,7 @@ void cli_environment_help(FILE *out)
         const env_var *v = &vars[i];
         char range[64] = "";
         if (v->kind == ENV_NUMBER) snprintf(range, sizeof range, " %s%g, %g]", v->lo_open ? "(" : "[", v->lo, v->hi);
+        if (v->kind == ENV_WORD) snprintf(range, sizeof range, " %s", words_of(v));
         fprintf(out, "  %s%s\n", v->name, range);
         for (const char *line = v->help; *line;) {
             const char *nl = strchr(line, '\n');

@@ -41,15 +41,16 @@ refused "--rain-dir" -- "$SOAK" bake rain nosuch.obj --width 8 --height 8 --rain
 
 # -- item 6: environment values parsed like options --
 for v in SOAK_MAX_SCENE_MB=20MB SOAK_MAX_SCENE_MB=1e8 SOAK_MAX_SCENE_MB=inf SOAK_MAX_MEMORY_MB=63 \
-  SOAK_MESH_TIMEOUT=0 SOAK_IMAGE_TIMEOUT=-3 SOAK_MAX_IMAGE_MB=nan SOAK_IMAGE_IN_PROCESS=yes SOAK_PROGRESS=2; do
+  SOAK_MESH_TIMEOUT=0 SOAK_IMAGE_TIMEOUT=-3 SOAK_MAX_IMAGE_MB=nan SOAK_IMAGE_IN_PROCESS=yes SOAK_PROGRESS=2 SOAK_MESH_READER=native; do
   refused "${v%%=*}='${v#*=}'" -- env "$v" "$SOAK" bake turbulence --width 8 --height 8 -o env.exr
 done
 expect_exit 0 "SOAK_MAX_MEMORY_MB=64 (in range) is honoured" -- env SOAK_MAX_MEMORY_MB=64 "$SOAK" materials
 expect_exit 0 "an empty value is unset" -- env SOAK_MAX_SCENE_MB= "$SOAK" materials
+expect_exit 0 "SOAK_MESH_READER=assimp (one of its words) is honoured" -- env SOAK_MESH_READER=assimp "$SOAK" materials
 "$SOAK" --help >help.txt 2>&1
 for v in SOAK_DATA_DIR SOAK_MATERIALS SOAK_PLUGIN_DIR SOAK_PROGRESS SOAK_IMAGE_IN_PROCESS SOAK_MAX_SCENE_MB \
   SOAK_MAX_PRESETS_MB SOAK_MAX_IMAGE_MB SOAK_MAX_MESH_MB SOAK_MAX_VOLUME_MB SOAK_MAX_MEMORY_MB SOAK_MESH_MEMORY_MB \
-  SOAK_MESH_TIMEOUT SOAK_IMAGE_TIMEOUT; do
+  SOAK_MESH_TIMEOUT SOAK_IMAGE_TIMEOUT SOAK_MESH_READER; do
   grep -q "$v" help.txt && grep -q "$v" "$SOAK_ROOT/README.md" && ok "$v in --help and the README" \
     || bad "$v missing from --help or the README"
 done
