@@ -18,7 +18,7 @@ void soak_denoise_options_default(soak_denoise_options *o)
     o->sigma_colour = 4.0;
     o->normal_power = 128.0;
     o->sigma_depth = 0.01;
-    o->sigma_wetness = 0.1;
+    o->sigma_wetness = 0.3;
     o->firefly_ratio = 4.0;
 }
 
@@ -68,11 +68,36 @@ static int firefly_fix(dn_state *s, const float *src, const float *srcvar, int x
     return 1;
 }
 
+/* Step 1b at pixel (x, y) of s->col, writing dst: a field of sparkles (a
+ * film glinting at a few samples a pixel) has bright neighbours, so each is
+ * capped at firefly_ratio times the median luminance of its 5 x 5 window
+ * (hue kept). 1 if capped. */
+static int sparkle_cap(dn_state *s, float *dst, int x, int y)
+{
+    float win[25];
+    int n = 0;
+    for (int yy = y - 2; yy <= y + 2; ++yy)
+        for (int xx = x - 2; xx <= x + 2; ++xx)
+            if (xx >= 0 && yy >= 0 && xx < s->W && yy < s->H) win[n++] = lum3(s->col + 3 * ((size_t)yy * s->W + xx));
+    qsort(win, (size_t)n, sizeof *win, cmp_float);
+    size_t p = (size_t)y * s->W + x;
+    float cap = (float)s->o->firefly_ratio * win[n / 2] + s->eps, l = lum3(s->col + 3 * p);
+    memcpy(dst + 3 * p, s->col + 3 * p, 3 * sizeof(float));
+    if (!(l > cap)) return 0;
+    for (int ch = 0; ch < 3; ++ch) dst[3 * p + ch] *= cap / l;
+    return 1;
+}
+
 static long remove_fireflies(dn_state *s, const float *src, const float *srcvar)
 {
     long fixed = 0;
     for (int y = 0; y < s->H; ++y)
         for (int x = 0; x < s->W; ++x) fixed += firefly_fix(s, src, srcvar, x, y);
+    for (int y = 0; y < s->H; ++y)
+        for (int x = 0; x < s->W; ++x) fixed += sparkle_cap(s, s->col2, x, y);
+    float *t = s->col;
+    s->col = s->col2;
+    s->col2 = t;
     return fixed;
 }
 
@@ -163,7 +188,8 @@ static void atrous_pass(dn_state *s, int step)
  * freedom at 2 samples: often near 0, which would freeze the pixel): the
  * filter starts from its mean over 7 x 7 pixels of the same object, as
  * SVGF estimates a young pixel's variance spatially (Schied et al. 2017,
- * sec. 4.2). */
+ * sec. 4.2), or from the pixel's own where that is larger (an outlier keeps
+ * the variance that lets its neighbours smooth it). */
 static void spatial_variance(dn_state *s)
 {
     const int *obj = s->f ? s->f->object : NULL;
@@ -180,7 +206,7 @@ static void spatial_variance(dn_state *s)
                     acc += s->var[q];
                     n++;
                 }
-            s->var2[p] = (float)(acc / n);
+            s->var2[p] = fmaxf(s->var[p], (float)(acc / n));
         }
     memcpy(s->var, s->var2, (size_t)s->W * s->H * sizeof(float));
 }

@@ -67,7 +67,12 @@ static soak_status feat_pixel(const soak_scene *s, const feat_cam *c, int px, in
         soak_status st = soak_geometry_intersect(s->geometry, &ray, &hit, &found);
         if (st != SOAK_OK) return st;
         if (!found) continue;
-        soak_vec3 ns = soak_v3_dot(hit.ns, ray.dir) > 0 ? soak_v3_scale(hit.ns, -1) : hit.ns;
+        /* The shading normal, or the geometric one where they part (a
+         * mesh's generated normals can be far off its faces: a thin box's
+         * corners average its sides in); the geometric normal alone would
+         * show a smooth mesh's facets through the filter. */
+        soak_vec3 nf = soak_v3_dot(hit.ns, hit.ng) > 0.9 ? hit.ns : hit.ng;
+        soak_vec3 ns = soak_v3_dot(nf, ray.dir) > 0 ? soak_v3_scale(nf, -1) : nf;
         nsum[0] += ns.x;
         nsum[1] += ns.y;
         nsum[2] += ns.z;

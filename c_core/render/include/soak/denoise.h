@@ -5,8 +5,10 @@
  *  1. fireflies: a pixel brighter than firefly_ratio times the second
  *     brightest of its 8 neighbours (so a pair of them is caught too, and a
  *     one-pixel bright line is not) takes the colour of its neighbours'
- *     median-luminance pixel. This removes energy (a firefly is a rare
- *     sample of real light): pictures only.
+ *     median-luminance pixel; then every pixel is capped at firefly_ratio
+ *     times the median luminance of its 5 x 5 window (a field of sparkles,
+ *     where each has bright neighbours). This removes energy (a firefly is
+ *     a rare sample of real light): pictures only.
  *  2. the edge-avoiding a-trous wavelet filter of Dammertz, Sewtz, Hanika and
  *     Lensch, "Edge-Avoiding A-Trous Wavelet Transform for fast Global
  *     Illumination Filtering", HPG 2010: `iterations` passes of the 5x5
@@ -38,7 +40,8 @@
  * is then off). */
 typedef struct soak_denoise_features {
     int width, height;
-    float *normal;   /* 3 per pixel: the first hit's shading normal facing the camera, averaged over the lens */
+    float *
+        normal; /* 3 per pixel: the first hit's normal facing the camera (shading, or geometric where they part), lens-averaged */
     float *position; /* 3 per pixel: the first hit, averaged over the lens */
     float *depth;    /* distance to the first hit, averaged over the lens; 0 where only the environment is seen */
     int *object;     /* object id of the pixel centre's first hit through the lens centre; -1: the environment */
@@ -55,7 +58,7 @@ typedef struct soak_denoise_options {
 } soak_denoise_options;
 
 typedef struct soak_denoise_stats {
-    long fireflies; /* pixels replaced by step 1 */
+    long fireflies; /* pixels replaced or capped by step 1 */
 } soak_denoise_stats;
 
 /* iterations 5, sigma_colour 4, normal_power 128 (SVGF's values),
