@@ -10,6 +10,7 @@
 
 #include "cli.h"
 #include "soak/advise.h"
+#include "soak/denoise.h"
 #include "soak/image.h"
 #include "soak/io_guard.h"
 #include "soak/render.h"
@@ -21,6 +22,11 @@ static volatile sig_atomic_t interrupted = 0;
 /* Memory of a render per pixel: the sums (3 doubles) and sample count (an
  * int) of soak_render, its float RGB image and the encoder's copy of it. */
 #define RENDER_BYTES_PER_PIXEL (3 * 8 + 4 + 3 * 4 + 3 * 4)
+/* --denoise adds the luminance sums (2 doubles), the variance, the features
+ * (9 floats) and the filter's buffers (9 floats). */
+#define DENOISE_BYTES_PER_PIXEL (2 * 8 + 4 + 9 * 4 + 9 * 4)
+/* Feature rays per pixel for --denoise, spread over the pixel and the lens. */
+#define DENOISE_LENS_SAMPLES 8
 #define RENDER_MAX_MIB 4096
 
 static void on_sigint(int sig)
@@ -33,7 +39,7 @@ typedef struct render_args {
     const char *scene_path, *out_path;
     long spp, threads, seed, width, height, max_depth;
     double time_limit, auto_tol, target_error;
-    int quiet;
+    int quiet, denoise;
 } render_args;
 
 /* --time's floor: 0 would mean no limit, which is leaving --time out. */
@@ -68,6 +74,12 @@ static const cli_opt render_opts[] = {
      .help = "render each material through the cheapest model within a\n"
              "relative error T of its full description (soak advise;\n"
              "the choices are printed on stderr)"},
+    {"--denoise", NULL, CLI_OPT_FLAG, .flag = 1, F(denoise),
+     .help = "filter the picture: fireflies removed, then an edge-avoiding\n"
+             "a-trous filter guided by each pixel's variance and by what the\n"
+             "camera sees first (normal, depth, object, wetness; soak/denoise.h).\n"
+             "It removes energy where it removes fireflies: for pictures only,\n"
+             "never for numbers (no test reads a denoised render)"},
     {"--quiet", "-q", CLI_OPT_FLAG, .flag = 1, F(quiet), .help = "no statistics on stdout"},
 };
 #undef F
@@ -201,7 +213,8 @@ static int load_scene(const render_args *a, soak_scene *scene)
     int rc = -1;
     soak_status st = guard_inputs(a, scene, err, sizeof err);
     int W = a->width > 0 ? (int)a->width : scene->width, H = a->height > 0 ? (int)a->height : scene->height;
-    double need_mib = (double)W * H * RENDER_BYTES_PER_PIXEL / 1048576.0;
+    int bytes = RENDER_BYTES_PER_PIXEL + (a->denoise ? DENOISE_BYTES_PER_PIXEL : 0);
+    double need_mib = (double)W * H * bytes / 1048576.0;
     if (st != SOAK_OK) {
         cli_error(CMD, "%s", st == SOAK_ERR_ARG ? err : soak_status_str(st));
         rc = st == SOAK_ERR_ARG ? SOAK_EXIT_USAGE : SOAK_EXIT_FAIL;
@@ -209,17 +222,34 @@ static int load_scene(const render_args *a, soak_scene *scene)
         rc = SOAK_EXIT_FAIL;
     } else if (need_mib > RENDER_MAX_MIB) {
         cli_error(CMD, "a %dx%d render needs %.0f MiB (%d bytes per pixel); the limit is %d MiB", W, H, need_mib,
-                  RENDER_BYTES_PER_PIXEL, RENDER_MAX_MIB);
+                  bytes, RENDER_MAX_MIB);
         rc = SOAK_EXIT_USAGE;
     }
     if (rc >= 0) soak_scene_free(scene);
     return rc;
 }
 
-/* Traces the image with Ctrl-C stopping it early; *exposure is the
- * camera's, for tone mapping. Frees the scene. */
+/* --denoise: the camera's features, then the filter, in place. */
+static soak_status denoise(const render_args *a, const soak_scene *scene, soak_image *img, const soak_image *var,
+                           long *fireflies)
+{
+    char err[4096] = "";
+    soak_denoise_features f;
+    soak_denoise_options o;
+    soak_denoise_stats ds = {0};
+    soak_denoise_options_default(&o);
+    soak_status st = soak_render_features(scene, img->width, img->height, DENOISE_LENS_SAMPLES, &f, err, sizeof err);
+    if (st == SOAK_OK) st = soak_denoise(img, var, &f, &o, &ds, err, sizeof err);
+    soak_denoise_features_free(&f);
+    if (st != SOAK_OK) cli_error(CMD, "%s: --denoise: %s", a->scene_path, err[0] ? err : soak_status_str(st));
+    *fireflies = ds.fireflies;
+    return st;
+}
+
+/* Traces the image with Ctrl-C stopping it early (and denoises it with
+ * --denoise); *exposure is the camera's, for tone mapping. Frees the scene. */
 static soak_status trace(const render_args *a, soak_scene *scene, soak_image *img, soak_render_stats *stats,
-                         double *exposure)
+                         double *exposure, long *fireflies)
 {
     struct sigaction sa, old;
     memset(&sa, 0, sizeof sa);
@@ -237,6 +267,8 @@ static soak_status trace(const render_args *a, soak_scene *scene, soak_image *im
     opt.target_error = a->target_error;
     opt.max_depth = (int)a->max_depth;
     opt.cancel = &interrupted;
+    soak_image var = {0};
+    if (a->denoise) opt.variance = &var;
     char label[96], err[4096] = "";
     snprintf(label, sizeof label, "render %dx%d, %d spp", a->width > 0 ? (int)a->width : scene->width,
              a->height > 0 ? (int)a->height : scene->height, a->spp > 0 ? (int)a->spp : scene->spp);
@@ -248,8 +280,10 @@ static soak_status trace(const render_args *a, soak_scene *scene, soak_image *im
     cli_progress_finish(&prog);
     sigaction(SIGINT, &old, NULL);
     *exposure = scene->camera.exposure;
-    soak_scene_free(scene);
     if (st != SOAK_OK) cli_error(CMD, "%s: render failed: %s", a->scene_path, err[0] ? err : soak_status_str(st));
+    if (st == SOAK_OK && a->denoise) st = denoise(a, scene, img, &var, fireflies);
+    soak_image_free(&var);
+    soak_scene_free(scene);
     return st;
 }
 
@@ -267,7 +301,7 @@ static soak_status write_image(const render_args *a, soak_image *img, int toned,
     return st;
 }
 
-static void print_stats(const render_args *a, const soak_render_stats *stats)
+static void print_stats(const render_args *a, const soak_render_stats *stats, long fireflies)
 {
     double secs = stats->seconds > 0 ? stats->seconds : 1e-9;
     printf("wrote %s\n", a->out_path);
@@ -278,6 +312,7 @@ static void print_stats(const render_args *a, const soak_render_stats *stats)
     printf("capped paths: %lld, leaked medium paths: %lld, NaN paths: %lld, geometry errors: %lld\n", stats->capped,
            stats->leaked, stats->nan_paths, stats->geometry_errors);
     printf("time: %.2f s with %ld threads\n", stats->seconds, a->threads);
+    if (a->denoise) printf("denoised (a picture, not numbers): %ld fireflies removed\n", fireflies);
 }
 
 int soak_cmd_render(int argc, char **argv)
@@ -291,12 +326,13 @@ int soak_cmd_render(int argc, char **argv)
     soak_image img = {0};
     soak_render_stats stats;
     double exposure = 0;
+    long fireflies = 0;
     rc = SOAK_EXIT_FAIL;
-    if (trace(&a, &scene, &img, &stats, &exposure) == SOAK_OK && write_image(&a, &img, toned, exposure) == SOAK_OK)
+    if (trace(&a, &scene, &img, &stats, &exposure, &fireflies) == SOAK_OK && write_image(&a, &img, toned, exposure) == SOAK_OK)
         rc = SOAK_EXIT_OK;
     soak_image_free(&img);
     if (rc != SOAK_EXIT_OK) return rc;
-    if (!a.quiet) print_stats(&a, &stats);
+    if (!a.quiet) print_stats(&a, &stats, fireflies);
     if (interrupted) {
         fprintf(stderr, "soak render: interrupted; wrote the %d..%d samples per pixel done so far to %s\n",
                 stats.min_spp, stats.max_spp, a.out_path);

@@ -12,6 +12,10 @@ into OUTDIR (scenes/gallery/render.sh calls this; nothing here is checked in):
   cognac.obj      the liquid in it, 5 cm deep, 0.3 mm inside the glass, 384 facets round
   table.obj       a table top 1.0 x 0.9 x 0.04 m from (-0.5, -0.4, -0.04), UVs over its top
   spill.pgm       the spilled pool on the table (u, v over the top), 16 bit
+  rock_a.obj ...  four beach rocks (rock_a .. rock_d), each an icosphere (5120 faces)
+                  stretched to a boulder about 1.7 x 1.3 x 1.1 m and displaced by four
+                  octaves of smooth noise, with a few flattened faces; centred on the
+                  origin (the scene translates them), spherical UVs
 usage: meshes.py OUTDIR"""
 import math
 import os
@@ -114,6 +118,62 @@ def spill(u, v):
     return max(pool, rim)
 
 
+def icosphere(levels):
+    """Unit icosphere: vertices (unit vectors) and triangles, outward."""
+    g = (1 + 5 ** 0.5) / 2
+    verts = [(-1, g, 0), (1, g, 0), (-1, -g, 0), (1, -g, 0), (0, -1, g), (0, 1, g), (0, -1, -g), (0, 1, -g),
+             (g, 0, -1), (g, 0, 1), (-g, 0, -1), (-g, 0, 1)]
+    verts = [tuple(c / math.sqrt(1 + g * g) for c in v) for v in verts]
+    tris = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2),
+            (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5),
+            (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    for _ in range(levels):
+        mid = {}
+
+        def middle(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in mid:
+                m = [(verts[a][k] + verts[b][k]) / 2 for k in range(3)]
+                n = math.sqrt(sum(c * c for c in m))
+                verts.append(tuple(c / n for c in m))
+                mid[key] = len(verts) - 1
+            return mid[key]
+        new = []
+        for a, b, c in tris:
+            ab, bc, ca = middle(a, b), middle(b, c), middle(c, a)
+            new += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        tris = new
+    return verts, tris
+
+
+def rock(seed, size=(0.85, 0.65, 0.55)):
+    """A boulder: an icosphere stretched to `size` (half-axes, m), its radius
+    displaced by smooth noise (sums of sines along random directions, four
+    octaves) and cut by a few random planes (worn flat faces)."""
+    rnd = __import__("random").Random(seed)
+
+    def unit():
+        while True:
+            d = [rnd.uniform(-1, 1) for _ in range(3)]
+            n = math.sqrt(sum(c * c for c in d))
+            if 0.1 < n <= 1:
+                return [c / n for c in d]
+    waves = [(unit(), f, a / 3, rnd.uniform(0, 2 * math.pi))
+             for f, a in ((2.0, 0.09), (4.5, 0.035), (11.0, 0.014), (24.0, 0.007)) for _ in range(3)]
+    cuts = [(unit(), rnd.uniform(0.8, 0.92)) for _ in range(4)]
+    verts, tris = icosphere(4)
+    out, uvs = [], []
+    for d in verts:
+        r = 1 + sum(a * math.sin(f * sum(x * y for x, y in zip(d, w)) + ph) for w, f, a, ph in waves)
+        for n, h in cuts:   # a flat face: the radius reaches no further than the plane
+            c = sum(x * y for x, y in zip(d, n))
+            if c > 0 and r * c > h:
+                r = h / c
+        out.append(tuple(r * d[k] * size[k] for k in range(3)))
+        uvs.append((0.5 + math.atan2(d[1], d[0]) / (2 * math.pi), 0.5 + math.asin(max(-1, min(1, d[2]))) / math.pi))
+    return out, uvs, [[(a, a), (b, b), (c, c)] for a, b, c in tris]
+
+
 def main(out):
     os.makedirs(out, exist_ok=True)
     v, t, f = [], [], []
@@ -143,6 +203,8 @@ def main(out):
     box_faces(v, t, f, (-0.5, -0.4, -0.04), (0.5, 0.5, 0), lambda x, y, z: (x + 0.5, (y + 0.4) / 0.9))
     write_obj(os.path.join(out, "table.obj"), v, t, f)
     write_pgm(os.path.join(out, "spill.pgm"), 400, 360, spill)
+    for k, name in enumerate("abcd"):
+        write_obj(os.path.join(out, "rock_%s.obj" % name), *rock(11 + k))
 
 
 if __name__ == "__main__":

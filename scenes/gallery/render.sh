@@ -6,6 +6,9 @@
 # (meshes.py, the POV-Ray gallery's relief mesh, soak bake rain / turbulence / drying).
 # Renders run one after another (make soak-gallery); SPP scales every scene's samples
 # (default 1 = the scenes' own), LIMIT caps each render's seconds (soak render --time).
+# The pictures are denoised (soak render --denoise: fireflies removed, an edge-avoiding
+# filter guided by the pixels' variance and the camera's first hits; pictures only, no
+# test reads them); SOAK_GALLERY_DENOISE=0 leaves the raw Monte Carlo.
 # usage: scenes/gallery/render.sh SOAK OUT [SPP_SCALE] [LIMIT] [SCENE...]
 set -eu
 SOAK=$(realpath "$1") OUT=$2 SCALE=${3:-1} LIMIT=${4:-900}
@@ -29,9 +32,11 @@ print("--spp %d --width %d --height %d" % (max(1, round(r["spp"] * float(sys.arg
   "$1" "$SCALE" "${GALLERY_DIV:-1}"; }
 render() { # scene-name output.png (16-bit sRGB, the camera's exposure applied)
   local json=$WORK/$1.json t0=$(date +%s)
-  "$SOAK" render "$json" -o "$2" --threads 2 --seed 1 $(opts_of "$json") --time "$LIMIT" >"$WORK/$1.log" 2>&1 \
+  local dn=--denoise
+  [ "${SOAK_GALLERY_DENOISE:-1}" = 1 ] || dn=
+  "$SOAK" render "$json" -o "$2" --threads 2 --seed 1 $(opts_of "$json") --time "$LIMIT" $dn >"$WORK/$1.log" 2>&1 \
     || { echo "FAIL: soak render $1.json, see the log:"; tail -5 "$WORK/$1.log"; exit 1; }
-  echo "soak render $1: $(( $(date +%s) - t0 )) s, $(grep -m1 'samples per pixel' "$WORK/$1.log")"
+  echo "soak render $1: $(( $(date +%s) - t0 )) s, $(grep -m1 'samples per pixel' "$WORK/$1.log")$(grep -m1 -o '[0-9]* fireflies removed' "$WORK/$1.log" | sed 's/^/, denoised, /' || true)"
 }
 small_png() { # 16-bit sRGB PNG -> OUT/soak_NAME.png, sRGB, palette-optimised when Pillow is there
   local img=$1 name=$2

@@ -147,6 +147,7 @@ typedef struct render_job {
     double *sum;            /* 3 per pixel */
     double *sum_y, *sum_y2; /* luminance and its square per pixel: target_error only */
     double target_error;
+    int want_variance;     /* soak_render_options.variance: sum_y, sum_y2 kept for it */
     atomic_int *tile_done; /* target_error reached: later passes are skipped */
     int *count;            /* samples per pixel */
     int *tile_pass;        /* passes merged per tile */
@@ -239,7 +240,7 @@ static void merge_tile(render_job *j, const tile_item *it, const double *local, 
                     j->sum_y2[pi] += local[TILE * TILE * 3 + li];
                 }
             }
-        if (j->sum_y && tile_converged(j, it)) atomic_store(&j->tile_done[it->tile], 1);
+        if (j->target_error > 0 && tile_converged(j, it)) atomic_store(&j->tile_done[it->tile], 1);
     }
     j->tile_pass[it->tile]++;
     pthread_cond_broadcast(&j->merged);
@@ -378,7 +379,7 @@ static soak_status alloc_buffers(render_job *j, soak_image *out)
     j->tile_pass = calloc((size_t)j->n_tiles, sizeof(int));
     j->tile_done = calloc((size_t)j->n_tiles, sizeof *j->tile_done);
     for (int i = 0; j->tile_done && i < j->n_tiles; ++i) atomic_init(&j->tile_done[i], 0);
-    if (j->target_error > 0) {
+    if (j->target_error > 0 || j->want_variance) {
         j->sum_y = calloc(W * H, sizeof(double));
         j->sum_y2 = calloc(W * H, sizeof(double));
         if (!j->sum_y || !j->sum_y2) return SOAK_ERR_NOMEM;
@@ -465,6 +466,18 @@ static void collect(const render_job *j, soak_image *out, soak_render_stats *sst
     sst->stopped_early = atomic_load(&j->stop) && sst->min_spp < j->spp;
 }
 
+/* The variance of each pixel's mean luminance, for soak_render_options.variance. */
+static soak_status collect_variance(const render_job *j, soak_image *var)
+{
+    soak_status st = soak_image_alloc(var, j->W, j->H, 1);
+    for (size_t i = 0; st == SOAK_OK && i < (size_t)j->W * j->H; ++i) {
+        int k = j->count[i];
+        double mean = k > 0 ? j->sum_y[i] / k : 0;
+        var->pixels[i] = k > 1 ? (float)(fmax(0.0, (j->sum_y2[i] - k * mean * mean) / (k - 1.0)) / k) : 0.0f;
+    }
+    return st;
+}
+
 /* Renders every pass of every tile into out. */
 static soak_status render_image(render_job *j, const soak_render_options *opt, double t_start, soak_image *out,
                                 soak_render_stats *stats)
@@ -474,6 +487,8 @@ static soak_status render_image(render_job *j, const soak_render_options *opt, d
     sst.seconds = run_workers(j, opt, t_start);
     collect(j, out, &sst);
     if (stats) *stats = sst;
+    if (j->want_variance && !atomic_load(&j->out_of_memory) && collect_variance(j, opt->variance) != SOAK_OK)
+        atomic_store(&j->out_of_memory, 1);
     if (atomic_load(&j->out_of_memory)) {
         soak_image_free(out);
         return SOAK_ERR_NOMEM;
@@ -515,6 +530,7 @@ soak_status soak_render(const soak_scene *scene, const soak_render_options *opt,
     j->threads = opt->threads;
     j->seed = opt->seed;
     j->target_error = opt->target_error;
+    j->want_variance = opt->variance != NULL;
     st = prepare_scene(j, scene, opt, t_start, err, errlen);
     if (st == SOAK_OK) {
         prepare_camera(&j->cam, &scene->camera, W, H);

@@ -58,6 +58,10 @@ typedef struct soak_render_options {
      * cap) once each pixel has 16 samples and the standard error of its mean
      * luminance is below target_error x max(mean, 0.01) (render_adaptive.h). */
     double target_error;
+    /* Non-NULL: allocated here (1 channel, W x H) with each pixel's variance
+     * of its mean luminance (sample variance / samples; 0 below 2 samples),
+     * for soak_denoise (soak/denoise.h), which filters pictures only. */
+    soak_image *variance;
 } soak_render_options;
 
 typedef struct soak_render_stats {
