@@ -29,7 +29,8 @@
  * estimate unbiased at albedo 1, where it never fires (long walks are capped
  * at RT_MEDIUM_MAX_EVENTS and counted). The boundary of the walk is the
  * object's surface (soak_geometry_intersect_local: closed form for an
- * isolated sphere, the scene's BVH otherwise), and a path arriving at it
+ * isolated sphere, a walk over the faces of an isolated convex mesh, the
+ * scene's BVH otherwise), and a path arriving at it
  * crosses the layer stack upward (rt_cross_stack), reflected back in or
  * leaving.
  *
