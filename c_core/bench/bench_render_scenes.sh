@@ -4,8 +4,10 @@
 # bench_wet_paper.json (a wet subsurface sheet lit from behind) and bench_wet_puddles.json
 # (a wet plane with a puddle map under sun and sky), then render_scaling.py on each
 # (CPU-time cost of 4x the pixels, paths per CPU second at 1 and 2 threads). Prints one
-# Markdown report with the commit measured and the load average before and after; the
-# machine may be shared, and the time ratios then move by tens of per cent between runs.
+# Markdown report with the commit measured and the load average before and after. The
+# ratios compare CPU time (user + system of every thread of the render call, both sides),
+# which a shared machine inflates far less than wall time; the wall-time ratios are
+# printed beside them.
 #
 # usage: bench_render_scenes.sh [BUILD_DIR] [REF_SPP] [SPP_LIST] [THREADS] [TARGET]
 #   as bench_render_vs_cycles.sh (BENCH_REPEAT, BENCH_KEEP apply to each scene);

@@ -12,19 +12,22 @@
 # paths/s); also writes it to out/bench/render_vs_cycles.md when out/bench exists
 # (c_core/bench/run.sh creates it and runs this from the repository root).
 #
-# Times, the render call for both: soak = the `time:` it prints (soak_render: the
-# path tracing; scene parse, mesh load and BVH build come before it); Cycles = the
-# bpy.ops.render.render call (scene sync, BVH build, path tracing). Start-ups are
-# reported separately. Runs are interleaved by rounds: soak renders every spp, then a
-# Blender session renders every spp (after an untimed warm-up render), REPEAT times;
-# the fastest of the repeats is kept for each. Sun units are checked first: a white
+# Times, the render call for both, as CPU time (user + system of every thread: on a
+# shared machine wall time counts other jobs' turns): soak = the `cpu:` it prints
+# (soak_render: the path tracing; scene parse, mesh load and BVH build come before
+# it); Cycles = time.process_time() around bpy.ops.render.render (scene sync, BVH
+# build, path tracing). Wall times are kept and their ratio printed too. Start-ups
+# are reported separately. Runs are interleaved by rounds: soak renders every spp,
+# then a Blender session renders every spp (after an untimed warm-up render), the
+# order swapped every other round, REPEAT times; the minimum over the rounds decides
+# (the median's ratio is printed beside it). Sun units are checked first: a white
 # Lambert plane under the scene's sun alone, rendered by both, must give E cos/pi;
 # Cycles' sun strength is scaled by the measured soak/Cycles ratio (1 when both agree).
 # The machine may be shared: the load average is printed with the results.
 #
 # usage: bench_render_vs_cycles.sh [BUILD_DIR] [REF_SPP] [SPP_LIST] [THREADS] [TARGET]
 #   defaults: build 2048 "4 8 16 32 64 128 256 512 1024" 2 0.02      (soak = BUILD_DIR/bin/soak)
-#   BENCH_REPEAT=N times every run N times, interleaved, and keeps the fastest (default 3).
+#   BENCH_REPEAT=N times every run N times, interleaved (min and median; default 3).
 #   BENCH_KEEP=1 keeps the renders (the folder is named on stderr).
 #   BENCH_SCENE=FILE benchmarks another scene (default scenes/bench_wet_sphere.json); the
 #   three of the benchmark (issue 38): bench_wet_sphere.json, bench_wet_paper.json (a
@@ -103,8 +106,9 @@ json.dump(sc, open(sys.argv[2], "w"), indent=1)
 EOF
 SOAK_SCENE="$W/scene_mesh.json"
 
-# --- 2. soak: reference, then the runs ----------------------------------------
-: >"$W/runs.tsv"
+# --- 2. soak: reference -----------------------------------------------------------
+# times.tsv: one line per timed render of every round: renderer kind spp wall_s cpu_s image
+: >"$W/times.tsv"
 soak_startup=1000000
 for _ in 1 2 3; do
     t0=$(now)
@@ -112,60 +116,58 @@ for _ in 1 2 3; do
     t1=$(now)
     soak_startup=$(echo "t = $t1 - $t0; if (t < $soak_startup) t else $soak_startup" | bc -l)
 done
-soak_run() { # spp seed out -> prints the render call's seconds, keeps stdout in out.log
-    "$SOAK" render "$SOAK_SCENE" -o "$3" --spp "$1" --seed "$2" --threads "$THREADS" >"$3.log"
-    sed -n 's/^time: \([0-9.]*\) s.*/\1/p' "$3.log"
+soak_run() { # kind spp seed out -> appends to times.tsv, keeps stdout in out.log
+    "$SOAK" render "$SOAK_SCENE" -o "$4" --spp "$2" --seed "$3" --threads "$THREADS" >"$4.log"
+    printf 'soak\t%s\t%s\t%s\t%s\t%s\n' "$1" "$2" "$(sed -n 's/^time: \([0-9.]*\) s.*/\1/p' "$4.log")" \
+        "$(sed -n 's/^cpu: \([0-9.]*\) s.*/\1/p' "$4.log")" "$4" >>"$W/times.tsv"
 }
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
-secs=$(soak_run "$REF_SPP" "$REF_SEED" "$W/soak_ref.exr")
-printf 'soak\tref\t%s\t%s\t%s\n' "$REF_SPP" "$secs" "$W/soak_ref.exr" >>"$W/runs.tsv"
+soak_run ref "$REF_SPP" "$REF_SEED" "$W/soak_ref.exr"
 soak_paths_s=$(sed -n 's/^paths: .*(\([0-9]*\) paths\/s).*/\1/p' "$W/soak_ref.exr.log")
 soak_rays_s=$(sed -n 's/^rays: .*(\([0-9]*\) rays\/s).*/\1/p' "$W/soak_ref.exr.log")
 soak_rays=$(sed -n 's/^rays: \([0-9]*\) .*/\1/p' "$W/soak_ref.exr.log")
 soak_paths=$(sed -n 's/^paths: \([0-9]*\) .*/\1/p' "$W/soak_ref.exr.log")
 soak_inner=$(sed -n 's/^time: \([0-9.]*\) s.*/\1/p' "$W/soak_ref.exr.log")
+soak_inner_cpu=$(sed -n 's/^cpu: \([0-9.]*\) s.*/\1/p' "$W/soak_ref.exr.log")
 
-# --- 3. Cycles reference, then the rounds: soak, Cycles, soak, Cycles, ... -------
-cycles_session() { # name jobs... -> appends CYCLES_RENDER lines to blender.log
-    local name=$1; shift
+# --- 3. Cycles reference, then the rounds, interleaved ----------------------------
+# Odd rounds run soak first, even rounds Cycles first: a drift of the load over the
+# run falls on both alike.
+cycles_session() { # name jobs... -> appends its CYCLES_RENDER lines to times.tsv
+    local name=$1 kind spp seed wall cpu
+    shift
     # shellcheck disable=SC2068
     blend "$SCENE" "$W" "$THREADS" "$SUN_SCALE" 1:0 $@ >"$W/blender_$name.log" 2>&1 || { cat "$W/blender_$name.log"; exit 1; }
-    cat "$W/blender_$name.log" >>"$W/blender.log"
+    while read -r _ spp seed wall cpu; do
+        kind=run
+        [ "$seed" = "$REF_SEED" ] && kind=ref
+        printf 'Cycles\t%s\t%s\t%s\t%s\t%s\n' "$kind" "$spp" "$wall" "$cpu" "$W/cycles_${spp}_${seed}.exr" >>"$W/times.tsv"
+    done < <(grep '^CYCLES_RENDER ' "$W/blender_$name.log")
 }
-: >"$W/blender.log"
 t_launch=$(now)
 cycles_session ref "$REF_SPP:$REF_SEED"
 t_exit=$(now)
 t_start=$(sed -n 's/^CYCLES_SCRIPT_START //p' "$W/blender_ref.log")
 blender_startup=$(echo "$t_start - $t_launch" | bc -l)
 blender_total=$(echo "$t_exit - $t_launch" | bc -l)
-declare -A best
-for round in $(seq "$REPEAT"); do
-    for spp in $SPPS; do
-        secs=$(soak_run "$spp" "$RUN_SEED" "$W/soak_$spp.exr")
-        best[$spp]=$(echo "v = $secs; w = ${best[$spp]:-1000000000}; if (v < w) v else w" | bc -l)
-    done
-    jobs=""
+soak_round() { for spp in $SPPS; do soak_run run "$spp" "$RUN_SEED" "$W/soak_$spp.exr"; done; }
+cycles_round() {
+    local jobs="" spp
     for spp in $SPPS; do jobs="$jobs $spp:$RUN_SEED"; done
     # shellcheck disable=SC2086
-    cycles_session "round$round" $jobs
-done
-for spp in $SPPS; do
-    printf 'soak\trun\t%s\t%s\t%s\n' "$spp" "${best[$spp]}" "$W/soak_$spp.exr" >>"$W/runs.tsv"
-done
-declare -A cbest
-while read -r _ spp seed secs; do
-    if [ "$seed" = "$REF_SEED" ]; then
-        printf 'Cycles\tref\t%s\t%s\t%s\n' "$spp" "$secs" "$W/cycles_${spp}_${seed}.exr" >>"$W/runs.tsv"
+    cycles_session "round$1" $jobs
+}
+for round in $(seq "$REPEAT"); do
+    if [ $((round % 2)) = 1 ]; then
+        soak_round
+        cycles_round "$round"
     else
-        cbest[$spp]=$(echo "v = $secs; w = ${cbest[$spp]:-1000000000}; if (v < w) v else w" | bc -l)
+        cycles_round "$round"
+        soak_round
     fi
-done < <(grep '^CYCLES_RENDER ' "$W/blender.log")
-for spp in $SPPS; do
-    [ -n "${cbest[$spp]:-}" ] || { echo "Cycles rendered no $spp-spp image"; exit 1; }
-    printf 'Cycles\trun\t%s\t%s\t%s\n' "$spp" "${cbest[$spp]}" "$W/cycles_${spp}_${RUN_SEED}.exr" >>"$W/runs.tsv"
 done
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
+"$PY" "$HERE/render_times.py" "$W" "$SPPS"
 
 # --- 4. report ------------------------------------------------------------------
 {
@@ -175,14 +177,24 @@ load_after=$(cut -d' ' -f1-3 /proc/loadavg)
         "$THREADS threads, CPU, no denoising, one run; RMSE over RGB against each renderer's own" \
         "$REF_SPP-spp reference (seed $REF_SEED; runs seed $RUN_SEED)."
     echo "Same geometry: a sphere is Blender's UV-sphere mesh ($sphere_info) in both renderers." \
-        "Times are the render call for both: soak's printed \`time:\` (path tracing), Cycles' \`bpy.ops.render.render\` (sync, BVH, path tracing);" \
-        "runs interleaved by rounds (soak all spp, then a Blender session all spp after an untimed warm-up), each the fastest of $REPEAT rounds (references: one render each)."
+        "Times are the **CPU time** (user + system, all threads) of the render call for both: soak's printed \`cpu:\` (path tracing)," \
+        "Cycles' \`time.process_time()\` around \`bpy.ops.render.render\` (sync, BVH, path tracing)." \
+        "$REPEAT rounds, interleaved (soak all spp, then a Blender session all spp after an untimed warm-up; the order swapped every other round);" \
+        "the table and the fit use the **minimum** over the rounds per spp; the ratios from the median and from wall times follow it (references: one render each)."
     echo
     printf -- "- sun units (red channel): white Lambert plane, expected E cos/pi = %s; soak %s, Cycles %s -> Cycles sun strength scale %.4f\n" \
         "$expected" "$soak_cal" "$cycles_cal" "$SUN_SCALE"
-    printf -- "- soak reference run: %s paths, %s rays; **%s paths/s, %s rays/s** (%s s inside the render loop, %s threads)\n" \
-        "$soak_paths" "$soak_rays" "$soak_paths_s" "$soak_rays_s" "$soak_inner" "$THREADS"
+    printf -- "- soak reference run: %s paths, %s rays; **%s paths/s, %s rays/s** (%s s wall, %s s CPU inside the render loop, %s threads)\n" \
+        "$soak_paths" "$soak_rays" "$soak_paths_s" "$soak_rays_s" "$soak_inner" "$soak_inner_cpu" "$THREADS"
     printf -- "- start-up: soak %.2f s (\`soak render --help\`: shared-library loading); Blender %.2f s (launch to script start); whole Blender process %.1f s\n" \
         "$soak_startup" "$blender_startup" "$blender_total"
     echo "- load average before / after: $load_before / $load_after (machine shared with other jobs)"
-} | "$PY" "$HERE/render_convergence.py" "$W/runs.tsv" "$TARGET" ${MD:+"$MD"}
+} | "$PY" "$HERE/render_convergence.py" "$W/runs_cpu_min.tsv" "$TARGET" ${MD:+"$MD"}
+for v in cpu_median wall_min wall_median; do
+    ratio=$("$PY" "$HERE/render_convergence.py" "$W/runs_$v.tsv" "$TARGET" </dev/null |
+        sed -n 's/^- \*\*time-to-target ratio soak \/ Cycles: \([0-9.a-z]*\)\*\* = \(.*\)$/\1 (\2)/p')
+    echo "- time-to-target ratio soak / Cycles from the ${v/_/ } times: $ratio"
+done
+echo "- every timed render (renderer, kind, spp, wall s, CPU s):"
+echo
+cut -f1-5 "$W/times.tsv" | tr '\t' ' ' | sed 's/^/    /'

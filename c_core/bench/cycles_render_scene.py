@@ -13,8 +13,9 @@ A job "SPP:0" (seed 0) is a warm-up render, neither written nor reported: it tak
 Cycles' one-time initialisation out of the timed renders of a session.
 
 Writes OUTDIR/cycles_<spp>_<seed>.exr (linear RGBA float) and prints
-"CYCLES_SCRIPT_START <epoch s>" then one "CYCLES_RENDER <spp> <seed> <seconds>" per
-render (render call only: scene sync, BVH build and path tracing; file writing excluded).
+"CYCLES_SCRIPT_START <epoch s>" then one "CYCLES_RENDER <spp> <seed> <wall s> <CPU s>"
+per render (render call only: scene sync, BVH build and path tracing; file writing
+excluded; CPU = user + system of all the process's threads, time.process_time()).
 
 --calibrate renders a white Lambert plane lit by the scene's sun alone, seen from
 straight above (radiance E cos(theta)/pi if Cycles' sun strength is an irradiance in
@@ -396,11 +397,14 @@ def export_sphere(path):
 
 
 def render_to(scene, path):
-    t0 = time.perf_counter()
+    """Renders and saves; returns the render call's (wall, CPU) seconds. CPU is the
+    process's CPU clock (user + system of every thread: Cycles' workers, sync, BVH),
+    which other jobs on a shared machine do not inflate as they do the wall time."""
+    t0, c0 = time.perf_counter(), time.process_time()
     bpy.ops.render.render(write_still=False)
-    t1 = time.perf_counter()
+    t1, c1 = time.perf_counter(), time.process_time()
     bpy.data.images["Render Result"].save_render(path, scene=scene)
-    return t1 - t0
+    return t1 - t0, c1 - c0
 
 
 def main():
@@ -422,7 +426,7 @@ def main():
         set_world(scene, None)
         bpy.ops.mesh.primitive_plane_add(size=100.0)
         bpy.context.active_object.data.materials.append(lambert_material("white", 1.0))
-        print("CYCLES_CALIBRATE %.3f" % render_to(scene, out_path))
+        print("CYCLES_CALIBRATE %.3f" % render_to(scene, out_path)[0])
         return
     scene_path, outdir, threads, sun_scale = args[0], args[1], int(args[2]), float(args[3])
     sc = json.load(open(scene_path))
@@ -446,8 +450,8 @@ def main():
         if seed == 0:  # warm-up
             bpy.ops.render.render(write_still=False)
             continue
-        secs = render_to(scene, "%s/cycles_%d_%d.exr" % (outdir, spp, seed))
-        print("CYCLES_RENDER %d %d %.4f" % (spp, seed, secs), flush=True)
+        wall, cpu = render_to(scene, "%s/cycles_%d_%d.exr" % (outdir, spp, seed))
+        print("CYCLES_RENDER %d %d %.4f %.4f" % (spp, seed, wall, cpu), flush=True)
 
 
 main()

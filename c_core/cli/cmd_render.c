@@ -312,6 +312,7 @@ static void print_stats(const render_args *a, const soak_render_stats *stats, lo
     printf("capped paths: %lld, leaked medium paths: %lld, NaN paths: %lld, geometry errors: %lld\n", stats->capped,
            stats->leaked, stats->nan_paths, stats->geometry_errors);
     printf("time: %.2f s with %ld threads\n", stats->seconds, a->threads);
+    printf("cpu: %.3f s (user + system, all threads)\n", stats->cpu_seconds);
     if (a->denoise) printf("denoised (a picture, not numbers): %ld fireflies removed\n", fireflies);
 }
 

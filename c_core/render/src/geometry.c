@@ -46,6 +46,7 @@ void soak_geometry_destroy(soak_geometry *g)
         free(g->objects[i].nrm);
         free(g->objects[i].uv);
         free(g->objects[i].idx);
+        free(g->objects[i].adj);
     }
     free(g->objects);
     if (g->scene) rtcReleaseScene(g->scene);
@@ -104,6 +105,7 @@ static void free_object(geo_object *o)
     free(o->nrm);
     free(o->uv);
     free(o->idx);
+    free(o->adj);
     memset(o, 0, sizeof *o);
 }
 
@@ -250,10 +252,14 @@ soak_status soak_geometry_commit(soak_geometry *g)
     if (g->error[0]) return SOAK_ERR_NUMERIC;
     g->committed = 1;
     for (unsigned i = 0; i < g->count; ++i)
+        soak_geometry_object_bounds(g, i, &g->objects[i].bound_lo, &g->objects[i].bound_hi);
+    for (unsigned i = 0; i < g->count; ++i)
         if (g->objects[i].kind != SOAK_SHAPE_SPHERE) {
             geo_mark_clear_ball(g, i);
             geo_mark_clear_box(g, i);
+            geo_mark_convex(g, i);
         }
+    for (unsigned i = 0; i < g->count; ++i) geo_mark_convex_isolated(g, i);
     return geo_mark_isolated(g);
 }
 

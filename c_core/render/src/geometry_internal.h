@@ -28,6 +28,14 @@ typedef struct geo_object {
     int has_clear_box; /* boxes: clear_lo..clear_hi meets no surface (geometry_clear_box.c) */
     soak_vec3 clear_lo, clear_hi;
     soak_vec3 box_lo, box_hi; /* the box's own bounds, with has_clear_box */
+    unsigned *adj;        /* closed convex meshes: face across each side (3 nt), else NULL */
+    int orient;           /* with adj: +1 faces wound counter-clockwise from outside, -1 clockwise */
+    int convex_isolated;  /* with adj: no other object's bounds reach into the body */
+    unsigned *dir_map;    /* with adj (same block): the face seen from map_c in each cube-map cell */
+    int map_n;            /* cells per cube face side */
+    soak_vec3 map_c;      /* the vertices' mean, inside the body */
+    double map_r;         /* the vertices' mean distance from map_c */
+    soak_vec3 bound_lo, bound_hi; /* the object's bounds (set at commit) */
 } geo_object;
 
 struct soak_geometry {
@@ -112,6 +120,19 @@ int geo_segment_in_clear_box(const geo_object *o, soak_vec3 a, soak_vec3 b);
  * (its exit face, outward normal, no texture coordinates), in closed form;
  * 0 when it does not apply (the caller asks the scene). */
 int geo_box_exit(const geo_object *o, unsigned object_id, const soak_ray *ray, soak_hit *hit, int *found);
+/* geometry_convex.c, run at commit: adj, orient and the direction map of a
+ * closed convex mesh, then (after every object is in) whether it is isolated;
+ * and the exit of a ray from inside such a mesh, found by walking faces from
+ * the direction map's guess: 1 with *found set when answered (want_uv = 0
+ * form: u = v = 0, ns = ng), 0 when the walk gave up or the origin is not
+ * inside (the caller asks the BVH). */
+#define GEO_CONVEX_MAX_STEPS 32
+/* Objects past which soak_geometry_ray_escapes asks the BVH instead of
+ * testing every other object's bounds. */
+#define GEO_ESCAPE_MAX_OBJECTS 16
+void geo_mark_convex(soak_geometry *g, unsigned id);
+void geo_mark_convex_isolated(soak_geometry *g, unsigned id);
+int geo_convex_exit(const geo_object *o, unsigned object_id, const soak_ray *ray, soak_hit *hit, int *found);
 /* geometry_query.c: the closest hit in the whole scene; detail 0 skips the
  * texture coordinates and the shading normal (a walk's boundary query). */
 soak_status geo_intersect_scene(const soak_geometry *g, const soak_ray *ray, int detail, soak_hit *hit, int *found);

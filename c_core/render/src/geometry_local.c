@@ -1,11 +1,19 @@
 /* Queries from inside one object (soak/geometry.h): an isolated sphere is
- * answered analytically, a segment inside a clear ball needs no traversal. */
+ * answered analytically, an isolated convex mesh by a walk over its faces
+ * (geometry_convex.c), a segment inside a clear ball needs no traversal. */
 #include "geometry_internal.h"
 
 static const geo_object *local_sphere(const soak_geometry *g, unsigned id)
 {
     const geo_object *o = id < g->count ? &g->objects[id] : NULL;
     return o && o->kind == SOAK_SHAPE_SPHERE && o->isolated ? o : NULL;
+}
+
+/* Object id when it is an isolated closed convex mesh, else NULL. */
+static const geo_object *local_convex(const soak_geometry *g, unsigned id)
+{
+    const geo_object *o = g->committed && id < g->count ? &g->objects[id] : NULL;
+    return o && o->convex_isolated ? o : NULL;
 }
 
 soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int want_uv,
@@ -17,6 +25,8 @@ soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned objec
         if (!ray_ok(ray)) return SOAK_ERR_ARG;
         if (!want_uv && g->committed && object_id < g->count && geo_box_exit(&g->objects[object_id], object_id, ray, hit, found))
             return SOAK_OK;
+        const geo_object *cv = want_uv ? NULL : local_convex(g, object_id);
+        if (cv && geo_convex_exit(cv, object_id, ray, hit, found)) return SOAK_OK;
         return geo_intersect_scene(g, ray, want_uv, hit, found);
     }
     if (!ray_ok(ray)) return SOAK_ERR_ARG;
@@ -64,6 +74,9 @@ soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object
             *occluded = 0; /* a ball is convex: the whole segment is in it */
             return SOAK_OK;
         }
+        const geo_object *cv = local_convex(g, object_id);
+        soak_hit h;
+        if (cv && geo_convex_exit(cv, object_id, ray, &h, occluded)) return SOAK_OK;
         return soak_geometry_occluded(g, ray, occluded);
     }
     if (!ray_ok(ray)) return SOAK_ERR_ARG;
@@ -84,7 +97,7 @@ soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object
 
 int soak_geometry_object_isolated(const soak_geometry *g, unsigned object_id)
 {
-    return g && g->committed && local_sphere(g, object_id) != NULL;
+    return g && g->committed && (local_sphere(g, object_id) != NULL || local_convex(g, object_id) != NULL);
 }
 
 double soak_geometry_clear_distance(const soak_geometry *g, unsigned object_id, soak_vec3 p)
@@ -96,4 +109,40 @@ double soak_geometry_clear_distance(const soak_geometry *g, unsigned object_id, 
     double r = sph ? sph->radius : sqrt(o->clear_r2);
     double d = r - soak_v3_len(soak_v3_sub(p, c));
     return fmax(d > 0 ? d : 0.0, geo_clear_box_distance(o, p));
+}
+
+/* 1 when the ray's segment misses the box [lo, hi] grown by pad (slabs). */
+static int misses_box(const soak_ray *r, soak_vec3 lo, soak_vec3 hi, double pad)
+{
+    double t0 = r->tnear, t1 = r->tfar;
+    double o[3] = {r->org.x, r->org.y, r->org.z}, d[3] = {r->dir.x, r->dir.y, r->dir.z};
+    double l[3] = {lo.x - pad, lo.y - pad, lo.z - pad}, h[3] = {hi.x + pad, hi.y + pad, hi.z + pad};
+    for (int a = 0; a < 3; ++a) {
+        if (d[a] == 0) {
+            if (o[a] < l[a] || o[a] > h[a]) return 1;
+            continue;
+        }
+        double ta = (l[a] - o[a]) / d[a], tb = (h[a] - o[a]) / d[a];
+        t0 = fmax(t0, fmin(ta, tb));
+        t1 = fmin(t1, fmax(ta, tb));
+        if (!(t0 <= t1)) return 1;
+    }
+    return 0;
+}
+
+int soak_geometry_ray_escapes(const soak_geometry *g, unsigned object_id, const soak_ray *ray)
+{
+    if (!g || !ray || !g->committed || object_id >= g->count || g->count > GEO_ESCAPE_MAX_OBJECTS || !ray_ok(ray))
+        return 0;
+    const geo_object *o = &g->objects[object_id];
+    if (!(o->kind == SOAK_SHAPE_SPHERE || o->kind == SOAK_SHAPE_BOX || o->adj)) return 0;
+    /* Conservative by Embree's float error at the scene's scale. */
+    double m = fmax(fmax(fabs(ray->org.x), fabs(ray->org.y)), fabs(ray->org.z));
+    for (unsigned j = 0; j < g->count; ++j) {
+        const geo_object *q = &g->objects[j];
+        soak_vec3 a = q->bound_lo, b = q->bound_hi;
+        double qm = fmax(fmax(fmax(fabs(a.x), fabs(a.y)), fmax(fabs(a.z), fabs(b.x))), fmax(fabs(b.y), fabs(b.z)));
+        if (j != object_id && !misses_box(ray, q->bound_lo, q->bound_hi, 1e-5 * (1 + fmax(m, qm)))) return 0;
+    }
+    return 1;
 }

@@ -29,7 +29,8 @@
  * estimate unbiased at albedo 1, where it never fires (long walks are capped
  * at RT_MEDIUM_MAX_EVENTS and counted). The boundary of the walk is the
  * object's surface (soak_geometry_intersect_local: closed form for an
- * isolated sphere, the scene's BVH otherwise), and a path arriving at it
+ * isolated sphere, a walk over the faces of an isolated convex mesh, the
+ * scene's BVH otherwise), and a path arriving at it
  * crosses the layer stack upward (rt_cross_stack), reflected back in or
  * leaving.
  *
@@ -353,11 +354,15 @@ static double film_shadow_at(nee_ctx *c, int li, double cover, double cos1)
 }
 
 /* Whether light l is seen from exit e: always for the lone convex object
- * (e->wl leaves it outward, cos1 > 0), else by a shadow ray. */
+ * (e->wl leaves it outward, cos1 > 0), and for a convex one when the ray
+ * misses every other object's bounds; else by a shadow ray. */
 static int exit_sees_light(const nee_ctx *c, const nee_exit *e, double dist_light)
 {
     if (c->lone_convex) return 1;
-    return rt_visible(c->t, soak_geometry_offset(e->h.p, e->n, e->wl), e->wl, dist_light);
+    soak_vec3 org = soak_geometry_offset(e->h.p, e->n, e->wl);
+    soak_ray r = {org, e->wl, 0.0, dist_light < INFINITY ? dist_light * (1 - 1e-5) : INFINITY};
+    if (soak_geometry_ray_escapes(c->t->ctx->scene->geometry, c->obj->object_id, &r)) return 1;
+    return rt_visible(c->t, org, e->wl, dist_light);
 }
 
 /* Beer-Lambert in the film on the light's way in, weighted by the share of

@@ -152,7 +152,11 @@ soak_status soak_geometry_occluded_fan(const soak_geometry *g, soak_vec3 org, co
  * enters its interior, and then only its own surface is tested. An isolated
  * sphere (every other surface at least its radius from its centre, decided
  * at commit) is answered in closed form in double precision, without the
- * BVH; every other case falls back to the scene query, except that an
+ * BVH; so is a closed convex mesh that no other object's bounds reach into
+ * (found at commit), by a walk across its faces from a direction map's guess
+ * to the face whose cone from the ray's origin holds the direction
+ * (geometry_convex.c; a walk of more than a few dozen faces asks the BVH);
+ * every other case falls back to the scene query, except that an
  * occlusion query whose segment lies in the object's clear ball (about the
  * centre of its bounds, free of every surface, found at commit) or, for a
  * box that no other object's bounds meet, in its interior answers 0
@@ -163,8 +167,15 @@ soak_status soak_geometry_occluded_fan(const soak_geometry *g, soak_vec3 org, co
 soak_status soak_geometry_intersect_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int want_uv,
                                           soak_hit *hit, int *found);
 soak_status soak_geometry_occluded_local(const soak_geometry *g, unsigned object_id, const soak_ray *ray, int *occluded);
-/* 1 when the local queries of object_id take the closed-form path. */
+/* 1 when the local queries of object_id skip the BVH: an isolated sphere or
+ * an isolated closed convex mesh. */
 int soak_geometry_object_isolated(const soak_geometry *g, unsigned object_id);
+/* 1 when a ray leaving convex object object_id (a sphere, a box or a closed
+ * convex mesh) from its surface, outward, certainly meets no surface: it
+ * cannot come back to the object, and it misses every other object's bounds
+ * (grown by Embree's float error). 0 when that is not certain (then ask
+ * soak_geometry_occluded) or with more than a few objects. No traversal. */
+int soak_geometry_ray_escapes(const soak_geometry *g, unsigned object_id, const soak_ray *ray);
 /* A lower bound on the distance from p, inside object object_id, to any
  * surface: from an isolated sphere's own radius, or from the object's clear
  * ball or clear box (the larger); 0 when p is outside them or there is

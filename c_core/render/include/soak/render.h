@@ -72,7 +72,8 @@ typedef struct soak_render_stats {
     long long leaked;       /* medium paths that found no boundary (open mesh): dropped */
     long long nan_paths;    /* camera paths whose radiance came out NaN/Inf: counted as black */
     long long geometry_errors; /* failed geometry queries: the path (or shadow ray) ended there */
-    double seconds;
+    double seconds;         /* wall-clock time of the path tracing */
+    double cpu_seconds;     /* CPU time (user + system, all threads) of the path tracing */
     int min_spp, max_spp;   /* samples actually taken per pixel */
     int stopped_early;      /* cancel or time limit */
 } soak_render_stats;
