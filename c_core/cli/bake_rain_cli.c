@@ -78,8 +78,9 @@ static const cli_opt rain_opts[] = {
      .help = "no falling film: slopes keep only the flat film times n.up (walls drain)"},
     {"--contact-angle", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 90, F(p.contact_angle_deg), .meta = "DEG",
      .help = "the surface's contact angle with water, %R deg: a film thinner than\n"
-             "Hartley & Murgatroyd's (1964) minimum wetting rate breaks into runnels\n"
-             "(single map only; default 0: the film holds)"},
+             "Hartley & Murgatroyd's (1964) minimum wetting rate breaks into runnels,\n"
+             "placed on the surface's grooves (else by --seed); with --frames each frame's\n"
+             "film gathers into the same runnels (default 0: the film holds)"},
     {"--rays", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RAIN_MAX_RAYS, F(p.rays), .meta = "N",
      .help = "rays per texel, %R (default 64)"},
     {"--sky", NULL, CLI_OPT_CHOICE, .choices = skies, F(p.sky), .meta = "rain|hemisphere",
@@ -391,6 +392,13 @@ static int run_frames(rain_args *a, const bake_opts *o)
                "%.1f %% evaporated\n",
                o->last, bake_frame_time(o, o->last), b->in * 1e3, 100.0 * b->dripped / b->in, 100.0 * b->held / b->in,
                100.0 * b->evaporated / b->in);
+    int runnel_texels;
+    double spacing;
+    soak_rain_frames_runnels(a->frames, &runnel_texels, &spacing);
+    if (rc == SOAK_EXIT_OK && runnel_texels > 0)
+        printf("runnels: the steady film breaks into rivulets on %d texels, %.1f mm apart; each frame's film\n"
+               "gathers into them where it is below the minimum wetting rate\n",
+               runnel_texels, spacing * 1e3);
     soak_rain_frames_destroy(a->frames);
     return rc;
 }
