@@ -14,6 +14,7 @@ Two kinds of property:
   keys the node's input itself."""
 
 import json
+import math
 
 import bpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, PointerProperty, StringProperty
@@ -255,6 +256,26 @@ class SoakRainSettings(bpy.types.PropertyGroup):
                                       "reaches, as Bake Wet Map computes it); off: the object is open to the sky")
     rays: IntProperty(name="Rays", default=32, min=1, max=4096,
                       description="Rays per texel for the sky exposure (Shelter by Scene)")
+    runnels: EnumProperty(
+        name="Runnels", default="OFF",
+        description="Whether the film running down steep faces breaks into runnels: below Hartley & "
+                    "Murgatroyd's (1964) minimum wetting rate for the water's contact angle it gathers into "
+                    "narrow rivulets about a centimetre apart, placed on the surface's grooves (soak bake rain "
+                    "--contact-angle; a texel should be 2 mm or less for them to show)",
+        items=(("OFF", "Off", "The film covers steep faces evenly (a perfectly wetting surface)"),
+               ("PRESET", "From Preset", "The contact angle of the material's preset (materials.json: brick "
+                "30 degrees, concrete 40, oak 60, ...)"),
+               ("CUSTOM", "Contact Angle", "The Contact Angle set below")))
+    contact_angle: FloatProperty(
+        name="Contact Angle", default=math.radians(30.0), min=0.0, max=math.pi / 2, subtype="ANGLE",
+        description="Water's contact angle on the surface, 0-90 degrees (clean glass 20-30, brick 30, "
+                    "concrete 40, painted metal about 77): the larger, the sooner a thin film breaks into "
+                    "runnels; 0 keeps the film")
+    splashes: BoolProperty(
+        name="Splashes", default=False,
+        description="Drops landing on wet texels splash above Cossali et al.'s (1997) crown threshold, "
+                    "throwing secondary drops that spot the dry ground 4-17 cm around (soak bake drops "
+                    "--splash; the drops then land one after another on one thread)")
 
 
 classes = (SoakMaterialSettings, SoakRainSettings)

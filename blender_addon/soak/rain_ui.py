@@ -36,6 +36,11 @@ class _Rain:
         col.prop(s, "shelter")
         if s.shelter:
             col.prop(s, "rays")
+        col.separator()
+        col.prop(s, "runnels")
+        if s.runnels == "CUSTOM":
+            col.prop(s, "contact_angle")
+        col.prop(s, "splashes")
         mat = ob.active_material if ob is not None else None
         if mat is not None and mat.node_tree is not None and any(
                 n.get(material_tree.ROLE_KEY) == "rain" for n in mat.node_tree.nodes):

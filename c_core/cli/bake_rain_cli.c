@@ -11,13 +11,15 @@
 #include "cli.h"
 #include "soak/bake_rain.h"
 #include "soak/geometry.h"
+#include "soak/preset.h"
 #include "soak/staged.h"
 
 #define CMD "bake rain"
 
 typedef struct rain_args {
     soak_rain_params p;
-    int have_dir, up_axis, no_film, have_fps, have_time, have_frame_time;
+    int have_dir, up_axis, no_film, have_fps, have_time, have_frame_time, have_angle;
+    const char *preset, *materials; /* --preset: the contact angle of a preset */
     double fps;
     const char *mesh_path, *exposure_path, *water_path, *film_path, *vertex_path, *pov_name;
     int float_exr;                /* the sequence table's --float, for the extra maps */
@@ -80,10 +82,17 @@ static const cli_opt rain_opts[] = {
      .help = "also write the falling film thickness while rain falls (m; use .exr;\nwith --frames a pattern: the film of each frame)"},
     {"--no-film", NULL, CLI_OPT_FLAG, .flag = 1, F(no_film),
      .help = "no falling film: slopes keep only the flat film times n.up (walls drain)"},
-    {"--contact-angle", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 90, F(p.contact_angle_deg), .meta = "DEG",
+    {"--preset", NULL, CLI_OPT_STRING, F(preset), .meta = "NAME",
+     .help = "take --contact-angle from this preset (soak materials; wetting.contact_angle_deg,\n"
+             "above 90 taken as 90: such surfaces bead, see soak bake beads)"},
+    {"--materials", NULL, CLI_OPT_STRING, F(materials), .meta = "PATH",
+     .help = "presets file for --preset (default: $SOAK_MATERIALS or the shipped one)"},
+    {"--contact-angle", NULL, CLI_OPT_DOUBLE, .lo = 0, .hi = 90, F(p.contact_angle_deg),
+     CLI_SEEN(rain_args, have_angle), .meta = "DEG",
      .help = "the surface's contact angle with water, %R deg: a film thinner than\n"
-             "Hartley & Murgatroyd's (1964) minimum wetting rate breaks into runnels\n"
-             "(single map only; default 0: the film holds)"},
+             "Hartley & Murgatroyd's (1964) minimum wetting rate breaks into runnels,\n"
+             "placed on the surface's grooves (else by --seed); with --frames each frame's\n"
+             "film gathers into the same runnels (default 0: the film holds)"},
     {"--rays", NULL, CLI_OPT_INT, .ilo = 1, .ihi = SOAK_RAIN_MAX_RAYS, F(p.rays), .meta = "N",
      .help = "rays per texel, %R (default 64)"},
     {"--sky", NULL, CLI_OPT_CHOICE, .choices = skies, F(p.sky), .meta = "rain|hemisphere",
@@ -226,6 +235,34 @@ static int settle_frames(rain_args *a, bake_opts *o)
     return -1;
 }
 
+/* --preset: its contact angle unless --contact-angle is given. Returns -1
+ * to go on, else the exit code. */
+static int angle_from_preset(rain_args *a)
+{
+    if (!a->preset) return -1;
+    char err[4352] = "";
+    soak_preset_db *db = NULL;
+    soak_status st = soak_presets_load(a->materials, &db, err, sizeof err);
+    if (st != SOAK_OK) {
+        cli_error(CMD, "--preset: %s", err[0] ? err : soak_status_str(st));
+        return SOAK_EXIT_FAIL;
+    }
+    const soak_preset *p = soak_presets_find(db, a->preset);
+    int rc = -1;
+    if (!p) {
+        cli_error(CMD, "--preset: no preset named '%s' in %s (see soak materials)", a->preset, soak_presets_path(db));
+        rc = SOAK_EXIT_USAGE;
+    } else if (!(p->contact_angle_deg >= 0)) {
+        cli_error(CMD, "--preset %s: %s gives no wetting.contact_angle_deg; give --contact-angle", a->preset,
+                  soak_presets_path(db));
+        rc = SOAK_EXIT_USAGE;
+    } else if (!a->have_angle) {
+        a->p.contact_angle_deg = p->contact_angle_deg < 90.0 ? p->contact_angle_deg : 90.0;
+    }
+    soak_presets_free(db);
+    return rc;
+}
+
 /* Returns -1 to go on, else the exit code. */
 static int parse_args(int argc, char **argv, rain_args *a, bake_opts *o)
 {
@@ -242,6 +279,11 @@ static int parse_args(int argc, char **argv, rain_args *a, bake_opts *o)
         cli_error(CMD, "a MESH file is required (see --help)");
         return SOAK_EXIT_USAGE;
     }
+    if (a->materials && !a->preset) {
+        cli_error(CMD, "--materials is the presets file for --preset: give --preset NAME too");
+        return SOAK_EXIT_USAGE;
+    }
+    if ((rc = angle_from_preset(a)) >= 0) return rc;
     double s = a->up_axis < 3 ? 1.0 : -1.0;
     int k = a->up_axis % 3;
     a->p.up = soak_v3(k == 0 ? s : 0, k == 1 ? s : 0, k == 2 ? s : 0);
@@ -397,6 +439,13 @@ static int run_frames(rain_args *a, const bake_opts *o)
                "%.1f %% evaporated\n",
                o->last, bake_frame_time(o, o->last), b->in * 1e3, 100.0 * b->dripped / b->in, 100.0 * b->held / b->in,
                100.0 * b->evaporated / b->in);
+    int runnel_texels;
+    double spacing;
+    soak_rain_frames_runnels(a->frames, &runnel_texels, &spacing);
+    if (rc == SOAK_EXIT_OK && runnel_texels > 0)
+        printf("runnels: the steady film breaks into rivulets on %d texels, %.1f mm apart; each frame's film\n"
+               "gathers into them where it is below the minimum wetting rate\n",
+               runnel_texels, spacing * 1e3);
     soak_rain_frames_destroy(a->frames);
     return rc;
 }

@@ -730,6 +730,9 @@ def test_tooltips():
         for p in rna.properties:
             if p.identifier != "rna_type" and not p.is_hidden and not p.description.strip():
                 missing.append(f"{cls.bl_idname}.{p.identifier}")
+    for p in bpy.types.Scene.bl_rna.properties["soak_rain"].fixed_type.properties:   # Bake Rain's settings
+        if p.identifier != "rna_type" and not p.description.strip():
+            missing.append("Scene.soak_rain." + p.identifier)
     for p in soak.preferences.SoakPreferences.bl_rna.properties:
         if p.identifier not in ("rna_type", "bl_idname") and not p.description.strip():
             missing.append("preferences." + p.identifier)

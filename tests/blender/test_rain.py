@@ -44,7 +44,16 @@ is the baked file of the frame the scene frame must show, read on its own
  5. all or nothing: a failing soak, a failing wiring half-way and a
     backwards frame range leave the node tree as it was (common.tree_state),
     with no new image and no stray driver; a second bake replaces the first
-    one's nodes and images; undo of a third (3c's) brings back the second's tree."""
+    one's nodes and images; undo of a third (3c's) brings back the second's tree;
+ 6. the panel's Runnels and Splashes reach the bakes (issue 48): the roof of
+    4b baked again at 128 x 128 (2.3 mm texels) without them and with
+    Runnels = From Preset (the material's preset, sand: 20 degrees, whose
+    minimum wetting rate is far above the roof's film) and Splashes:
+    the film file at frame 12 runs (w = 1) on fewer than 60 % of the texels
+    it ran on without (the film gathered into rivulets, dry between them)
+    and still runs somewhere; the drops file at the rain's end differs (the
+    splashes' secondary drops; same seed); Contact Angle 30 degrees gives
+    `--contact-angle 30`."""
 import math
 import os
 import sys
@@ -371,6 +380,49 @@ def check_steep(sc):
           f"where the film runs, wetter than the drops at {film_wetter} of those {len(runs)} texels")
 
 
+def roof_files(sc, roof, runnels, splashes):
+    """Bakes the roof with the panel's Runnels and Splashes; its film file of
+    frame 12 and drops file of the rain's end."""
+    s = sc.soak_rain
+    s.runnels, s.splashes = runnels, splashes
+    op = sys.modules["soak.operators.rain"]
+    keep = op.RIPPLE_SIZE
+    op.RIPPLE_SIZE = 32                # the ripples are not looked at here
+    try:
+        check(bpy.ops.soak.bake_rain() == {"FINISHED"}, f"Bake Rain on the roof, Runnels {runnels}, Splashes "
+                                                         f"{splashes}")
+    finally:
+        op.RIPPLE_SIZE = keep
+    film, _ = read(os.path.join(folder(roof), "film.0012.exr"))
+    drops, _ = read(os.path.join(folder(roof), f"drops.{END:04d}.exr"))
+    return film, drops
+
+
+def check_runnels_splashes(sc):
+    """6 (see the module's docstring)."""
+    roof = bpy.data.objects["Roof"]
+    bpy.context.view_layer.objects.active = roof
+    s = sc.soak_rain
+    s.size = 128
+    op = sys.modules["soak.operators.rain"]
+    s.runnels, s.contact_angle = "CUSTOM", math.radians(30.0)
+    opts = op.runnel_options(s, "brick")
+    check(opts == ["--contact-angle", "30"], f"Contact Angle 30 degrees passes {opts}")
+    film0, drops0 = roof_files(sc, roof, "OFF", False)
+    preset = roof.active_material.soak.preset
+    film1, drops1 = roof_files(sc, roof, "PRESET", True)
+    n = 128
+    inner = [4 * (y * n + x) for y in range(2, n // 2) for x in range(4, n - 4)]    # the lower half, off the edges
+    runs0 = sum(1 for i in inner if film0[i] > 0.999)
+    runs1 = sum(1 for i in inner if film1[i] > 0.999)
+    changed = sum(1 for i in range(0, len(drops0), 4) if abs(drops0[i] - drops1[i]) > 1e-6)
+    check(runs0 > len(inner) // 2 and 0 < runs1 < 0.6 * runs0,
+          f"Runnels From Preset ({preset}) reach the film bake: the film runs on {runs1} of {len(inner)} texels "
+          f"of the roof's lower half against {runs0} without")
+    check(changed > 0, f"Splashes reach the drops bake: {changed} texels of drops.{END:04d} differ")
+    s.runnels, s.splashes, s.size = "OFF", False, ROOF_N
+
+
 def rain_state(mat):
     ad = mat.node_tree.animation_data
     drivers = sorted(fc.data_path for fc in ad.drivers) if ad else []
@@ -482,6 +534,7 @@ def main():
     check(bpy.ops.soak.make_dry() == {"FINISHED"} and not any(n.get("soak_role") for n in mat.node_tree.nodes),
           "Make Dry removes the rain's nodes")
     check_steep(bpy.context.scene)          # undo replaced the scene's Python object
+    check_runnels_splashes(bpy.context.scene)
     print(f"PASS: {len(CHECKS)} checks (Blender {bpy.app.version_string})")
 
 

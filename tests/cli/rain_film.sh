@@ -39,6 +39,15 @@ for f in fwet ffilm fwater fexp; do
 done
 got=$(oiiotool --dumpdata "$D/ffilm.exr" | sed -n 's/^ *Pixel (16, 31): *//p')
 close "$got" "$want" "$(awk -v w="$want" 'BEGIN { printf "%.3g", 1e-4 * w }')" "--float film at the foot vs Nusselt (1e-4)"
+# --preset: the preset's contact angle (materials.json gives brick 30 deg) = --contact-angle 30, byte for byte
+expect_exit 0 "wall with --contact-angle 30" -- "$SOAK" "${P[@]}" --contact-angle 30 --film "$D/ca.exr" -o "$D/cawet.exr"
+expect_exit 0 "wall with --preset brick" -- "$SOAK" "${P[@]}" --preset brick --film "$D/pb.exr" -o "$D/pbwet.exr"
+grep -q "runnels:" "$SOAK_TMP/last.out" && ok "--preset brick: runnels reported" || bad "--preset brick: no runnels line"
+oiiotool "$D/ca.exr" "$D/pb.exr" --diff >/dev/null 2>&1 && ok "--preset brick = --contact-angle 30 (film)" ||
+  bad "--preset brick differs from --contact-angle 30"
+expect_exit 2 "unknown preset" -- "$SOAK" "${P[@]}" --preset nosuch -o "$D/np.exr"
+expect_stderr "no preset named 'nosuch'" "the refusal names the preset"
+[ -e "$D/np.exr" ] && bad "a refused run left output" || ok "the refused --preset left no output"
 expect_exit 0 "--help" -- "$SOAK" bake rain --help
 grep -q -- "--no-film" "$SOAK_TMP/last.out" && ok "--help lists --no-film" || bad "--help lacks --no-film"
 finish

@@ -21,6 +21,7 @@ its own (OBJECT.NNN) when both bakes succeeded, and removed when wiring
 fails; earlier bakes' folders are kept (undo brings their images back)."""
 
 import hashlib
+import math
 import os
 import shutil
 import subprocess
@@ -67,21 +68,34 @@ def drops_command(exe, mesh, out, s, first, last, width, size_m, shelter):
            "--fps", f"{sim_fps:.9g}", "--map-size", f"{size_m:.9g}", "--width", str(width), "--height", str(width),
            "--seed", str(s.seed), "--dry-time", f"{s.dry_time:.9g}", "--frames", f"{first}-{last}",
            "--frame-origin", str(first), "-o", out]
+    if s.splashes:
+        cmd.append("--splash")
     if shelter:
         cmd[3:3] = [mesh]
         cmd += ["--up", "z", "--rays", str(s.rays)]
     return cmd
 
 
-def film_command(exe, mesh, out, s, first, last, width):
+def runnel_options(s, preset):
+    """The film bake's runnel options: the panel's Runnels (the preset's
+    contact angle, a given one in degrees, or none)."""
+    if s.runnels == "PRESET":
+        return ["--preset", preset]
+    if s.runnels == "CUSTOM" and s.contact_angle > 0.0:
+        return ["--contact-angle", f"{math.degrees(s.contact_angle):.6g}"]   # a float32 angle: 6 digits
+    return []
+
+
+def film_command(exe, mesh, out, s, first, last, width, preset="concrete"):
     """`soak bake rain --frames` over the drops' frames and times: the
     rain (the drops' rate, mm/h) falling from the first frame to the
-    panel's end frame."""
+    panel's end frame; runnels as the panel says (`preset`: the
+    material's)."""
     sim_fps = 1.0 / seconds_per_frame(s)
     return [exe, "bake", "rain", mesh, "--up", "z", "--rainfall", f"{s.rate:.9g}",
             "--duration", f"{rain_seconds(s):.9g}", "--fps", f"{sim_fps:.9g}", "--width", str(width),
             "--height", str(width), "--rays", str(s.rays), "--seed", str(s.seed), "--frames", f"{first}-{last}",
-            "--frame-origin", str(first), "-o", out]
+            "--frame-origin", str(first), "-o", out] + runnel_options(s, preset)
 
 
 def ripples_command(exe, out, s, fps):
@@ -257,7 +271,7 @@ class SOAK_OT_bake_rain(bpy.types.Operator):
         cmds = [drops_command(exe, mesh, os.path.join(self._stage, "drops.%04d.exr"), s, self._first,
                               self._last, s.size, map_size(ob, s), s.shelter),
                 film_command(exe, mesh, os.path.join(self._stage, "film.%04d.exr"), s, self._first, self._last,
-                             s.size)]
+                             s.size, ob.active_material.soak.preset)]
         if not self._cached:
             cmds.append(ripples_command(exe, os.path.join(self._stage, "ripples.%04d.exr"), s, fps))
         self._repeat = map_size(ob, s) / RIPPLE_TILE

@@ -556,6 +556,7 @@ void soak_rain_scene_free(soak_rain_scene *sc)
     free(sc->level);
     free(sc->descent);
     free(sc->up_dot_n);
+    soak_rain_runnel_field_free(&sc->runnels);
     soak_image_free(&sc->exposure);
     memset(sc, 0, sizeof *sc);
 }
@@ -570,16 +571,18 @@ soak_status soak_rain_scene_build(const soak_mesh *mesh, int width, int height, 
     if (st != SOAK_OK) return st;
     size_t n = (size_t)width * height;
     out->w = width, out->h = height;
+    soak_vec3 up = soak_v3_norm(p->up);
+    if (p->film && p->contact_angle_deg > 0.0) /* step 3c, placed on the steady film later */
+        st = soak_rain_runnel_field_make(&s, up, p->contact_angle_deg * SOAK_PI / 180.0, &out->runnels);
     out->covered = malloc(n), out->up_dot_n = malloc(n * sizeof *out->up_dot_n);
     out->adj = s.adj, out->area = s.area, out->drip = s.drip, out->level = s.level, out->descent = s.descent;
     s.adj = NULL, s.area = NULL, s.drip = NULL, s.level = NULL, s.descent = NULL;
-    soak_vec3 up = soak_v3_norm(p->up);
-    if (out->covered && out->up_dot_n)
+    if (st == SOAK_OK && out->covered && out->up_dot_n)
         for (size_t i = 0; i < n; ++i) {
             out->covered[i] = s.tri[i] >= 0;
             out->up_dot_n[i] = s.tri[i] >= 0 ? (float)soak_v3_dot(soak_rain_fget(s.nrm, i), up) : 1.0f;
         }
-    else
+    else if (st == SOAK_OK)
         st = SOAK_ERR_NOMEM;
     soak_rain_surface_free(&s);
     if (st != SOAK_OK) soak_rain_scene_free(out);

@@ -35,6 +35,7 @@ struct soak_rain_frames {
     soak_rain_box *boxes; /* the wave's scratch: the streams' boxes */
     double dt, rain_m_s, evap_m_s;
     rain_state now, cut; /* after whole steps; and cut short at a frame's time */
+    soak_rain_runnel_stats runnel_stats; /* the lattice placed on the steady film */
 };
 
 void soak_rain_frames_destroy(soak_rain_frames *f)
@@ -69,6 +70,8 @@ static soak_status film_faces(soak_rain_frames *f)
                            ? f->rain_m_s * sc->exposure.pixels[i] * sc->area[i] : 0.0;
     }
     if (f->p.film) st = soak_rain_film_map(&f->grid, sc->up_dot_n, sc->exposure.pixels, f->rain_m_s, f->evap_m_s, film, NULL);
+    if (st == SOAK_OK) /* step 3c: the single map's lattice, from the same steady film */
+        st = soak_rain_runnel_place(&f->sc.runnels, film, f->p.seed, &f->runnel_stats);
     for (size_t i = 0; i < n && st == SOAK_OK; ++i) {
         double c = sc->up_dot_n[i], s2 = 1.0 - c * c;
         f->kappa[i] = 0.0;
@@ -218,6 +221,8 @@ static void frame_row(void *ctx, int y, int thread)
     const soak_rain_frames *f = j->f;
     for (size_t i = (size_t)y * f->sc.w, end = i + f->sc.w; i < end; ++i) {
         double d = j->depth[i], film = f->kappa[i] > 0.0 ? d : 0.0;
+        if (film > 0.0) /* step 3c: this frame's film gathered into the lattice's rivulets */
+            d = film = soak_rain_runnel_texel(&f->sc.runnels, &f->grid, i, film);
         j->out->water.pixels[i] = (float)d;
         j->out->film.pixels[i] = (float)(film < SOAK_RAIN_FILM_MAX ? film : SOAK_RAIN_FILM_MAX);
         j->out->wetness.pixels[i] = (float)soak_rain_wetness(d, film, f->p.saturation_depth);
@@ -285,6 +290,12 @@ soak_status soak_rain_frames_at(soak_rain_frames *f, double t, const soak_bake_e
 const soak_image *soak_rain_frames_exposure(const soak_rain_frames *f)
 {
     return f ? &f->sc.exposure : NULL;
+}
+
+void soak_rain_frames_runnels(const soak_rain_frames *f, int *texels, double *spacing)
+{
+    *texels = f ? f->runnel_stats.broken : 0;
+    *spacing = f ? f->runnel_stats.spacing : 0.0;
 }
 
 const soak_uv_stats *soak_rain_frames_uv(const soak_rain_frames *f)

@@ -29,17 +29,42 @@ double soak_rain_runnel_half_width(double flux, double theta, double sin_slope);
 double soak_rain_runnel_mean_depth(double a, double theta, double y0, double y1);
 
 typedef struct soak_rain_runnel_stats {
-    int broken;     /* texels whose film broke into rivulets */
-    double spacing; /* m, the rivulets' spacing (0 where none broke) */
+    int broken;      /* texels whose film broke into rivulets */
+    double spacing;  /* m, the rivulets' spacing (0 where none broke) */
+    int from_relief; /* 1: the lattice's phase was set by the relief's grooves, 0: by the seed */
 } soak_rain_runnel_stats;
 
+/* What the runnels read of the surface, per texel, made once a bake (the
+ * single map and every frame of a sequence use the same lattice). */
+typedef struct soak_rain_runnel_field {
+    int w, h;
+    double theta;          /* contact angle, rad */
+    float *sine;           /* slope sine; 0 where level or uncovered (no runnels) */
+    double *across;        /* m, p . unit(up x n): the position across the slope */
+    float *concave;        /* 1/m, >= 0: the across-slope concavity -dn_s/ds (grooves, joints) */
+    double spacing, phase; /* the lattice: rivulet k along s = (k + phase) spacing; spacing 0: none */
+} soak_rain_runnel_field;
+
+/* Fills r from the rasterised surface s (theta in (0, pi/2]); on error
+ * nothing is kept. */
+soak_status soak_rain_runnel_field_make(const rain_surface *s, soak_vec3 up, double theta, soak_rain_runnel_field *r);
+void soak_rain_runnel_field_free(soak_rain_runnel_field *r);
+/* The lattice of r from the steady film (m, w x h): the spacing is
+ * soak_rain_runnel_spacing of the median broken film; the phase puts the
+ * rivulets where the relief concentrates flow (the concavity-weighted
+ * circular mean of the broken texels' positions modulo the spacing) or,
+ * on a surface without grooves, comes from the seed. */
+soak_status soak_rain_runnel_place(soak_rain_runnel_field *r, const double *film, uint64_t seed,
+                                   soak_rain_runnel_stats *stats);
+/* Texel i's film h (m) as the lattice's rivulets: h itself where its flux
+ * is at or above q_min, the rivulets would touch, or r has no lattice;
+ * else the rivulets' mean depth over the texel's width across the flow
+ * (soak_rain_flow_width), each rivulet carrying the flux of its spacing. */
+double soak_rain_runnel_texel(const soak_rain_runnel_field *r, const soak_rain_flow_grid *g, size_t i, double h);
+
 /* Replaces film (m, w x h) by rivulets where its flux is below q_min:
- * rivulet k runs along s = (k + phase) * spacing, s the texel's position
- * across the slope (p . unit(up x n)), phase from seed; the spacing is
- * soak_rain_runnel_spacing of the median broken film. A texel holds the
- * rivulet's mean depth over its width across the flow
- * (soak_rain_flow_width); a rivulet carries the flux of its spacing, so
- * water is conserved across every line of the face. theta in (0, pi/2]. */
+ * field, lattice and soak_rain_runnel_texel on every texel. theta in
+ * (0, pi/2]. */
 soak_status soak_rain_runnels(const rain_surface *s, const soak_rain_flow_grid *g, soak_vec3 up, double theta,
                               uint64_t seed, double *film, soak_rain_runnel_stats *stats);
 

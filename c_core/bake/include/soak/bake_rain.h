@@ -130,7 +130,10 @@
  *      rivulet of B. R. Duffy, H. K. Moffatt, "Flow of a viscous trickle on
  *      a slowly varying incline", Chem. Eng. J. 60 (1995) 141-146). Rivulet k runs
  *      along s = (k + phase) spacing, s the position across the slope,
- *      p . unit(up x n), phase from the seed; a texel's film is the
+ *      p . unit(up x n); the phase puts the rivulets on the relief's
+ *      grooves (arg of the sum over broken texels of kappa e^(2 pi i s /
+ *      spacing), kappa = -dn_s/ds the across-slope concavity), from the
+ *      seed where no texel is concave (a plane); a texel's film is the
  *      rivulets' mean depth over its width across the flow. Where 2 a >=
  *      spacing the rivulets touch and the film holds. Water, sigma = 0.0728
  *      N/m. The retention of the time loop follows the rivulets.
@@ -175,6 +178,10 @@
  *    Wetness as in step 4 with the film the water on the film's faces
  *    (film >= SOAK_RAIN_FILM_RUNNING: w = 1); once the film has drained
  *    thinner, w = 1 - exp(-depth / saturation) and evaporation dries it.
+ *    Runnels (contact_angle_deg > 0): step 3c's lattice, placed once on the
+ *    steady film, gathers each frame's film on the film's faces (its flux
+ *    K h^3 against q_min) into rivulets carrying that frame's flux; the
+ *    wave itself runs on the mean film (its balance is the mean film's).
  *
  * Lengths are in the mesh's unit (metres assumed for the rainfall rates);
  * times in seconds. */
@@ -329,6 +336,10 @@ soak_status soak_rain_frames_at(soak_rain_frames *f, double t, const soak_bake_e
 void soak_rain_frame_free(soak_rain_frame *r);
 /* The sky exposure of the frames' mesh (step 2, gutter not applied). */
 const soak_image *soak_rain_frames_exposure(const soak_rain_frames *f);
+/* Step 3c's lattice of a sequence (placed on the steady film, as the single
+ * map's): texels of the steady film that broke, and the spacing (m; 0: no
+ * runnels). */
+void soak_rain_frames_runnels(const soak_rain_frames *f, int *texels, double *spacing);
 /* What step 1 made of the mesh's faces. */
 const soak_uv_stats *soak_rain_frames_uv(const soak_rain_frames *f);
 
