@@ -15,7 +15,7 @@ Panels 1-2: the slab, limestone, Soak_Wet_Material_UV_Fn over the film
 frame's wet map. Panels 3-4: a 5 cm patch of the yard from 8 cm, concrete,
 Soak_Wet_Drops_Material (Spot 0.1) over the drops frame. Blender's cameras
 and sun, Blender's z-up axes turned into POV-Ray's y-up ones (x, z, y).
-300 x 300 a panel, 4-pixel white gaps; outputs through a temporary + rename."""
+300 x 300 a panel (3 x 3 rays a pixel), 4-pixel white gaps; outputs through a temporary + rename."""
 import math
 import os
 import shutil
@@ -24,6 +24,7 @@ import sys
 import tempfile
 
 W = 300
+SS = 3                                          # rays a pixel: SS x SS
 FIRST, RAIN_END, SLAB_FRAME, FPS = 1, 40, 50, 4
 RATE, SIZE = 30.0, 0.3
 DURATION = (RAIN_END - FIRST) / FPS            # the add-on's rain_seconds: 9.75 s
@@ -113,8 +114,12 @@ def main():
     for tag, text in scenes().items():
         with open(os.path.join(tmp, tag + ".pov"), "w") as f:
             f.write(text)
-        run(["povray", f"+I{tag}.pov", f"+O{tag}.png", f"+W{W}", f"+H{W}", "-D", "-V", "+WT2", f"+L{lib}",
-             "+A0.05", "+AM2", "+R3", "-GA"], tmp)
+        # SS x SS rays a pixel on a grid, averaged in linear light (a box filter): the runnels are
+        # narrower than a pixel, and adaptive antialiasing misses them between its first rays
+        run(["povray", f"+I{tag}.pov", f"+O{tag}.exr", "+FE", f"+W{W * SS}", f"+H{W * SS}", "-D", "-V", "+WT2",
+             f"+L{lib}", "-A", "-GA", "Output_Alpha=off"], tmp)
+        run(["oiiotool", f"{tag}.exr", "--resize:filter=box", f"{W}x{W}", "--colorconvert", "linear", "sRGB",
+             "-d", "uint8", "-o", f"{tag}.png"], tmp)
         panels.append(os.path.join(tmp, tag + ".png"))
     strip = os.path.join(tmp, "strip.png")
     run(["oiiotool"] + panels + ["--mosaic:pad=4", "4x1", "--ch", "R,G,B", "-d", "uint8", "-o", strip], tmp)
