@@ -442,8 +442,8 @@ static void test_utf16(void)
     soak_mesh_free(&b);
 }
 
-/* Every OBJ and PLY under folder (recursively), or the project's seeds
- * (first byte the format: 0 OBJ, 1 PLY, modulo 12; fuzz_mesh.c). */
+/* Every OBJ, PLY and STL under folder (recursively), or the project's seeds
+ * (first byte the format modulo 12: 0 OBJ, 1 PLY, 2 STL; fuzz_mesh.c). */
 static void walk_corpus(const char *folder, int seeds, int *seen, int *taken)
 {
     DIR *d = opendir(folder);
@@ -487,7 +487,7 @@ static void test_corpora(void)
     if (at) strcat(at, "_native"); /* its own seeds: byte 0 the same for obj, ply and stl */
     walk_corpus(seeds, 1, &seen, &taken);
     printf("info: project seeds: %d OBJ/PLY/STL, %d read natively\n", seen, taken);
-    check_true("the project's OBJ and PLY seeds: some read natively", seen > 0 && taken > 0);
+    check_true("the project's OBJ, PLY and STL seeds: some read natively", seen > 0 && taken > 0);
     seen = taken = 0;
     walk_corpus("/usr/share/assimp/models", 0, &seen, &taken);
     printf("info: Assimp test models: %d OBJ/PLY/STL, %d read natively\n", seen, taken);
