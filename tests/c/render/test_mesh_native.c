@@ -95,9 +95,12 @@ static int equal_to_assimp(const char *path, int req, int strict_normals)
     const char *dot = strrchr(path, '.');
     if (dot && !strcasecmp(dot, ".stl")) {
         int same = n.n_vertices == a.n_vertices && n.n_triangles == a.n_triangles &&
-                   !memcmp(n.indices, a.indices, 3 * n.n_triangles * sizeof *n.indices);
-        snprintf(what, sizeof what, "%s: vertices joined and numbered as Assimp's (native %zu, Assimp %zu)", path,
-                 n.n_vertices, a.n_vertices);
+                   !memcmp(n.indices, a.indices, 3 * n.n_triangles * sizeof *n.indices) &&
+                   !memcmp(n.positions, a.positions, 3 * n.n_vertices * sizeof *n.positions);
+        snprintf(what, sizeof what,
+                 "%s: vertices joined and numbered as Assimp's, positions the same bits, -0 as +0 (native %zu, "
+                 "Assimp %zu)",
+                 path, n.n_vertices, a.n_vertices);
         check_true(what, same);
     }
     snprintf(what, sizeof what, "%s: normals within 1e-5 (max diff %.3g)", path, d.nrm);
