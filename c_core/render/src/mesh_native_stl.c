@@ -234,7 +234,7 @@ static int stl_read_ascii(native_text t, native_mesh *m, char *why, size_t whyle
         return 0;
     }
     stl_join j = {NULL, NULL, 0, 0};
-    int ok = stl_join_make(&j, (size_t)(t.end - t.p) / 16);
+    int ok = stl_join_make(&j, (size_t)(t.end - t.p) / 24); /* a facet takes at least 86 bytes */
     if (!ok) snprintf(why, whylen, "out of memory");
     ok = ok && stl_ascii_facets(&t, &j, m, why, whylen);
     free(j.slot);
