@@ -4,7 +4,8 @@ subdivided into N x N quads (2 N^2 triangles; N = 224 gives 100,352), displaced
 by a sum of Gaussian bumps and dimples, Y up (OBJ convention), with UVs over
 [0,1]^2 and per-vertex normals. Usage: rain_mesh.py OUT.obj [N]; OUT.ply
 writes the same surface as binary little-endian PLY (Turk 1994: float x y
-z nx ny nz u v, uchar/int vertex_indices)."""
+z nx ny nz u v, uchar/int vertex_indices); OUT.stl as binary STL (each
+facet its own three corners and its flat normal, no UVs)."""
 import math
 import random
 import struct
@@ -29,6 +30,9 @@ def main():
 
     if out.endswith(".ply"):
         write_ply(out, n, height, normal)
+        return
+    if out.endswith(".stl"):
+        write_stl(out, n, height)
         return
     with open(out, "w") as f:
         f.write("# soak rain benchmark mesh: %d triangles\n" % (2 * n * n))
@@ -68,6 +72,26 @@ def write_ply(out, n, height, normal):
                 a = j * (n + 1) + i
                 b, c, d = a + 1, a + n + 1, a + n + 2
                 f.write(struct.pack("<B3iB3i", 3, a, b, d, 3, a, d, c))
+
+
+def write_stl(out, n, height):
+    def corner(i, j):
+        x, z = -1 + 2 * i / n, 1 - 2 * j / n
+        return (x, height(x, z), z)
+
+    with open(out, "wb") as f:
+        f.write(b"soak rain benchmark mesh".ljust(80, b" ") + struct.pack("<I", 2 * n * n))
+        for j in range(n):
+            for i in range(n):
+                a, b, c, d = corner(i, j), corner(i + 1, j), corner(i, j + 1), corner(i + 1, j + 1)
+                for p, q, r in ((a, b, d), (a, d, c)):
+                    e1 = [q[k] - p[k] for k in range(3)]
+                    e2 = [r[k] - p[k] for k in range(3)]
+                    nx = e1[1] * e2[2] - e1[2] * e2[1]
+                    ny = e1[2] * e2[0] - e1[0] * e2[2]
+                    nz = e1[0] * e2[1] - e1[1] * e2[0]
+                    length = math.sqrt(nx * nx + ny * ny + nz * nz)
+                    f.write(struct.pack("<12fH", nx / length, ny / length, nz / length, *p, *q, *r, 0))
 
 
 if __name__ == "__main__":

@@ -42,7 +42,7 @@ static const env_var vars[] = {
      "estimated work of a drops, ripples or rain bake, s on one\ncore (default 10 + 2e-6 per output texel)"},
     {"SOAK_MESH_TIMEOUT", ENV_NUMBER, 0, 1e6, 1, "time of the mesh reader process, s"},
     {"SOAK_MESH_READER", ENV_WORD, 0, 0, 0,
-     "auto (default): plain OBJ and PLY read by soak's own reader, the rest by\n"
+     "auto (default): plain OBJ, PLY and STL read by soak's own reader, the rest\nby "
      "Assimp; assimp: every mesh by Assimp (both in the contained reader)"},
     {"SOAK_IMAGE_TIMEOUT", ENV_NUMBER, 0, 1e6, 1, "time of the image reader process, s"},
 };

@@ -1,5 +1,6 @@
-/* The native OBJ/PLY reader (render/src/mesh_native.h) in this process:
- * the first byte picks the extension (even: obj, odd: ply), the rest is
+/* The native OBJ/PLY/STL reader (render/src/mesh_native.h) in this
+ * process: the first byte picks the extension (2 modulo 12: stl, as in
+ * fuzz_mesh.c; else even: obj, odd: ply), the rest is
  * the file. It is our own parser, so unlike the Assimp target it is fuzzed
  * in process in the short ctest runs too. A file it takes must come out
  * whole (triangles, indices in range, finite positions and UVs, unit
@@ -29,7 +30,8 @@ static void check_mesh(const soak_mesh *m)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (size < 1 || size > 1 << 20) return 0;
-    const char *path = fuzz_temp_file(data + 1, size - 1, data[0] % 2 ? "ply" : "obj");
+    const char *ext = data[0] % 12 == 2 ? "stl" : data[0] % 2 ? "ply" : "obj";
+    const char *path = fuzz_temp_file(data + 1, size - 1, ext);
     if (!path) return 0;
     soak_mesh m = {0};
     char why[200] = "";

@@ -6,7 +6,7 @@
  * that sends the finished arrays back through a pipe; the parent turns a
  * crash, a hang past the limit or a short message into a clear error naming
  * the file. Only the formats listed in soak/geometry.h are accepted. The
- * child reads plain OBJ and PLY with soak's own reader (mesh_native.h) and
+ * child reads plain OBJ, PLY and STL with soak's own reader (mesh_native.h) and
  * everything that reader declines with Assimp.
  *
  * Before the child starts, the parent refuses what is not a regular file (a
@@ -113,7 +113,7 @@ static int check_in_child(const char *path)
     return soak_mesh_native_enabled() && dot && (!slash || dot > slash) && !strcasecmp(dot, ".obj");
 }
 
-/* The native reader for the plain OBJ and PLY files it takes, Assimp for
+/* The native reader for the plain OBJ, PLY and STL files it takes, Assimp for
  * every other file (mesh_native.h); both inside this child. */
 static soak_status read_mesh(const char *path, const soak_mesh_request *rq, soak_mesh *m, char *msg, size_t n)
 {

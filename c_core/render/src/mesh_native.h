@@ -1,6 +1,7 @@
-/* The native mesh reader (issue 47 item 6): plain OBJ and PLY (ASCII and
- * binary), the formats large meshes come in, read without Assimp inside the
- * same contained reader child (mesh_contain.c). It gives the triangles,
+/* The native mesh reader (issue 47 item 6): plain OBJ, PLY (ASCII and
+ * binary) and STL (binary, plain ASCII), the formats large meshes come
+ * in, read without Assimp inside the same contained reader child
+ * (mesh_contain.c). It gives the triangles,
  * positions and UVs Assimp 5.2 gives for the files it takes (same numbers
  * parsed the same way, quads split as Assimp's triangulator splits them,
  * smooth normals made as its GenSmoothNormals makes them, up to vertices
@@ -18,7 +19,7 @@
 #include "soak/geometry.h"
 
 /* 1: *mesh holds path's triangles (validated); 0: declined, why says why
- * ("not OBJ or PLY", "n-gon of 5 corners at line 12", ...). */
+ * ("not OBJ, PLY or STL", "n-gon of 5 corners at line 12", ...). */
 int soak_mesh_native_read(const char *path, const soak_mesh_request *rq, soak_mesh *mesh, char *why, size_t whylen);
 
 /* 0 when SOAK_MESH_READER is "assimp" (every file to Assimp), else 1. */
@@ -68,5 +69,6 @@ void native_skip_blanks(native_text *t);
 int native_finish(native_mesh *m, const soak_mesh_request *rq, soak_mesh *mesh, char *why, size_t whylen);
 int native_read_obj(native_text t, native_mesh *m, char *why, size_t whylen);
 int native_read_ply(native_text t, native_mesh *m, char *why, size_t whylen);
+int native_read_stl(native_text t, native_mesh *m, char *why, size_t whylen);
 
 #endif

@@ -209,9 +209,25 @@ static int smooth_normals(const native_mesh *m, double *acc)
     return ok;
 }
 
-/* mesh_assimp.c's walk: a unit normal in double, (0, 0, 1) when none. */
-static void unit_or_z(const double *n, double *o)
+/* mesh_assimp.c's walk multiplies by the node transform, the identity
+ * here, as sums of products (rows 1, +0, +0; positions plus a +0
+ * translation): a -0 position becomes +0, and a -0 normal component stays
+ * -0 only when the other products are -0 too. Per-vertex outputs write
+ * the sign (PLY, glTF bits; "-0" in CSV). */
+static void as_walked(const double *v, double *o, int translate)
 {
+    for (int r = 0; r < 3; ++r) {
+        double row[3] = {r == 0 ? 1.0 : 0.0, r == 1 ? 1.0 : 0.0, r == 2 ? 1.0 : 0.0};
+        o[r] = row[0] * v[0] + row[1] * v[1] + row[2] * v[2];
+        if (translate) o[r] += 0.0;
+    }
+}
+
+/* mesh_assimp.c's walk: a unit normal in double, (0, 0, 1) when none. */
+static void unit_or_z(const double *nrm, double *o)
+{
+    double n[3];
+    as_walked(nrm, n, 0);
     double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (l > 1e-300 && isfinite(l)) {
         o[0] = n[0] / l, o[1] = n[1] / l, o[2] = n[2] / l;
@@ -244,7 +260,9 @@ static int fill(const native_mesh *m, const vertex_set *s, const double *acc, in
     o->n_triangles = m->n_tri;
     for (size_t v = 0; v < s->n; ++v) {
         const uint32_t *key = s->vkey + 3 * v;
-        for (int k = 0; k < 3; ++k) o->positions[3 * v + k] = m->pos[3 * (size_t)key[0] + k];
+        double p[3];
+        for (int k = 0; k < 3; ++k) p[k] = m->pos[3 * (size_t)key[0] + k];
+        as_walked(p, o->positions + 3 * v, 1);
         if (has_uv)
             for (int k = 0; k < 2; ++k) o->uvs[2 * v + k] = m->uv[2 * (size_t)key[1] + k];
         double n[3];

@@ -31,14 +31,17 @@ static int at_line_end(const native_text *t)
     return t->p >= t->end || *t->p == '\n' || (*t->p == '\r' && (t->p + 1 >= t->end || t->p[1] == '\n'));
 }
 
-/* Up to max numbers to the line's end into v: how many, or -1. */
+/* Up to max numbers to the line's end into v: how many, or -1. A number
+ * starting with '.' is declined: Assimp's component count (IsNumeric in
+ * getNumComponentsInDataDefinition) does not count it, and then misreads
+ * the line. */
 static int numbers(native_text *t, float *v, int max)
 {
     int n = 0;
     for (;;) {
         native_skip_blanks(t);
         if (at_line_end(t)) return n;
-        if (n == max || !native_parse_real(t, 0, &v[n])) return -1;
+        if (n == max || *t->p == '.' || !native_parse_real(t, 0, &v[n])) return -1;
         ++n;
     }
 }

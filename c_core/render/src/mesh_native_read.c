@@ -1,4 +1,4 @@
-/* The native reader's entry (mesh_native.h): picks OBJ or PLY by the file's
+/* The native reader's entry (mesh_native.h): picks OBJ, PLY or STL by the file's
  * extension, maps the file, reads it with the format's reader, makes the
  * soak_mesh and validates it; anything it declines goes to Assimp. */
 #define _GNU_SOURCE
@@ -25,13 +25,13 @@ static int format_of(const char *path)
 {
     const char *slash = strrchr(path, '/'), *dot = strrchr(path, '.');
     if (!dot || (slash && dot < slash)) return 0;
-    return !strcasecmp(dot, ".obj") ? 1 : !strcasecmp(dot, ".ply") ? 2 : 0;
+    return !strcasecmp(dot, ".obj") ? 1 : !strcasecmp(dot, ".ply") ? 2 : !strcasecmp(dot, ".stl") ? 3 : 0;
 }
 
 int soak_mesh_native_read(const char *path, const soak_mesh_request *rq, soak_mesh *mesh, char *why, size_t whylen)
 {
     int fmt = format_of(path);
-    snprintf(why, whylen, "not OBJ or PLY");
+    snprintf(why, whylen, "not OBJ, PLY or STL");
     if (!fmt || !soak_mesh_native_enabled()) return 0;
     if (rq->uv && (rq->uv->uv_index != 0 || rq->uv->uv_name[0])) {
         snprintf(why, whylen, "a UV set other than the first asked for");
@@ -54,7 +54,9 @@ int soak_mesh_native_read(const char *path, const soak_mesh_request *rq, soak_me
     native_text t = {map, (const char *)map + sb.st_size};
     native_mesh nm;
     memset(&nm, 0, sizeof nm);
-    int ok = fmt == 1 ? native_read_obj(t, &nm, why, whylen) : native_read_ply(t, &nm, why, whylen);
+    int ok = fmt == 1   ? native_read_obj(t, &nm, why, whylen)
+             : fmt == 2 ? native_read_ply(t, &nm, why, whylen)
+                        : native_read_stl(t, &nm, why, whylen);
     munmap(map, (size_t)sb.st_size);
     if (ok) ok = native_finish(&nm, rq, mesh, why, whylen);
     native_mesh_free(&nm);

@@ -1,14 +1,17 @@
-/* The native OBJ/PLY reader (render/src/mesh_native.h) against Assimp, an
- * independent second reader: on meshes written here (grids with and
- * without normals, quads convex and concave, binary PLY in both byte
- * orders, ASCII PLY, decimals of every length and exponents), on the
- * project's own mesh seeds (tests/fuzz/corpus/mesh) and on every OBJ and
- * PLY of Assimp's test models where installed, every triangle the native
- * reader gives must equal Assimp's (SOAK_MESH_READER=assimp through the
- * contained reader): same count and order, corners' positions and UVs
- * equal as floats, normals within 1e-5. Hostile files (truncated, indices
- * out of range, 2^31 vertices claimed, NaN, a 2 MB line, UTF-16) are
- * declined by the native reader and end exactly as with Assimp alone. */
+/* The native OBJ/PLY/STL reader (render/src/mesh_native.h) against
+ * Assimp, an independent second reader: on meshes written here (grids
+ * with and without normals, quads convex and concave, binary PLY in both
+ * byte orders, ASCII PLY, decimals of every length and exponents, binary
+ * and ASCII STL), on the project's own mesh seeds (tests/fuzz/corpus/mesh
+ * and mesh_native) and on every OBJ, PLY and STL of Assimp's test models
+ * where installed, every triangle the native reader gives must equal
+ * Assimp's (SOAK_MESH_READER=assimp through the contained reader): same
+ * count and order, corners' positions and UVs equal as floats, normals
+ * within 1e-5; for STL, whose corners Assimp joins by value, the same
+ * vertices in the same numbering too. Hostile files (truncated, indices
+ * out of range, 2^31 vertices claimed, NaN, a 2 MB line, UTF-16, STL
+ * facet counts beyond the file) are declined by the native reader and end
+ * exactly as with Assimp alone. */
 #define _GNU_SOURCE
 #include <dirent.h>
 #include <math.h>
@@ -16,6 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
 #include "check.h"
@@ -70,6 +74,7 @@ static int equal_to_assimp(const char *path, int req, int strict_normals)
     char why[200] = "", err[600] = "", what[700];
     soak_mesh_request rq = {req, NULL};
     int took = soak_mesh_native_read(path, &rq, &n, why, sizeof why);
+    if (!took) printf("info: %s declined: %s\n", path, why);
     if (!took) return 0;
     soak_status st = load_assimp(path, req, &a, err, sizeof err);
     snprintf(what, sizeof what, "%s: Assimp reads what the native reader read (%s)", path, err);
@@ -87,6 +92,17 @@ static int equal_to_assimp(const char *path, int req, int strict_normals)
     check_true(what, d.pos == 0);
     snprintf(what, sizeof what, "%s: corner UVs equal (max diff %.3g)", path, d.uv);
     check_true(what, d.uv == 0);
+    const char *dot = strrchr(path, '.');
+    if (dot && !strcasecmp(dot, ".stl")) {
+        int same = n.n_vertices == a.n_vertices && n.n_triangles == a.n_triangles &&
+                   !memcmp(n.indices, a.indices, 3 * n.n_triangles * sizeof *n.indices) &&
+                   !memcmp(n.positions, a.positions, 3 * n.n_vertices * sizeof *n.positions);
+        snprintf(what, sizeof what,
+                 "%s: vertices joined and numbered as Assimp's, positions the same bits, -0 as +0 (native %zu, "
+                 "Assimp %zu)",
+                 path, n.n_vertices, a.n_vertices);
+        check_true(what, same);
+    }
     snprintf(what, sizeof what, "%s: normals within 1e-5 (max diff %.3g)", path, d.nrm);
     if (strict_normals) check_close(what, d.nrm, 0, 1e-5);
     else printf("info: %s\n", what);
@@ -216,6 +232,66 @@ static void write_ply_ascii(const char *name)
     fclose(f);
 }
 
+/* A binary STL of the grid, its left half flat at height -0 or +0 (by
+ * facet): the facet normal in float, nudged by -4e-6, 0 or 4e-6 per
+ * component (one step apart is within Assimp's 1e-5 join distance, two
+ * are not, so the flat half's joins follow that distance and which vertex
+ * is found first), or 0 when zero_normals; a header that starts with
+ * "solid" (binary by its size all the same), colour bits on some facets.
+ * count_extra: facets claimed beyond those written. */
+static void write_stl_binary(const char *name, int n, int zero_normals, unsigned count_extra)
+{
+    FILE *f = fopen(path_of(name), "wb");
+    if (!f) return;
+    char header[80] = "solid grid written by test_mesh_native COLOR=";
+    fwrite(header, 1, 80, f);
+    uint32_t count = (uint32_t)(2 * n * n) + count_extra;
+    fwrite(&count, 4, 1, f);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            for (int h = 0; h < 2; ++h) {
+                int c[3][2] = {{i, j}, {i + 1, j + h}, {i + 1 - h, j + 1}};
+                float p[3][3], e1[3], e2[3], nr[3];
+                for (int k = 0; k < 3; ++k) {
+                    p[k][0] = (float)(-1 + 2.0 * c[k][0] / n), p[k][2] = (float)(1 - 2.0 * c[k][1] / n);
+                    p[k][1] = 2 * c[k][0] <= n ? (h ? -0.0f : 0.0f) : (float)(0.2 * height(c[k][0], c[k][1]));
+                }
+                for (int k = 0; k < 3; ++k) e1[k] = p[1][k] - p[0][k], e2[k] = p[2][k] - p[0][k];
+                nr[0] = e1[1] * e2[2] - e1[2] * e2[1], nr[1] = e1[2] * e2[0] - e1[0] * e2[2],
+                nr[2] = e1[0] * e2[1] - e1[1] * e2[0];
+                float l = sqrtf(nr[0] * nr[0] + nr[1] * nr[1] + nr[2] * nr[2]);
+                for (int k = 0; k < 3; ++k)
+                    nr[k] = zero_normals ? 0.0f : nr[k] / l + 4e-6f * (float)(((i + j + h) % 3) - 1);
+                uint16_t attr = (i + j) % 5 == 0 ? (uint16_t)(0x8000u | 0x1Fu) : 0;
+                fwrite(nr, 4, 3, f);
+                fwrite(p, 4, 9, f);
+                fwrite(&attr, 2, 1, f);
+            }
+    fclose(f);
+}
+
+/* The same grid as plain ASCII STL, numbers in several styles. */
+static void write_stl_ascii(const char *name, int n)
+{
+    FILE *f = fopen(path_of(name), "w");
+    if (!f) return;
+    fprintf(f, "  solid grid\n");
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            for (int h = 0; h < 2; ++h) {
+                int c[3][2] = {{i, j}, {i + 1, j + h}, {i + 1 - h, j + 1}};
+                fprintf(f, "facet normal %.6e %d %.3f\r\n  outer loop\r\n", 0.01 * i, 1, -0.02 * j);
+                for (int k = 0; k < 3; ++k) {
+                    double x = -1 + 2.0 * c[k][0] / n, z = 1 - 2.0 * c[k][1] / n, y = height(c[k][0], c[k][1]);
+                    if ((i + k) % 2) fprintf(f, "    vertex %.9f\t%.17g %.4e\r\n", x, y, z);
+                    else fprintf(f, "    vertex  %g %.6f %.12f \r\n", x, y, z);
+                }
+                fprintf(f, "  endloop\r\nendfacet\r\n");
+            }
+    fprintf(f, "endsolid grid\n\n");
+    fclose(f);
+}
+
 static void write_text(const char *name, const char *text, size_t n)
 {
     FILE *f = fopen(path_of(name), "wb");
@@ -236,7 +312,10 @@ static void test_written(void)
     write_ply_ascii("ascii.ply");
     const char *uv[] = {"grid_vn.obj",       "grid_quads.obj", "grid_tris.obj",
                         "grid_quads_vn.obj", "grid_le.ply",    "ascii.ply"};
-    const char *no_uv[] = {"darts.obj", "grid_be.ply"};
+    write_stl_binary("grid.stl", 24, 0, 0);
+    write_stl_binary("zero_normals.stl", 12, 1, 0);
+    write_stl_ascii("grid_ascii.stl", 16);
+    const char *no_uv[] = {"darts.obj", "grid_be.ply", "grid.stl", "zero_normals.stl", "grid_ascii.stl"};
     char what[300];
     for (size_t i = 0; i < sizeof uv / sizeof *uv; ++i) {
         snprintf(what, sizeof what, "%s: the native reader takes it", uv[i]);
@@ -263,8 +342,40 @@ static void same_end(const char *name, int req)
     soak_status s1 = soak_mesh_load(p, req, &n, e1, sizeof e1), s2 = load_assimp(p, req, &a, e2, sizeof e2);
     snprintf(what, sizeof what, "%s: same status (%d, %d) and message as Assimp alone ('%s')", name, s1, s2, e1);
     check_true(what, s1 == s2 && !strcmp(e1, e2) && (s1 != SOAK_OK || n.n_triangles == a.n_triangles));
+    printf("info: %s: declined (%s), then status %d: %s\n", name, why, s1, e1);
     soak_mesh_free(&n);
     soak_mesh_free(&a);
+}
+
+/* STL: more facets claimed than written (read as ASCII by Assimp for its
+ * "solid" header), a count whose size wraps in Assimp's 32-bit check onto
+ * the file's size, a cut file, no facets, NaN in binary and ASCII, text
+ * after endsolid, and a mesh without UVs where a map needs them. */
+static void test_hostile_stl(void)
+{
+    write_stl_binary("claims_more.stl", 4, 0, 1);
+    write_stl_binary("wraps.stl", 1, 0, 2147483648u);
+    write_stl_binary("cut.stl", 4, 0, 0);
+    if (truncate(path_of("cut.stl"), 84 + 50 * 32 - 7) != 0) check_true("truncate", 0);
+    write_stl_binary("no_facets.stl", 0, 0, 0);
+    char bin[134] = "binary without a solid header";
+    uint32_t one = 1;
+    float facet[12] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, NAN, 0};
+    memcpy(bin + 80, &one, 4);
+    memcpy(bin + 84, facet, sizeof facet);
+    bin[132] = bin[133] = 0;
+    write_text("nan.stl", bin, sizeof bin);
+    static const char nan_ascii[] = "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex nan 0 0\n"
+                                    "vertex 0 1 0\nendloop\nendfacet\nendsolid x\n";
+    write_text("nan_ascii.stl", nan_ascii, sizeof nan_ascii - 1);
+    static const char two[] = "solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                              "endloop\nendfacet\nendsolid a\nsolid b\nendsolid b\n";
+    write_text("two_solids.stl", two, sizeof two - 1);
+    const char *names[] = {"claims_more.stl", "wraps.stl",     "cut.stl",       "no_facets.stl",
+                           "nan.stl",         "nan_ascii.stl", "two_solids.stl"};
+    for (size_t i = 0; i < sizeof names / sizeof *names; ++i) same_end(names[i], 0);
+    write_stl_binary("needs_uv.stl", 2, 0, 0);
+    same_end("needs_uv.stl", SOAK_MESH_UVS_ALL);
 }
 
 static void test_hostile(void)
@@ -305,6 +416,7 @@ static void test_hostile(void)
     const char *names[] = {"cut.ply", "index_range.obj", "index_range.ply", "huge_count.ply",
                            "nan.obj", "nan.ply",         "huge_line.obj"};
     for (size_t i = 0; i < sizeof names / sizeof *names; ++i) same_end(names[i], 0);
+    test_hostile_stl();
 }
 
 /* UTF-16 with a byte-order mark: left to Assimp (mesh_convert.c reads it
@@ -333,8 +445,8 @@ static void test_utf16(void)
     soak_mesh_free(&b);
 }
 
-/* Every OBJ and PLY under folder (recursively), or the project's seeds
- * (first byte the format: 0 OBJ, 1 PLY, modulo 12; fuzz_mesh.c). */
+/* Every OBJ, PLY and STL under folder (recursively), or the project's seeds
+ * (first byte the format modulo 12: 0 OBJ, 1 PLY, 2 STL; fuzz_mesh.c). */
 static void walk_corpus(const char *folder, int seeds, int *seen, int *taken)
 {
     DIR *d = opendir(folder);
@@ -346,7 +458,8 @@ static void walk_corpus(const char *folder, int seeds, int *seen, int *taken)
         const char *dot = strrchr(e->d_name, '.');
         if (e->d_type == DT_DIR) {
             walk_corpus(p, seeds, seen, taken);
-        } else if (!seeds && dot && (!strcasecmp(dot, ".obj") || !strcasecmp(dot, ".ply"))) {
+        } else if (!seeds && dot &&
+                   (!strcasecmp(dot, ".obj") || !strcasecmp(dot, ".ply") || !strcasecmp(dot, ".stl"))) {
             ++*seen;
             *taken += equal_to_assimp(p, 0, 0);
         } else if (seeds) {
@@ -354,9 +467,10 @@ static void walk_corpus(const char *folder, int seeds, int *seen, int *taken)
             char buf[1 << 16];
             size_t n = f ? fread(buf, 1, sizeof buf, f) : 0;
             if (f) fclose(f);
-            if (n < 2 || (buf[0] % 12 != 0 && buf[0] % 12 != 1)) continue;
+            int fmt = n < 2 ? 3 : buf[0] % 12;
+            if (fmt < 0 || fmt > 2) continue;
             char name[300];
-            snprintf(name, sizeof name, "seed_%s.%s", e->d_name, buf[0] % 12 ? "ply" : "obj");
+            snprintf(name, sizeof name, "seed_%s.%s", e->d_name, fmt == 2 ? "stl" : fmt ? "ply" : "obj");
             write_text(name, buf + 1, n - 1);
             ++*seen;
             *taken += equal_to_assimp(path_of(name), 0, 1);
@@ -373,11 +487,13 @@ static void test_corpora(void)
     char *at = strstr(seeds, "/tests/c/render/");
     if (at) strcpy(at, "/tests/fuzz/corpus/mesh");
     walk_corpus(seeds, 1, &seen, &taken);
-    printf("info: project seeds: %d OBJ/PLY, %d read natively\n", seen, taken);
-    check_true("the project's OBJ and PLY seeds: some read natively", seen > 0 && taken > 0);
+    if (at) strcat(at, "_native"); /* its own seeds: byte 0 the same for obj, ply and stl */
+    walk_corpus(seeds, 1, &seen, &taken);
+    printf("info: project seeds: %d OBJ/PLY/STL, %d read natively\n", seen, taken);
+    check_true("the project's OBJ, PLY and STL seeds: some read natively", seen > 0 && taken > 0);
     seen = taken = 0;
     walk_corpus("/usr/share/assimp/models", 0, &seen, &taken);
-    printf("info: Assimp test models: %d OBJ/PLY, %d read natively\n", seen, taken);
+    printf("info: Assimp test models: %d OBJ/PLY/STL, %d read natively\n", seen, taken);
     if (seen == 0) check_skip("Assimp's test models", "assimp-testmodels not installed (/usr/share/assimp/models)");
     else check_true("Assimp's OBJ/PLY test models: some read natively", taken > 0);
 }

@@ -74,7 +74,7 @@ typedef struct soak_hit {
  * are SOAK_ERR_UNSUPPORTED with the reason. Assimp runs in a child process
  * with a time limit (SOAK_MESH_TIMEOUT seconds, default 120): a crash or a
  * hang there is SOAK_ERR_PARSE naming the file; non-finite coordinates and
- * out-of-range indices are rejected. Plain OBJ and PLY are read in that
+ * out-of-range indices are rejected. Plain OBJ, PLY and STL are read in that
  * child by soak's own reader, which gives Assimp's triangles
  * (render/src/mesh_native.h; SOAK_MESH_READER=assimp turns it off). */
 soak_status soak_mesh_load(const char *path, int require_uvs, soak_mesh *mesh, char *err, size_t errlen);
