@@ -97,7 +97,8 @@ def scenes():
     for tag in ("drops_off", "drops_on"):
         body = (f'#declare Drops = Soak_Drops_Fn("{tag}.", ".exr", {FPS}, {t:.9g}, {RAIN_END}, {RAIN_END}, 0)\n'
                 f"#declare Wet = Soak_Place_Fn(Drops, {SIZE:.9g}, transform {{ translate <1.85, 0, -0.15> }})\n"
-                "box { <1.85, -0.01, -0.15>, <2.15, 0, 0.15> Soak_Wet_Drops_Material(\"concrete\", \"water\", Wet, 0.1) }\n")
+                "box { <1.85, -0.01, -0.15>, <2.15, 0, 0.15>\n"
+                "  Soak_Wet_Drops_Material(\"concrete\", \"water\", Wet, 0.1) }\n")
         out[tag] = COMMON.format(loc="<2, 0.08, -0.02>", at="<2, 0, 0>", angle=f"{angle:.6f}", body=body)
     return out
 

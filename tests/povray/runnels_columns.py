@@ -87,7 +87,8 @@ def main():
     dark, lum = render_row(tmp, lib, "wall", UV)
     got = centres(dark)
     print(f"map row {ROW}: {len(ref)} runnels at texels {ref.tolist()}")
-    print(f"render row {ROW}: {len(got)} dark runs at pixels {got.tolist()} (luminance {lum.min():.4f}..{lum.max():.4f})")
+    print(f"render row {ROW}: {len(got)} dark runs at pixels {got.tolist()} "
+          f"(luminance {lum.min():.4f}..{lum.max():.4f})")
     if len(got) != len(ref) or np.abs(got - ref).max() > 0.5:
         fail("the rendered runnels are not where the baked map has them")
     dark_sw, _ = render_row(tmp, lib, "wall_swapped", UV_SWAPPED)
