@@ -18,6 +18,9 @@ opts = dict(zip(argv[::2], argv[1::2]))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon", "tools"))
 import soak_install  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from strip import save_strip  # noqa: E402  (scenes/blender/strip.py)
+
 FRAMES = (8, 40, 120, 160)
 W, H = 320, 240
 
@@ -94,24 +97,6 @@ def bake(sc, ground, mat):
     mat.soak.puddle_level = 0.9
 
 
-def strip(paths, out):
-    """The frames side by side with a 4-pixel white gap."""
-    gap = 4
-    img = bpy.data.images.new("strip", len(paths) * W + (len(paths) - 1) * gap, H)
-    px = [1.0] * (img.size[0] * H * 4)
-    for k, path in enumerate(paths):
-        f = bpy.data.images.load(path)
-        src = list(f.pixels)
-        x0 = k * (W + gap)
-        for y in range(H):
-            row = 4 * (y * img.size[0] + x0)
-            px[row:row + 4 * W] = src[4 * y * W:4 * (y + 1) * W]
-    img.pixels[:] = px
-    img.filepath_raw = out
-    img.file_format = "PNG"
-    img.save()
-
-
 def main():
     tmp = os.path.abspath(opts["--tmp"])
     os.makedirs(tmp, exist_ok=True)
@@ -123,7 +108,7 @@ def main():
         sc.render.filepath = os.path.join(tmp, f"rain_{f:04d}.png")
         bpy.ops.render.render(write_still=True)
         paths.append(sc.render.filepath)
-    strip(paths, os.path.abspath(opts["--out"]))
+    save_strip(paths, os.path.abspath(opts["--out"]), W, H)
     print("wrote", opts["--out"])
 
 

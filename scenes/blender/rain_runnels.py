@@ -23,6 +23,9 @@ opts = dict(zip(argv[::2], argv[1::2]))
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "blender_addon", "tools"))
 import soak_install  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from strip import save_strip  # noqa: E402  (scenes/blender/strip.py)
+
 W, H = 300, 300
 RAIN_END, SLAB_FRAME = 40, 50
 
@@ -105,23 +108,6 @@ def bake(sc, ob, on, size):
     assert bpy.ops.soak.bake_rain() == {"FINISHED"}
 
 
-def strip(paths, out):
-    """The panels side by side with a 4-pixel white gap."""
-    gap = 4
-    img = bpy.data.images.new("strip", len(paths) * W + (len(paths) - 1) * gap, H)
-    px = [1.0] * (img.size[0] * H * 4)
-    for k, path in enumerate(paths):
-        src = list(bpy.data.images.load(path).pixels)
-        x0 = k * (W + gap)
-        for y in range(H):
-            row = 4 * (y * img.size[0] + x0)
-            px[row:row + 4 * W] = src[4 * y * W:4 * (y + 1) * W]
-    img.pixels[:] = px
-    img.filepath_raw = out
-    img.file_format = "PNG"
-    img.save()
-
-
 def main():
     tmp = os.path.abspath(opts["--tmp"])
     os.makedirs(tmp, exist_ok=True)
@@ -135,8 +121,8 @@ def main():
             sc.render.filepath = os.path.join(tmp, f"{ob.name}_{int(on)}.png")
             bpy.ops.render.render(write_still=True)
             shots[(ob.name, on)] = sc.render.filepath
-    strip([shots[k] for k in (("Slab", False), ("Slab", True), ("Yard", False), ("Yard", True))],
-          os.path.abspath(opts["--out"]))
+    save_strip([shots[k] for k in (("Slab", False), ("Slab", True), ("Yard", False), ("Yard", True))],
+               os.path.abspath(opts["--out"]), W, H)
     print("wrote", opts["--out"])
 
 

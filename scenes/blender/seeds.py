@@ -791,6 +791,11 @@ def _relief(work):
     _soak("bake", "rain", path, "-o", wet, "--up", "z", "--rain-dir", "0,-0.55,1", "--spread", 15, "--rainfall", 6,
           "--duration", 600, "--drop-size", 0.0005, "--splat", 0.004, "--flow-iterations", 0, "--width", 800,
           "--height", 400, "--rays", 32, "--threads", 2)
+    return import_relief(path), wet
+
+
+def import_relief(path):
+    """The relief's OBJ (z up, as relief_mesh.py writes it), smooth-shaded."""
     if hasattr(bpy.ops.wm, "obj_import"):
         bpy.ops.wm.obj_import(filepath=path, forward_axis="Y", up_axis="Z")
     else:
@@ -799,7 +804,7 @@ def _relief(work):
     ob.name = "Relief"
     for p in ob.data.polygons:
         p.use_smooth = True
-    return ob, wet
+    return ob
 
 
 def build_bas_relief_rain():

@@ -42,19 +42,6 @@ def _sequence(name):
     return img
 
 
-def _import_relief():
-    path = os.path.join(work, "relief.obj")
-    if hasattr(bpy.ops.wm, "obj_import"):
-        bpy.ops.wm.obj_import(filepath=path, forward_axis="Y", up_axis="Z")
-    else:
-        bpy.ops.import_scene.obj(filepath=path, axis_forward="Y", axis_up="Z")
-    ob = bpy.context.selected_objects[0]
-    ob.name = "Relief"
-    for p in ob.data.polygons:
-        p.use_smooth = True
-    return ob
-
-
 def _rain(ob, preset, wet_files, level, tiles):
     """Make Wet, then the add-on's Rain wiring with our frame sequence."""
     seeds.make_wet(ob, preset)
@@ -77,7 +64,7 @@ def build():
     # camera and resolution first: the wiring sets the far ripples' distances from them
     seeds._camera(sc, (1.3, -3.3, 1.75), (1.3, 0.0, 0.3), lens=18 / math.tan(math.radians(27)))
     sc.render.resolution_x, sc.render.resolution_y = w, h
-    relief = _import_relief()
+    relief = seeds.import_relief(os.path.join(work, "relief.obj"))
     t = seeds.Tree("Limestone")
     co = t.node("ShaderNodeTexCoord").outputs["Object"]
     t.link(t.ramp(t.noise(9.0, 6.0, 0.6, vector=co), [(0.3, (0.55, 0.50, 0.42)), (0.7, (0.64, 0.59, 0.50))]),
